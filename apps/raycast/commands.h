@@ -1,0 +1,15 @@
+#pragma once
+// The CLI's subcommands: each registers its options on the app and runs when selected.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace raycast::cli {
+
+/// A subcommand's action, run after parsing; returns the exit code.
+using Action = std::function<int()>;
+
+Action add_cast_command(CLI::App& app);
+Action add_info_command(CLI::App& app);
+
+}  // namespace raycast::cli

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs every Debian package that raycast needs to build, test and benchmark (idempotent),
+# then configures and builds the given presets (default: release).
+# Usage: scripts/setup.sh [preset ...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(cmake g++ make pkg-config git
+  libyaml-cpp-dev libcli11-dev libtbb-dev libpng-dev libopenexr-dev libassimp-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libembree-dev povray)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  echo "setup: installing ${missing[*]}"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+presets=("$@")
+[ ${#presets[@]} -eq 0 ] && presets=(release)
+jobs=$(nproc)
+for preset in "${presets[@]}"; do
+  cmake --preset "$preset" >/dev/null
+  cmake --build --preset "$preset" -j "$jobs"
+done

@@ -1,0 +1,155 @@
+#include "accel/bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+
+#include <tbb/task_group.h>
+
+namespace raycast {
+
+namespace {
+
+constexpr int kMaxBins = 64;
+
+struct Bin {
+  Aabb box;
+  std::uint32_t count = 0;
+};
+
+class Builder {
+ public:
+  Builder(std::span<const Aabb> boxes, std::span<const Vec3> centres, const BvhBuildConfig& c, Bvh& out)
+      : boxes_(boxes), centres_(centres), config_(c), out_(out) {
+    config_.bins = std::clamp(config_.bins, 2, kMaxBins);
+    config_.max_leaf_size = std::max(config_.max_leaf_size, 1);
+  }
+
+  void run() {
+    const std::size_t n = boxes_.size();
+    out_.prims.resize(n);
+    for (std::size_t i = 0; i < n; ++i) out_.prims[i] = static_cast<std::uint32_t>(i);
+    if (n == 0) return;
+    out_.nodes.resize(2 * n - 1);
+    next_node_ = 1;
+    tbb::task_group tasks;
+    build(0, 0, static_cast<std::uint32_t>(n), tasks);
+    tasks.wait();
+    out_.nodes.resize(next_node_.load());
+  }
+
+ private:
+  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, tbb::task_group& tasks) {
+    // Iterative on the right child, recursive (or a task) on the left, to bound the stack depth.
+    for (;;) {
+      BvhNode& node = out_.nodes[node_index];
+      Aabb box, centre_box;
+      for (std::uint32_t i = begin; i < end; ++i) {
+        box.grow(boxes_[out_.prims[i]]);
+        centre_box.grow(centres_[out_.prims[i]]);
+      }
+      node.box = box;
+      const std::uint32_t count = end - begin;
+      std::uint32_t mid = 0;
+      if (count <= static_cast<std::uint32_t>(config_.min_leaf_size) || !split(box, centre_box, begin, end, mid)) {
+        node.first = begin;
+        node.count = count;
+        return;
+      }
+      const std::uint32_t first = next_node_.fetch_add(2);
+      node.first = first;
+      node.count = 0;
+      if (mid - begin >= config_.parallel_threshold) {
+        tasks.run([this, first, begin, mid, &tasks] { build(first, begin, mid, tasks); });
+      } else {
+        build(first, begin, mid, tasks);
+      }
+      node_index = first + 1;
+      begin = mid;
+    }
+  }
+
+  // Chooses a split by binned SAH and partitions prims[begin, end). Returns false for a leaf.
+  bool split(const Aabb& box, const Aabb& centre_box, std::uint32_t begin, std::uint32_t end,
+             std::uint32_t& mid) {
+    const std::uint32_t count = end - begin;
+    const int bins = config_.bins;
+    double best_cost = kInfinity;
+    int best_axis = -1, best_bin = 0;
+    const Vec3 extent = centre_box.extent();
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(extent[axis] > 0)) continue;
+      std::array<Bin, kMaxBins> bin{};
+      const double scale = bins / extent[axis];
+      for (std::uint32_t i = begin; i < end; ++i) {
+        const std::uint32_t p = out_.prims[i];
+        const int b = bin_of(centres_[p][axis], centre_box.lo[axis], scale);
+        bin[b].box.grow(boxes_[p]);
+        ++bin[b].count;
+      }
+      // Sweep from the right, then from the left, to cost every split plane.
+      std::array<double, kMaxBins> right_cost{};
+      Aabb acc;
+      std::uint32_t acc_count = 0;
+      for (int b = bins - 1; b > 0; --b) {
+        acc.grow(bin[b].box);
+        acc_count += bin[b].count;
+        right_cost[b] = acc.half_area() * acc_count;
+      }
+      acc = Aabb{};
+      acc_count = 0;
+      for (int b = 0; b < bins - 1; ++b) {
+        acc.grow(bin[b].box);
+        acc_count += bin[b].count;
+        const double cost = acc.half_area() * acc_count + right_cost[b + 1];
+        if (acc_count > 0 && acc_count < count && cost < best_cost) {
+          best_cost = cost;
+          best_axis = axis;
+          best_bin = b + 1;
+        }
+      }
+    }
+    const double leaf_cost = count * config_.primitive_cost;
+    const double area = box.half_area();
+    if (best_axis >= 0) {
+      const double split_cost =
+          config_.traversal_cost + config_.primitive_cost * best_cost / (area > 0 ? area : 1);
+      if (split_cost >= leaf_cost && count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
+      const double scale = bins / extent[best_axis];
+      const double lo = centre_box.lo[best_axis];
+      auto* first = out_.prims.data() + begin;
+      auto* last = out_.prims.data() + end;
+      auto* m = std::partition(first, last, [&](std::uint32_t p) {
+        return bin_of(centres_[p][best_axis], lo, scale) < best_bin;
+      });
+      mid = static_cast<std::uint32_t>(m - out_.prims.data());
+      return true;
+    }
+    // All centres coincide: split by index when the node is too big for a leaf.
+    if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
+    mid = begin + count / 2;
+    return true;
+  }
+
+  int bin_of(double c, double lo, double scale) const {
+    const int b = static_cast<int>((c - lo) * scale);
+    return std::clamp(b, 0, config_.bins - 1);
+  }
+
+  std::span<const Aabb> boxes_;
+  std::span<const Vec3> centres_;
+  BvhBuildConfig config_;
+  Bvh& out_;
+  std::atomic<std::uint32_t> next_node_{0};
+};
+
+}  // namespace
+
+Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres, const BvhBuildConfig& config) {
+  Bvh bvh;
+  Builder(boxes, centres, config, bvh).run();
+  return bvh;
+}
+
+}  // namespace raycast

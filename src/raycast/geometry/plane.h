@@ -1,0 +1,28 @@
+#pragma once
+// The plane as a half-space solid: inside is behind the normal, as in POV-Ray.
+#include "geometry/shape.h"
+
+namespace raycast {
+
+/// The solid dot(n, p) <= offset; n is unit. (u, v) are the coordinates of the hit along two
+/// fixed tangent axes (s, t) of the plane, measured from `point`.
+struct Plane {
+  static constexpr const char* kName = "plane";
+  Vec3 n{0, 0, 1};
+  Vec3 point;
+  double offset = 0;  // dot(n, point)
+  Vec3 s{1, 0, 0}, t{0, 1, 0};
+};
+
+/// A validated plane (finite point, finite non-zero normal); throws std::invalid_argument.
+Plane make_plane(const Vec3& normal, const Vec3& point);
+
+Aabb bounds(const Plane& p);
+bool intersect(const Plane& p, const Ray& ray, LocalHit& hit);
+bool occluded(const Plane& p, const Ray& ray);
+void spans(const Plane& p, const Ray& ray, SpanList& out);
+SurfaceInfo surface(const Plane& p, const Ray& ray, const LocalHit& hit);
+bool contains(const Plane& p, const Vec3& q);
+inline bool is_closed(const Plane&) { return true; }
+
+}  // namespace raycast

@@ -1,0 +1,135 @@
+#include "geometry/sphere.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "math/float_error.h"
+
+namespace raycast {
+
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+double phi_of(const Vec3& p) {
+  double phi = std::atan2(p.y, p.x);
+  if (phi < 0) phi += kTwoPi;
+  return phi;
+}
+
+// Whether the object-space point (relative to the centre) lies on the kept part.
+bool on_kept_part(const Sphere& s, const Vec3& p) {
+  if (p.z < s.z_min || p.z > s.z_max) return false;
+  return s.phi_max >= kTwoPi || phi_of(p) <= s.phi_max;
+}
+
+}  // namespace
+
+bool Sphere::is_partial() const { return z_min > -radius || z_max < radius || phi_max < kTwoPi; }
+
+Sphere make_sphere(const Vec3& center, double radius, double z_min, double z_max,
+                   double phi_max_degrees) {
+  if (!is_finite(center)) throw std::invalid_argument("center must be finite");
+  if (!(radius > 0) || !std::isfinite(radius))
+    throw std::invalid_argument("radius must be > 0 and finite");
+  if (std::isnan(z_min) || std::isnan(z_max) || !(z_min < z_max))
+    throw std::invalid_argument("z_min must be < z_max");
+  if (!(phi_max_degrees > 0 && phi_max_degrees <= 360))
+    throw std::invalid_argument("phi_max must be in (0, 360]");
+  Sphere s;
+  s.center = center;
+  s.radius = radius;
+  s.z_min = std::clamp(z_min, -radius, radius);
+  s.z_max = std::clamp(z_max, -radius, radius);
+  if (!(s.z_min < s.z_max)) throw std::invalid_argument("z range misses the sphere");
+  s.phi_max = phi_max_degrees >= 360 ? kTwoPi : phi_max_degrees * std::numbers::pi / 180;
+  return s;
+}
+
+bool sphere_line_roots(const Vec3& o, const Vec3& d, double radius, double& t0, double& t1) {
+  // Hearn and Baker's refinement (used by pbrt-v4): b^2 - 4ac = 4a (r^2 - |f|^2) with f the
+  // line's closest point to the centre, computed as (r - |f|)(r + |f|) without cancellation.
+  const double a = dot(d, d);
+  const double b = 2 * dot(o, d);
+  const double c = dot(o, o) - radius * radius;
+  const Vec3 f = o - (b / (2 * a)) * d;
+  const double lf = length(f);
+  const double disc = 4 * a * (radius + lf) * (radius - lf);
+  if (!(disc >= 0)) return false;
+  const double root = std::sqrt(disc);
+  const double q = b < 0 ? -0.5 * (b - root) : -0.5 * (b + root);
+  if (q == 0) {
+    t0 = t1 = 0;
+  } else {
+    t0 = q / a;
+    t1 = c / q;
+  }
+  if (t0 > t1) std::swap(t0, t1);
+  return true;
+}
+
+Aabb bounds(const Sphere& s) {
+  const double r = s.radius;
+  return {s.center + Vec3{-r, -r, s.z_min}, s.center + Vec3{r, r, s.z_max}};
+}
+
+bool intersect(const Sphere& s, const Ray& ray, LocalHit& hit) {
+  const Vec3 o = ray.o - s.center;
+  double t[2];
+  if (!sphere_line_roots(o, ray.d, s.radius, t[0], t[1])) return false;
+  const bool partial = s.is_partial();
+  for (int i = 0; i < 2; ++i) {
+    if (t[i] < ray.tmin || t[i] > ray.tmax) continue;
+    if (partial && !on_kept_part(s, o + t[i] * ray.d)) continue;
+    hit = LocalHit{t[i], -1, i, 0, 0};
+    return true;
+  }
+  return false;
+}
+
+bool occluded(const Sphere& s, const Ray& ray) {
+  LocalHit h;
+  return intersect(s, ray, h);
+}
+
+void spans(const Sphere& s, const Ray& ray, SpanList& out) {
+  const Vec3 o = ray.o - s.center;
+  double t0, t1;
+  if (!sphere_line_roots(o, ray.d, s.radius, t0, t1)) return;
+  const LocalHit h0{t0, -1, 0, 0, 0}, h1{t1, -1, 1, 0, 0};
+  if (!s.is_partial()) {
+    out.add(h0, h1);
+    return;
+  }
+  if (on_kept_part(s, o + t0 * ray.d)) out.add(h0, h0);
+  if (t1 != t0 && on_kept_part(s, o + t1 * ray.d)) out.add(h1, h1);
+}
+
+SurfaceInfo surface(const Sphere& s, const Ray& ray, const LocalHit& hit) {
+  SurfaceInfo si;
+  Vec3 p = ray.o - s.center + hit.t * ray.d;
+  // Reproject onto the surface; the remaining error is gamma(5) |p| (pbrt-v4 6.8.5).
+  p *= s.radius / length(p);
+  si.p_error = gamma(5) * abs(p);
+  si.n = p / s.radius;
+  si.shading_n = si.n;
+  si.u = phi_of(p) / s.phi_max;
+  const double theta = std::acos(std::clamp(p.z / s.radius, -1.0, 1.0));
+  const double theta_lo = std::acos(std::clamp(s.z_min / s.radius, -1.0, 1.0));
+  const double theta_hi = std::acos(std::clamp(s.z_max / s.radius, -1.0, 1.0));
+  si.v = (theta_lo - theta) / (theta_lo - theta_hi);
+  si.p = p + s.center;
+  si.p_error += gamma(1) * abs(s.center);
+  return si;
+}
+
+bool contains(const Sphere& s, const Vec3& p) {
+  return !s.is_partial() && length_squared(p - s.center) <= s.radius * s.radius;
+}
+
+bool is_closed(const Sphere& s) { return !s.is_partial(); }
+
+}  // namespace raycast

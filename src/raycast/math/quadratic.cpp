@@ -1,0 +1,32 @@
+#include "math/quadratic.h"
+
+#include <cmath>
+#include <utility>
+
+namespace raycast {
+
+int solve_quadratic(double a, double b, double c, double& t0, double& t1) {
+  if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c)) return 0;
+  if (a == 0) {
+    if (b == 0) return 0;
+    t0 = t1 = -c / b;
+    return 1;
+  }
+  // The discriminant with an fma keeps b^2 - 4ac accurate when the two terms nearly cancel.
+  const double four_ac = 4 * a * c;
+  const double err = std::fma(-4 * a, c, four_ac);  // rounding error of 4ac
+  const double disc = std::fma(b, b, -four_ac) + err;
+  if (disc < 0) return 0;
+  const double root = std::sqrt(disc);
+  const double q = b < 0 ? -0.5 * (b - root) : -0.5 * (b + root);
+  if (q == 0) {  // b == 0 and c == 0: a double root at 0
+    t0 = t1 = 0;
+    return 2;
+  }
+  t0 = q / a;
+  t1 = c / q;
+  if (t0 > t1) std::swap(t0, t1);
+  return 2;
+}
+
+}  // namespace raycast

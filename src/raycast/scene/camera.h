@@ -1,0 +1,33 @@
+#pragma once
+#include "math/vec3.h"
+
+namespace raycast {
+
+enum class CameraType { kPerspective, kOrthographic };
+
+struct CameraDesc {
+  CameraType type = CameraType::kPerspective;
+  Vec3 position{0, 0, 1};
+  Vec3 look_at{0, 0, 0};
+  Vec3 up{0, 1, 0};
+  double fov = 40;     // perspective: vertical field of view, degrees, in (0, 180)
+  double height = 2;   // orthographic: full view height in scene units
+};
+
+struct ImageSettings {
+  int width = 640;
+  int height = 480;
+  int samples = 1;
+};
+
+enum class IntegratorType { kWhitted, kRaycast, kDepth, kNormal, kId };
+
+struct RenderSettings {
+  IntegratorType integrator = IntegratorType::kWhitted;
+  int max_depth = 5;
+  Vec3 background{0, 0, 0};
+  Vec3 ambient{0, 0, 0};
+  unsigned seed = 0;
+};
+
+}  // namespace raycast

@@ -1,0 +1,19 @@
+#pragma once
+// Scene files (SPEC.md "Scene file"): YAML, JSON accepted. Every mistake is a SceneError naming
+// file:line:column and what was expected.
+#include <string>
+
+#include "scene/scene.h"
+
+namespace raycast {
+
+/// Loads and builds a scene from a file; relative paths inside resolve against its folder.
+Scene load_scene_file(const std::string& path);
+/// Loads and builds a scene from text; `name` is used in messages, `dir` for relative paths.
+Scene load_scene_text(const std::string& text, const std::string& name = "<string>",
+                      const std::string& dir = ".");
+
+/// The deepest nesting of objects (groups, CSG) and of YAML collections a scene may have.
+inline constexpr int kMaxNesting = 256;
+
+}  // namespace raycast

@@ -1,0 +1,75 @@
+#include "scene/object.h"
+
+#include <cmath>
+
+namespace raycast {
+
+namespace {
+
+template <class Variant>
+struct AllShapes;
+template <class... Ts>
+struct AllShapes<std::variant<Ts...>> {
+  static constexpr bool value = (Shape<Ts> && ...);
+};
+static_assert(AllShapes<ShapeVariant>::value, "every alternative of ShapeVariant must model Shape");
+
+}  // namespace
+
+Aabb bounds(const Object& o) {
+  const Aabb b = std::visit([](const auto& s) { return bounds(s); }, o.shape);
+  return o.xf ? transform_bounds(*o.xf, b) : b;
+}
+
+bool intersect(const Object& o, const Ray& ray, LocalHit& hit) {
+  const Ray r = to_object_space(o, ray);
+  return std::visit([&](const auto& s) { return intersect(s, r, hit); }, o.shape);
+}
+
+bool occluded(const Object& o, const Ray& ray) {
+  const Ray r = to_object_space(o, ray);
+  return std::visit([&](const auto& s) { return occluded(s, r); }, o.shape);
+}
+
+void spans(const Object& o, const Ray& ray, SpanList& out) {
+  const Ray r = to_object_space(o, ray);
+  std::visit([&](const auto& s) { spans(s, r, out); }, o.shape);
+}
+
+SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit) {
+  const Ray r = to_object_space(o, ray);
+  SurfaceInfo si = std::visit([&](const auto& s) { return surface(s, r, hit); }, o.shape);
+  if (o.xf) {
+    const Vec3 p = si.p;
+    si.p = o.xf->point(p);
+    // Error of the object-space point carried through the matrix, plus the transform's own.
+    const auto& m = o.xf->matrix().m;
+    Vec3 e = o.xf->point_error(p);
+    for (int i = 0; i < 3; ++i)
+      e[i] += (1 + gamma(3)) * (std::abs(m[i][0]) * si.p_error.x + std::abs(m[i][1]) * si.p_error.y +
+                                std::abs(m[i][2]) * si.p_error.z);
+    si.p_error = e;
+    si.n = normalize(o.xf->normal(si.n));
+    si.shading_n = normalize(o.xf->normal(si.shading_n));
+  }
+  if (hit.flip) {
+    si.n = -si.n;
+    si.shading_n = -si.shading_n;
+  }
+  return si;
+}
+
+bool contains(const Object& o, const Vec3& p) {
+  const Vec3 q = o.xf ? o.xf->inverse_point(p) : p;
+  return std::visit([&](const auto& s) { return contains(s, q); }, o.shape);
+}
+
+const char* shape_name(const Object& o) {
+  return std::visit([](const auto& s) -> const char* { return std::decay_t<decltype(s)>::kName; }, o.shape);
+}
+
+bool is_closed(const Object& o) {
+  return std::visit([](const auto& s) { return is_closed(s); }, o.shape);
+}
+
+}  // namespace raycast

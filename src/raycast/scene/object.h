@@ -1,0 +1,44 @@
+#pragma once
+// An object of the scene: one shape of the closed set, placed by an optional transform.
+// Dispatch over the set happens in object.cpp and nowhere else.
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "geometry/plane.h"
+#include "geometry/shape.h"
+#include "geometry/sphere.h"
+#include "math/transform.h"
+
+namespace raycast {
+
+/// The closed set of shape types. Adding one here makes the compiler point at every place that
+/// must handle it (object.cpp's dispatch, the loader's table).
+using ShapeVariant = std::variant<Plane, Sphere>;
+
+struct Object {
+  ShapeVariant shape;
+  std::optional<Transform> xf;  // object -> world; absent means the identity
+  int material = -1;            // index into Scene::materials
+  int entry = -1;               // index of the top-level `objects` entry it came from
+};
+
+// World-space versions of the shape functions (geometry/shape.h): the ray goes to object space
+// through the inverse transform (t unchanged), results come back to world space.
+Aabb bounds(const Object& o);
+bool intersect(const Object& o, const Ray& ray, LocalHit& hit);
+bool occluded(const Object& o, const Ray& ray);
+void spans(const Object& o, const Ray& ray, SpanList& out);
+SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit);
+bool contains(const Object& o, const Vec3& p);
+bool is_closed(const Object& o);
+/// The scene-format key of the object's shape ("sphere", "mesh", ...).
+const char* shape_name(const Object& o);
+
+/// The ray in the object's own space (t is preserved: the direction is not renormalised).
+inline Ray to_object_space(const Object& o, const Ray& ray) {
+  if (!o.xf) return ray;
+  return {o.xf->inverse_point(ray.o), o.xf->inverse_vector(ray.d), ray.tmin, ray.tmax};
+}
+
+}  // namespace raycast

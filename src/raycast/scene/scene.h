@@ -1,0 +1,71 @@
+#pragma once
+// The loaded scene: objects, materials, lights, camera and settings, plus the top-level BVH.
+// Build once, then query from any number of threads.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "accel/bvh.h"
+#include "scene/camera.h"
+#include "scene/light.h"
+#include "scene/material.h"
+#include "scene/object.h"
+
+namespace raycast {
+
+/// A hit on the scene: the object's index in Scene::objects and its local record.
+struct SceneHit {
+  LocalHit local;
+  std::int32_t object = -1;
+  bool valid() const { return object >= 0; }
+};
+
+/// One surface crossing along a ray, for `intersect_all`.
+struct Crossing {
+  double t;
+  std::int32_t object;
+  LocalHit local;
+};
+
+struct Scene {
+  std::vector<Object> objects;
+  std::vector<Material> materials;  // materials[0] is the default material
+  std::vector<Light> lights;
+  std::optional<CameraDesc> camera;  // absent: make_default_camera
+  ImageSettings image;
+  RenderSettings render;
+  std::string source;  // file the scene came from ("<demo>" for the built-in one)
+  int entries = 0;     // number of top-level `objects` entries
+
+  /// Builds the top-level BVH; call after the objects are final and before querying.
+  void build();
+  double build_ms() const { return build_ms_; }
+  std::size_t accel_bytes() const { return bvh_.memory_bytes() + unbounded_.capacity() * sizeof(std::uint32_t); }
+  const Aabb& bounds() const { return bounds_; }
+  /// The bounds of the bounded objects only (used to frame a default camera).
+  const Aabb& finite_bounds() const { return finite_bounds_; }
+
+  /// Nearest hit with ray.tmin <= t <= ray.tmax.
+  bool intersect(const Ray& ray, SceneHit& hit) const;
+  /// Whether any surface crosses the ray within [tmin, tmax].
+  bool occluded(const Ray& ray) const;
+  /// Every crossing of a final solid's (or open surface's) boundary within [tmin, tmax], sorted.
+  void intersect_all(const Ray& ray, std::vector<Crossing>& out) const;
+  /// The full surface record of a hit found with this ray.
+  SurfaceInfo surface(const Ray& ray, const SceneHit& hit) const;
+  const Material& material_of(const SceneHit& hit) const;
+
+ private:
+  Bvh bvh_;                              // over the bounded objects
+  std::vector<std::uint32_t> bounded_;   // bvh prim -> object index
+  std::vector<std::uint32_t> unbounded_; // objects tested on every ray (planes, ...)
+  Aabb bounds_, finite_bounds_;
+  double build_ms_ = 0;
+};
+
+/// The camera to use: the scene's, or one with fov 40 looking along -z at the centre of the
+/// scene's bounds from where its bounding sphere just fits (SPEC.md defaults).
+CameraDesc camera_or_default(const Scene& scene);
+
+}  // namespace raycast

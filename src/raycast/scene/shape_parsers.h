@@ -1,0 +1,20 @@
+#pragma once
+// One parser per shape key of SPEC.md's table; each reads its fields and validates them.
+#include <map>
+#include <string>
+
+#include "scene/object.h"
+#include "scene/yaml_reader.h"
+
+namespace raycast {
+
+/// Reads one shape from its mapping; throws SceneError at the offending field.
+using ShapeParser = ShapeVariant (*)(Fields& fields);
+
+/// Every shape key the loader knows, with its parser.
+const std::map<std::string, ShapeParser>& shape_parsers();
+
+ShapeVariant parse_plane(Fields& f);
+ShapeVariant parse_sphere(Fields& f);
+
+}  // namespace raycast
