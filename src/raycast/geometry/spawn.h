@@ -8,15 +8,18 @@
 namespace raycast {
 
 /// The point to start a ray from s.p in direction w: offset to the side of the surface w points to.
+/// The ulp step follows the sign of the normal itself, so a point with a zero error bound (a box
+/// face or a disk snapped exactly onto its plane) still leaves the surface rather than staying on
+/// it, where a ray with tmin = 0 would hit it again at t = 0.
 inline Vec3 offset_ray_origin(const SurfaceInfo& s, const Vec3& w) {
   const double dist = dot(abs(s.n), s.p_error);
-  Vec3 offset = dist * s.n;
-  if (dot(w, s.n) < 0) offset = -offset;
-  Vec3 po = s.p + offset;
+  Vec3 dir = s.n;
+  if (dot(w, s.n) < 0) dir = -dir;
+  Vec3 po = s.p + dist * dir;
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0)
+    if (dir[i] > 0)
       po[i] = std::nextafter(po[i], kInfinity);
-    else if (offset[i] < 0)
+    else if (dir[i] < 0)
       po[i] = std::nextafter(po[i], -kInfinity);
   }
   return po;
