@@ -47,7 +47,7 @@ bool line_crossing(const Parallelogram& q, const Ray& ray, double& t, double& a,
   b = dot(ray.d, qv) * inv;
   if (!(b >= 0 && b <= 1)) return false;
   t = dot(q.v, qv) * inv;
-  return true;
+  return std::isfinite(t);
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ bool line_crossing(const Triangle& tri, const Ray& ray, double& t, double& b1, d
   b2 = dot(ray.d, qv) * inv;
   if (!(b2 >= 0 && b1 + b2 <= 1)) return false;
   t = dot(e2, qv) * inv;
-  return true;
+  return std::isfinite(t);
 }
 
 }  // namespace
