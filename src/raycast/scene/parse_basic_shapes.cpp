@@ -106,7 +106,8 @@ ShapeVariant parse_disk(Fields& f) {
   }
   const double height = f.number("height", 0);
   const double phi = f.number("phi_max", 360);
-  if (!(phi > 0 && phi <= 360)) f.fail("phi_max", f.name("phi_max") + " must be in (0, 360]");
+  if (!(phi > 0 && phi <= 360))
+    f.fail("phi_max", f.name("phi_max") + " must be in (0, 360], got " + format_number(phi));
   return make_disk(radius, inner, height, phi);
 }
 
