@@ -12,6 +12,9 @@ namespace raycast {
 namespace {
 
 constexpr int kMaxBins = 64;
+// Below this depth splits follow the SAH; deeper nodes split at the object median, which adds at
+// most log2(2^32) = 32 levels, so trees stay shallower than the traversal stacks (bvh_traverse.h).
+constexpr std::uint32_t kMaxSahDepth = 64;
 
 struct Bin {
   Aabb box;
@@ -34,13 +37,14 @@ class Builder {
     out_.nodes.resize(2 * n - 1);
     next_node_ = 1;
     tbb::task_group tasks;
-    build(0, 0, static_cast<std::uint32_t>(n), tasks);
+    build(0, 0, static_cast<std::uint32_t>(n), 0, tasks);
     tasks.wait();
     out_.nodes.resize(next_node_.load());
   }
 
  private:
-  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, tbb::task_group& tasks) {
+  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, std::uint32_t depth,
+             tbb::task_group& tasks) {
     // Iterative on the right child, recursive (or a task) on the left, to bound the stack depth.
     for (;;) {
       BvhNode& node = out_.nodes[node_index];
@@ -52,7 +56,10 @@ class Builder {
       node.box = box;
       const std::uint32_t count = end - begin;
       std::uint32_t mid = 0;
-      if (count <= static_cast<std::uint32_t>(config_.min_leaf_size) || !split(box, centre_box, begin, end, mid)) {
+      const bool leaf = count <= static_cast<std::uint32_t>(config_.min_leaf_size) ||
+                        (depth < kMaxSahDepth ? !split(box, centre_box, begin, end, mid)
+                                              : !split_median(centre_box, begin, end, mid));
+      if (leaf) {
         node.first = begin;
         node.count = count;
         return;
@@ -61,12 +68,15 @@ class Builder {
       node.first = first;
       node.count = 0;
       if (mid - begin >= config_.parallel_threshold) {
-        tasks.run([this, first, begin, mid, &tasks] { build(first, begin, mid, tasks); });
+        tasks.run([this, first, begin, mid, depth, &tasks] {
+          build(first, begin, mid, depth + 1, tasks);
+        });
       } else {
-        build(first, begin, mid, tasks);
+        build(first, begin, mid, depth + 1, tasks);
       }
       node_index = first + 1;
       begin = mid;
+      ++depth;
     }
   }
 
@@ -79,9 +89,10 @@ class Builder {
     int best_axis = -1, best_bin = 0;
     const Vec3 extent = centre_box.extent();
     for (int axis = 0; axis < 3; ++axis) {
-      if (!(extent[axis] > 0)) continue;
-      std::array<Bin, kMaxBins> bin{};
+      // A subnormal extent would make the scale infinite and a bin index NaN (undefined on cast).
       const double scale = bins / extent[axis];
+      if (!(extent[axis] > 0) || !std::isfinite(scale)) continue;
+      std::array<Bin, kMaxBins> bin{};
       for (std::uint32_t i = begin; i < end; ++i) {
         const std::uint32_t p = out_.prims[i];
         const int b = bin_of(centres_[p][axis], centre_box.lo[axis], scale);
@@ -129,6 +140,21 @@ class Builder {
     // All centres coincide: split by index when the node is too big for a leaf.
     if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
     mid = begin + count / 2;
+    return true;
+  }
+
+  // Splits prims[begin, end) at the median centre along the widest centre axis (by index when
+  // all centres coincide). Returns false for a node small enough to be a leaf.
+  bool split_median(const Aabb& centre_box, std::uint32_t begin, std::uint32_t end,
+                    std::uint32_t& mid) {
+    const std::uint32_t count = end - begin;
+    if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
+    const int axis = max_dimension(centre_box.extent());
+    mid = begin + count / 2;
+    std::nth_element(out_.prims.data() + begin, out_.prims.data() + mid, out_.prims.data() + end,
+                     [&](std::uint32_t a, std::uint32_t b) {
+                       return centres_[a][axis] < centres_[b][axis];
+                     });
     return true;
   }
 

@@ -44,17 +44,19 @@ Aabb transform_bounds(const Transform& xf, const Aabb& b);
 inline Vec3 reciprocal(const Vec3& d) { return {1.0 / d.x, 1.0 / d.y, 1.0 / d.z}; }
 
 /// Slab test (Kay and Kajiya 1986): the entry is the largest of the per-axis entries, the exit the
-/// smallest of the exits; a hit when entry <= exit and [entry, exit] meets [tmin, tmax]. Comparisons
-/// are ordered so that the NaN of 0 * inf (origin on a slab plane, direction parallel to it) leaves
-/// that axis unconstrained. The exit is widened by 2 gamma(3) so the test is conservative under
-/// rounding (pbrt-v4 6.8.2). On a hit, t_enter is the entry clipped to tmin.
+/// smallest of the exits; a hit when entry <= exit and [entry, exit] meets [tmin, tmax]. The near
+/// and far planes are chosen by the sign of inv_d (not by comparing the two t values, which would
+/// turn an empty box inside out), and comparisons are ordered so that the NaN of 0 * inf (origin
+/// on a slab plane, direction parallel to it, either sign of zero) leaves that axis
+/// unconstrained. The exit is widened by 2 gamma(3) so the test is conservative under rounding
+/// (pbrt-v4 6.8.2). On a hit, t_enter is the entry clipped to tmin.
 inline bool intersect_slabs(const Aabb& b, const Vec3& o, const Vec3& inv_d, double tmin, double tmax,
                             double& t_enter) {
   double t0 = tmin, t1 = tmax;
   for (int a = 0; a < 3; ++a) {
-    double near = (b.lo[a] - o[a]) * inv_d[a];
-    double far = (b.hi[a] - o[a]) * inv_d[a];
-    if (near > far) std::swap(near, far);
+    const bool negative = std::signbit(inv_d[a]);
+    const double near = ((negative ? b.hi[a] : b.lo[a]) - o[a]) * inv_d[a];
+    double far = ((negative ? b.lo[a] : b.hi[a]) - o[a]) * inv_d[a];
     far *= 1 + 2 * gamma(3);
     t0 = near > t0 ? near : t0;
     t1 = far < t1 ? far : t1;
@@ -69,9 +71,9 @@ inline bool slab_interval(const Aabb& b, const Vec3& o, const Vec3& inv_d, doubl
                           double& t_exit) {
   double t0 = -kInfinity, t1 = kInfinity;
   for (int a = 0; a < 3; ++a) {
-    double near = (b.lo[a] - o[a]) * inv_d[a];
-    double far = (b.hi[a] - o[a]) * inv_d[a];
-    if (near > far) std::swap(near, far);
+    const bool negative = std::signbit(inv_d[a]);
+    const double near = ((negative ? b.hi[a] : b.lo[a]) - o[a]) * inv_d[a];
+    const double far = ((negative ? b.lo[a] : b.hi[a]) - o[a]) * inv_d[a];
     t0 = near > t0 ? near : t0;
     t1 = far < t1 ? far : t1;
   }

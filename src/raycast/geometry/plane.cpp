@@ -41,7 +41,9 @@ double crossing(const Plane& p, const Ray& ray) {
 
 bool intersect(const Plane& p, const Ray& ray, LocalHit& hit) {
   const double t = crossing(p, ray);
-  if (!(t >= ray.tmin && t <= ray.tmax)) return false;  // NaN (parallel) misses
+  // A parallel ray gives NaN (on the plane) or +-inf (off it): neither is a crossing, even
+  // when tmax is infinite.
+  if (!std::isfinite(t) || !(t >= ray.tmin && t <= ray.tmax)) return false;
   hit = LocalHit{t, -1, 0, 0, 0};
   return true;
 }

@@ -1,5 +1,6 @@
 #include "math/quadratic.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -10,8 +11,15 @@ int solve_quadratic(double a, double b, double c, double& t0, double& t1) {
   if (a == 0) {
     if (b == 0) return 0;
     t0 = t1 = -c / b;
-    return 1;
+    return std::isfinite(t0) ? 1 : 0;
   }
+  // Scale by a power of two (exact, roots unchanged) so the largest coefficient is in [0.5, 1):
+  // then b^2 and 4ac cannot overflow, which would turn the discriminant into NaN.
+  int e;
+  std::frexp(std::max({std::abs(a), std::abs(b), std::abs(c)}), &e);
+  a = std::ldexp(a, -e);
+  b = std::ldexp(b, -e);
+  c = std::ldexp(c, -e);
   // The discriminant with an fma keeps b^2 - 4ac accurate when the two terms nearly cancel.
   const double four_ac = 4 * a * c;
   const double err = std::fma(-4 * a, c, four_ac);  // rounding error of 4ac

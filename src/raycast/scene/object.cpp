@@ -48,6 +48,13 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit) {
     for (int i = 0; i < 3; ++i)
       e[i] += (1 + gamma(3)) * (std::abs(m[i][0]) * si.p_error.x + std::abs(m[i][1]) * si.p_error.y +
                                 std::abs(m[i][2]) * si.p_error.z);
+    // A ray spawned from p goes back through the inverse transform, which rounds its origin
+    // again (pbrt-v4 tracks this as the ray's origin error): widen the bound by that rounding,
+    // carried to world space, so the offset origin stays outside after the round trip.
+    const Vec3 back = o.xf->inverse().point_error(si.p);
+    for (int i = 0; i < 3; ++i)
+      e[i] += (1 + gamma(3)) * (std::abs(m[i][0]) * back.x + std::abs(m[i][1]) * back.y +
+                                std::abs(m[i][2]) * back.z);
     si.p_error = e;
     si.n = normalize(o.xf->normal(si.n));
     si.shading_n = normalize(o.xf->normal(si.shading_n));

@@ -5,6 +5,7 @@
 #include <string>
 #include <variant>
 
+#include "geometry/basic_shapes.h"
 #include "geometry/plane.h"
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
@@ -14,7 +15,7 @@ namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere>;
+using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk>;
 
 struct Object {
   ShapeVariant shape;

@@ -16,5 +16,9 @@ const std::map<std::string, ShapeParser>& shape_parsers();
 
 ShapeVariant parse_plane(Fields& f);
 ShapeVariant parse_sphere(Fields& f);
+ShapeVariant parse_box(Fields& f);
+ShapeVariant parse_triangle(Fields& f);
+ShapeVariant parse_parallelogram(Fields& f);
+ShapeVariant parse_disk(Fields& f);
 
 }  // namespace raycast

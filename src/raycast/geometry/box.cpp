@@ -1,0 +1,107 @@
+#include "geometry/box.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "math/float_error.h"
+
+namespace raycast {
+
+Box make_box(const Vec3& lo, const Vec3& hi) {
+  if (!is_finite(lo)) throw std::invalid_argument("min must be finite");
+  if (!is_finite(hi)) throw std::invalid_argument("max must be finite");
+  if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+    throw std::invalid_argument("min must be < max on every axis");
+  return Box{lo, hi};
+}
+
+bool box_line_interval(const Box& b, const Ray& ray, double& t0, int& face0, double& t1,
+                       int& face1) {
+  // Slab method (Kay and Kajiya 1986) with exact divisions: each face's t is one correctly
+  // rounded subtraction and one division, so hand-computed rays come out to the last ulp.
+  t0 = -kInfinity;
+  t1 = kInfinity;
+  face0 = face1 = kNoSurface;
+  for (int a = 0; a < 3; ++a) {
+    const double o = ray.o[a], d = ray.d[a];
+    if (d == 0) {
+      if (o < b.lo[a] || o > b.hi[a]) return false;
+      continue;
+    }
+    double near = (b.lo[a] - o) / d, far = (b.hi[a] - o) / d;
+    int near_face = 2 * a, far_face = 2 * a + 1;
+    if (d < 0) {
+      std::swap(near, far);
+      std::swap(near_face, far_face);
+    }
+    if (near > t0) {
+      t0 = near;
+      face0 = near_face;
+    }
+    if (far < t1) {
+      t1 = far;
+      face1 = far_face;
+    }
+  }
+  // A valid ray (non-zero direction) constrains at least one axis and so sets both faces.
+  return face0 != kNoSurface && t0 <= t1;
+}
+
+Aabb bounds(const Box& b) { return {b.lo, b.hi}; }
+
+bool intersect(const Box& b, const Ray& ray, LocalHit& hit) {
+  double t0, t1;
+  int f0, f1;
+  if (!box_line_interval(b, ray, t0, f0, t1, f1)) return false;
+  if (t0 >= ray.tmin && t0 <= ray.tmax) {
+    hit = LocalHit{t0, -1, f0, 0, 0};
+    return true;
+  }
+  if (t1 >= ray.tmin && t1 <= ray.tmax) {
+    hit = LocalHit{t1, -1, f1, 0, 0};
+    return true;
+  }
+  return false;
+}
+
+bool occluded(const Box& b, const Ray& ray) {
+  LocalHit h;
+  return intersect(b, ray, h);
+}
+
+void spans(const Box& b, const Ray& ray, SpanList& out) {
+  double t0, t1;
+  int f0, f1;
+  if (!box_line_interval(b, ray, t0, f0, t1, f1)) return;
+  out.add(LocalHit{t0, -1, f0, 0, 0}, LocalHit{t1, -1, f1, 0, 0});
+}
+
+SurfaceInfo surface(const Box& b, const Ray& ray, const LocalHit& hit) {
+  SurfaceInfo si;
+  const int face = hit.part >= 0 && hit.part < 6 ? hit.part : 0;
+  const int a = face / 2;
+  const bool at_hi = face % 2 == 1;
+  Vec3 p = ray.at(hit.t);
+  // The computed t carries two roundings (subtraction, division); o + t d adds two more. The face
+  // coordinate is snapped onto the face plane, so it is exact.
+  si.p_error = gamma(5) * (abs(ray.o) + abs(hit.t * ray.d));
+  p[a] = at_hi ? b.hi[a] : b.lo[a];
+  si.p_error[a] = 0;
+  // The true point lies on the face rectangle: clamping onto it only removes error.
+  for (int c : {(a + 1) % 3, (a + 2) % 3}) p[c] = std::fmin(std::fmax(p[c], b.lo[c]), b.hi[c]);
+  si.p = p;
+  si.n = Vec3{};
+  si.n[a] = at_hi ? 1 : -1;
+  si.shading_n = si.n;
+  const int ub = (a + 1) % 3, vc = (a + 2) % 3;
+  si.u = (p[ub] - b.lo[ub]) / (b.hi[ub] - b.lo[ub]);
+  si.v = (p[vc] - b.lo[vc]) / (b.hi[vc] - b.lo[vc]);
+  return si;
+}
+
+bool contains(const Box& b, const Vec3& p) {
+  return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y && p.z >= b.lo.z &&
+         p.z <= b.hi.z;
+}
+
+}  // namespace raycast
