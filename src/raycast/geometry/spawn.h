@@ -10,13 +10,14 @@ namespace raycast {
 /// The point to start a ray from s.p in direction w: offset to the side of the surface w points to.
 inline Vec3 offset_ray_origin(const SurfaceInfo& s, const Vec3& w) {
   const double dist = dot(abs(s.n), s.p_error);
-  Vec3 offset = dist * s.n;
-  if (dot(w, s.n) < 0) offset = -offset;
-  Vec3 po = s.p + offset;
+  const Vec3 side = dot(w, s.n) < 0 ? -s.n : s.n;
+  Vec3 po = s.p + dist * side;
+  // The ulp step follows the normal, not the offset: a point computed exactly (zero error bound,
+  // e.g. on the plane y = 0) must still leave the surface, or t = 0 would re-hit it.
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0)
+    if (side[i] > 0)
       po[i] = std::nextafter(po[i], kInfinity);
-    else if (offset[i] < 0)
+    else if (side[i] < 0)
       po[i] = std::nextafter(po[i], -kInfinity);
   }
   return po;
