@@ -1,0 +1,73 @@
+#pragma once
+// Images in linear light: float RGB, row-major from the top-left pixel, and the files they go to.
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "math/vec3.h"
+
+namespace raycast {
+
+/// A width x height image of linear RGB floats; pixel (0, 0) is the top-left one.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgb;  // 3 * width * height values, row-major, top row first
+
+  Image() = default;
+  /// A black image; width and height must be >= 0.
+  Image(int w, int h) : width(w), height(h), rgb(std::size_t(3) * std::size_t(w) * std::size_t(h), 0.f) {}
+
+  Vec3f at(int x, int y) const {
+    const std::size_t i = index(x, y);
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+  void set(int x, int y, const Vec3f& c) {
+    const std::size_t i = index(x, y);
+    rgb[i] = c.x;
+    rgb[i + 1] = c.y;
+    rgb[i + 2] = c.z;
+  }
+
+ private:
+  std::size_t index(int x, int y) const {
+    return 3 * (std::size_t(y) * std::size_t(width) + std::size_t(x));
+  }
+};
+
+/// Anything that goes wrong reading or writing an image file: an unknown extension, a file that
+/// cannot be opened, a corrupt file, a format this build lacks. The message names the file.
+class ImageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The sRGB transfer function (IEC 61966-2-1) and its inverse, on [0, 1].
+float linear_to_srgb(float linear);
+float srgb_to_linear(float encoded);
+
+/// 8-bit sRGB PNG: each value clamped to [0, 1], sRGB-encoded, rounded to the nearest of 0..255.
+void save_png(const Image& image, const std::string& path);
+/// Reads an 8- or 16-bit PNG (grey, grey+alpha, RGB, RGBA, palette) into linear RGB: the sRGB
+/// encoding is undone, alpha is dropped. Throws ImageError.
+Image load_png(const std::string& path);
+/// Portable float map ("PF", 3 channels, little-endian, bottom row first as the format demands),
+/// linear values written as they are.
+void save_pfm(const Image& image, const std::string& path);
+/// Reads a colour ("PF") or grey ("Pf") PFM of either endianness. Throws ImageError.
+Image load_pfm(const std::string& path);
+/// OpenEXR, 32-bit float RGB channels, linear, ZIP-compressed. Throws ImageError when this build has no OpenEXR.
+void save_exr(const Image& image, const std::string& path);
+/// Whether this build can write OpenEXR files.
+bool have_exr();
+
+/// The formats save_image knows, by lower-case extension.
+enum class ImageFormat { kPng, kPfm, kExr };
+/// The format for a path from its extension (case-insensitive); throws ImageError for any other
+/// extension, or for .exr when this build lacks OpenEXR.
+ImageFormat image_format_for(const std::string& path);
+/// Writes the image in the format its extension names (.png, .pfm, .exr). Throws ImageError.
+void save_image(const Image& image, const std::string& path);
+
+}  // namespace raycast

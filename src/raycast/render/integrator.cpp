@@ -1,0 +1,204 @@
+#include "render/integrator.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "geometry/spawn.h"
+#include "render/optics.h"
+
+namespace raycast {
+
+namespace {
+
+/// A shadow segment crossing more surfaces of transmissive objects than this is treated as
+/// blocked: a bound on the work per shadow ray, far beyond what a Whitted scene needs.
+constexpr int kMaxShadowCrossings = 64;
+
+constexpr double kDegrees = std::numbers::pi / 180;
+
+/// The spot light's cone: 1 inside angle - falloff, 0 outside angle, a smoothstep between.
+double spot_factor(const Light& light, const Vec3& from_light) {
+  const double cos_theta = std::clamp(dot(light.direction, from_light), -1.0, 1.0);
+  const double theta = std::acos(cos_theta) / kDegrees;
+  if (theta >= light.angle) return 0;
+  if (theta <= light.angle - light.falloff) return 1;
+  const double x = (light.angle - theta) / light.falloff;
+  return x * x * (3 - 2 * x);
+}
+
+}  // namespace
+
+Color id_color(int entry) {
+  const std::uint64_t h = mix64(std::uint64_t(std::uint32_t(entry)) + 1);
+  auto channel = [&](int shift) { return 0.15 + 0.85 * double((h >> shift) & 0xff) / 255.0; };
+  return {channel(0), channel(8), channel(16)};
+}
+
+Integrator::Integrator(const Scene& scene, Channel channel)
+    : scene_(scene), channel_(channel), textures_(load_textures(scene)) {
+  for (const Material& m : scene.materials) any_transmissive_ |= m.transmission > 0;
+}
+
+Color Integrator::li(const Ray& ray, SampleState& state) const {
+  if (channel_ == Channel::kWhitted) return whitted(ray, 0, state);
+  ++state.rays;
+  SceneHit hit;
+  if (!scene_.intersect(ray, hit)) {
+    if (channel_ == Channel::kRaycast) return scene_.render.background;
+    if (channel_ == Channel::kDepth) return {kInfinity, kInfinity, kInfinity};
+    return {0, 0, 0};
+  }
+  const SurfaceInfo si = scene_.surface(ray, hit);
+  switch (channel_) {
+    case Channel::kRaycast: {
+      const double facing = std::abs(dot(si.shading_n, normalize(ray.d)));
+      return facing * albedo(scene_, textures_, ray, hit, si);
+    }
+    case Channel::kDepth: {
+      const double distance = hit.local.t * length(ray.d);
+      return {distance, distance, distance};
+    }
+    case Channel::kNormal: return 0.5 * si.n + Vec3{0.5, 0.5, 0.5};
+    case Channel::kId: return id_color(scene_.objects[hit.object].entry);
+    case Channel::kAlbedo: return albedo(scene_, textures_, ray, hit, si);
+    case Channel::kWhitted: break;
+  }
+  return {0, 0, 0};
+}
+
+Color Integrator::whitted(const Ray& ray, int depth, SampleState& state) const {
+  ++state.rays;
+  SceneHit hit;
+  if (!scene_.intersect(ray, hit)) return scene_.render.background;
+  const SurfaceInfo si = scene_.surface(ray, hit);
+  const Material& m = scene_.material_of(hit);
+  const Color c = albedo(scene_, textures_, ray, hit, si);
+  const Vec3 wi = normalize(ray.d);
+  const bool outside = dot(wi, si.n) < 0;
+  const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer
+  const Vec3 v = -wi;
+  Color result = m.ambient * mul(scene_.render.ambient, c) + direct(si, n, v, m, c, state);
+  if (depth >= scene_.render.max_depth) return result;
+
+  // Split between the mirror and the refracted ray (fixed weights, or exact Fresnel).
+  double w_reflect = m.reflection, w_refract = m.transmission;
+  Vec3 t_dir;
+  if (w_refract > 0) {
+    const double eta_i = outside ? 1 : m.ior, eta_t = outside ? m.ior : 1;
+    const bool refracted = refract(wi, n, eta_i / eta_t, t_dir);
+    if (m.fresnel) {
+      const double f = fresnel_dielectric(dot(v, n), eta_i, eta_t);
+      w_reflect += w_refract * f;
+      w_refract *= 1 - f;
+    }
+    if (!refracted) {  // total internal reflection: the refracted weight goes to the mirror ray
+      w_reflect += w_refract;
+      w_refract = 0;
+    }
+  }
+  if (w_reflect > 0) {
+    const Vec3 m_dir = reflect(wi, n);
+    result += w_reflect * whitted({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state);
+  }
+  if (w_refract > 0)
+    result += w_refract * whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state);
+  return result;
+}
+
+Color Integrator::light_term(const Vec3& n, const Vec3& v, const Vec3& l, const Color& e,
+                             const Material& m, const Color& c) const {
+  const double nl = dot(n, l);
+  const Vec3 r = 2 * nl * n - l;
+  const double highlight = m.specular > 0 ? m.specular * std::pow(std::max(0.0, dot(r, v)), m.shininess) : 0;
+  return mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
+}
+
+Color Integrator::direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, const Material& m,
+                         const Color& c, SampleState& state) const {
+  Color sum{0, 0, 0};
+  if (m.diffuse <= 0 && m.specular <= 0) return sum;
+  // One light direction l towards `target` (a point, or a direction when at infinity).
+  auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
+    if (!(dot(n, l) > 0) || max_component(e) <= 0) return;
+    const Color visibility = shadow(offset_ray_origin(si, l), target, at_infinity, state);
+    if (max_component(visibility) <= 0) return;
+    sum += mul(visibility, light_term(n, v, l, e, m, c));
+  };
+  for (const Light& light : scene_.lights) {
+    const Color emitted = light.emitted();
+    const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
+    switch (light.type) {
+      case LightType::kDirectional: add(-light.direction, -light.direction, true, emitted); break;
+      case LightType::kPoint:
+      case LightType::kSpot: {
+        const Vec3 to = light.position - si.p;
+        const double dist2 = length_squared(to);
+        if (!(dist2 > 0)) break;
+        const Vec3 l = to / std::sqrt(dist2);
+        Color e = inverse_square ? emitted / dist2 : emitted;
+        if (light.type == LightType::kSpot) e *= spot_factor(light, -l);
+        add(l, light.position, false, e);
+        break;
+      }
+      case LightType::kSphere: {
+        // Directions uniform in the cone the sphere subtends (pbrt-v4 6.2.4), each sample
+        // carrying 1/samples of the light; inside the sphere it acts as a point at its centre.
+        const Vec3 to = light.position - si.p;
+        const double dist2 = length_squared(to);
+        const double r2 = light.radius * light.radius;
+        if (dist2 <= r2) {
+          add(normalize(to), light.position, false, emitted);
+          break;
+        }
+        const double dist = std::sqrt(dist2);
+        const Vec3 w = to / dist;
+        Vec3 s, t;
+        make_frame(w, s, t);
+        const double cos_max = std::sqrt(std::max(0.0, 1 - r2 / dist2));
+        const Color share = emitted / double(light.samples);
+        for (int k = 0; k < light.samples; ++k) {
+          const double cos_theta = 1 - state.rng.uniform() * (1 - cos_max);
+          const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
+          const double phi = 2 * std::numbers::pi * state.rng.uniform();
+          const Vec3 l = sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * w;
+          // The nearer crossing of the light's sphere along l (cancellation-free form).
+          const double b = dot(l, to);
+          const double disc = std::max(0.0, b * b - (dist2 - r2));
+          const double q = b + std::sqrt(disc);
+          const double along = q > 0 ? (dist2 - r2) / q : dist;
+          add(l, si.p + along * l, false, inverse_square ? share / (along * along) : share);
+        }
+        break;
+      }
+    }
+  }
+  return sum;
+}
+
+Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const {
+  Color through{1, 1, 1};
+  Vec3 o = from;
+  std::array<std::int32_t, kMaxShadowCrossings> counted;
+  int n_counted = 0;
+  for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
+    const Ray segment{o, to_infinity ? to : to - o, 0, to_infinity ? kInfinity : 1};
+    ++state.rays;
+    if (!any_transmissive_) return scene_.occluded(segment) ? Color{0, 0, 0} : through;
+    SceneHit hit;
+    if (!scene_.intersect(segment, hit)) return through;
+    const Material& m = scene_.material_of(hit);
+    if (!(m.transmission > 0)) return {0, 0, 0};
+    const SurfaceInfo si = scene_.surface(segment, hit);
+    if (std::find(counted.begin(), counted.begin() + n_counted, hit.object) == counted.begin() + n_counted) {
+      counted[n_counted++] = hit.object;
+      through = mul(through, m.transmission * albedo(scene_, textures_, segment, hit, si));
+      if (max_component(through) <= 0) return {0, 0, 0};
+    }
+    o = offset_ray_origin(si, segment.d);
+  }
+  return {0, 0, 0};
+}
+
+}  // namespace raycast

@@ -1,0 +1,58 @@
+#pragma once
+// Radiance along one ray: the Whitted integrator (SPEC.md "Shading (whitted)") and the simple
+// diagnostic integrators (raycast, depth, normal, id) and the albedo AOV.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "render/rng.h"
+#include "render/texture.h"
+#include "scene/scene.h"
+
+namespace raycast {
+
+/// What a render computes per sample: an integrator's colour or an arbitrary output variable.
+enum class Channel { kWhitted, kRaycast, kDepth, kNormal, kId, kAlbedo };
+
+/// The mutable state of one sample: its random numbers and its ray count (every intersect or
+/// occluded query on the scene counts one ray: primary, secondary and shadow rays alike).
+struct SampleState {
+  Rng rng;
+  std::uint64_t rays = 0;
+};
+
+/// A stable colour for a top-level object entry (the `id` integrator): a hash of the index,
+/// each channel in [0.15, 1] so that no entry is black like the background.
+Color id_color(int entry);
+
+class Integrator {
+ public:
+  /// Loads the scene's image textures (throws SceneError when one cannot be read). The scene
+  /// must outlive the integrator.
+  Integrator(const Scene& scene, Channel channel);
+
+  /// The value seen along a primary ray (unit direction for `depth` to be a distance).
+  Color li(const Ray& ray, SampleState& state) const;
+
+  /// Whitted radiance along a ray `depth` secondary bounces deep (primary rays: 0).
+  Color whitted(const Ray& ray, int depth, SampleState& state) const;
+
+  /// The fraction of light that reaches `from` (a surface point, already offset) from `to` along
+  /// the straight segment between them: 0 when an opaque object blocks it, else the product of
+  /// transmission * C over the transmissive objects on it, each object counted once. With
+  /// `to_infinity`, `to` is a direction and the segment is a half-line.
+  Color shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
+
+ private:
+  Color direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, const Material& m,
+               const Color& c, SampleState& state) const;
+  Color light_term(const Vec3& n, const Vec3& v, const Vec3& l, const Color& e, const Material& m,
+                   const Color& c) const;
+
+  const Scene& scene_;
+  Channel channel_;
+  std::vector<std::shared_ptr<const ImageTexture>> textures_;
+  bool any_transmissive_ = false;
+};
+
+}  // namespace raycast

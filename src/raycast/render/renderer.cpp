@@ -1,0 +1,159 @@
+#include "render/renderer.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <stdexcept>
+
+#include "render/camera.h"
+#include "render/integrator.h"
+
+namespace raycast {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+Channel channel_for(const Scene& scene, const RenderOptions& options) {
+  if (options.aov) {
+    switch (*options.aov) {
+      case Aov::kDepth: return Channel::kDepth;
+      case Aov::kNormal: return Channel::kNormal;
+      case Aov::kId: return Channel::kId;
+      case Aov::kAlbedo: return Channel::kAlbedo;
+    }
+  }
+  switch (options.integrator.value_or(scene.render.integrator)) {
+    case IntegratorType::kWhitted: return Channel::kWhitted;
+    case IntegratorType::kRaycast: return Channel::kRaycast;
+    case IntegratorType::kDepth: return Channel::kDepth;
+    case IntegratorType::kNormal: return Channel::kNormal;
+    case IntegratorType::kId: return Channel::kId;
+  }
+  return Channel::kWhitted;
+}
+
+/// A one-line bar on stderr, redrawn when the percentage changes; silent unless enabled.
+class Progress {
+ public:
+  Progress(bool enabled, std::size_t total) : enabled_(enabled), total_(total) {}
+  void advance() {
+    const std::size_t done = ++done_;
+    if (!enabled_) return;
+    const int percent = int(100 * done / total_);
+    std::unique_lock lock(mutex_, std::try_to_lock);
+    if (!lock || percent == shown_) return;
+    shown_ = percent;
+    char bar[41];
+    for (int i = 0; i < 40; ++i) bar[i] = i < percent * 40 / 100 ? '#' : '.';
+    bar[40] = 0;
+    std::fprintf(stderr, "\rrendering [%s] %3d%%", bar, percent);
+    std::fflush(stderr);
+  }
+  void finish() {
+    if (!enabled_) return;
+    std::fprintf(stderr, "\r%60s\r", "");
+    std::fflush(stderr);
+  }
+
+ private:
+  bool enabled_;
+  std::size_t total_;
+  std::atomic<std::size_t> done_{0};
+  std::mutex mutex_;
+  int shown_ = -1;
+};
+
+}  // namespace
+
+void sample_offset(int k, int n, double jitter_x, double jitter_y, double& x, double& y) {
+  if (n <= 1) {
+    x = y = 0.5;
+    return;
+  }
+  int sx = 1;
+  for (int d = 1; d * d <= n; ++d)
+    if (n % d == 0) sx = d;
+  const int sy = n / sx;
+  x = ((k % sx) + jitter_x) / sx;
+  y = ((k / sx) + jitter_y) / sy;
+}
+
+Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  if (options.width < 0 || options.height < 0 || options.spp < 0 || options.threads < 0)
+    throw std::invalid_argument("render: width, height, spp and threads must not be negative");
+  const int width = options.width > 0 ? options.width : scene.image.width;
+  const int height = options.height > 0 ? options.height : scene.image.height;
+  const int spp = options.spp > 0 ? options.spp : scene.image.samples;
+  if (width <= 0 || height <= 0 || spp <= 0)
+    throw std::invalid_argument("render: image width, height and samples must be positive");
+
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+
+  const Camera camera(camera_or_default(scene), width, height);
+  const Integrator integrator(scene, channel_for(scene, options));
+  const unsigned seed = scene.render.seed;
+  Image image(width, height);
+  tbb::enumerable_thread_specific<std::uint64_t> rays(0);
+  const int tiles_x = (width + kTileSize - 1) / kTileSize;
+  const int tiles_y = (height + kTileSize - 1) / kTileSize;
+  Progress progress(options.progress && isatty(STDERR_FILENO), std::size_t(tiles_x) * tiles_y);
+
+  const auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1), [&](const auto& range) {
+    std::uint64_t& counter = rays.local();
+    for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
+      for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+        const int y1 = std::min(height, (ty + 1) * kTileSize);
+        const int x1 = std::min(width, (tx + 1) * kTileSize);
+        for (int y = ty * kTileSize; y < y1; ++y) {
+          for (int x = tx * kTileSize; x < x1; ++x) {
+            SampleState state{Rng::for_pixel(x, y, seed), 0};
+            Color sum{0, 0, 0};
+            for (int k = 0; k < spp; ++k) {
+              double ox, oy;
+              const double jx = spp > 1 ? state.rng.uniform() : 0.5;
+              const double jy = spp > 1 ? state.rng.uniform() : 0.5;
+              sample_offset(k, spp, jx, jy, ox, oy);
+              sum += integrator.li(camera.ray(x + ox, y + oy), state);
+            }
+            image.set(x, y, Vec3f(sum / double(spp)));
+            counter += state.rays;
+          }
+        }
+        progress.advance();
+      }
+    }
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
+
+  if (stats) {
+    stats->width = width;
+    stats->height = height;
+    stats->spp = spp;
+    stats->threads = int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    stats->seconds = seconds;
+    stats->rays = rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+  }
+  return image;
+}
+
+std::string format_summary(const RenderStats& s) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%dx%d, %d spp, %d threads: %.3f s, %llu rays, %.2f Mrays/s",
+                s.width, s.height, s.spp, s.threads, s.seconds, static_cast<unsigned long long>(s.rays),
+                s.mrays_per_second());
+  return line;
+}
+
+}  // namespace raycast

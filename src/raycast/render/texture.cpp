@@ -1,0 +1,76 @@
+#include "render/texture.h"
+
+#include <cmath>
+
+#include "scene/scene_error.h"
+
+namespace raycast {
+
+std::shared_ptr<const ImageTexture> load_image_texture(const std::string& path) {
+  auto texture = std::make_shared<ImageTexture>();
+  switch (image_format_for(path)) {
+    case ImageFormat::kPng: texture->image = load_png(path); break;
+    case ImageFormat::kPfm: texture->image = load_pfm(path); break;
+    case ImageFormat::kExr: throw ImageError(path + ": image textures must be .png or .pfm");
+  }
+  return texture;
+}
+
+Color lookup(const ImageTexture& texture, double u, double v) {
+  const Image& im = texture.image;
+  if (im.width <= 0 || im.height <= 0) return {0, 0, 0};
+  if (!std::isfinite(u) || !std::isfinite(v)) return Vec3(im.at(0, 0));
+  // Continuous texel coordinates with texel centres at half-integers, rows from the top.
+  const double x = (u - std::floor(u)) * im.width - 0.5;
+  const double y = (1 - (v - std::floor(v))) * im.height - 0.5;
+  const double x0 = std::floor(x), y0 = std::floor(y);
+  const double fx = x - x0, fy = y - y0;
+  auto wrap = [](double i, int n) {
+    const long long k = static_cast<long long>(i) % n;
+    return static_cast<int>(k < 0 ? k + n : k);
+  };
+  const int xa = wrap(x0, im.width), xb = wrap(x0 + 1, im.width);
+  const int ya = wrap(y0, im.height), yb = wrap(y0 + 1, im.height);
+  const Vec3 top = (1 - fx) * Vec3(im.at(xa, ya)) + fx * Vec3(im.at(xb, ya));
+  const Vec3 bottom = (1 - fx) * Vec3(im.at(xa, yb)) + fx * Vec3(im.at(xb, yb));
+  return (1 - fy) * top + fy * bottom;
+}
+
+Color checker(const CheckerTexture& texture, const Vec3& p) {
+  const double s = texture.scale;
+  const double sum = std::floor(p.x / s) + std::floor(p.y / s) + std::floor(p.z / s);
+  if (!std::isfinite(sum)) return texture.c0;
+  return std::fmod(std::abs(sum), 2.0) == 0 ? texture.c0 : texture.c1;
+}
+
+std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scene) {
+  std::vector<std::shared_ptr<const ImageTexture>> textures(scene.materials.size());
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    if (m.image) {
+      textures[i] = m.image;
+    } else if (!m.image_file.empty()) {
+      try {
+        textures[i] = load_image_texture(m.image_file);
+      } catch (const ImageError& e) {
+        throw SceneError(scene.source, 0, 0, "material '" + m.name + "' texture: " + e.what());
+      }
+    }
+  }
+  return textures;
+}
+
+Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
+             const Ray& ray, const SceneHit& hit, const SurfaceInfo& si) {
+  const Object& object = scene.objects[hit.object];
+  const int index = object.material >= 0 ? object.material : 0;
+  const Material& m = scene.materials[index];
+  if (m.has_checker) {
+    // The object-space point from the object-space ray, as the shape itself computed it.
+    return checker(m.checker, to_object_space(object, ray).at(hit.local.t));
+  }
+  if (std::size_t(index) < textures.size() && textures[index]) return lookup(*textures[index], si.u, si.v);
+  return m.color;
+}
+
+}  // namespace raycast

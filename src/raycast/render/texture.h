@@ -1,0 +1,37 @@
+#pragma once
+// Surface colours: the material's colour, a checkerboard in object space, or an image through
+// (u, v) (SPEC.md "Materials").
+#include <memory>
+#include <vector>
+
+#include "io/image.h"
+#include "scene/scene.h"
+
+namespace raycast {
+
+/// An image texture in linear RGB (PNG files are decoded from sRGB).
+struct ImageTexture {
+  Image image;
+};
+
+/// Loads an image texture from a .png or .pfm file; throws ImageError.
+std::shared_ptr<const ImageTexture> load_image_texture(const std::string& path);
+
+/// The texture colour at (u, v): u to the right, v up (v = 0 is the image's bottom row), repeated
+/// outside [0, 1), bilinear between texel centres.
+Color lookup(const ImageTexture& texture, double u, double v);
+
+/// c0 where floor(x/s) + floor(y/s) + floor(z/s) is even, c1 where it is odd; p in object space.
+Color checker(const CheckerTexture& texture, const Vec3& p);
+
+/// Every material's image texture (nullptr where it has none), by material index: the one already
+/// attached to the material, else loaded from its `image_file`. Throws SceneError naming the
+/// scene when a file cannot be read.
+std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scene);
+
+/// The albedo C of a hit: its material's checker (at the object-space hit point), image texture
+/// (at the surface's (u, v)) or colour. `ray` is the world ray that made the hit.
+Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
+             const Ray& ray, const SceneHit& hit, const SurfaceInfo& si);
+
+}  // namespace raycast
