@@ -16,5 +16,12 @@ const std::map<std::string, ShapeParser>& shape_parsers();
 
 ShapeVariant parse_plane(Fields& f);
 ShapeVariant parse_sphere(Fields& f);
+ShapeVariant parse_ellipsoid(Fields& f);
+ShapeVariant parse_quadric(Fields& f);
+ShapeVariant parse_cylinder(Fields& f);
+ShapeVariant parse_cone(Fields& f);
+ShapeVariant parse_polygon(Fields& f);
+ShapeVariant parse_slab(Fields& f);
+ShapeVariant parse_polyhedron(Fields& f);
 
 }  // namespace raycast

@@ -6,6 +6,13 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
   static const std::map<std::string, ShapeParser> table = {
       {"plane", parse_plane},
       {"sphere", parse_sphere},
+      {"ellipsoid", parse_ellipsoid},
+      {"quadric", parse_quadric},
+      {"cylinder", parse_cylinder},
+      {"cone", parse_cone},
+      {"polygon", parse_polygon},
+      {"slab", parse_slab},
+      {"polyhedron", parse_polyhedron},
   };
   return table;
 }
