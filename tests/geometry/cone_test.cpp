@@ -94,7 +94,8 @@ TEST(Cone, TMinTMax_AreClosedAtBothEnds) {
 
 TEST(Cone, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
   for (int variant = 0; variant < 2; ++variant) {
-    const Cone c = variant == 0 ? make_cone(0.9, 1.6) : make_cone({0.2, -0.3, -0.6}, {-0.1, 0.4, 0.9}, 0.8, 0.3);
+    const Cone c = variant == 0 ? make_cone(0.9, 1.6)
+                                : make_cone({0.2, -0.3, -0.6}, {-0.1, 0.4, 0.9}, 0.8, 0.3);
     auto inside = [&](const Vec3& p) { return contains(c, p); };
     Rng rng(53 + variant);
     int hits = 0;
@@ -127,7 +128,8 @@ TEST(Cone, RandomRays_SideRootsMatchLongDouble) {
     // Newton's method in long double from the returned t converges to the nearby root.
     const long double k = -0.9L / 1.6L;
     auto g = [&](long double t) {
-      const long double x = ray.o.x + t * ray.d.x, y = ray.o.y + t * ray.d.y, z = ray.o.z + t * ray.d.z;
+      const long double x = ray.o.x + t * ray.d.x, y = ray.o.y + t * ray.d.y,
+                        z = ray.o.z + t * ray.d.z;
       const long double r = 0.9L + k * z;
       return x * x + y * y - r * r;
     };

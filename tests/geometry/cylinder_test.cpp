@@ -150,7 +150,8 @@ TEST(Cylinder, RandomRays_PartialCrossingsAreTheClosedOnesOnTheKeptPart) {
         if (phi <= phi_max && (expect.empty() || expect.back() != h.t)) expect.push_back(h.t);
       }
     ASSERT_EQ(sp.size(), expect.size());
-    for (std::size_t k = 0; k < expect.size(); ++k) EXPECT_NEAR(sp[k].in.t, expect[k], 1e-12 * (1 + std::abs(expect[k])));
+    for (std::size_t k = 0; k < expect.size(); ++k)
+      EXPECT_NEAR(sp[k].in.t, expect[k], 1e-12 * (1 + std::abs(expect[k])));
   skip:;
   }
 }

@@ -28,11 +28,12 @@ Mat4 to_matrix(const QuadricCoefficients& c) {
 
 // f in long double, written out term by term (independent of quadric_value's nesting).
 long double f_ld(const QuadricCoefficients& c, long double x, long double y, long double z) {
-  return c[0] * x * x + c[1] * y * y + c[2] * z * z + c[3] * x * y + c[4] * x * z + c[5] * y * z + c[6] * x +
-         c[7] * y + c[8] * z + c[9];
+  return c[0] * x * x + c[1] * y * y + c[2] * z * z + c[3] * x * y + c[4] * x * z + c[5] * y * z +
+         c[6] * x + c[7] * y + c[8] * z + c[9];
 }
 long double f_ld(const QuadricCoefficients& c, const Ray& r, long double t) {
-  return f_ld(c, r.o.x + t * (long double)r.d.x, r.o.y + t * (long double)r.d.y, r.o.z + t * (long double)r.d.z);
+  return f_ld(c, r.o.x + t * (long double)r.d.x, r.o.y + t * (long double)r.d.y,
+              r.o.z + t * (long double)r.d.z);
 }
 
 // The well-conditioned real roots of f along the ray in long double: the line's polynomial from
@@ -97,11 +98,15 @@ TEST(Quadric, KindCoefficients_AreTheSpecFormulas) {
   const auto c = quadric_of_kind(QuadricKind::kParaboloid, 2, 4, 0.5);
   EXPECT_DOUBLE_EQ(quadric_value(c, {1, 2, 3}), -5.5);
   // hyperboloid2 at (1, 2, 3): 1/4 + 4/16 - 9/0.25 + 1 = -34.5
-  EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kHyperboloid2, 2, 4, 0.5), {1, 2, 3}), -34.5);
-  EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kHyperboloid1, 2, 4, 0.5), {1, 2, 3}), -36.5);
+  EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kHyperboloid2, 2, 4, 0.5), {1, 2, 3}),
+                   -34.5);
+  EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kHyperboloid1, 2, 4, 0.5), {1, 2, 3}),
+                   -36.5);
   EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kCone, 2, 4, 0.5), {1, 2, 3}), -35.5);
-  EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kCylinder, 2, 4, 0.5), {1, 2, 3}), -0.5);
-  EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kEllipsoid, 2, 4, 0.5), {1, 2, 3}), 35.5);
+  EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kCylinder, 2, 4, 0.5), {1, 2, 3}),
+                   -0.5);
+  EXPECT_DOUBLE_EQ(quadric_value(quadric_of_kind(QuadricKind::kEllipsoid, 2, 4, 0.5), {1, 2, 3}),
+                   35.5);
 }
 
 TEST(Quadric, TransformedCoefficients_MatchTheTransformedObject) {
@@ -159,13 +164,15 @@ TEST(Quadric, RandomRays_SpansMatchInsideOracle) {
   const Aabb box{{-1.5, -1, -2}, {1, 2, 1.5}};
   for (QuadricKind k : kAllKinds) {
     for (int bounded = 0; bounded < 2; ++bounded) {
-      const Quadric q = bounded ? make_quadric(kind_coefficients(k), box) : make_quadric(kind_coefficients(k));
+      const Quadric q =
+          bounded ? make_quadric(kind_coefficients(k), box) : make_quadric(kind_coefficients(k));
       auto inside = [&](const Vec3& p) { return contains(q, p); };
       Rng rng(101);
       for (int i = 0; i < 300; ++i) {
         const Ray ray = qtest::random_ray(rng, 2);
         SCOPED_TRACE(qtest::describe(ray));
-        ASSERT_EQ(qtest::span_mismatches(q, ray, inside, -10, 10), 0) << "kind " << int(k) << " bounded " << bounded;
+        ASSERT_EQ(qtest::span_mismatches(q, ray, inside, -10, 10), 0)
+            << "kind " << int(k) << " bounded " << bounded;
         LocalHit h;
         const bool hit = intersect(q, ray, h);
         const double first = qtest::first_span_end(q, ray);
@@ -287,7 +294,8 @@ TEST(Quadric, CylinderKindRayAlongTheAxisInside_IsInsideEverywhere) {
 }
 
 TEST(Quadric, BoundedHemisphere_IsClosedByTheBoxFace) {
-  const Quadric q = make_quadric(quadric_of_kind(QuadricKind::kEllipsoid, 1, 1, 1), Aabb{{-2, -2, 0}, {2, 2, 2}});
+  const Quadric q =
+      make_quadric(quadric_of_kind(QuadricKind::kEllipsoid, 1, 1, 1), Aabb{{-2, -2, 0}, {2, 2, 2}});
   const Ray up{{0.5, 0, -5}, {0, 0, 1}};
   LocalHit h;
   ASSERT_TRUE(intersect(q, up, h));
@@ -305,8 +313,8 @@ TEST(Quadric, BoundedHemisphere_IsClosedByTheBoxFace) {
 }
 
 TEST(Quadric, OpenBoundedHemisphere_IsSeenFromInside) {
-  const Quadric q =
-      make_quadric(quadric_of_kind(QuadricKind::kEllipsoid, 1, 1, 1), Aabb{{-2, -2, 0}, {2, 2, 2}}, true);
+  const Quadric q = make_quadric(quadric_of_kind(QuadricKind::kEllipsoid, 1, 1, 1),
+                                 Aabb{{-2, -2, 0}, {2, 2, 2}}, true);
   EXPECT_FALSE(is_closed(q));
   const Ray up{{0.5, 0, -5}, {0, 0, 1}};
   LocalHit h;
@@ -356,8 +364,10 @@ TEST(Quadric, MakeQuadric_RejectsBadInput) {
   QuadricCoefficients nan = quadric_of_kind(QuadricKind::kCone, 1, 1, 1);
   nan[2] = std::nan("");
   EXPECT_THROW(make_quadric(nan), std::invalid_argument);
-  EXPECT_THROW(make_quadric({1, 1, 1, 0, 0, 0, 0, 0, 0, 1}), std::invalid_argument);  // empty inside
-  EXPECT_THROW(make_quadric(kind_coefficients(QuadricKind::kCone), Aabb{{0, 0, 0}, {1, 0, 1}}), std::invalid_argument);
+  EXPECT_THROW(make_quadric({1, 1, 1, 0, 0, 0, 0, 0, 0, 1}),
+               std::invalid_argument);  // empty inside
+  EXPECT_THROW(make_quadric(kind_coefficients(QuadricKind::kCone), Aabb{{0, 0, 0}, {1, 0, 1}}),
+               std::invalid_argument);
   EXPECT_THROW(make_quadric(kind_coefficients(QuadricKind::kEllipsoid), Aabb{{5, 5, 5}, {6, 6, 6}}),
                std::invalid_argument);  // the box misses the ellipsoid
   Mat4 m = to_matrix(kind_coefficients(QuadricKind::kCone));

@@ -41,8 +41,8 @@ inline Ray random_ray(Rng& r, double h, const Vec3& centre = {}) {
 inline std::string describe(const Ray& ray) {
   std::ostringstream s;
   s.precision(17);
-  s << "ray o=(" << ray.o.x << ", " << ray.o.y << ", " << ray.o.z << ") d=(" << ray.d.x << ", " << ray.d.y
-    << ", " << ray.d.z << ") tmin=" << ray.tmin << " tmax=" << ray.tmax;
+  s << "ray o=(" << ray.o.x << ", " << ray.o.y << ", " << ray.o.z << ") d=(" << ray.d.x << ", "
+    << ray.d.y << ", " << ray.d.z << ") tmin=" << ray.tmin << " tmax=" << ray.tmax;
   return s.str();
 }
 
@@ -50,7 +50,8 @@ inline std::string describe(const Ray& ray) {
 /// guard of 1e-7 relative) is inside the oracle exactly when it lies in a span. Returns the
 /// number of samples that disagree.
 template <class S, class Inside>
-int span_mismatches(const S& s, const Ray& ray, Inside inside, double t_lo, double t_hi, int samples = 200) {
+int span_mismatches(const S& s, const Ray& ray, Inside inside, double t_lo, double t_hi,
+                    int samples = 200) {
   SpanList sl;
   spans(s, ray, sl);
   int bad = 0;
@@ -73,7 +74,8 @@ int span_mismatches(const S& s, const Ray& ray, Inside inside, double t_lo, doub
 
 /// The hit's normal is unit, and a step of h along it leaves the solid while a step back enters.
 template <class S, class Inside>
-void expect_outward_normal(const S& s, const Ray& ray, const LocalHit& hit, Inside inside, double h) {
+void expect_outward_normal(const S& s, const Ray& ray, const LocalHit& hit, Inside inside,
+                           double h) {
   const SurfaceInfo si = surface(s, ray, hit);
   EXPECT_NEAR(length(si.n), 1.0, 1e-12);
   EXPECT_FALSE(inside(si.p + h * si.n)) << "part " << hit.part;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace raycast {
 
@@ -56,11 +57,16 @@ Polygon make_polygon(const std::vector<Vec3>& v) {
   for (const Vec3& q : v) centroid += q;
   centroid /= static_cast<double>(n);
   p.offset = dot(p.n, centroid);
-  for (std::size_t i = 0; i < n; ++i)
-    if (std::abs(dot(p.n, v[i] - centroid)) > kPolygonPlanarity * size)
-      throw std::invalid_argument(
-          "vertices[" + std::to_string(i) + "] is off the polygon's plane by " +
-          std::to_string(std::abs(dot(p.n, v[i] - centroid))) + " (not planar)");
+  std::size_t worst = 0;
+  double worst_off = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double off = std::abs(dot(p.n, v[i] - centroid));
+    if (off > worst_off) worst = i, worst_off = off;
+  }
+  if (worst_off > kPolygonPlanarity * size)
+    throw std::invalid_argument("vertices[" + std::to_string(worst) +
+                                "] is off the polygon's plane by " + std::to_string(worst_off) +
+                                " (the polygon must be planar)");
   const int drop = max_dimension(abs(p.n));
   p.axis_u = (drop + 1) % 3;
   p.axis_v = (drop + 2) % 3;
@@ -97,12 +103,17 @@ bool polygon_contains_projected(const Polygon& p, const Vec3& q) {
   const std::size_t n = p.vertices.size();
   bool inside = false;
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    const double ui = p.vertices[i][p.axis_u], vi = p.vertices[i][p.axis_v];
-    const double uj = p.vertices[j][p.axis_u], vj = p.vertices[j][p.axis_v];
-    if ((vi > qv) != (vj > qv)) {
-      const double u_cross = ui + (qv - vi) * (uj - ui) / (vj - vi);
-      if (qu < u_cross) inside = !inside;
+    double ua = p.vertices[i][p.axis_u], va = p.vertices[i][p.axis_v];
+    double ub = p.vertices[j][p.axis_u], vb = p.vertices[j][p.axis_v];
+    if ((va > qv) == (vb > qv)) continue;
+    // The same edge in two polygons runs in opposite directions: order its ends (lower v first)
+    // so both compute the same crossing bit for bit, and a point on it belongs to exactly one.
+    if (va > vb) {
+      std::swap(ua, ub);
+      std::swap(va, vb);
     }
+    const double u_cross = ua + (qv - va) * (ub - ua) / (vb - va);
+    if (qu < u_cross) inside = !inside;
   }
   return inside;
 }
