@@ -87,15 +87,17 @@ TEST(Polygon, ConcaveStar_RandomRaysMatchTheWindingNumber) {
 }
 
 TEST(Polygon, PointOnASharedEdge_BelongsToExactlyOneOfTwoPolygons) {
-  // A quad split along its diagonal; points exactly on the diagonal and on vertices.
-  const Polygon a = make_polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
-  const Polygon b = make_polygon({{0, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  // A quad split along a skew diagonal; rays aimed at points on (rounded next to) the diagonal.
+  const Vec3 a{0.1, 0.05, 0}, b{1, 0.1, 0}, c{0.93, 1.37, 0}, d{-0.2, 0.8, 0};
+  const Polygon left = make_polygon({a, b, c});
+  const Polygon right = make_polygon({a, c, d});
+  Rng rng(19);
   int doubles = 0, holes = 0;
-  for (int i = 1; i < 64; ++i) {
-    const double s = i / 64.0;
-    const Ray ray{{s, s, 1}, {0, 0, -1}};
+  for (int i = 0; i < 5000; ++i) {
+    const Vec3 q = a + rng.uniform(0.01, 0.99) * (c - a);
+    const Ray ray{{q.x, q.y, 1}, {0, 0, -1}};
     LocalHit h;
-    const int count = intersect(a, ray, h) + intersect(b, ray, h);
+    const int count = intersect(left, ray, h) + intersect(right, ray, h);
     doubles += count == 2;
     holes += count == 0;
   }
