@@ -67,8 +67,13 @@ int solid_intervals(const Frustum& f, const Ray& r, LineInterval iv[2]) {
   return k;
 }
 
+// Whether atan2(y, x) in [0, 2 pi) is <= phi_max, by half-plane tests instead of atan2: with
+// c = (cos phi_max, sin phi_max), cross(c, p) = |p| sin(phi - phi_max).
 bool in_phi(const Frustum& f, double x, double y) {
-  return f.phi_max >= kTwoPi || phi_of(x, y) <= f.phi_max;
+  if (f.phi_max >= kTwoPi) return true;
+  const double cr = f.cos_phi_max * y - f.sin_phi_max * x;
+  if (f.phi_max <= std::numbers::pi) return (y > 0 || (y == 0 && x >= 0)) && cr <= 0;
+  return !(y < 0 && cr > 0);
 }
 
 // Open surface: every crossing of the kept side and caps, sorted by t (at most 4).
@@ -128,6 +133,8 @@ Frustum make_frustum(double z0, double z1, double r0, double r1, double phi_max_
   f.r1 = r1;
   f.k = (r1 - r0) / (z1 - z0);
   f.phi_max = phi_max_degrees >= 360 ? kTwoPi : phi_max_degrees * std::numbers::pi / 180;
+  f.cos_phi_max = std::cos(f.phi_max);
+  f.sin_phi_max = std::sin(f.phi_max);
   f.capped = capped;
   return f;
 }

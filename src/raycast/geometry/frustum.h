@@ -8,10 +8,11 @@
 namespace raycast {
 
 struct Frustum {
-  double z0 = 0, z1 = 1;  // z range, z0 < z1
-  double r0 = 1, r1 = 1;  // radii at z0 and z1 (>= 0, not both 0)
-  double k = 0;           // (r1 - r0) / (z1 - z0)
-  double phi_max = 0;     // radians in (0, 2 pi]
+  double z0 = 0, z1 = 1;                    // z range, z0 < z1
+  double r0 = 1, r1 = 1;                    // radii at z0 and z1 (>= 0, not both 0)
+  double k = 0;                             // (r1 - r0) / (z1 - z0)
+  double phi_max = 0;                       // radians in (0, 2 pi]
+  double cos_phi_max = 1, sin_phi_max = 0;  // for the angle test without atan2
   bool capped = true;
   // Local frame: p_local = (ex . (p - origin), ey . (p - origin), ez . (p - origin)).
   bool has_frame = false;
