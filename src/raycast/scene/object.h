@@ -6,7 +6,14 @@
 #include <variant>
 
 #include "geometry/basic_shapes.h"
+#include "geometry/cone.h"
+#include "geometry/cylinder.h"
+#include "geometry/ellipsoid.h"
 #include "geometry/plane.h"
+#include "geometry/polygon.h"
+#include "geometry/polyhedron.h"
+#include "geometry/quadric.h"
+#include "geometry/slab.h"
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
 #include "math/transform.h"
@@ -15,7 +22,7 @@ namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk>;
+using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron>;
 
 struct Object {
   ShapeVariant shape;

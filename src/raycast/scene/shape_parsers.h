@@ -20,5 +20,12 @@ ShapeVariant parse_box(Fields& f);
 ShapeVariant parse_triangle(Fields& f);
 ShapeVariant parse_parallelogram(Fields& f);
 ShapeVariant parse_disk(Fields& f);
+ShapeVariant parse_ellipsoid(Fields& f);
+ShapeVariant parse_quadric(Fields& f);
+ShapeVariant parse_cylinder(Fields& f);
+ShapeVariant parse_cone(Fields& f);
+ShapeVariant parse_polygon(Fields& f);
+ShapeVariant parse_slab(Fields& f);
+ShapeVariant parse_polyhedron(Fields& f);
 
 }  // namespace raycast

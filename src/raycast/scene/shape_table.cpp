@@ -7,6 +7,13 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
       {"plane", parse_plane},
       {"sphere", parse_sphere},
       {"box", parse_box}, {"triangle", parse_triangle}, {"parallelogram", parse_parallelogram}, {"disk", parse_disk},
+      {"ellipsoid", parse_ellipsoid},
+      {"quadric", parse_quadric},
+      {"cylinder", parse_cylinder},
+      {"cone", parse_cone},
+      {"polygon", parse_polygon},
+      {"slab", parse_slab},
+      {"polyhedron", parse_polyhedron},
   };
   return table;
 }
