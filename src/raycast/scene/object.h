@@ -8,13 +8,14 @@
 #include "geometry/plane.h"
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
+#include "geometry/torus.h"
 #include "math/transform.h"
 
 namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere>;
+using ShapeVariant = std::variant<Plane, Sphere, Torus>;
 
 struct Object {
   ShapeVariant shape;
