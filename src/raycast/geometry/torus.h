@@ -11,7 +11,7 @@ namespace raycast {
 /// phi = atan2(y, x) around z and theta = atan2(z, rho - R) around the tube, both in [0, 2 pi).
 struct Torus {
   static constexpr const char* kName = "torus";
-  double major_radius = 1;  // R
+  double major_radius = 1;     // R
   double minor_radius = 0.25;  // r
 };
 

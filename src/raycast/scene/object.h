@@ -5,6 +5,7 @@
 #include <string>
 #include <variant>
 
+#include "geometry/algebraic.h"
 #include "geometry/plane.h"
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
@@ -15,7 +16,7 @@ namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere, Torus>;
+using ShapeVariant = std::variant<Plane, Sphere, Torus, Algebraic>;
 
 struct Object {
   ShapeVariant shape;

@@ -17,5 +17,6 @@ const std::map<std::string, ShapeParser>& shape_parsers();
 ShapeVariant parse_plane(Fields& f);
 ShapeVariant parse_sphere(Fields& f);
 ShapeVariant parse_torus(Fields& f);
+ShapeVariant parse_algebraic(Fields& f);
 
 }  // namespace raycast

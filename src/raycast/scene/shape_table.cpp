@@ -7,6 +7,7 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
       {"plane", parse_plane},
       {"sphere", parse_sphere},
       {"torus", parse_torus},
+      {"algebraic", parse_algebraic},
   };
   return table;
 }
