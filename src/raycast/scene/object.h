@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "geometry/algebraic.h"
+#include "geometry/implicit.h"
 #include "geometry/plane.h"
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
@@ -16,7 +17,7 @@ namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere, Torus, Algebraic>;
+using ShapeVariant = std::variant<Plane, Sphere, Torus, Algebraic, Implicit>;
 
 struct Object {
   ShapeVariant shape;

@@ -58,4 +58,12 @@ ShapeVariant parse_algebraic(Fields& f) {
   });
 }
 
+ShapeVariant parse_implicit(Fields& f) {
+  const Aabb box = read_bounds(f);
+  const bool open = f.boolean("open", false);
+  return with_formula(f, "function", [&](const std::string& text) -> ShapeVariant {
+    return make_implicit(text, box, open);
+  });
+}
+
 }  // namespace raycast

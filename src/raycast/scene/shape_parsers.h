@@ -18,5 +18,6 @@ ShapeVariant parse_plane(Fields& f);
 ShapeVariant parse_sphere(Fields& f);
 ShapeVariant parse_torus(Fields& f);
 ShapeVariant parse_algebraic(Fields& f);
+ShapeVariant parse_implicit(Fields& f);
 
 }  // namespace raycast

@@ -8,6 +8,7 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
       {"sphere", parse_sphere},
       {"torus", parse_torus},
       {"algebraic", parse_algebraic},
+      {"implicit", parse_implicit},
   };
   return table;
 }
