@@ -48,6 +48,20 @@ TEST(AlgebraicParse, EquationErrors_PlainAndQuotedColumns) {
       3, 17 + 1 + 6, "expected ')'");
 }
 
+TEST(AlgebraicParse, ImplicitFunctionErrors_Positioned) {
+  expect_error_at(
+      "objects:\n"
+      "  - implicit:\n"
+      "      function: sin(x) + cosh(y)\n"
+      "      bounds: {min: [-1, -1, -1], max: [1, 1, 1]}\n",
+      3, 17 + 9, "unknown name 'cosh'");
+  const Scene s = load_scene_text(
+      "objects:\n"
+      "  - implicit: {function: \"x^2 + y^2 + z^2 - 1\", bounds: {min: [-1, -1, -1], max: [1, 1, "
+      "1]}}\n");
+  EXPECT_EQ(s.objects.size(), 1u);
+}
+
 TEST(AlgebraicParse, FieldErrors_Positioned) {
   expect_error_at("objects:\n  - algebraic: {equation: x^2 - 1}\n", 2, 16, "bounds is required");
   expect_error_at(

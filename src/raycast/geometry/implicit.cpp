@@ -156,8 +156,8 @@ void spans(const Implicit& s, const Ray& ray, SpanList& out) {
   if (!box_chord(s.box, ray, c)) return;
   double roots[kMaxImplicitRoots], errors[kMaxImplicitRoots] = {};
   const int n = find_roots(s, ray, c.t0, c.t1, false, roots, kMaxImplicitRoots);
-  chord_spans(c, roots, errors, n, !s.open, [&](double t) { return negative(f_at(s, ray, t)); },
-              out);
+  chord_spans(
+      c, roots, errors, n, !s.open, [&](double t) { return negative(f_at(s, ray, t)); }, out);
 }
 
 SurfaceInfo surface(const Implicit& s, const Ray& ray, const LocalHit& hit) {

@@ -128,9 +128,13 @@ Dual<T, N> pow(const Dual<T, N>& a, const Dual<T, N>& b) {
 // min and max pick the smaller (larger) operand with its derivatives; over intervals, where the
 // operands overlap, the hull of both.
 template <int N>
-Dual<double, N> min(const Dual<double, N>& a, const Dual<double, N>& b) { return b.v < a.v ? b : a; }
+Dual<double, N> min(const Dual<double, N>& a, const Dual<double, N>& b) {
+  return b.v < a.v ? b : a;
+}
 template <int N>
-Dual<double, N> max(const Dual<double, N>& a, const Dual<double, N>& b) { return b.v > a.v ? b : a; }
+Dual<double, N> max(const Dual<double, N>& a, const Dual<double, N>& b) {
+  return b.v > a.v ? b : a;
+}
 template <int N>
 Dual<Interval, N> min(const Dual<Interval, N>& a, const Dual<Interval, N>& b) {
   if (a.v.hi <= b.v.lo) return a;

@@ -35,9 +35,15 @@ class Compiler {
       return;
     }
     switch (n.op) {
-      case ExprOp::kX: push({Opcode::kX, 0, 0}, depth); return;
-      case ExprOp::kY: push({Opcode::kY, 0, 0}, depth); return;
-      case ExprOp::kZ: push({Opcode::kZ, 0, 0}, depth); return;
+      case ExprOp::kX:
+        push({Opcode::kX, 0, 0}, depth);
+        return;
+      case ExprOp::kY:
+        push({Opcode::kY, 0, 0}, depth);
+        return;
+      case ExprOp::kZ:
+        push({Opcode::kZ, 0, 0}, depth);
+        return;
       case ExprOp::kPow:
         if (is_constant(e_, n.b)) {
           const double p = constant(n.b);
@@ -48,7 +54,8 @@ class Compiler {
           }
         }
         break;
-      default: break;
+      default:
+        break;
     }
     emit(n.a, depth);
     if (n.b >= 0) emit(n.b, depth + 1);
@@ -80,25 +87,44 @@ class Compiler {
 
   static Opcode opcode(ExprOp op) {
     switch (op) {
-      case ExprOp::kConst: return Opcode::kConst;
-      case ExprOp::kX: return Opcode::kX;
-      case ExprOp::kY: return Opcode::kY;
-      case ExprOp::kZ: return Opcode::kZ;
-      case ExprOp::kAdd: return Opcode::kAdd;
-      case ExprOp::kSub: return Opcode::kSub;
-      case ExprOp::kMul: return Opcode::kMul;
-      case ExprOp::kDiv: return Opcode::kDiv;
-      case ExprOp::kPow: return Opcode::kPow;
-      case ExprOp::kMin: return Opcode::kMin;
-      case ExprOp::kMax: return Opcode::kMax;
-      case ExprOp::kNeg: return Opcode::kNeg;
-      case ExprOp::kSqrt: return Opcode::kSqrt;
-      case ExprOp::kExp: return Opcode::kExp;
-      case ExprOp::kLog: return Opcode::kLog;
-      case ExprOp::kSin: return Opcode::kSin;
-      case ExprOp::kCos: return Opcode::kCos;
-      case ExprOp::kTan: return Opcode::kTan;
-      case ExprOp::kAbs: return Opcode::kAbs;
+      case ExprOp::kConst:
+        return Opcode::kConst;
+      case ExprOp::kX:
+        return Opcode::kX;
+      case ExprOp::kY:
+        return Opcode::kY;
+      case ExprOp::kZ:
+        return Opcode::kZ;
+      case ExprOp::kAdd:
+        return Opcode::kAdd;
+      case ExprOp::kSub:
+        return Opcode::kSub;
+      case ExprOp::kMul:
+        return Opcode::kMul;
+      case ExprOp::kDiv:
+        return Opcode::kDiv;
+      case ExprOp::kPow:
+        return Opcode::kPow;
+      case ExprOp::kMin:
+        return Opcode::kMin;
+      case ExprOp::kMax:
+        return Opcode::kMax;
+      case ExprOp::kNeg:
+        return Opcode::kNeg;
+      case ExprOp::kSqrt:
+        return Opcode::kSqrt;
+      case ExprOp::kExp:
+        return Opcode::kExp;
+      case ExprOp::kLog:
+        return Opcode::kLog;
+      case ExprOp::kSin:
+        return Opcode::kSin;
+      case ExprOp::kCos:
+        return Opcode::kCos;
+      case ExprOp::kTan:
+        return Opcode::kTan;
+      case ExprOp::kAbs:
+        return Opcode::kAbs;
     }
     return Opcode::kConst;
   }

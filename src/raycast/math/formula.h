@@ -15,13 +15,31 @@ namespace raycast {
 inline constexpr int kMaxFormulaStack = 64;
 
 enum class Opcode : std::uint8_t {
-  kConst, kX, kY, kZ, kAdd, kSub, kMul, kDiv, kNeg, kPowInt, kPow,
-  kSqrt, kExp, kLog, kSin, kCos, kTan, kAbs, kMin, kMax,
+  kConst,
+  kX,
+  kY,
+  kZ,
+  kAdd,
+  kSub,
+  kMul,
+  kDiv,
+  kNeg,
+  kPowInt,
+  kPow,
+  kSqrt,
+  kExp,
+  kLog,
+  kSin,
+  kCos,
+  kTan,
+  kAbs,
+  kMin,
+  kMax,
 };
 
 struct Instruction {
   Opcode op = Opcode::kConst;
-  int n = 0;       // kPowInt's exponent
+  int n = 0;         // kPowInt's exponent
   double value = 0;  // kConst's value
 };
 
@@ -54,26 +72,73 @@ T run(const Formula& f, const T& x, const T& y, const T& z) {
   int top = -1;
   for (const Instruction& in : f.code) {
     switch (in.op) {
-      case Opcode::kConst: s[++top] = T(in.value); break;
-      case Opcode::kX: s[++top] = x; break;
-      case Opcode::kY: s[++top] = y; break;
-      case Opcode::kZ: s[++top] = z; break;
-      case Opcode::kAdd: s[top - 1] = s[top - 1] + s[top]; --top; break;
-      case Opcode::kSub: s[top - 1] = s[top - 1] - s[top]; --top; break;
-      case Opcode::kMul: s[top - 1] = s[top - 1] * s[top]; --top; break;
-      case Opcode::kDiv: s[top - 1] = s[top - 1] / s[top]; --top; break;
-      case Opcode::kPow: s[top - 1] = pow(s[top - 1], s[top]); --top; break;
-      case Opcode::kMin: s[top - 1] = min(s[top - 1], s[top]); --top; break;
-      case Opcode::kMax: s[top - 1] = max(s[top - 1], s[top]); --top; break;
-      case Opcode::kNeg: s[top] = -s[top]; break;
-      case Opcode::kPowInt: s[top] = pow_int(s[top], in.n); break;
-      case Opcode::kSqrt: s[top] = sqrt(s[top]); break;
-      case Opcode::kExp: s[top] = exp(s[top]); break;
-      case Opcode::kLog: s[top] = log(s[top]); break;
-      case Opcode::kSin: s[top] = sin(s[top]); break;
-      case Opcode::kCos: s[top] = cos(s[top]); break;
-      case Opcode::kTan: s[top] = tan(s[top]); break;
-      case Opcode::kAbs: s[top] = abs(s[top]); break;
+      case Opcode::kConst:
+        s[++top] = T(in.value);
+        break;
+      case Opcode::kX:
+        s[++top] = x;
+        break;
+      case Opcode::kY:
+        s[++top] = y;
+        break;
+      case Opcode::kZ:
+        s[++top] = z;
+        break;
+      case Opcode::kAdd:
+        s[top - 1] = s[top - 1] + s[top];
+        --top;
+        break;
+      case Opcode::kSub:
+        s[top - 1] = s[top - 1] - s[top];
+        --top;
+        break;
+      case Opcode::kMul:
+        s[top - 1] = s[top - 1] * s[top];
+        --top;
+        break;
+      case Opcode::kDiv:
+        s[top - 1] = s[top - 1] / s[top];
+        --top;
+        break;
+      case Opcode::kPow:
+        s[top - 1] = pow(s[top - 1], s[top]);
+        --top;
+        break;
+      case Opcode::kMin:
+        s[top - 1] = min(s[top - 1], s[top]);
+        --top;
+        break;
+      case Opcode::kMax:
+        s[top - 1] = max(s[top - 1], s[top]);
+        --top;
+        break;
+      case Opcode::kNeg:
+        s[top] = -s[top];
+        break;
+      case Opcode::kPowInt:
+        s[top] = pow_int(s[top], in.n);
+        break;
+      case Opcode::kSqrt:
+        s[top] = sqrt(s[top]);
+        break;
+      case Opcode::kExp:
+        s[top] = exp(s[top]);
+        break;
+      case Opcode::kLog:
+        s[top] = log(s[top]);
+        break;
+      case Opcode::kSin:
+        s[top] = sin(s[top]);
+        break;
+      case Opcode::kCos:
+        s[top] = cos(s[top]);
+        break;
+      case Opcode::kTan:
+        s[top] = tan(s[top]);
+        break;
+      case Opcode::kAbs:
+        s[top] = abs(s[top]);
+        break;
     }
   }
   return s[0];
