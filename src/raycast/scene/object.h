@@ -9,6 +9,8 @@
 #include "geometry/cone.h"
 #include "geometry/cylinder.h"
 #include "geometry/ellipsoid.h"
+#include "geometry/algebraic.h"
+#include "geometry/implicit.h"
 #include "geometry/plane.h"
 #include "geometry/polygon.h"
 #include "geometry/polyhedron.h"
@@ -16,13 +18,14 @@
 #include "geometry/slab.h"
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
+#include "geometry/torus.h"
 #include "math/transform.h"
 
 namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron>;
+using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit>;
 
 struct Object {
   ShapeVariant shape;

@@ -27,5 +27,8 @@ ShapeVariant parse_cone(Fields& f);
 ShapeVariant parse_polygon(Fields& f);
 ShapeVariant parse_slab(Fields& f);
 ShapeVariant parse_polyhedron(Fields& f);
+ShapeVariant parse_torus(Fields& f);
+ShapeVariant parse_algebraic(Fields& f);
+ShapeVariant parse_implicit(Fields& f);
 
 }  // namespace raycast

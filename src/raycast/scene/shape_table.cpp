@@ -14,6 +14,9 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
       {"polygon", parse_polygon},
       {"slab", parse_slab},
       {"polyhedron", parse_polyhedron},
+      {"torus", parse_torus},
+      {"algebraic", parse_algebraic},
+      {"implicit", parse_implicit},
   };
   return table;
 }

@@ -1,0 +1,193 @@
+#include "geometry/implicit.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/algebraic.h"
+#include "geometry/clipped_solid.h"
+
+namespace raycast {
+
+namespace {
+
+using DualT = Dual<double, 1>;    // value and derivative along the ray
+using DualI = Dual<Interval, 1>;  // inclusions of both over a t-interval
+using Dual3 = Dual<double, 3>;    // value and gradient
+
+// Newton with bisection gives up cycling after this many steps (bisection alone needs ~64).
+constexpr int kMaxRefineSteps = 100;
+
+double f_at(const Implicit& s, const Ray& ray, double t) {
+  const Vec3 p = ray.at(t);
+  return run<double>(s.f, p.x, p.y, p.z);
+}
+
+DualT f_along(const Implicit& s, const Ray& ray, double t) {
+  const Vec3 p = ray.at(t);
+  DualT x(p.x), y(p.y), z(p.z);
+  x.d[0] = ray.d.x;
+  y.d[0] = ray.d.y;
+  z.d[0] = ray.d.z;
+  return run<DualT>(s.f, x, y, z);
+}
+
+DualI f_over(const Implicit& s, const Ray& ray, double a, double b) {
+  const Interval t{a, b};
+  DualI c[3];
+  for (int i = 0; i < 3; ++i) {
+    c[i].v = Interval(ray.o[i]) + t * Interval(ray.d[i]);
+    c[i].d[0] = Interval(ray.d[i]);
+  }
+  return run<DualI>(s.f, c[0], c[1], c[2]);
+}
+
+bool negative(double v) { return v < 0; }
+
+// The root in [a, b] where f changes sign (fa = f(a)).
+double refine(const Implicit& s, const Ray& ray, double a, double b, double fa) {
+  double x = 0.5 * (a + b);
+  for (int i = 0; i < kMaxRefineSteps; ++i) {
+    const DualT f = f_along(s, ray, x);
+    if (f.v == 0) return x;
+    if (negative(f.v) == negative(fa)) {
+      a = x;
+      fa = f.v;
+    } else {
+      b = x;
+    }
+    const double mid = 0.5 * (a + b);
+    if (!(mid > a && mid < b)) return x;
+    double next = x - f.v / f.d[0];
+    if (!(next > a && next < b)) next = mid;
+    if (std::abs(next - x) <= 4 * kMachineEpsilon * std::abs(x)) return next;
+    x = next;
+  }
+  return x;
+}
+
+// The roots of f along the ray in [lo, hi], in increasing order, into roots (at most max_roots);
+// with first_only the search stops at the first. Returns the count.
+int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool first_only,
+               double* roots, int max_roots) {
+  struct Piece {
+    double a, b;
+    int depth;
+  };
+  Piece stack[kImplicitMaxDepth + 2];
+  int top = 0, count = 0, steps = 0;
+  stack[0] = {lo, hi, 0};
+  while (top >= 0 && count < max_roots) {
+    const Piece p = stack[top--];
+    if (++steps > kImplicitMaxSteps) break;
+    const DualI f = f_over(s, ray, p.a, p.b);
+    if (f.v.is_empty() || !f.v.contains(0)) continue;
+    const double mid = 0.5 * (p.a + p.b);
+    const bool monotone = !f.d[0].is_empty() && !f.d[0].contains(0);
+    const bool too_small = !(mid > p.a && mid < p.b) || p.depth >= kImplicitMaxDepth;
+    if (monotone || too_small) {
+      const double fa = f_at(s, ray, p.a), fb = f_at(s, ray, p.b);
+      double t;
+      if (fa == 0) {
+        t = p.a;
+      } else if (fb == 0 && p.b == hi) {
+        t = p.b;  // a root at an inner piece's end is its neighbour's start
+      } else if (std::isnan(fa) || std::isnan(fb) || negative(fa) == negative(fb)) {
+        continue;
+      } else {
+        t = refine(s, ray, p.a, p.b, fa);
+      }
+      if (count == 0 || t > roots[count - 1]) roots[count++] = t;
+      if (first_only) break;
+      continue;
+    }
+    stack[++top] = {mid, p.b, p.depth + 1};
+    stack[++top] = {p.a, mid, p.depth + 1};
+  }
+  return count;
+}
+
+// Room for the crossings of one ray; a formula with more within the box loses the later ones.
+constexpr int kMaxImplicitRoots = 64;
+
+}  // namespace
+
+Implicit make_implicit(std::string_view function, const Aabb& box, bool open) {
+  check_bounds_box(box);
+  Implicit s;
+  s.f = compile_formula(function);
+  s.box = box;
+  s.open = open;
+  return s;
+}
+
+double evaluate(const Implicit& s, const Vec3& p) { return run<double>(s.f, p.x, p.y, p.z); }
+
+Aabb bounds(const Implicit& s) { return s.box; }
+
+bool intersect(const Implicit& s, const Ray& ray, LocalHit& hit) {
+  BoxChord c;
+  if (!box_chord(s.box, ray, c)) return false;
+  const double lo = std::max(c.t0, ray.tmin), hi = std::min(c.t1, ray.tmax);
+  if (!(lo <= hi)) return false;
+  const bool closed = !s.open;
+  if (closed && lo == c.t0 && negative(f_at(s, ray, c.t0))) {
+    hit = LocalHit{c.t0, -1, kFacePart + c.face0, 0, 0};
+    return true;
+  }
+  double t;
+  if (find_roots(s, ray, lo, hi, true, &t, 1) == 1) {
+    hit = LocalHit{t, -1, kCurvedPart, 0, 0};
+    return true;
+  }
+  if (closed && hi == c.t1 && negative(f_at(s, ray, c.t1))) {
+    hit = LocalHit{c.t1, -1, kFacePart + c.face1, 0, 0};
+    return true;
+  }
+  return false;
+}
+
+bool occluded(const Implicit& s, const Ray& ray) {
+  LocalHit h;
+  return intersect(s, ray, h);
+}
+
+void spans(const Implicit& s, const Ray& ray, SpanList& out) {
+  BoxChord c;
+  if (!box_chord(s.box, ray, c)) return;
+  double roots[kMaxImplicitRoots], errors[kMaxImplicitRoots] = {};
+  const int n = find_roots(s, ray, c.t0, c.t1, false, roots, kMaxImplicitRoots);
+  chord_spans(
+      c, roots, errors, n, !s.open, [&](double t) { return negative(f_at(s, ray, t)); }, out);
+}
+
+SurfaceInfo surface(const Implicit& s, const Ray& ray, const LocalHit& hit) {
+  SurfaceInfo si;
+  Vec3 p = ray.at(hit.t);
+  if (hit.part >= kFacePart) {
+    const int face = hit.part - kFacePart;
+    p[face / 2] = face % 2 ? s.box.hi[face / 2] : s.box.lo[face / 2];
+    si.n = box_face_normal(face);
+    si.p_error = gamma(4) * abs(p);
+  } else {
+    Dual3 c[3];
+    for (int i = 0; i < 3; ++i) {
+      c[i] = Dual3(p[i]);
+      c[i].d[i] = 1;
+    }
+    const Dual3 f = run<Dual3>(s.f, c[0], c[1], c[2]);
+    const Vec3 g{f.d[0], f.d[1], f.d[2]};
+    const double gl = length(g);
+    si.n = gl > 0 && std::isfinite(gl) ? g / gl : -normalize(ray.d);
+    // The root is refined to a few ulps of t; the point's error follows.
+    si.p_error = gamma(16) * (abs(p) + abs(hit.t * ray.d));
+  }
+  si.shading_n = si.n;
+  si.p = p;
+  return si;
+}
+
+bool contains(const Implicit& s, const Vec3& p) {
+  return !s.open && s.box.contains(p) && negative(evaluate(s, p));
+}
+
+}  // namespace raycast

@@ -1,0 +1,147 @@
+#pragma once
+// Formulas in x, y, z compiled to a small stack bytecode, run over double, Interval and Dual.
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "math/dual.h"
+#include "math/expression.h"
+#include "math/interval.h"
+
+namespace raycast {
+
+/// The deepest evaluation stack a formula may need (deeper ones are refused when compiled).
+inline constexpr int kMaxFormulaStack = 64;
+
+enum class Opcode : std::uint8_t {
+  kConst,
+  kX,
+  kY,
+  kZ,
+  kAdd,
+  kSub,
+  kMul,
+  kDiv,
+  kNeg,
+  kPowInt,
+  kPow,
+  kSqrt,
+  kExp,
+  kLog,
+  kSin,
+  kCos,
+  kTan,
+  kAbs,
+  kMin,
+  kMax,
+};
+
+struct Instruction {
+  Opcode op = Opcode::kConst;
+  int n = 0;         // kPowInt's exponent
+  double value = 0;  // kConst's value
+};
+
+/// A compiled formula: postfix code over a stack; constant subtrees are folded.
+struct Formula {
+  std::vector<Instruction> code;
+  int stack_size = 0;
+};
+
+/// Parses and compiles formula text (grammar: parse_expression). `^` and pow with a constant
+/// whole exponent become exact repeated products; other exponents mean exp(b log a), a > 0.
+/// Throws ExpressionError at the offending offset (also for a formula too deep to evaluate).
+Formula compile_formula(std::string_view text);
+
+/// The formula at (x, y, z) for T = double, Interval or Dual<...>. Outside a function's domain
+/// the double result is NaN and the interval result empty.
+template <class T>
+T run(const Formula& f, const T& x, const T& y, const T& z) {
+  using std::abs;
+  using std::cos;
+  using std::exp;
+  using std::log;
+  using std::max;
+  using std::min;
+  using std::pow;
+  using std::sin;
+  using std::sqrt;
+  using std::tan;
+  std::array<T, kMaxFormulaStack> s;
+  int top = -1;
+  for (const Instruction& in : f.code) {
+    switch (in.op) {
+      case Opcode::kConst:
+        s[++top] = T(in.value);
+        break;
+      case Opcode::kX:
+        s[++top] = x;
+        break;
+      case Opcode::kY:
+        s[++top] = y;
+        break;
+      case Opcode::kZ:
+        s[++top] = z;
+        break;
+      case Opcode::kAdd:
+        s[top - 1] = s[top - 1] + s[top];
+        --top;
+        break;
+      case Opcode::kSub:
+        s[top - 1] = s[top - 1] - s[top];
+        --top;
+        break;
+      case Opcode::kMul:
+        s[top - 1] = s[top - 1] * s[top];
+        --top;
+        break;
+      case Opcode::kDiv:
+        s[top - 1] = s[top - 1] / s[top];
+        --top;
+        break;
+      case Opcode::kPow:
+        s[top - 1] = pow(s[top - 1], s[top]);
+        --top;
+        break;
+      case Opcode::kMin:
+        s[top - 1] = min(s[top - 1], s[top]);
+        --top;
+        break;
+      case Opcode::kMax:
+        s[top - 1] = max(s[top - 1], s[top]);
+        --top;
+        break;
+      case Opcode::kNeg:
+        s[top] = -s[top];
+        break;
+      case Opcode::kPowInt:
+        s[top] = pow_int(s[top], in.n);
+        break;
+      case Opcode::kSqrt:
+        s[top] = sqrt(s[top]);
+        break;
+      case Opcode::kExp:
+        s[top] = exp(s[top]);
+        break;
+      case Opcode::kLog:
+        s[top] = log(s[top]);
+        break;
+      case Opcode::kSin:
+        s[top] = sin(s[top]);
+        break;
+      case Opcode::kCos:
+        s[top] = cos(s[top]);
+        break;
+      case Opcode::kTan:
+        s[top] = tan(s[top]);
+        break;
+      case Opcode::kAbs:
+        s[top] = abs(s[top]);
+        break;
+    }
+  }
+  return s[0];
+}
+
+}  // namespace raycast

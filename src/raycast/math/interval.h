@@ -1,0 +1,166 @@
+#pragma once
+// Interval arithmetic with outward rounding, for inclusion functions of formulas over t-intervals.
+// Every result contains the exact result of the operation over every point of its operands: the
+// basic operations are widened by one ulp each side (round-to-nearest is off by at most half an
+// ulp), the library's transcendental functions by kLibmUlps (glibc documents errors of a few ulps).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace raycast {
+
+/// Error allowance of libm's transcendental functions, in ulps.
+inline constexpr int kLibmUlps = 4;
+
+/// The closed interval [lo, hi]; empty (lo > hi, or NaN) stands for "undefined here" (sqrt or log
+/// of negative numbers) and propagates through every operation.
+struct Interval {
+  double lo = 0, hi = 0;
+
+  Interval() = default;
+  constexpr Interval(double v) : lo(v), hi(v) {}  // NOLINT: a point is an interval
+  constexpr Interval(double l, double h) : lo(l), hi(h) {}
+
+  static constexpr Interval entire() {
+    return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  }
+  static constexpr Interval empty() {
+    return {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  }
+  bool is_empty() const { return !(lo <= hi); }
+  bool contains(double v) const { return lo <= v && v <= hi; }
+  double mid() const { return 0.5 * (lo + hi); }
+};
+
+namespace interval_detail {
+inline double down(double x, int ulps = 1) {
+  for (int i = 0; i < ulps; ++i) x = std::nextafter(x, -std::numeric_limits<double>::infinity());
+  return x;
+}
+inline double up(double x, int ulps = 1) {
+  for (int i = 0; i < ulps; ++i) x = std::nextafter(x, std::numeric_limits<double>::infinity());
+  return x;
+}
+inline Interval widen(double lo, double hi, int ulps = 1) {
+  if (std::isnan(lo) || std::isnan(hi)) return Interval::entire();
+  return {down(lo, ulps), up(hi, ulps)};
+}
+// 0 * inf is 0 for interval bounds.
+inline double mul0(double a, double b) { return (a == 0 || b == 0) ? 0.0 : a * b; }
+// Whether some c + k period lies in [lo, hi] (conservatively: a little slack says yes).
+inline bool hits_phase(double lo, double hi, double c, double period) {
+  const double k = std::ceil((lo - c) / period - 1e-9);
+  return c + k * period <= hi + 1e-9 * (1 + std::abs(hi));
+}
+}  // namespace interval_detail
+
+inline Interval hull(const Interval& a, const Interval& b) {
+  if (a.is_empty()) return b;
+  if (b.is_empty()) return a;
+  return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
+
+inline Interval operator-(const Interval& a) { return {-a.hi, -a.lo}; }
+inline Interval operator+(const Interval& a, const Interval& b) {
+  if (a.is_empty() || b.is_empty()) return Interval::empty();
+  return interval_detail::widen(a.lo + b.lo, a.hi + b.hi);
+}
+inline Interval operator-(const Interval& a, const Interval& b) { return a + (-b); }
+inline Interval operator*(const Interval& a, const Interval& b) {
+  using interval_detail::mul0;
+  if (a.is_empty() || b.is_empty()) return Interval::empty();
+  const double p[4] = {mul0(a.lo, b.lo), mul0(a.lo, b.hi), mul0(a.hi, b.lo), mul0(a.hi, b.hi)};
+  return interval_detail::widen(*std::min_element(p, p + 4), *std::max_element(p, p + 4));
+}
+inline Interval operator/(const Interval& a, const Interval& b) {
+  if (a.is_empty() || b.is_empty()) return Interval::empty();
+  if (b.contains(0)) return Interval::entire();
+  return a * interval_detail::widen(1 / b.hi, 1 / b.lo);
+}
+
+inline Interval sqrt(const Interval& a) {
+  if (a.is_empty() || a.hi < 0) return Interval::empty();
+  return interval_detail::widen(std::sqrt(std::max(a.lo, 0.0)), std::sqrt(a.hi));
+}
+inline Interval exp(const Interval& a) {
+  if (a.is_empty()) return a;
+  const Interval r = interval_detail::widen(std::exp(a.lo), std::exp(a.hi), kLibmUlps);
+  return {std::max(r.lo, 0.0), r.hi};
+}
+inline Interval log(const Interval& a) {
+  if (a.is_empty() || a.hi <= 0) return Interval::empty();
+  const double lo = a.lo <= 0 ? -std::numeric_limits<double>::infinity() : std::log(a.lo);
+  return interval_detail::widen(lo, std::log(a.hi), kLibmUlps);
+}
+inline Interval cos(const Interval& a) {
+  using interval_detail::hits_phase;
+  if (a.is_empty()) return a;
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) return {-1, 1};
+  const double c0 = std::cos(a.lo), c1 = std::cos(a.hi);
+  double lo = std::min(c0, c1), hi = std::max(c0, c1);
+  if (hits_phase(a.lo, a.hi, 0, kTwoPi)) hi = 1;
+  if (hits_phase(a.lo, a.hi, std::numbers::pi, kTwoPi)) lo = -1;
+  const Interval r = interval_detail::widen(lo, hi, kLibmUlps);
+  return {std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
+}
+inline Interval sin(const Interval& a) {
+  using interval_detail::hits_phase;
+  if (a.is_empty()) return a;
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) return {-1, 1};
+  const double s0 = std::sin(a.lo), s1 = std::sin(a.hi);
+  double lo = std::min(s0, s1), hi = std::max(s0, s1);
+  if (hits_phase(a.lo, a.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
+  if (hits_phase(a.lo, a.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
+  const Interval r = interval_detail::widen(lo, hi, kLibmUlps);
+  return {std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
+}
+inline Interval tan(const Interval& a) {
+  if (a.is_empty()) return a;
+  if (!(a.hi - a.lo < std::numbers::pi) || std::abs(a.lo) > 1e15 ||
+      interval_detail::hits_phase(a.lo, a.hi, std::numbers::pi / 2, std::numbers::pi))
+    return Interval::entire();
+  return interval_detail::widen(std::tan(a.lo), std::tan(a.hi), kLibmUlps);
+}
+inline Interval abs(const Interval& a) {
+  if (a.is_empty() || a.lo >= 0) return a;
+  if (a.hi <= 0) return -a;
+  return {0, std::max(-a.lo, a.hi)};
+}
+inline Interval min(const Interval& a, const Interval& b) {
+  if (a.is_empty() || b.is_empty()) return Interval::empty();
+  return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};
+}
+inline Interval max(const Interval& a, const Interval& b) {
+  if (a.is_empty() || b.is_empty()) return Interval::empty();
+  return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
+/// a^n for a whole n (negative n through the reciprocal).
+inline Interval pow_int(const Interval& a, int n) {
+  if (a.is_empty()) return a;
+  if (n < 0) return Interval(1.0) / pow_int(a, -n);
+  if (n == 0) return Interval(1.0);
+  double lo = a.lo, hi = a.hi;
+  if (n % 2 == 0) {
+    const double m = std::max(std::abs(lo), std::abs(hi));
+    const double l = a.contains(0) ? 0 : std::min(std::abs(lo), std::abs(hi));
+    lo = l;
+    hi = m;
+  }
+  // Each power is exact to one ulp per multiplication.
+  const Interval r = interval_detail::widen(std::pow(lo, n), std::pow(hi, n), n + kLibmUlps);
+  return n % 2 == 0 ? Interval{std::max(r.lo, 0.0), r.hi} : r;
+}
+/// a^b for real b: exp(b log a), defined for a > 0.
+inline Interval pow(const Interval& a, const Interval& b) { return exp(b * log(a)); }
+
+/// The sign of a as an interval: [-1, 1] when a contains 0.
+inline Interval sign_of(const Interval& a) {
+  if (a.lo > 0) return Interval(1.0);
+  if (a.hi < 0) return Interval(-1.0);
+  return {-1, 1};
+}
+
+}  // namespace raycast

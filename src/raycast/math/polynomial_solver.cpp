@@ -1,0 +1,196 @@
+#include "math/polynomial_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "math/float_error.h"
+
+namespace raycast {
+
+namespace {
+
+// Bisection halves an interval of doubles at most ~2100 times before it stops shrinking; Newton
+// takes over long before on any simple root, so this cap is only a guard against cycling.
+constexpr int kMaxRefineSteps = 200;
+
+bool same_sign(double a, double b) { return (a < 0) == (b < 0); }
+
+// The root of p in [a, b], where p(a) and p(b) have opposite signs: Newton steps kept inside the
+// bracket, bisection when a step leaves it or does not halve the bracket.
+double refine_root(const Polynomial& p, double a, double b, double fa) {
+  double x = 0.5 * (a + b);
+  double step_before = b - a;
+  for (int i = 0; i < kMaxRefineSteps; ++i) {
+    double df, err;
+    const double f = evaluate(p, x, df, err);
+    if (f == 0 || std::abs(f) <= err) return x;
+    if (same_sign(f, fa)) {
+      a = x;
+      fa = f;
+    } else {
+      b = x;
+    }
+    const double mid = 0.5 * (a + b);
+    if (!(mid > a && mid < b)) return std::abs(f) <= std::abs(evaluate(p, a)) ? x : a;
+    double next = x - f / df;
+    const double step = std::abs(next - x);
+    if (!(next > a && next < b) || 2 * step > step_before) {
+      next = mid;
+      step_before = b - a;
+    } else {
+      step_before = step;
+    }
+    if (next == x) return x;
+    x = next;
+  }
+  return x;
+}
+
+// Roots of p in [lo, hi] (finite, lo <= hi), increasing; p is trimmed.
+int roots_in(const Polynomial& p, double lo, double hi, double* out) {
+  if (p.degree == 0) return 0;
+  if (p.degree == 1) {
+    const double t = -p.c[0] / p.c[1];
+    if (!(t >= lo && t <= hi)) return 0;
+    out[0] = t;
+    return 1;
+  }
+  // The critical points split [lo, hi] into monotone pieces.
+  double points[kMaxPolynomialDegree + 1];
+  const Polynomial dp = trimmed(derivative(p));
+  int n_points = roots_in(dp, lo, hi, points);
+  points[n_points++] = hi;
+
+  int count = 0;
+  double a = lo, ea;
+  double fa = evaluate(p, a, ea);
+  bool a_is_root = std::abs(fa) <= ea;
+  if (a_is_root) out[count++] = a;
+  for (int i = 0; i < n_points; ++i) {
+    const double b = points[i];
+    if (b <= a && i + 1 < n_points) continue;
+    double eb;
+    const double fb = evaluate(p, b, eb);
+    const bool b_is_root = std::abs(fb) <= eb;
+    if (!a_is_root && !b_is_root && !same_sign(fa, fb)) {
+      const double t = refine_root(p, a, b, fa);
+      if (count == 0 || t > out[count - 1]) out[count++] = t;
+    }
+    if (b_is_root && (count == 0 || b > out[count - 1])) out[count++] = b;
+    a = b;
+    fa = fb;
+    a_is_root = b_is_root;
+  }
+  return count;
+}
+
+// Fujiwara's bound on the magnitude of every complex root: 2 max |c_{n-i} / c_n|^(1/i)
+// (with the constant term's ratio halved).
+double root_bound(const Polynomial& p) {
+  const int n = p.degree;
+  double b = 0;
+  for (int i = 1; i <= n; ++i) {
+    double ratio = std::abs(p.c[n - i] / p.c[n]);
+    if (i == n) ratio *= 0.5;
+    b = std::max(b, std::pow(ratio, 1.0 / i));
+  }
+  return 2 * b;
+}
+
+}  // namespace
+
+int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots) {
+  if (std::isnan(lo) || std::isnan(hi) || lo > hi) return 0;
+  for (int i = 0; i <= p_in.degree; ++i)
+    if (!std::isfinite(p_in.c[i])) return 0;
+  Polynomial p = trimmed(p_in);
+  if (p.degree == 0) return 0;
+
+  // Scale the coefficients so the largest is about 1 (exact: a power of two).
+  double cmax = 0;
+  for (int i = 0; i <= p.degree; ++i) cmax = std::max(cmax, std::abs(p.c[i]));
+  const int ce = std::ilogb(cmax);
+  for (int i = 0; i <= p.degree; ++i) p.c[i] = std::ldexp(p.c[i], -ce);
+
+  // Clip the interval to the root bound, then scale the variable so the interval is about
+  // [-1, 1]: t = s u with s a power of two, c_i -> c_i s^i.
+  const double bound = root_bound(p);
+  if (std::isfinite(bound)) {
+    lo = std::max(lo, -bound * (1 + gamma(4)));
+    hi = std::min(hi, bound * (1 + gamma(4)));
+  }
+  if (!std::isfinite(lo) || !std::isfinite(hi)) {
+    lo = std::max(lo, -std::numeric_limits<double>::max());
+    hi = std::min(hi, std::numeric_limits<double>::max());
+  }
+  if (lo > hi) return 0;
+  const double extent = std::max(std::abs(lo), std::abs(hi));
+  const int se = extent > 0 ? std::ilogb(extent) : 0;
+  if (se != 0) {
+    for (int i = 1; i <= p.degree; ++i) p.c[i] = std::ldexp(p.c[i], se * i);
+    cmax = 0;
+    for (int i = 0; i <= p.degree; ++i) cmax = std::max(cmax, std::abs(p.c[i]));
+    if (!std::isfinite(cmax) || cmax == 0) return 0;
+    const int ce2 = std::ilogb(cmax);
+    for (int i = 0; i <= p.degree; ++i) p.c[i] = std::ldexp(p.c[i], -ce2);
+    p = trimmed(p);
+    if (p.degree == 0) return 0;
+    lo = std::ldexp(lo, -se);
+    hi = std::ldexp(hi, -se);
+  }
+  const int n = roots_in(p, lo, hi, roots);
+  for (int i = 0; i < n; ++i) roots[i] = std::ldexp(roots[i], se);
+  return n;
+}
+
+int solve_cubic(double a, double b, double c, double d, double roots[3]) {
+  if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d)) return 0;
+  if (a == 0) {
+    Polynomial q;
+    q.degree = 2;
+    q.c = {d, c, b};
+    return find_real_roots(q, -kInfinity, kInfinity, roots);
+  }
+  // Depressed cubic x^3 + P x + Q with t = x - b / (3a).
+  const double B = b / a, C = c / a, D = d / a;
+  const double shift = B / 3;
+  const double P = C - B * shift;
+  const double Q = D - C * shift + 2 * shift * shift * shift;
+  int n = 0;
+  const double h = Q * Q / 4 + P * P * P / 27;
+  if (P < 0 && h <= 0) {
+    // Three real roots: x = 2 sqrt(-P/3) cos(theta/3 - 2 pi k / 3).
+    const double m = 2 * std::sqrt(-P / 3);
+    const double arg = std::clamp(3 * Q / (P * m), -1.0, 1.0);
+    const double theta = std::acos(arg) / 3;
+    for (int k = 0; k < 3; ++k)
+      roots[n++] = m * std::cos(theta - 2 * std::numbers::pi * k / 3) - shift;
+  } else {
+    // One real root (Cardano), with the cube roots' signs chosen to avoid cancellation.
+    const double s = std::sqrt(std::max(h, 0.0));
+    const double u = std::cbrt(-Q / 2 + (Q < 0 ? s : -s));
+    const double x = u == 0 ? 0 : u - P / (3 * u);
+    roots[n++] = x - shift;
+  }
+  // Polish on the original cubic.
+  Polynomial p;
+  p.degree = 3;
+  p.c = {d, c, b, a};
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 2; ++k) {
+      double df, err;
+      const double f = evaluate(p, roots[i], df, err);
+      if (std::abs(f) <= err || df == 0) break;
+      roots[i] -= f / df;
+    }
+  }
+  std::sort(roots, roots + n);
+  int m = 0;
+  for (int i = 0; i < n; ++i)
+    if (m == 0 || roots[i] != roots[m - 1]) roots[m++] = roots[i];
+  return m;
+}
+
+}  // namespace raycast

@@ -1,0 +1,37 @@
+#pragma once
+// Polynomials in x, y, z: expansion from formula text, evaluation, gradient and restriction to a
+// line.
+#include <string_view>
+#include <vector>
+
+#include "math/expression.h"
+#include "math/polynomial.h"
+#include "math/vec3.h"
+
+namespace raycast {
+
+/// sum of c x^i y^j z^k over the terms; total degree <= kMaxPolynomialDegree.
+struct Trivariate {
+  struct Term {
+    int i = 0, j = 0, k = 0;
+    double c = 0;
+  };
+  std::vector<Term> terms;  // sorted by (i, j, k), no zero coefficients
+  int degree = 0;
+};
+
+/// Expands formula text into a polynomial: + - *, / by constants, ^ with non-negative whole
+/// exponents, parentheses, pi and e. Anything else (a function, division by a variable
+/// expression, a fractional exponent of a variable, degree above kMaxPolynomialDegree) throws
+/// ExpressionError at the offending offset.
+Trivariate expand_polynomial(std::string_view text);
+
+double evaluate(const Trivariate& f, const Vec3& p);
+/// The gradient (df/dx, df/dy, df/dz) at p.
+Vec3 gradient(const Trivariate& f, const Vec3& p);
+
+/// f(o + t d) as a polynomial in t, of degree <= f.degree: the powers of the three linear forms
+/// are built once per call, then terms sharing (i, j) are summed before the products.
+Polynomial restrict_to_line(const Trivariate& f, const Vec3& o, const Vec3& d);
+
+}  // namespace raycast

@@ -1,0 +1,235 @@
+#include "geometry/algebraic.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "geometry/torus.h"
+#include "reference_roots.h"
+
+namespace raycast {
+namespace {
+
+const Aabb kUnitBox{{-2, -2, -2}, {2, 2, 2}};
+constexpr const char* kHeart = "(x^2 + 9/4*y^2 + z^2 - 1)^3 - x^2*z^3 - 9/80*y^2*z^3";
+
+long double heart_ld(long double x, long double y, long double z) {
+  const long double a = x * x + 2.25L * y * y + z * z - 1;
+  return a * a * a - x * x * z * z * z - 9.0L / 80 * y * y * z * z * z;
+}
+
+std::vector<LocalHit> crossings(const Algebraic& s, const Ray& r) {
+  SpanList l;
+  spans(s, r, l);
+  std::vector<LocalHit> v;
+  for (const Span& sp : l) {
+    v.push_back(sp.in);
+    if (!s.open) v.push_back(sp.out);
+  }
+  return v;
+}
+
+TEST(Algebraic, Expansion_HandComputedTerms) {
+  const Trivariate f = expand_polynomial("(x + 1)^2 - 2*x - 1/2");  // x^2 + 1/2
+  ASSERT_EQ(f.terms.size(), 2u);
+  EXPECT_EQ(f.degree, 2);
+  EXPECT_EQ(evaluate(f, Vec3{3, 0, 0}), 9.5);
+  EXPECT_EQ(gradient(f, Vec3{3, 7, 1}).x, 6);
+  const Trivariate h = expand_polynomial(kHeart);
+  EXPECT_EQ(h.degree, 6);
+  const Vec3 p{0.3, -0.2, 0.7};
+  EXPECT_NEAR(evaluate(h, p), (double)heart_ld(0.3L, -0.2L, 0.7L), 1e-15);
+}
+
+TEST(Algebraic, RestrictToLine_MatchesPointEvaluation) {
+  const Trivariate h = expand_polynomial(kHeart);
+  const Vec3 o{0.3, -1.2, 0.4}, d{0.2, 0.9, -0.1};
+  const Polynomial p = restrict_to_line(h, o, d);
+  EXPECT_EQ(p.degree, 6);
+  for (double t : {-1.0, 0.0, 0.5, 2.0}) {
+    const double want = evaluate(h, o + t * d);
+    EXPECT_NEAR(evaluate(p, t), want, 1e-11 * std::max(1.0, std::abs(want)));
+  }
+}
+
+TEST(Algebraic, Sphere_HandComputedCrossingsAndNormal) {
+  const Algebraic s = make_algebraic("x^2 + y^2 + z^2 - 1", kUnitBox);
+  const Ray r{{-5, 0, 0}, {1, 0, 0}};
+  LocalHit h;
+  ASSERT_TRUE(intersect(s, r, h));
+  EXPECT_NEAR(h.t, 4, 1e-14);
+  const SurfaceInfo si = surface(s, r, h);
+  EXPECT_NEAR(si.n.x, -1, 1e-14);
+  const auto c = crossings(s, r);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_NEAR(c[1].t, 6, 1e-14);
+}
+
+TEST(Algebraic, TorusEquation_MatchesTorusShape) {
+  // The seed's toroid: (x^2 + y^2 + z^2 - a^2 - b^2)^2 - 4 a^2 (b^2 - z^2), a = 1, b = 0.3.
+  const Algebraic s = make_algebraic("(x^2 + y^2 + z^2 - 1 - 0.09)^2 - 4*(0.09 - z^2)",
+                                     Aabb{{-1.5, -1.5, -0.5}, {1.5, 1.5, 0.5}});
+  const Torus t = make_torus(1, 0.3);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int hits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    SCOPED_TRACE(i);
+    const Vec3 o{3 * u(rng), 3 * u(rng), 3 * u(rng)};
+    const Ray r{o, Vec3{1.3 * u(rng), 1.3 * u(rng), 0.3 * u(rng)} - o};
+    LocalHit ha, ht;
+    const bool a = intersect(s, r, ha), b = intersect(t, r, ht);
+    ASSERT_EQ(a, b);
+    if (!a) continue;
+    ++hits;
+    EXPECT_NEAR(ha.t, ht.t, 1e-9 * ht.t);
+    const SurfaceInfo sa = surface(s, r, ha), st = surface(t, r, ht);
+    EXPECT_NEAR(dot(sa.n, st.n), 1, 1e-9);
+  }
+  EXPECT_GT(hits, 500);
+}
+
+TEST(Algebraic, BoxClipsTheSolid_FaceHitWithFaceNormal) {
+  // A sphere of radius 2 clipped by the box [-1, 1]^3: the box itself.
+  const Algebraic s = make_algebraic("x^2 + y^2 + z^2 - 4", Aabb{{-1, -1, -1}, {1, 1, 1}});
+  const Ray r{{0.2, 0.3, -5}, {0, 0, 1}};
+  LocalHit h;
+  ASSERT_TRUE(intersect(s, r, h));
+  EXPECT_EQ(h.t, 4);
+  const SurfaceInfo si = surface(s, r, h);
+  EXPECT_EQ(si.n, (Vec3{0, 0, -1}));
+  EXPECT_EQ(si.p.z, -1);
+  const auto c = crossings(s, r);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[1].t, 6);
+  EXPECT_EQ(surface(s, r, c[1]).n, (Vec3{0, 0, 1}));
+  // Open: only the curved surface, which lies outside the box.
+  const Algebraic open = make_algebraic("x^2 + y^2 + z^2 - 4", Aabb{{-1, -1, -1}, {1, 1, 1}}, true);
+  EXPECT_FALSE(intersect(open, r, h));
+  EXPECT_FALSE(is_closed(open));
+  EXPECT_FALSE(contains(open, Vec3{0, 0, 0}));
+}
+
+TEST(Algebraic, OpenSurface_EveryCrossingOnce) {
+  const Algebraic s = make_algebraic("x^2 + y^2 + z^2 - 1", kUnitBox, true);
+  const auto c = crossings(s, Ray{{-5, 0, 0}, {1, 0, 0}});
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_NEAR(c[0].t, 4, 1e-14);
+  EXPECT_NEAR(c[1].t, 6, 1e-14);
+}
+
+TEST(Algebraic, TMinTMaxAndStartingInside) {
+  const Algebraic s = make_algebraic("x^2 + y^2 + z^2 - 1", kUnitBox);
+  LocalHit h;
+  Ray r{{-5, 0, 0}, {1, 0, 0}, 0, 4};
+  ASSERT_TRUE(intersect(s, r, h));
+  EXPECT_NEAR(h.t, 4, 1e-14);
+  r.tmax = 3.999999;
+  EXPECT_FALSE(intersect(s, r, h));
+  EXPECT_FALSE(occluded(s, r));
+  ASSERT_TRUE(intersect(s, Ray{{0, 0, 0}, {0, 0, 2}}, h));
+  EXPECT_NEAR(h.t, 0.5, 1e-14);
+  EXPECT_TRUE(contains(s, Vec3{0, 0, 0}));
+}
+
+TEST(Algebraic, Degree12_RootsOfProductOfSpheres) {
+  // Six concentric spheres: radii 0.5 .. 1.75, degree 12.
+  const Algebraic s = make_algebraic(
+      "(x^2+y^2+z^2-0.25)*(x^2+y^2+z^2-0.5625)*(x^2+y^2+z^2-1)*(x^2+y^2+z^2-1.5625)*"
+      "(x^2+y^2+z^2-2.25)*(x^2+y^2+z^2-3.0625)",
+      kUnitBox);
+  EXPECT_EQ(s.f.degree, 12);
+  const auto c = crossings(s, Ray{{0, 0, -1.9}, {0, 0, 1}});
+  ASSERT_EQ(c.size(), 12u);
+  const double radii[] = {1.75, 1.5, 1.25, 1.0, 0.75, 0.5};
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_NEAR(c[i].t, 1.9 - radii[i], 1e-9);
+    EXPECT_NEAR(c[11 - i].t, 1.9 + radii[i], 1e-9);
+  }
+}
+
+TEST(Algebraic, Heart_RandomRaysMatchLongDoubleReference) {
+  const Algebraic s = make_algebraic(kHeart, Aabb{{-1.5, -1, -1.5}, {1.5, 1, 1.5}});
+  int compared = 0;
+  for (unsigned seed = 0; seed < 600; ++seed) {
+    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const Vec3 o{4 * u(rng), 4 * u(rng), 4 * u(rng)};
+    const Ray r{o, Vec3{1.2 * u(rng), 0.7 * u(rng), 1.2 * u(rng)} - o};
+    auto f = [&](long double t) {
+      return heart_ld(r.o.x + t * r.d.x, r.o.y + t * r.d.y, r.o.z + t * r.d.z);
+    };
+    const auto ref = testing_reference::sign_change_roots(f, 0, 3, 3000);
+    LocalHit h;
+    const bool hit = intersect(s, r, h);
+    if (ref.empty()) continue;
+    ASSERT_TRUE(hit);
+    if (h.t < (double)ref[0] * (1 - 1e-9)) {
+      EXPECT_NEAR((double)f(h.t), 0.0, 1e-9);
+      continue;
+    }
+    EXPECT_NEAR(h.t, (double)ref[0], 1e-9 * (double)ref[0]);
+    ++compared;
+  }
+  EXPECT_GT(compared, 100);
+}
+
+TEST(Algebraic, Heart_SpansMatchInsideOracleAndNormalsOutward) {
+  const Algebraic s = make_algebraic(kHeart, Aabb{{-1.5, -1, -1.5}, {1.5, 1, 1.5}});
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int normals = 0;
+  for (int i = 0; i < 300; ++i) {
+    SCOPED_TRACE(i);
+    const Vec3 o{3 * u(rng), 3 * u(rng), 3 * u(rng)};
+    const Ray r{o, Vec3{1.2 * u(rng), 0.7 * u(rng), 1.2 * u(rng)} - o};
+    SpanList l;
+    spans(s, r, l);
+    for (int k = 0; k <= 300; ++k) {
+      const double t = 3.0 * k / 300;
+      bool in_span = false, near_end = false;
+      for (const Span& sp : l) {
+        in_span = in_span || (t >= sp.in.t && t <= sp.out.t);
+        near_end = near_end || std::abs(t - sp.in.t) < 1e-9 || std::abs(t - sp.out.t) < 1e-9;
+      }
+      if (!near_end) {
+        EXPECT_EQ(in_span, contains(s, r.at(t))) << "t " << t;
+      }
+    }
+    LocalHit h;
+    if (!intersect(s, r, h)) continue;
+    const SurfaceInfo si = surface(s, r, h);
+    EXPECT_NEAR(length(si.n), 1, 1e-12);
+    // Away from the two singular points, the normal points out of the solid.
+    if (std::abs(si.p.x) + std::abs(si.p.y) > 1e-3) {
+      EXPECT_FALSE(contains(s, si.p + 1e-6 * si.n));
+      EXPECT_TRUE(contains(s, si.p - 1e-6 * si.n));
+      ++normals;
+    }
+  }
+  EXPECT_GT(normals, 50);
+}
+
+TEST(Algebraic, GrazingSphere_NoMissJustInside) {
+  const Algebraic s = make_algebraic("x^2 + y^2 + z^2 - 1", kUnitBox);
+  for (double eps : {1e-4, 1e-8, 1e-12}) {
+    SCOPED_TRACE(eps);
+    LocalHit h;
+    EXPECT_TRUE(intersect(s, Ray{{-5, 1 - eps, 0}, {1, 0, 0}}, h));
+    EXPECT_FALSE(intersect(s, Ray{{-5, 1 + eps, 0}, {1, 0, 0}}, h));
+  }
+}
+
+TEST(Algebraic, MakeAlgebraic_RejectsBadInput) {
+  EXPECT_THROW(make_algebraic("x^2 - 1", Aabb{{0, 0, 0}, {0, 1, 1}}), std::invalid_argument);
+  EXPECT_THROW(make_algebraic("2 + 3", kUnitBox), ExpressionError);
+  EXPECT_THROW(make_algebraic("x^17", kUnitBox), ExpressionError);
+  EXPECT_THROW(make_algebraic("x / y", kUnitBox), ExpressionError);
+  EXPECT_THROW(make_algebraic("x^0.5", kUnitBox), ExpressionError);
+  EXPECT_THROW(make_algebraic("x / (1 - 1)", kUnitBox), ExpressionError);
+}
+
+}  // namespace
+}  // namespace raycast

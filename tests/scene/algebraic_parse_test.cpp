@@ -1,0 +1,77 @@
+#include <gtest/gtest.h>
+
+#include "scene/loader.h"
+#include "scene/scene_error.h"
+
+namespace raycast {
+namespace {
+
+void expect_error_at(const std::string& yaml, int line, int column, const std::string& fragment) {
+  try {
+    load_scene_text(yaml, "s.yaml");
+    ADD_FAILURE() << "no error for\n" << yaml;
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_EQ(e.column(), column) << e.what();
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(AlgebraicParse, ValidShapes_Load) {
+  const Scene s = load_scene_text(
+      "objects:\n"
+      "  - torus: {major_radius: 1, minor_radius: 0.25}\n"
+      "  - algebraic: {equation: \"x^2 + y^2 + z^2 - 1\", bounds: {min: [-1, -1, -1], max: [1, 1, "
+      "1]}}\n"
+      "  - algebraic: {equation: x^2 - y, bounds: {min: [-1, -1, -1], max: [1, 1, 1]}, open: "
+      "true}\n");
+  EXPECT_EQ(s.objects.size(), 3u);
+}
+
+TEST(AlgebraicParse, EquationErrors_PlainAndQuotedColumns) {
+  // Plain scalar: the '*' at offset 11 of the text, which starts at column 28.
+  expect_error_at(
+      "objects:\n"
+      "  - algebraic: {equation: x^2 + y^2 +* z^2, bounds: {min: [-1, -1, -1], max: [1, 1, 1]}}\n",
+      2, 27 + 11, "algebraic.equation");
+  // Double-quoted: the text starts one column after the quote at 28.
+  expect_error_at(
+      "objects:\n"
+      "  - algebraic: {equation: \"x^2 - sin(x)\", bounds: {min: [-1, -1, -1], max: [1, 1, 1]}}\n",
+      2, 28 + 6, "functions are not allowed");
+  // Single-quoted, in block style.
+  expect_error_at(
+      "objects:\n"
+      "  - algebraic:\n"
+      "      equation: '(x + 1'\n"
+      "      bounds: {min: [-1, -1, -1], max: [1, 1, 1]}\n",
+      3, 17 + 1 + 6, "expected ')'");
+}
+
+TEST(AlgebraicParse, ImplicitFunctionErrors_Positioned) {
+  expect_error_at(
+      "objects:\n"
+      "  - implicit:\n"
+      "      function: sin(x) + cosh(y)\n"
+      "      bounds: {min: [-1, -1, -1], max: [1, 1, 1]}\n",
+      3, 17 + 9, "unknown name 'cosh'");
+  const Scene s = load_scene_text(
+      "objects:\n"
+      "  - implicit: {function: \"x^2 + y^2 + z^2 - 1\", bounds: {min: [-1, -1, -1], max: [1, 1, "
+      "1]}}\n");
+  EXPECT_EQ(s.objects.size(), 1u);
+}
+
+TEST(AlgebraicParse, FieldErrors_Positioned) {
+  expect_error_at("objects:\n  - algebraic: {equation: x^2 - 1}\n", 2, 16, "bounds is required");
+  expect_error_at(
+      "objects:\n"
+      "  - algebraic: {equation: x - 1, bounds: {min: [1, -1, -1], max: [1, 1, 1]}}\n",
+      2, 42, "min must be < max");
+  expect_error_at("objects:\n  - torus: {major_radius: -1, minor_radius: 0.25}\n", 2, 27, "> 0");
+  expect_error_at("objects:\n  - torus: {major_radius: 1, minor: 0.25}\n", 2, 12,
+                  "minor_radius is required");
+}
+
+}  // namespace
+}  // namespace raycast
