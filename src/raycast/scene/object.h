@@ -9,12 +9,13 @@
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
 #include "math/transform.h"
+#include "mesh/mesh.h"
 
 namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere>;
+using ShapeVariant = std::variant<Plane, Sphere, MeshShape>;
 
 struct Object {
   ShapeVariant shape;
