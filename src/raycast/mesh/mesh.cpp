@@ -280,15 +280,31 @@ void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
   }
 }
 
-SurfaceInfo surface(const MeshShape& s, const Ray& /*ray*/, const LocalHit& hit) {
+SurfaceInfo surface(const MeshShape& s, const Ray& ray, const LocalHit& hit) {
   const Mesh& m = *s.mesh;
   const auto tri = static_cast<std::uint32_t>(hit.part);
   const Vec3 v0 = vertex(m, tri, 0), v1 = vertex(m, tri, 1), v2 = vertex(m, tri, 2);
   const double b1 = hit.a, b2 = hit.b, b0 = 1 - b1 - b2;
   SurfaceInfo si;
-  // The point from the barycentrics (on the triangle's plane up to double rounding; pbrt-v4 6.8.5).
-  si.p = b0 * v0 + b1 * v1 + b2 * v2;
-  si.p_error = gamma(7) * (abs(b0 * v0) + abs(b1 * v1) + abs(b2 * v2));
+  // The point on the ray at the refined t, so that p = o + t d as users expect. Its distance to
+  // the plane comes from solving for t: the numerator dot(v0 - o, n) carries at most
+  // gamma(5) dot(|v0 - o|, |n|) (plus the error of n from exact float vertices), divided by |d.n|.
+  const Vec3 n = cross(v1 - v0, v2 - v0);
+  si.p = ray.at(hit.t);
+  const double dn = std::abs(dot(ray.d, n));
+  const double t_error = dn > 0 ? gamma(7) * dot(abs(v0 - ray.o), abs(n)) / dn : 0;
+  si.p_error = gamma(3) * (abs(ray.o) + abs(hit.t * ray.d)) + t_error * abs(ray.d);
+  // The BVH and triangle test run in float on a float copy of the ray: a secondary ray leaving
+  // p is rounded to float too, so the bound must cover float rounding of p and of the
+  // barycentric interpolation (pbrt-v4's gamma(7) in float, plus one rounding of p).
+  constexpr double kFloatGamma9 = 9 * 0x1p-24 / (1 - 9 * 0x1p-24);
+  const Vec3 float_bound = kFloatGamma9 * (abs(b0 * v0) + abs(b1 * v1) + abs(b2 * v2) + abs(si.p));
+  si.p_error += float_bound;
+  if (!(dn > 0) || !is_finite(si.p_error)) {
+    // The ray runs in the plane (or the bound overflowed): take the point from the barycentrics.
+    si.p = b0 * v0 + b1 * v1 + b2 * v2;
+    si.p_error = gamma(7) * (abs(b0 * v0) + abs(b1 * v1) + abs(b2 * v2)) + float_bound;
+  }
   si.n = normalize(cross(v1 - v0, v2 - v0));
   si.shading_n = si.n;
   if (!m.normals.empty()) {

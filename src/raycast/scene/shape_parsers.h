@@ -16,5 +16,6 @@ const std::map<std::string, ShapeParser>& shape_parsers();
 
 ShapeVariant parse_plane(Fields& f);
 ShapeVariant parse_sphere(Fields& f);
+ShapeVariant parse_mesh(Fields& f);
 
 }  // namespace raycast
