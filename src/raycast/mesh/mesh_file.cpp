@@ -12,9 +12,9 @@
 #include <sstream>
 
 #ifdef RAYCAST_HAVE_ASSIMP
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 #endif
 
 namespace raycast {
@@ -40,8 +40,8 @@ class Progress {
     if (pct == last_) return;
     last_ = pct;
     const int bars = pct / 4;
-    std::fprintf(stderr, "\r%s: [%.*s%*s] %3d%%", what_.c_str(), bars, "=========================", 25 - bars, "",
-                 pct);
+    std::fprintf(stderr, "\r%s: [%.*s%*s] %3d%%", what_.c_str(), bars,
+                 "=========================", 25 - bars, "", pct);
     std::fflush(stderr);
   }
 
@@ -90,28 +90,60 @@ PlyType ply_type(const std::string& s) {
 int ply_size(PlyType t) {
   switch (t) {
     case PlyType::kI8:
-    case PlyType::kU8: return 1;
+    case PlyType::kU8:
+      return 1;
     case PlyType::kI16:
-    case PlyType::kU16: return 2;
+    case PlyType::kU16:
+      return 2;
     case PlyType::kI32:
     case PlyType::kU32:
-    case PlyType::kF32: return 4;
-    case PlyType::kF64: return 8;
-    default: return 0;
+    case PlyType::kF32:
+      return 4;
+    case PlyType::kF64:
+      return 8;
+    default:
+      return 0;
   }
 }
 
 double ply_read(const char* p, PlyType t) {
   switch (t) {
-    case PlyType::kI8: return static_cast<std::int8_t>(*p);
-    case PlyType::kU8: return static_cast<std::uint8_t>(*p);
-    case PlyType::kI16: { std::int16_t v; std::memcpy(&v, p, 2); return v; }
-    case PlyType::kU16: { std::uint16_t v; std::memcpy(&v, p, 2); return v; }
-    case PlyType::kI32: { std::int32_t v; std::memcpy(&v, p, 4); return v; }
-    case PlyType::kU32: { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
-    case PlyType::kF32: { float v; std::memcpy(&v, p, 4); return v; }
-    case PlyType::kF64: { double v; std::memcpy(&v, p, 8); return v; }
-    default: return 0;
+    case PlyType::kI8:
+      return static_cast<std::int8_t>(*p);
+    case PlyType::kU8:
+      return static_cast<std::uint8_t>(*p);
+    case PlyType::kI16: {
+      std::int16_t v;
+      std::memcpy(&v, p, 2);
+      return v;
+    }
+    case PlyType::kU16: {
+      std::uint16_t v;
+      std::memcpy(&v, p, 2);
+      return v;
+    }
+    case PlyType::kI32: {
+      std::int32_t v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case PlyType::kU32: {
+      std::uint32_t v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case PlyType::kF32: {
+      float v;
+      std::memcpy(&v, p, 4);
+      return v;
+    }
+    case PlyType::kF64: {
+      double v;
+      std::memcpy(&v, p, 8);
+      return v;
+    }
+    default:
+      return 0;
   }
 }
 
@@ -137,7 +169,8 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
     char magic[64] = {};
     const std::size_t got = std::fread(magic, 1, sizeof magic - 1, f);
     std::fclose(f);
-    if (got < 4 || std::strncmp(magic, "ply", 3) != 0) throw MeshFileError("not a PLY file (no 'ply' magic)");
+    if (got < 4 || std::strncmp(magic, "ply", 3) != 0)
+      throw MeshFileError("not a PLY file (no 'ply' magic)");
     if (!std::strstr(magic, "binary_little_endian")) return false;
   }
   const std::vector<char> data = read_all(path);
@@ -148,7 +181,8 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
       break;
     }
   if (!end_header) throw MeshFileError("truncated PLY header (no end_header)");
-  const char* body = static_cast<const char*>(std::memchr(end_header, '\n', data.data() + data.size() - end_header));
+  const char* body = static_cast<const char*>(
+      std::memchr(end_header, '\n', data.data() + data.size() - end_header));
   if (!body) throw MeshFileError("truncated PLY header");
   ++body;
   std::istringstream header(std::string(data.data(), end_header));
@@ -185,11 +219,13 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
   const char* p = body;
   const char* const end = data.data() + data.size();
   auto need = [&](std::uint64_t bytes) {
-    if (static_cast<std::uint64_t>(end - p) < bytes) throw MeshFileError("truncated PLY file (data ends early)");
+    if (static_cast<std::uint64_t>(end - p) < bytes)
+      throw MeshFileError("truncated PLY file (data ends early)");
   };
   bool have_vertices = false;
   for (const PlyElement& e : elements) {
-    const bool any_list = std::any_of(e.props.begin(), e.props.end(), [](const auto& q) { return q.count_type != PlyType::kNone; });
+    const bool any_list = std::any_of(e.props.begin(), e.props.end(),
+                                      [](const auto& q) { return q.count_type != PlyType::kNone; });
     if (e.name == "vertex") {
       if (any_list) return false;
       int stride = 0, off[6] = {-1, -1, -1, -1, -1, -1};
@@ -203,14 +239,16 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
           }
         stride += ply_size(q.type);
       }
-      if (off[0] < 0 || off[1] < 0 || off[2] < 0) throw MeshFileError("PLY vertices have no x, y, z");
+      if (off[0] < 0 || off[1] < 0 || off[2] < 0)
+        throw MeshFileError("PLY vertices have no x, y, z");
       const bool normals = off[3] >= 0 && off[4] >= 0 && off[5] >= 0;
       need(e.count * stride);
       out.soup.positions.resize(e.count);
       if (normals) out.normals.resize(e.count);
       for (std::uint64_t i = 0; i < e.count; ++i, p += stride) {
-        out.soup.positions[i] = Vec3f(Vec3{ply_read(p + off[0], type[0]), ply_read(p + off[1], type[1]),
-                                           ply_read(p + off[2], type[2])});
+        out.soup.positions[i] =
+            Vec3f(Vec3{ply_read(p + off[0], type[0]), ply_read(p + off[1], type[1]),
+                       ply_read(p + off[2], type[2])});
         if (normals)
           out.normals[i] = Vec3f(Vec3{ply_read(p + off[3], type[3]), ply_read(p + off[4], type[4]),
                                       ply_read(p + off[5], type[5])});
@@ -228,7 +266,8 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
           need(ply_size(q.count_type));
           const double n = ply_read(p, q.count_type);
           p += ply_size(q.count_type);
-          if (!(n >= 0 && n < 1e6)) throw MeshFileError("PLY face " + std::to_string(i) + " has a bad vertex count");
+          if (!(n >= 0 && n < 1e6))
+            throw MeshFileError("PLY face " + std::to_string(i) + " has a bad vertex count");
           const auto count = static_cast<std::uint32_t>(n);
           need(std::uint64_t(count) * ply_size(q.type));
           if (q.name != "vertex_indices" && q.name != "vertex_index") {
@@ -239,9 +278,12 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
           for (std::uint32_t k = 0; k < count; ++k, p += ply_size(q.type)) {
             const double v = ply_read(p, q.type);
             // Negative or huge indices become out-of-range indices, reported by make_mesh.
-            const std::uint32_t idx = v >= 0 && v < 4294967295.0 ? static_cast<std::uint32_t>(v) : 0xFFFFFFFFu;
-            if (k == 0) first = idx;
-            else if (k >= 2) out.soup.triangles.push_back({first, prev, idx});
+            const std::uint32_t idx =
+                v >= 0 && v < 4294967295.0 ? static_cast<std::uint32_t>(v) : 0xFFFFFFFFu;
+            if (k == 0)
+              first = idx;
+            else if (k >= 2)
+              out.soup.triangles.push_back({first, prev, idx});
             prev = idx;
           }
         }
@@ -262,8 +304,9 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
 #ifdef RAYCAST_HAVE_ASSIMP
 MeshFileData read_with_assimp(const std::string& path) {
   Assimp::Importer importer;
-  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                         aiProcess_PreTransformVertices | aiProcess_SortByPType |
+                         aiProcess_ValidateDataStructure;
   const aiScene* scene = importer.ReadFile(path, flags);
   if (!scene) {
     std::string why = importer.GetErrorString();
@@ -293,7 +336,8 @@ MeshFileData read_with_assimp(const std::string& path) {
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
       const aiFace& face = mesh->mFaces[f];
       if (face.mNumIndices != 3) continue;
-      out.soup.triangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
+      out.soup.triangles.push_back(
+          {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
     }
   }
   if (triangle_meshes == 0) throw MeshFileError("the file holds no triangles");
@@ -316,15 +360,18 @@ bool mesh_format_supported(const std::string& extension) {
 MeshFileData load_mesh_file(const std::string& path) {
   const std::string ext = lower(std::filesystem::path(path).extension().string());
   if (!mesh_format_supported(ext))
-    throw MeshFileError("unsupported mesh format '" + ext + "' (expected .obj, .ply, .stl, .gltf or .glb)");
+    throw MeshFileError("unsupported mesh format '" + ext +
+                        "' (expected .obj, .ply, .stl, .gltf or .glb)");
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw MeshFileError("cannot open the mesh file (not found)");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw MeshFileError("cannot open the mesh file (not found)");
   MeshFileData out;
   if (ext == ".ply" && read_binary_ply(path, out)) return out;
 #ifdef RAYCAST_HAVE_ASSIMP
   return read_with_assimp(path);
 #else
-  throw MeshFileError("this build reads only binary little-endian PLY files (assimp was not found)");
+  throw MeshFileError(
+      "this build reads only binary little-endian PLY files (assimp was not found)");
 #endif
 }
 
