@@ -39,24 +39,32 @@ class Builder {
     out_.nodes.resize(2 * n - 1);
     next_node_ = 1;
     tbb::task_group tasks;
-    build(0, 0, static_cast<std::uint32_t>(n), tasks);
+    Aabb box, centre_box;
+    node_bounds(0, static_cast<std::uint32_t>(n), box, centre_box);
+    build(0, 0, static_cast<std::uint32_t>(n), box, centre_box, tasks);
     tasks.wait();
     out_.nodes.resize(next_node_.load());
   }
 
  private:
-  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end,
-             tbb::task_group& tasks) {
+  // The boxes of a split's two sides, known from the bins and the partition pass, so that
+  // children need no pass of their own to find their bounds.
+  struct Sides {
+    Aabb box[2], centre_box[2];
+  };
+
+  // Builds node_index over prims[begin, end), whose box and centre box are given.
+  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, Aabb box,
+             Aabb centre_box, tbb::task_group& tasks) {
     // Iterative on the right child, recursive (or a task) on the left, to bound the stack depth.
     for (;;) {
       BvhNode& node = out_.nodes[node_index];
-      Aabb box, centre_box;
-      node_bounds(begin, end, box, centre_box);
       node.box = box;
       const std::uint32_t count = end - begin;
       std::uint32_t mid = 0;
+      Sides sides;
       if (count <= static_cast<std::uint32_t>(config_.min_leaf_size) ||
-          !split(box, centre_box, begin, end, mid)) {
+          !split(box, centre_box, begin, end, mid, sides)) {
         node.first = begin;
         node.count = count;
         return;
@@ -65,12 +73,16 @@ class Builder {
       node.first = first;
       node.count = 0;
       if (mid - begin >= config_.parallel_threshold) {
-        tasks.run([this, first, begin, mid, &tasks] { build(first, begin, mid, tasks); });
+        tasks.run([this, first, begin, mid, sides, &tasks] {
+          build(first, begin, mid, sides.box[0], sides.centre_box[0], tasks);
+        });
       } else {
-        build(first, begin, mid, tasks);
+        build(first, begin, mid, sides.box[0], sides.centre_box[0], tasks);
       }
       node_index = first + 1;
       begin = mid;
+      box = sides.box[1];
+      centre_box = sides.centre_box[1];
     }
   }
 
@@ -122,7 +134,7 @@ class Builder {
 
   // Chooses a split by binned SAH and partitions prims[begin, end). Returns false for a leaf.
   bool split(const Aabb& box, const Aabb& centre_box, std::uint32_t begin, std::uint32_t end,
-             std::uint32_t& mid) {
+             std::uint32_t& mid, Sides& sides) {
     const std::uint32_t count = end - begin;
     const int bins = config_.bins;
     double best_cost = kInfinity;
@@ -133,7 +145,12 @@ class Builder {
       scale[axis] = extent[axis] > 0 ? bins / extent[axis] : 0;
       if (!std::isfinite(scale[axis])) scale[axis] = 0;  // a denormal extent: treat as flat
     }
-    BinSet bin{};
+    // Per-thread scratch bins, reset only as far as used (zeroing all kMaxBins cost more than the
+    // binning itself on small nodes).
+    static thread_local BinSet scratch;
+    BinSet& bin = scratch;
+    for (auto& axis_bins : bin)
+      for (int b = 0; b < bins; ++b) axis_bins[b] = Bin{};
     if (count >= config_.parallel_binning_threshold) {
       bin = tbb::parallel_reduce(
           tbb::blocked_range<std::uint32_t>(begin, end, 8192), BinSet{},
@@ -185,17 +202,27 @@ class Builder {
         return false;
       const double s = scale[best_axis];
       const double lo = centre_box.lo[best_axis];
-      auto* first = out_.prims.data() + begin;
-      auto* last = out_.prims.data() + end;
-      auto* m = std::partition(first, last, [&](std::uint32_t p) {
-        return bin_of(centres_[p][best_axis], lo, s) < best_bin;
-      });
-      mid = static_cast<std::uint32_t>(m - out_.prims.data());
+      for (int b = 0; b < bins; ++b) sides.box[b < best_bin ? 0 : 1].grow(bin[best_axis][b].box);
+      // Hoare partition that grows each side's centre box as it classifies each primitive once.
+      auto left = [&](const Vec3& c) { return bin_of(c[best_axis], lo, s) < best_bin; };
+      std::uint32_t* i = out_.prims.data() + begin;
+      std::uint32_t* j = out_.prims.data() + end;
+      for (;;) {
+        while (i < j && left(centres_[*i])) sides.centre_box[0].grow(centres_[*i++]);
+        while (i < j && !left(centres_[*(j - 1)])) sides.centre_box[1].grow(centres_[*--j]);
+        if (i >= j) break;
+        sides.centre_box[1].grow(centres_[*i]);
+        sides.centre_box[0].grow(centres_[*(j - 1)]);
+        std::swap(*i++, *--j);
+      }
+      mid = static_cast<std::uint32_t>(i - out_.prims.data());
       return true;
     }
     // All centres coincide: split by index when the node is too big for a leaf.
     if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
     mid = begin + count / 2;
+    node_bounds(begin, mid, sides.box[0], sides.centre_box[0]);
+    node_bounds(mid, end, sides.box[1], sides.centre_box[1]);
     return true;
   }
 

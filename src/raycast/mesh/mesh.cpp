@@ -191,13 +191,23 @@ MeshRay to_mesh_ray(const Ray& ray, double& scale) {
   return r;
 }
 
-double refine_t(const Mesh& mesh, std::uint32_t tri, const Vec3& o, const Vec3& d, double t_float) {
-  const Vec3 n = face_normal_unnormalised(mesh, tri);
+double refine_t(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& o, const Vec3& d,
+                double t_float) {
+  const Vec3 n = cross(v1 - v0, v2 - v0);
   const double dn = dot(d, n);
   if (dn == 0) return t_float;  // the ray runs in the plane: keep the float test's answer
-  const double t = dot(vertex(mesh, tri, 0) - o, n) / dn;
+  const double t = dot(v0 - o, n) / dn;
   return std::isfinite(t) ? t : t_float;
 }
+
+namespace {
+
+double refine_hit(const Mesh& m, const MeshBvhHit& h, const Ray& ray, double scale) {
+  return refine_t(Vec3(hit_vertex(m.bvh, h, 0)), Vec3(hit_vertex(m.bvh, h, 1)),
+                  Vec3(hit_vertex(m.bvh, h, 2)), ray.o, ray.d, h.t * scale);
+}
+
+}  // namespace
 
 Aabb bounds(const MeshShape& s) { return s.mesh->box; }
 
@@ -207,7 +217,7 @@ bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
   const MeshRay r = to_mesh_ray(ray, scale);
   MeshBvhHit h;
   if (!intersect_closest(m.bvh, r, h)) return false;
-  double t = refine_t(m, h.triangle, ray.o, ray.d, h.t * scale);
+  double t = refine_hit(m, h, ray, scale);
   t = std::clamp(t, ray.tmin, ray.tmax);
   hit = LocalHit{t, static_cast<std::int32_t>(m.source[h.triangle]),
                  static_cast<std::int32_t>(h.triangle), h.b1, h.b2};
@@ -237,7 +247,7 @@ void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
   xs.reserve(hits.size());
   const double orientation = m.orientation;
   for (const MeshBvhHit& h : hits) {
-    const double t = refine_t(m, h.triangle, ray.o, ray.d, h.t * scale);
+    const double t = refine_hit(m, h, ray, scale);
     const double facing = dot(ray.d, face_normal_unnormalised(m, h.triangle)) * orientation;
     xs.push_back({LocalHit{t, static_cast<std::int32_t>(m.source[h.triangle]),
                            static_cast<std::int32_t>(h.triangle), h.b1, h.b2},

@@ -83,7 +83,9 @@ bool is_closed(const MeshShape& s);
 /// of ray.d (t_ray = t_mesh * scale). [tmin, tmax] are rounded outwards.
 MeshRay to_mesh_ray(const Ray& ray, double& scale);
 
-/// The t of the line o + t d on the plane of the mesh's kept triangle `tri`, in double.
-double refine_t(const Mesh& mesh, std::uint32_t tri, const Vec3& o, const Vec3& d, double t_float);
+/// The t of the line o + t d on the plane through v0, v1, v2, in double; t_float when the line
+/// runs in the plane.
+double refine_t(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& o, const Vec3& d,
+                double t_float);
 
 }  // namespace raycast

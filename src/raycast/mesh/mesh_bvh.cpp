@@ -373,7 +373,9 @@ bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit) 
           m &= m - 1;
           if (res.t[l] <= tmax_s) {
             tmax_s = res.t[l];
-            hit = {res.t[l], res.v[l] / res.det[l], res.w[l] / res.det[l], bvh.groups[gi].id[l]};
+            hit = {
+                res.t[l], res.v[l] / res.det[l],        res.w[l] / res.det[l], bvh.groups[gi].id[l],
+                gi,       static_cast<std::uint32_t>(l)};
             found = true;
           }
         }

@@ -81,7 +81,15 @@ struct MeshBvhHit {
   float b1 = 0;
   float b2 = 0;
   std::uint32_t triangle = kNoTriangle;
+  std::uint32_t group = 0;  // where the triangle's vertices sit in MeshBvh::groups (cache-warm)
+  std::uint32_t lane = 0;
 };
+
+/// Vertex k (0, 1, 2) of a hit triangle, read from the leaf data the test just used.
+inline Vec3f hit_vertex(const MeshBvh& bvh, const MeshBvhHit& h, int k) {
+  const TriangleGroup& g = bvh.groups[h.group];
+  return {g.v[k][0][h.lane], g.v[k][1][h.lane], g.v[k][2][h.lane]};
+}
 
 /// Nearest hit with tmin <= t <= tmax (watertight test, float); false on a miss.
 bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit);
