@@ -4,7 +4,10 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <utility>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
 namespace raycast {
@@ -23,10 +26,12 @@ struct Bin {
 
 class Builder {
  public:
-  Builder(std::span<const Aabb> boxes, std::span<const Vec3> centres, const BvhBuildConfig& c, Bvh& out)
+  Builder(std::span<const Aabb> boxes, std::span<const Vec3> centres, const BvhBuildConfig& c,
+          Bvh& out)
       : boxes_(boxes), centres_(centres), config_(c), out_(out) {
     config_.bins = std::clamp(config_.bins, 2, kMaxBins);
     config_.max_leaf_size = std::max(config_.max_leaf_size, 1);
+    config_.leaf_block = std::max(config_.leaf_block, 1);
   }
 
   void run() {
@@ -38,6 +43,9 @@ class Builder {
     next_node_ = 1;
     tbb::task_group tasks;
     build(0, 0, static_cast<std::uint32_t>(n), 0, tasks);
+    Aabb box, centre_box;
+    node_bounds(0, static_cast<std::uint32_t>(n), box, centre_box);
+    build(0, 0, static_cast<std::uint32_t>(n), box, centre_box, tasks);
     tasks.wait();
     out_.nodes.resize(next_node_.load());
   }
@@ -45,14 +53,18 @@ class Builder {
  private:
   void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, std::uint32_t depth,
              tbb::task_group& tasks) {
+  // The boxes of a split's two sides, known from the bins and the partition pass, so that
+  // children need no pass of their own to find their bounds.
+  struct Sides {
+    Aabb box[2], centre_box[2];
+  };
+
+  // Builds node_index over prims[begin, end), whose box and centre box are given.
+  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, Aabb box,
+             Aabb centre_box, tbb::task_group& tasks) {
     // Iterative on the right child, recursive (or a task) on the left, to bound the stack depth.
     for (;;) {
       BvhNode& node = out_.nodes[node_index];
-      Aabb box, centre_box;
-      for (std::uint32_t i = begin; i < end; ++i) {
-        box.grow(boxes_[out_.prims[i]]);
-        centre_box.grow(centres_[out_.prims[i]]);
-      }
       node.box = box;
       const std::uint32_t count = end - begin;
       std::uint32_t mid = 0;
@@ -60,6 +72,9 @@ class Builder {
                         (depth < kMaxSahDepth ? !split(box, centre_box, begin, end, mid)
                                               : !split_median(centre_box, begin, end, mid));
       if (leaf) {
+      Sides sides;
+      if (count <= static_cast<std::uint32_t>(config_.min_leaf_size) ||
+          !split(box, centre_box, begin, end, mid, sides)) {
         node.first = begin;
         node.count = count;
         return;
@@ -77,17 +92,69 @@ class Builder {
       node_index = first + 1;
       begin = mid;
       ++depth;
+        tasks.run([this, first, begin, mid, sides, &tasks] {
+          build(first, begin, mid, sides.box[0], sides.centre_box[0], tasks);
+        build(first, begin, mid, sides.box[0], sides.centre_box[0], tasks);
+      box = sides.box[1];
+      centre_box = sides.centre_box[1];
     }
+  }
+
+  using BinSet = std::array<std::array<Bin, kMaxBins>, 3>;
+
+  // Bins prims[begin, end) on all three axes in one pass.
+  void bin_range(BinSet& bins, const Aabb& centre_box, const Vec3& scale, std::uint32_t begin,
+                 std::uint32_t end) const {
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t p = out_.prims[i];
+      const Vec3& c = centres_[p];
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!(scale[axis] > 0)) continue;
+        Bin& b = bins[axis][bin_of(c[axis], centre_box.lo[axis], scale[axis])];
+        b.box.grow(boxes_[p]);
+        ++b.count;
+      }
+    }
+  }
+
+  double blocks(std::uint32_t count) const {
+    return static_cast<double>((count + config_.leaf_block - 1) / config_.leaf_block);
+  }
+
+  // The box of prims[begin, end) and the box of their centres (in parallel for large ranges).
+  void node_bounds(std::uint32_t begin, std::uint32_t end, Aabb& box, Aabb& centre_box) const {
+    using Pair = std::pair<Aabb, Aabb>;
+    auto grow = [this](const tbb::blocked_range<std::uint32_t>& r, Pair acc) {
+      for (std::uint32_t i = r.begin(); i < r.end(); ++i) {
+        acc.first.grow(boxes_[out_.prims[i]]);
+        acc.second.grow(centres_[out_.prims[i]]);
+      }
+      return acc;
+    };
+    Pair result;
+    if (end - begin >= config_.parallel_binning_threshold) {
+      result = tbb::parallel_reduce(tbb::blocked_range<std::uint32_t>(begin, end, 8192), Pair{},
+                                    grow, [](Pair a, const Pair& b) {
+                                      a.first.grow(b.first);
+                                      a.second.grow(b.second);
+                                      return a;
+                                    });
+    } else {
+      result = grow(tbb::blocked_range<std::uint32_t>(begin, end), Pair{});
+    }
+    box = result.first;
+    centre_box = result.second;
   }
 
   // Chooses a split by binned SAH and partitions prims[begin, end). Returns false for a leaf.
   bool split(const Aabb& box, const Aabb& centre_box, std::uint32_t begin, std::uint32_t end,
-             std::uint32_t& mid) {
+             std::uint32_t& mid, Sides& sides) {
     const std::uint32_t count = end - begin;
     const int bins = config_.bins;
     double best_cost = kInfinity;
     int best_axis = -1, best_bin = 0;
     const Vec3 extent = centre_box.extent();
+    Vec3 scale;
     for (int axis = 0; axis < 3; ++axis) {
       // A subnormal extent would make the scale infinite and a bin index NaN (undefined on cast).
       const double scale = bins / extent[axis];
@@ -99,21 +166,50 @@ class Builder {
         bin[b].box.grow(boxes_[p]);
         ++bin[b].count;
       }
+      scale[axis] = extent[axis] > 0 ? bins / extent[axis] : 0;
+      if (!std::isfinite(scale[axis])) scale[axis] = 0;  // a denormal extent: treat as flat
+    }
+    // Per-thread scratch bins, reset only as far as used (zeroing all kMaxBins cost more than the
+    // binning itself on small nodes).
+    static thread_local BinSet scratch;
+    BinSet& bin = scratch;
+    for (auto& axis_bins : bin)
+      for (int b = 0; b < bins; ++b) axis_bins[b] = Bin{};
+    if (count >= config_.parallel_binning_threshold) {
+      bin = tbb::parallel_reduce(
+          tbb::blocked_range<std::uint32_t>(begin, end, 8192), BinSet{},
+          [&](const tbb::blocked_range<std::uint32_t>& r, BinSet acc) {
+            bin_range(acc, centre_box, scale, r.begin(), r.end());
+            return acc;
+          },
+          [bins](BinSet a, const BinSet& b) {
+            for (int axis = 0; axis < 3; ++axis)
+              for (int i = 0; i < bins; ++i) {
+                a[axis][i].box.grow(b[axis][i].box);
+                a[axis][i].count += b[axis][i].count;
+              }
+            return a;
+          });
+    } else {
+      bin_range(bin, centre_box, scale, begin, end);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(scale[axis] > 0)) continue;
       // Sweep from the right, then from the left, to cost every split plane.
       std::array<double, kMaxBins> right_cost{};
       Aabb acc;
       std::uint32_t acc_count = 0;
       for (int b = bins - 1; b > 0; --b) {
-        acc.grow(bin[b].box);
-        acc_count += bin[b].count;
-        right_cost[b] = acc.half_area() * acc_count;
+        acc.grow(bin[axis][b].box);
+        acc_count += bin[axis][b].count;
+        right_cost[b] = acc.half_area() * blocks(acc_count);
       }
       acc = Aabb{};
       acc_count = 0;
       for (int b = 0; b < bins - 1; ++b) {
-        acc.grow(bin[b].box);
-        acc_count += bin[b].count;
-        const double cost = acc.half_area() * acc_count + right_cost[b + 1];
+        acc.grow(bin[axis][b].box);
+        acc_count += bin[axis][b].count;
+        const double cost = acc.half_area() * blocks(acc_count) + right_cost[b + 1];
         if (acc_count > 0 && acc_count < count && cost < best_cost) {
           best_cost = cost;
           best_axis = axis;
@@ -121,25 +217,36 @@ class Builder {
         }
       }
     }
-    const double leaf_cost = count * config_.primitive_cost;
+    const double leaf_cost = blocks(count) * config_.primitive_cost;
     const double area = box.half_area();
     if (best_axis >= 0) {
       const double split_cost =
           config_.traversal_cost + config_.primitive_cost * best_cost / (area > 0 ? area : 1);
-      if (split_cost >= leaf_cost && count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
-      const double scale = bins / extent[best_axis];
+      if (split_cost >= leaf_cost && count <= static_cast<std::uint32_t>(config_.max_leaf_size))
+        return false;
+      const double s = scale[best_axis];
       const double lo = centre_box.lo[best_axis];
-      auto* first = out_.prims.data() + begin;
-      auto* last = out_.prims.data() + end;
-      auto* m = std::partition(first, last, [&](std::uint32_t p) {
-        return bin_of(centres_[p][best_axis], lo, scale) < best_bin;
-      });
-      mid = static_cast<std::uint32_t>(m - out_.prims.data());
+      for (int b = 0; b < bins; ++b) sides.box[b < best_bin ? 0 : 1].grow(bin[best_axis][b].box);
+      // Hoare partition that grows each side's centre box as it classifies each primitive once.
+      auto left = [&](const Vec3& c) { return bin_of(c[best_axis], lo, s) < best_bin; };
+      std::uint32_t* i = out_.prims.data() + begin;
+      std::uint32_t* j = out_.prims.data() + end;
+      for (;;) {
+        while (i < j && left(centres_[*i])) sides.centre_box[0].grow(centres_[*i++]);
+        while (i < j && !left(centres_[*(j - 1)])) sides.centre_box[1].grow(centres_[*--j]);
+        if (i >= j) break;
+        sides.centre_box[1].grow(centres_[*i]);
+        sides.centre_box[0].grow(centres_[*(j - 1)]);
+        std::swap(*i++, *--j);
+      }
+      mid = static_cast<std::uint32_t>(i - out_.prims.data());
       return true;
     }
     // All centres coincide: split by index when the node is too big for a leaf.
     if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
     mid = begin + count / 2;
+    node_bounds(begin, mid, sides.box[0], sides.centre_box[0]);
+    node_bounds(mid, end, sides.box[1], sides.centre_box[1]);
     return true;
   }
 
@@ -172,7 +279,8 @@ class Builder {
 
 }  // namespace
 
-Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres, const BvhBuildConfig& config) {
+Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres,
+              const BvhBuildConfig& config) {
   Bvh bvh;
   Builder(boxes, centres, config, bvh).run();
   return bvh;

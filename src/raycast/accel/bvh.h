@@ -15,7 +15,10 @@ struct BvhBuildConfig {
   int min_leaf_size = 1;      // below this a node is always a leaf
   double traversal_cost = 1;  // cost of visiting a node, relative to one primitive test
   double primitive_cost = 1;
-  std::size_t parallel_threshold = 4096;  // subtrees this large build as separate tasks
+  int leaf_block = 1;  // leaves are tested in blocks of this many primitives: the SAH
+                       // charges ceil(count / leaf_block) blocks (4 for SIMD triangle groups)
+  std::size_t parallel_binning_threshold = 65536;  // nodes this large bin in parallel
+  std::size_t parallel_threshold = 4096;           // subtrees this large build as separate tasks
 };
 
 /// A node of the binary tree. Children are stored as a pair: `first` and `first + 1`.

@@ -28,7 +28,8 @@ struct Answer {
 
 void check_ray(const Ray& r, const CastOptions& opt, long line) {
   const char* why = nullptr;
-  if (!is_finite(r.o)) why = "ray origin must be finite";
+  if (!is_finite(r.o))
+    why = "ray origin must be finite";
   else if (!is_finite(r.d) || length_squared(r.d) == 0 || !std::isfinite(length_squared(r.d)))
     why = "ray direction must be finite and non-zero";
   else if (std::isnan(r.tmin) || std::isnan(r.tmax) || r.tmin > r.tmax)
@@ -62,8 +63,9 @@ bool parse_line(const std::string& text, long line, const CastOptions& opt, Ray&
     p = end;
   }
   if (n < 6)
-    throw SceneError(opt.source, static_cast<int>(line), 1,
-                     "expected ox oy oz dx dy dz [tmin [tmax]], got " + std::to_string(n) + " numbers");
+    throw SceneError(
+        opt.source, static_cast<int>(line), 1,
+        "expected ox oy oz dx dy dz [tmin [tmax]], got " + std::to_string(n) + " numbers");
   ray.o = {v[0], v[1], v[2]};
   ray.d = {v[3], v[4], v[5]};
   ray.tmin = n > 6 ? v[6] : 0;
@@ -99,7 +101,8 @@ void write_text(const Scene& scene, const Answer& a, CastMode mode, std::string&
         return;
       } else {
         const SurfaceInfo& s = a.surface;
-        std::snprintf(tmp, sizeof tmp, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d %d\n",
+        std::snprintf(tmp, sizeof tmp,
+                      "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d %d\n",
                       a.hit.local.t, s.p.x, s.p.y, s.p.z, s.n.x, s.n.y, s.n.z, s.u, s.v,
                       scene.objects[a.hit.object].entry, a.hit.local.prim);
         buf += tmp;
@@ -112,8 +115,8 @@ void write_text(const Scene& scene, const Answer& a, CastMode mode, std::string&
       buf += std::to_string(a.crossings.size());
       for (std::size_t i = 0; i < a.crossings.size(); ++i) {
         const Vec3& n = a.normals[i];
-        std::snprintf(tmp, sizeof tmp, " %.17g %.17g %.17g %.17g %d", a.crossings[i].t, n.x, n.y, n.z,
-                      scene.objects[a.crossings[i].object].entry);
+        std::snprintf(tmp, sizeof tmp, " %.17g %.17g %.17g %.17g %d", a.crossings[i].t, n.x, n.y,
+                      n.z, scene.objects[a.crossings[i].object].entry);
         buf += tmp;
       }
       buf += '\n';
@@ -129,8 +132,9 @@ void write_binary(const Scene& scene, const Answer& a, CastMode mode, std::vecto
         buf.insert(buf.end(), {kInfinity, nan, nan, nan, nan, nan, nan, nan, nan, -1.0, -1.0});
       } else {
         const SurfaceInfo& s = a.surface;
-        buf.insert(buf.end(), {a.hit.local.t, s.p.x, s.p.y, s.p.z, s.n.x, s.n.y, s.n.z, s.u, s.v,
-                               double(scene.objects[a.hit.object].entry), double(a.hit.local.prim)});
+        buf.insert(buf.end(),
+                   {a.hit.local.t, s.p.x, s.p.y, s.p.z, s.n.x, s.n.y, s.n.z, s.u, s.v,
+                    double(scene.objects[a.hit.object].entry), double(a.hit.local.prim)});
       }
       return;
     case CastMode::kAny:
@@ -167,8 +171,9 @@ void run_cast(const Scene& scene, std::istream& in, std::ostream& out, const Cas
         }
         ++record;
         if (got != sizeof v)
-          throw SceneError(opt.source, 0, 0, "ray " + std::to_string(record) + ": truncated record (" +
-                                                 std::to_string(got) + " of 64 bytes)");
+          throw SceneError(opt.source, 0, 0,
+                           "ray " + std::to_string(record) + ": truncated record (" +
+                               std::to_string(got) + " of 64 bytes)");
         Ray r{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], v[7]};
         check_ray(r, opt, record);
         rays.push_back(r);
@@ -193,7 +198,8 @@ void run_cast(const Scene& scene, std::istream& in, std::ostream& out, const Cas
     if (opt.binary) {
       std::vector<double> buf;
       for (const Answer& a : answers) write_binary(scene, a, opt.mode, buf);
-      out.write(reinterpret_cast<const char*>(buf.data()), static_cast<std::streamsize>(buf.size() * 8));
+      out.write(reinterpret_cast<const char*>(buf.data()),
+                static_cast<std::streamsize>(buf.size() * 8));
     } else {
       std::string buf;
       for (const Answer& a : answers) write_text(scene, a, opt.mode, buf);

@@ -20,12 +20,13 @@
 #include "geometry/sphere.h"
 #include "geometry/torus.h"
 #include "math/transform.h"
+#include "mesh/mesh.h"
 
 namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit>;
+using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, MeshShape>;
 
 struct Object {
   ShapeVariant shape;

@@ -30,5 +30,6 @@ ShapeVariant parse_polyhedron(Fields& f);
 ShapeVariant parse_torus(Fields& f);
 ShapeVariant parse_algebraic(Fields& f);
 ShapeVariant parse_implicit(Fields& f);
+ShapeVariant parse_mesh(Fields& f);
 
 }  // namespace raycast

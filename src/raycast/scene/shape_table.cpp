@@ -17,6 +17,7 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
       {"torus", parse_torus},
       {"algebraic", parse_algebraic},
       {"implicit", parse_implicit},
+      {"mesh", parse_mesh},
   };
   return table;
 }

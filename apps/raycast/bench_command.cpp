@@ -1,0 +1,51 @@
+#include <cstdio>
+#include <string>
+
+#include "api/bench.h"
+#include "commands.h"
+#include "scene/scene_error.h"
+
+namespace raycast::cli {
+
+Action add_bench_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "bench", "Trace a deterministic ray set through a mesh or scene; compare with Embree");
+  struct Options {
+    std::string scene, mesh, procedural, rays = "primary", vs;
+    int threads = 0, repeat = 3;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  auto* scene = cmd->add_option("SCENE", opt->scene, "Scene file (meshes only with --vs embree)");
+  auto* mesh = cmd->add_option("--mesh", opt->mesh, "Mesh file (.obj, .ply, .stl, .gltf, .glb)");
+  auto* proc =
+      cmd->add_option("--procedural", opt->procedural, "NAME:TRIANGLES, NAME sphere or forest");
+  scene->excludes(mesh)->excludes(proc);
+  mesh->excludes(proc);
+  cmd->add_option("--rays", opt->rays, "primary (1024x1024 camera), incoherent or shadow")
+      ->check(CLI::IsMember({"primary", "incoherent", "shadow"}));
+  cmd->add_option("--vs", opt->vs, "Trace the same rays with a peer: embree")
+      ->check(CLI::IsMember({"embree"}));
+  cmd->add_option("--threads", opt->threads, "Threads (default: all cores)")
+      ->check(CLI::Range(0, 1024));
+  cmd->add_option("--repeat", opt->repeat, "Tracing passes; the fastest counts (default 3)")
+      ->check(CLI::Range(1, 100));
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  return [opt] {
+    BenchOptions o;
+    o.scene = opt->scene;
+    o.mesh_file = opt->mesh;
+    o.procedural = opt->procedural;
+    if (o.scene.empty() && o.mesh_file.empty() && o.procedural.empty())
+      throw SceneError("bench", 0, 0, "give a SCENE, --mesh FILE or --procedural NAME:TRIANGLES");
+    o.rays = parse_bench_rays(opt->rays);
+    o.vs_embree = opt->vs == "embree";
+    o.threads = opt->threads;
+    o.repeat = opt->repeat;
+    const BenchResult r = run_bench(o);
+    std::fputs(format_bench(r, opt->json).c_str(), stdout);
+    return 0;
+  };
+}
+
+}  // namespace raycast::cli

@@ -1,0 +1,345 @@
+#include "api/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+
+#include "api/embree_peer.h"
+#include "geometry/spawn.h"
+#include "mesh/mesh_file.h"
+#include "mesh/procedural.h"
+#include "scene/loader.h"
+#include "scene/scene_error.h"
+
+namespace raycast {
+
+namespace {
+
+// SplitMix64 (Steele et al. 2014): the i-th ray's random numbers depend only on i.
+std::uint64_t splitmix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+double uniform(std::uint64_t& state) {
+  state = splitmix(state);
+  return (state >> 11) * 0x1p-53;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Runs `pass` `repeat` times and returns the fastest time in seconds.
+template <class F>
+double best_of(int repeat, F&& pass) {
+  double best = kInfinity;
+  for (int i = 0; i < std::max(repeat, 1); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    pass();
+    best = std::min(best, seconds_since(start));
+  }
+  return best;
+}
+
+std::shared_ptr<const Mesh> bench_mesh(const BenchOptions& o, std::string& what) {
+  TriangleSoup soup;
+  std::vector<Vec3f> normals;
+  if (!o.mesh_file.empty()) {
+    what = o.mesh_file;
+    try {
+      MeshFileData d = load_mesh_file(o.mesh_file);
+      soup = std::move(d.soup);
+    } catch (const MeshFileError& e) {
+      throw SceneError(o.mesh_file, 0, 0, e.what());
+    }
+  } else {
+    what = "procedural " + o.procedural;
+    const auto colon = o.procedural.find(':');
+    if (colon == std::string::npos)
+      throw SceneError("--procedural", 0, 0,
+                       "expected NAME:TRIANGLES (sphere:1000000), got " + o.procedural);
+    const std::string name = o.procedural.substr(0, colon), count = o.procedural.substr(colon + 1);
+    double n = 0;
+    try {
+      std::size_t used = 0;
+      n = std::stod(count, &used);
+      if (used != count.size()) throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+      throw SceneError("--procedural", 0, 0,
+                       "the triangle count must be a number, got '" + count + "'");
+    }
+    try {
+      soup = make_procedural_mesh(name, static_cast<std::size_t>(std::max(0.0, std::min(n, 4e9))));
+    } catch (const std::invalid_argument& e) {
+      throw SceneError("--procedural", 0, 0, e.what());
+    }
+  }
+  try {
+    return make_mesh(std::move(soup.positions), std::move(soup.triangles));
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(what, 0, 0, e.what());
+  }
+}
+
+bool t_differs(double a, double b) {
+  return std::abs(a - b) > 1e-4 * std::max(std::abs(a), std::abs(b));
+}
+
+}  // namespace
+
+BenchRays parse_bench_rays(const std::string& s) {
+  if (s == "primary") return BenchRays::kPrimary;
+  if (s == "incoherent") return BenchRays::kIncoherent;
+  if (s == "shadow") return BenchRays::kShadow;
+  throw SceneError("--rays", 0, 0, "expected primary, incoherent or shadow, got " + s);
+}
+
+Vec3 bench_light(const Aabb& box) {
+  const Vec3 c = box.centre();
+  const double r = 0.5 * length(box.extent());
+  return c + Vec3{0.6, 1.2, 1.5} * r;
+}
+
+std::vector<BenchRay> primary_rays(const Aabb& box, int width, int height) {
+  const Vec3 c = box.centre();
+  const double radius = std::max(0.5 * length(box.extent()), 1e-30);
+  const double fov = 40 * std::numbers::pi / 180;
+  const Vec3 view = normalize(Vec3{0.3, 0.4, 1.0});
+  const Vec3 eye = c + (radius / std::sin(fov / 2)) * view;
+  const Vec3 forward = -view;
+  const Vec3 right = normalize(cross(forward, Vec3{0, 1, 0}));
+  const Vec3 up = cross(right, forward);
+  const double half_h = std::tan(fov / 2), half_w = half_h * width / height;
+  std::vector<BenchRay> rays(static_cast<std::size_t>(width) * height);
+  tbb::parallel_for(0, height, [&](int j) {
+    for (int i = 0; i < width; ++i) {
+      const double x = (2 * (i + 0.5) / width - 1) * half_w,
+                   y = (1 - 2 * (j + 0.5) / height) * half_h;
+      rays[static_cast<std::size_t>(j) * width + i] =
+          BenchRay{eye, forward + x * right + y * up, 0, kInfinity};
+    }
+  });
+  return rays;
+}
+
+std::vector<BenchRay> incoherent_rays(const Aabb& box, std::size_t count) {
+  std::vector<BenchRay> rays(count);
+  tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) {
+    std::uint64_t s = i * 0x2545F4914F6CDD1Dull + 17;
+    const Vec3 o{box.lo.x + uniform(s) * (box.hi.x - box.lo.x),
+                 box.lo.y + uniform(s) * (box.hi.y - box.lo.y),
+                 box.lo.z + uniform(s) * (box.hi.z - box.lo.z)};
+    const double z = 2 * uniform(s) - 1, phi = 2 * std::numbers::pi * uniform(s);
+    const double r = std::sqrt(std::max(0.0, 1 - z * z));
+    rays[i] = BenchRay{o, {r * std::cos(phi), r * std::sin(phi), z}, 0, kInfinity};
+  });
+  return rays;
+}
+
+BenchResult run_bench(const BenchOptions& o) {
+  const int threads =
+      o.threads > 0 ? o.threads : static_cast<int>(tbb::info::default_concurrency());
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                            static_cast<std::size_t>(threads));
+  BenchResult r;
+  r.threads = threads;
+  r.ray_kind = o.rays == BenchRays::kPrimary
+                   ? "primary"
+                   : (o.rays == BenchRays::kIncoherent ? "incoherent" : "shadow");
+
+  // The scene: a file, or one mesh (from a file or procedural) as the only object.
+  Scene scene;
+  double mesh_build_ms = 0;
+  if (!o.scene.empty()) {
+    scene = load_scene_file(o.scene);
+    r.what = o.scene;
+  } else {
+    const auto mesh = bench_mesh(o, r.what);
+    scene.materials.emplace_back();
+    Object obj;
+    obj.shape = MeshShape{mesh};
+    obj.material = 0;
+    obj.entry = 0;
+    scene.objects.push_back(std::move(obj));
+    scene.entries = 1;
+    scene.build();
+  }
+  std::vector<PeerMesh> peer_meshes;
+  std::size_t bvh_bytes = 0, total_bytes = 0;
+  for (const Object& obj : scene.objects)
+    if (const auto* m = std::get_if<MeshShape>(&obj.shape)) {
+      r.triangles += m->mesh->triangle_count();
+      mesh_build_ms += m->mesh->build_ms;
+      bvh_bytes += m->mesh->bvh_bytes();
+      total_bytes += m->mesh->memory_bytes();
+      peer_meshes.push_back({m->mesh, obj.xf});
+    } else if (o.vs_embree) {
+      throw SceneError(o.scene, 0, 0, "--vs embree needs a scene made of meshes only");
+    }
+  r.raycast_build_ms = mesh_build_ms + scene.build_ms();
+  const double tris = std::max<double>(1, static_cast<double>(r.triangles));
+  r.raycast_bytes_per_tri = (bvh_bytes + scene.accel_bytes()) / tris;
+  r.raycast_total_bytes_per_tri = (total_bytes + scene.accel_bytes()) / tris;
+  const Aabb box =
+      scene.finite_bounds().is_empty() ? Aabb{{-1, -1, -1}, {1, 1, 1}} : scene.finite_bounds();
+
+  // The rays.
+  std::vector<BenchRay> rays =
+      o.rays == BenchRays::kIncoherent
+          ? incoherent_rays(box, static_cast<std::size_t>(o.width) * o.height)
+          : primary_rays(box, o.width, o.height);
+  std::vector<SceneHit> hits(rays.size());
+  auto trace = [&](const std::vector<BenchRay>& rs, std::vector<SceneHit>& out) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rs.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& b) {
+                        for (std::size_t i = b.begin(); i < b.end(); ++i) {
+                          const BenchRay& q = rs[i];
+                          SceneHit h;
+                          scene.intersect(Ray{q.o, q.d, q.tmin, q.tmax}, h);
+                          out[i] = h;
+                        }
+                      });
+  };
+  if (o.rays == BenchRays::kShadow) {
+    // Shadow rays from the primary hits (offset by their error bounds) towards the light.
+    trace(rays, hits);
+    const Vec3 light = bench_light(box);
+    std::vector<BenchRay> shadow;
+    shadow.reserve(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      if (!hits[i].valid()) continue;
+      const Ray ray{rays[i].o, rays[i].d, rays[i].tmin, rays[i].tmax};
+      const SurfaceInfo si = scene.surface(ray, hits[i]);
+      const Vec3 p = offset_ray_origin(si, light - si.p);
+      shadow.push_back(BenchRay{p, light - p, 0, 1});
+    }
+    rays = std::move(shadow);
+  }
+  r.rays = rays.size();
+
+  std::vector<std::uint8_t> blocked;
+  double seconds = 0;
+  if (o.rays == BenchRays::kShadow) {
+    blocked.assign(rays.size(), 0);
+    seconds = best_of(o.repeat, [&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 1024),
+                        [&](const tbb::blocked_range<std::size_t>& b) {
+                          for (std::size_t i = b.begin(); i < b.end(); ++i) {
+                            const BenchRay& q = rays[i];
+                            blocked[i] = scene.occluded(Ray{q.o, q.d, q.tmin, q.tmax});
+                          }
+                        });
+    });
+    for (std::uint8_t b : blocked) r.hits += b;
+  } else {
+    seconds = best_of(o.repeat, [&] { trace(rays, hits); });
+    for (const SceneHit& h : hits) r.hits += h.valid();
+  }
+  r.raycast_mrays = r.rays / seconds / 1e6;
+
+  if (!o.vs_embree) return r;
+  const EmbreePeer peer(peer_meshes, threads);
+  r.embree = true;
+  r.embree_build_ms = peer.build_ms();
+  r.embree_bytes_per_tri = peer.bytes() / tris;
+  double embree_seconds = 0;
+  if (o.rays == BenchRays::kShadow) {
+    std::vector<std::uint8_t> eb(rays.size());
+    embree_seconds = best_of(o.repeat, [&] { peer.occluded(rays, eb); });
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      if (eb[i] != blocked[i]) ++r.disagree_hit;
+  } else {
+    std::vector<PeerHit> eh(rays.size());
+    embree_seconds = best_of(o.repeat, [&] { peer.intersect(rays, eh); });
+    // The peer's geometry index is the position among the scene's meshes: map it back.
+    std::vector<std::int32_t> object_of;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      if (std::holds_alternative<MeshShape>(scene.objects[i].shape))
+        object_of.push_back(static_cast<std::int32_t>(i));
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const SceneHit& a = hits[i];
+      const PeerHit& b = eh[i];
+      if (a.valid() != (b.geometry >= 0)) {
+        ++r.disagree_hit;
+        ++r.disagree;
+        continue;
+      }
+      if (!a.valid()) continue;
+      const bool dt = t_differs(a.local.t, b.t);
+      const bool dp = a.object != object_of[b.geometry] || a.local.prim != b.prim;
+      r.disagree_t += dt;
+      r.disagree_prim += dp;
+      r.disagree += dt || dp;
+    }
+  }
+  if (o.rays == BenchRays::kShadow) r.disagree = r.disagree_hit;
+  r.embree_mrays = r.rays / embree_seconds / 1e6;
+  r.ratio = r.raycast_mrays / r.embree_mrays;
+  return r;
+}
+
+std::string format_bench(const BenchResult& r, bool json) {
+  char buf[2048];
+  std::string out;
+  if (json) {
+    std::snprintf(buf, sizeof buf,
+                  "{\"what\": \"%s\", \"ray_kind\": \"%s\", \"triangles\": %llu, \"rays\": %llu, "
+                  "\"hits\": %llu, "
+                  "\"threads\": %d, \"raycast_build_ms\": %.3f, \"raycast_mrays\": %.4f, "
+                  "\"raycast_bytes_per_tri\": %.2f, \"raycast_total_bytes_per_tri\": %.2f",
+                  r.what.c_str(), r.ray_kind.c_str(), static_cast<unsigned long long>(r.triangles),
+                  static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
+                  r.threads, r.raycast_build_ms, r.raycast_mrays, r.raycast_bytes_per_tri,
+                  r.raycast_total_bytes_per_tri);
+    out = buf;
+    if (r.embree) {
+      std::snprintf(
+          buf, sizeof buf,
+          ", \"embree_build_ms\": %.3f, \"embree_mrays\": %.4f, \"embree_bytes_per_tri\": %.2f, "
+          "\"ratio\": %.4f, \"disagree\": %llu, \"disagree_hit\": %llu, \"disagree_t\": %llu, "
+          "\"disagree_prim\": %llu",
+          r.embree_build_ms, r.embree_mrays, r.embree_bytes_per_tri, r.ratio,
+          static_cast<unsigned long long>(r.disagree),
+          static_cast<unsigned long long>(r.disagree_hit),
+          static_cast<unsigned long long>(r.disagree_t),
+          static_cast<unsigned long long>(r.disagree_prim));
+      out += buf;
+    }
+    return out + "}\n";
+  }
+  std::snprintf(
+      buf, sizeof buf,
+      "mesh: %s (%llu triangles)\nrays: %s, %llu rays (%llu hit), %d threads\n"
+      "raycast: build %.1f ms, %.3f Mrays/s, %.1f bytes/triangle (BVH; %.1f with mesh storage)\n",
+      r.what.c_str(), static_cast<unsigned long long>(r.triangles), r.ray_kind.c_str(),
+      static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits), r.threads,
+      r.raycast_build_ms, r.raycast_mrays, r.raycast_bytes_per_tri, r.raycast_total_bytes_per_tri);
+  out = buf;
+  if (r.embree) {
+    std::snprintf(
+        buf, sizeof buf,
+        "embree:  build %.1f ms, %.3f Mrays/s, %.1f bytes/triangle\n"
+        "ratio raycast/embree: %.3f; disagree: %llu rays (hit/miss %llu, t %llu, prim %llu)\n",
+        r.embree_build_ms, r.embree_mrays, r.embree_bytes_per_tri, r.ratio,
+        static_cast<unsigned long long>(r.disagree),
+        static_cast<unsigned long long>(r.disagree_hit),
+        static_cast<unsigned long long>(r.disagree_t),
+        static_cast<unsigned long long>(r.disagree_prim));
+    out += buf;
+  }
+  return out;
+}
+
+}  // namespace raycast

@@ -1,0 +1,343 @@
+#include "mesh/mesh.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <tbb/parallel_sort.h>
+
+namespace raycast {
+
+namespace {
+
+// A fixed direction for the inside test of closed meshes: irrational-looking so that it is
+// unlikely to run exactly along an edge of a modelled mesh.
+const Vec3 kContainsDirection = normalize(Vec3{0.5377, 0.6337, 0.5561});
+
+Vec3 vertex(const Mesh& m, std::uint32_t tri, int k) {
+  return Vec3(m.positions[m.triangles[tri][k]]);
+}
+
+Vec3 face_normal_unnormalised(const Mesh& m, std::uint32_t tri) {
+  const Vec3 v0 = vertex(m, tri, 0);
+  return cross(vertex(m, tri, 1) - v0, vertex(m, tri, 2) - v0);
+}
+
+float round_down(double x) {
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+
+float round_up(double x) {
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+// Signed volume of a closed mesh (positive when its normals point out).
+double signed_volume(const Mesh& m) {
+  double v = 0;
+  for (std::uint32_t i = 0; i < m.triangles.size(); ++i)
+    v += dot(vertex(m, i, 0), cross(vertex(m, i, 1), vertex(m, i, 2)));
+  return v / 6;
+}
+
+}  // namespace
+
+std::size_t Mesh::memory_bytes() const {
+  return positions.capacity() * sizeof(Vec3f) + triangles.capacity() * sizeof(triangles[0]) +
+         source.capacity() * sizeof(std::uint32_t) + normals.capacity() * sizeof(Vec3f) +
+         bvh.memory_bytes();
+}
+
+std::vector<Vec3f> angle_weighted_normals(
+    const std::vector<Vec3f>& positions,
+    const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  std::vector<Vec3> acc(positions.size());
+  for (const auto& t : triangles) {
+    const Vec3 p[3] = {Vec3(positions[t[0]]), Vec3(positions[t[1]]), Vec3(positions[t[2]])};
+    const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
+    const double len = length(n);
+    if (!(len > 0)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
+      const double la = length(a), lb = length(b);
+      if (!(la > 0 && lb > 0)) continue;
+      const double angle = std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0));
+      acc[t[k]] += (angle / len) * n;
+    }
+  }
+  std::vector<Vec3f> out(positions.size());
+  for (std::size_t i = 0; i < acc.size(); ++i) {
+    const double len = length(acc[i]);
+    out[i] = len > 0 ? Vec3f(acc[i] / len) : Vec3f{0, 0, 1};
+  }
+  return out;
+}
+
+bool is_closed_mesh(const std::vector<Vec3f>& positions,
+                    const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  if (triangles.empty()) return false;
+  // Weld vertices by exact position, so that files which split vertices (STL, per-face normals)
+  // are judged by their geometry.
+  std::vector<std::uint32_t> order(positions.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto key = [&](std::uint32_t i) {
+    const Vec3f& p = positions[i];
+    return std::array<float, 3>{p.x, p.y, p.z};
+  };
+  tbb::parallel_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  std::vector<std::uint32_t> weld(positions.size());
+  std::uint32_t id = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i > 0 && key(order[i]) != key(order[i - 1])) ++id;
+    weld[order[i]] = id;
+  }
+  std::vector<std::uint64_t> edges;
+  edges.reserve(triangles.size() * 3);
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      std::uint64_t a = weld[t[k]], b = weld[t[(k + 1) % 3]];
+      if (a > b) std::swap(a, b);
+      edges.push_back(a << 32 | b);
+    }
+  tbb::parallel_sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i != 2) return false;
+    i = j;
+  }
+  return true;
+}
+
+std::shared_ptr<const Mesh> make_mesh(std::vector<Vec3f> positions,
+                                      std::vector<std::array<std::uint32_t, 3>> triangles,
+                                      std::vector<Vec3f> normals, const MeshOptions& options) {
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (!is_finite(positions[i]))
+      throw std::invalid_argument("vertex " + std::to_string(i) + " is not finite");
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (std::uint32_t k : triangles[i])
+      if (k >= positions.size())
+        throw std::invalid_argument("triangle " + std::to_string(i) + " has vertex index " +
+                                    std::to_string(k) + " out of range (" +
+                                    std::to_string(positions.size()) + " vertices)");
+  if (!normals.empty()) {
+    if (normals.size() != positions.size())
+      throw std::invalid_argument("normals must be one per vertex (" +
+                                  std::to_string(normals.size()) + " for " +
+                                  std::to_string(positions.size()) + " vertices)");
+    for (std::size_t i = 0; i < normals.size(); ++i) {
+      const Vec3 n(normals[i]);
+      if (!is_finite(n) || !(length_squared(n) > 0))
+        throw std::invalid_argument("normal " + std::to_string(i) + " is zero or not finite");
+      normals[i] = Vec3f(normalize(n));
+    }
+  }
+  auto mesh = std::make_shared<Mesh>();
+  Mesh& m = *mesh;
+  m.positions = std::move(positions);
+  // Drop degenerate triangles: repeated indices or zero area (exactly, from the float vertices).
+  m.triangles.reserve(triangles.size());
+  m.source.reserve(triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const auto& t = triangles[i];
+    const Vec3 v0(m.positions[t[0]]);
+    const bool degenerate =
+        t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+        length_squared(cross(Vec3(m.positions[t[1]]) - v0, Vec3(m.positions[t[2]]) - v0)) == 0;
+    if (degenerate) {
+      ++m.dropped;
+      continue;
+    }
+    m.triangles.push_back(t);
+    m.source.push_back(static_cast<std::uint32_t>(i));
+  }
+  triangles = {};
+  m.triangles.shrink_to_fit();
+  m.source.shrink_to_fit();
+  for (const auto& t : m.triangles)
+    for (std::uint32_t k : t) m.box.grow(Vec3(m.positions[k]));
+  if (options.smooth)
+    m.normals =
+        normals.empty() ? angle_weighted_normals(m.positions, m.triangles) : std::move(normals);
+  m.closed = is_closed_mesh(m.positions, m.triangles);
+  if (m.closed && signed_volume(m) < 0) m.orientation = -1;
+  const auto start = std::chrono::steady_clock::now();
+  m.bvh = build_mesh_bvh(m.positions, m.triangles, options.bvh);
+  m.build_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return mesh;
+}
+
+MeshRay to_mesh_ray(const Ray& ray, double& scale) {
+  // Scale d by a power of two (exact) so that its largest component lies in [1, 2): then it is a
+  // normal float whatever the caller's units, and t scales by the same power.
+  const double m = max_component(abs(ray.d));
+  scale = std::ldexp(1.0, -std::ilogb(m));
+  const Vec3 d = ray.d * scale;
+  MeshRay r;
+  r.o = Vec3f(ray.o);
+  r.d = Vec3f(d);
+  r.tmin = round_down(ray.tmin / scale);
+  r.tmax = round_up(ray.tmax / scale);
+  return r;
+}
+
+double refine_t(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& o, const Vec3& d,
+                double t_float) {
+  const Vec3 n = cross(v1 - v0, v2 - v0);
+  const double dn = dot(d, n);
+  if (dn == 0) return t_float;  // the ray runs in the plane: keep the float test's answer
+  const double t = dot(v0 - o, n) / dn;
+  return std::isfinite(t) ? t : t_float;
+}
+
+namespace {
+
+double refine_hit(const Mesh& m, const MeshBvhHit& h, const Ray& ray, double scale) {
+  return refine_t(Vec3(hit_vertex(m.bvh, h, 0)), Vec3(hit_vertex(m.bvh, h, 1)),
+                  Vec3(hit_vertex(m.bvh, h, 2)), ray.o, ray.d, h.t * scale);
+}
+
+}  // namespace
+
+Aabb bounds(const MeshShape& s) { return s.mesh->box; }
+
+bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
+  const Mesh& m = *s.mesh;
+  double scale;
+  const MeshRay r = to_mesh_ray(ray, scale);
+  MeshBvhHit h;
+  if (!intersect_closest(m.bvh, r, h)) return false;
+  double t = refine_hit(m, h, ray, scale);
+  t = std::clamp(t, ray.tmin, ray.tmax);
+  hit = LocalHit{t, static_cast<std::int32_t>(m.source[h.triangle]),
+                 static_cast<std::int32_t>(h.triangle), h.b1, h.b2};
+  return true;
+}
+
+bool occluded(const MeshShape& s, const Ray& ray) {
+  double scale;
+  return intersect_any(s.mesh->bvh, to_mesh_ray(ray, scale));
+}
+
+void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
+  const Mesh& m = *s.mesh;
+  Ray line = ray;
+  line.tmin = -kInfinity;
+  line.tmax = kInfinity;
+  double scale;
+  const MeshRay r = to_mesh_ray(line, scale);
+  std::vector<MeshBvhHit> hits;
+  intersect_every(m.bvh, r, hits);
+  if (hits.empty()) return;
+  struct Crossing {
+    LocalHit hit;
+    bool entering;
+  };
+  std::vector<Crossing> xs;
+  xs.reserve(hits.size());
+  const double orientation = m.orientation;
+  for (const MeshBvhHit& h : hits) {
+    const double t = refine_hit(m, h, ray, scale);
+    const double facing = dot(ray.d, face_normal_unnormalised(m, h.triangle)) * orientation;
+    xs.push_back({LocalHit{t, static_cast<std::int32_t>(m.source[h.triangle]),
+                           static_cast<std::int32_t>(h.triangle), h.b1, h.b2},
+                  facing < 0});
+  }
+  std::sort(xs.begin(), xs.end(),
+            [](const Crossing& a, const Crossing& b) { return a.hit.t < b.hit.t; });
+  // Two triangles sharing the edge or vertex a ray passes through both report the crossing: merge
+  // same-direction crossings closer than the float resolution of the mesh's coordinates.
+  const double coord = std::max(max_component(abs(m.box.lo)), max_component(abs(m.box.hi)));
+  const double tol = 8 * std::numeric_limits<float>::epsilon() * coord / length(ray.d);
+  std::vector<Crossing> merged;
+  for (const Crossing& c : xs) {
+    if (!merged.empty() && merged.back().entering == c.entering &&
+        c.hit.t - merged.back().hit.t <= tol) {
+      if (!c.entering) merged.back() = c;  // keep the first entry, the last exit
+      continue;
+    }
+    merged.push_back(c);
+  }
+  if (!m.closed) {
+    for (const Crossing& c : merged) out.add(c.hit, c.hit);
+    return;
+  }
+  // A closed mesh: runs of entries open a span at the first one, runs of exits close it at the
+  // last.
+  bool inside = false;
+  LocalHit in;
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    const Crossing& c = merged[i];
+    if (c.entering) {
+      if (!inside) {
+        in = c.hit;
+        inside = true;
+      }
+    } else if (inside && (i + 1 == merged.size() || merged[i + 1].entering)) {
+      out.add(in, c.hit);
+      inside = false;
+    }
+  }
+}
+
+SurfaceInfo surface(const MeshShape& s, const Ray& ray, const LocalHit& hit) {
+  const Mesh& m = *s.mesh;
+  const auto tri = static_cast<std::uint32_t>(hit.part);
+  const Vec3 v0 = vertex(m, tri, 0), v1 = vertex(m, tri, 1), v2 = vertex(m, tri, 2);
+  const double b1 = hit.a, b2 = hit.b, b0 = 1 - b1 - b2;
+  SurfaceInfo si;
+  // The point on the ray at the refined t, so that p = o + t d as users expect. Its distance to
+  // the plane comes from solving for t: the numerator dot(v0 - o, n) carries at most
+  // gamma(5) dot(|v0 - o|, |n|) (plus the error of n from exact float vertices), divided by |d.n|.
+  const Vec3 n = cross(v1 - v0, v2 - v0);
+  si.p = ray.at(hit.t);
+  const double dn = std::abs(dot(ray.d, n));
+  const double t_error = dn > 0 ? gamma(7) * dot(abs(v0 - ray.o), abs(n)) / dn : 0;
+  si.p_error = gamma(3) * (abs(ray.o) + abs(hit.t * ray.d)) + t_error * abs(ray.d);
+  // The BVH and triangle test run in float on a float copy of the ray: a secondary ray leaving
+  // p is rounded to float too, so the bound must cover float rounding of p and of the
+  // barycentric interpolation (pbrt-v4's gamma(7) in float, plus one rounding of p).
+  constexpr double kFloatGamma9 = 9 * 0x1p-24 / (1 - 9 * 0x1p-24);
+  const Vec3 float_bound = kFloatGamma9 * (abs(b0 * v0) + abs(b1 * v1) + abs(b2 * v2) + abs(si.p));
+  si.p_error += float_bound;
+  if (!(dn > 0) || !is_finite(si.p_error)) {
+    // The ray runs in the plane (or the bound overflowed): take the point from the barycentrics.
+    si.p = b0 * v0 + b1 * v1 + b2 * v2;
+    si.p_error = gamma(7) * (abs(b0 * v0) + abs(b1 * v1) + abs(b2 * v2)) + float_bound;
+  }
+  si.n = normalize(cross(v1 - v0, v2 - v0));
+  si.shading_n = si.n;
+  if (!m.normals.empty()) {
+    const auto& t = m.triangles[tri];
+    const Vec3 ns =
+        b0 * Vec3(m.normals[t[0]]) + b1 * Vec3(m.normals[t[1]]) + b2 * Vec3(m.normals[t[2]]);
+    const double len = length(ns);
+    if (len > 0 && std::isfinite(len)) si.shading_n = dot(ns, si.n) < 0 ? -ns / len : ns / len;
+  }
+  si.u = b1;
+  si.v = b2;
+  return si;
+}
+
+bool contains(const MeshShape& s, const Vec3& p) {
+  if (!s.mesh->closed) return false;
+  SpanList out;
+  spans(s, Ray{p, kContainsDirection}, out);
+  for (const Span& sp : out)
+    if (sp.in.t <= 0 && 0 <= sp.out.t) return true;
+  return false;
+}
+
+bool is_closed(const MeshShape& s) { return s.mesh->closed; }
+
+}  // namespace raycast

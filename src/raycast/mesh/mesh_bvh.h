@@ -1,0 +1,101 @@
+#pragma once
+// The per-mesh acceleration structure: a 4-wide BVH in float, built by collapsing the generic
+// binary SAH tree of accel/bvh.h, with leaves of precomputed triangle groups (4 triangles in SoA
+// form, so that one SSE pass tests them all). Traversal is ordered, nearest child first.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "accel/bvh.h"
+#include "math/vec3.h"
+
+namespace raycast {
+
+/// A node with up to 4 children, 128 bytes (two cache lines): the six box planes of the four
+/// children as SoA float lanes (96 bytes), then the four child references (16 bytes) and 16 bytes
+/// of padding to keep nodes cache-line aligned. A child reference is an inner node's index, or
+/// (bit 31 set) a leaf: bits 0-28 the first triangle group, bits 29-30 the group count minus 1.
+/// An unused slot has an empty box (lo = +inf, hi = -inf), which no ray enters, and reference 0.
+struct alignas(64) WideNode {
+  float lo_x[4], hi_x[4], lo_y[4], hi_y[4], lo_z[4], hi_z[4];
+  std::uint32_t child[4];
+  std::uint32_t pad[4];
+};
+static_assert(sizeof(WideNode) == 128);
+
+inline constexpr std::uint32_t kLeafBit = 0x80000000u;
+inline constexpr int kMaxGroupsPerLeaf = 4;
+
+/// Four triangles in SoA form (160 bytes): v[vertex][axis][lane], then the triangle index of each
+/// lane. A lane past the end of a leaf's triangles has NaN vertices (never hit) and id kNoTriangle.
+/// The vertices (not edges) are stored so that the watertight test sees shared vertices bit for
+/// bit.
+struct alignas(16) TriangleGroup {
+  float v[3][3][4];
+  std::uint32_t id[4];
+};
+static_assert(sizeof(TriangleGroup) == 160);
+
+inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
+
+struct MeshBvhConfig {
+  int bins = 16;          // SAH bins per axis
+  int max_leaf_size = 8;  // triangles per leaf (at most 4 groups of 4)
+  int leaf_block = 4;     // the SAH counts leaf cost per group of this many triangles
+  double traversal_cost = 1.0;
+};
+
+struct MeshBvh {
+  std::vector<WideNode> nodes;        // nodes[0] is the root when there is any triangle
+  std::vector<TriangleGroup> groups;  // leaf data, permuted to leaf order
+  std::uint32_t root = 0;             // a child reference: node 0, or a single leaf
+  int depth = 0;                      // deepest node level (for the traversal stack)
+  bool empty() const { return groups.empty(); }
+  std::size_t memory_bytes() const {
+    return nodes.size() * sizeof(WideNode) + groups.size() * sizeof(TriangleGroup);
+  }
+};
+
+/// Builds the BVH over triangles (vertex index triples into positions; all finite). Triangle ids
+/// in the leaves are indices into `triangles`. Parallel (oneTBB); the result does not depend on
+/// the thread count.
+MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
+                       std::span<const std::array<std::uint32_t, 3>> triangles,
+                       const MeshBvhConfig& config = {});
+
+/// A ray prepared for float traversal: origin and direction in float (the caller scales d by a
+/// power of two so that it is representable), [tmin, tmax] in units of that d.
+struct MeshRay {
+  Vec3f o;
+  Vec3f d;
+  float tmin = 0;
+  float tmax = 0;
+};
+
+/// The nearest triangle hit: its float t in units of MeshRay::d, barycentrics b1 and b2 (of the
+/// second and third vertex) and the triangle index (into the build's `triangles`).
+struct MeshBvhHit {
+  float t = 0;
+  float b1 = 0;
+  float b2 = 0;
+  std::uint32_t triangle = kNoTriangle;
+  std::uint32_t group = 0;  // where the triangle's vertices sit in MeshBvh::groups (cache-warm)
+  std::uint32_t lane = 0;
+};
+
+/// Vertex k (0, 1, 2) of a hit triangle, read from the leaf data the test just used.
+inline Vec3f hit_vertex(const MeshBvh& bvh, const MeshBvhHit& h, int k) {
+  const TriangleGroup& g = bvh.groups[h.group];
+  return {g.v[k][0][h.lane], g.v[k][1][h.lane], g.v[k][2][h.lane]};
+}
+
+/// Nearest hit with tmin <= t <= tmax (watertight test, float); false on a miss.
+bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit);
+/// Whether any triangle is hit with tmin <= t <= tmax; stops at the first found.
+bool intersect_any(const MeshBvh& bvh, const MeshRay& ray);
+/// Every triangle hit with tmin <= t <= tmax, in no particular order, appended to out.
+void intersect_every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out);
+
+}  // namespace raycast

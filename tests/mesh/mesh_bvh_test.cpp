@@ -1,0 +1,156 @@
+// The mesh BVH against brute force over the same watertight test.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "mesh/mesh.h"
+#include "mesh/procedural.h"
+#include "mesh/triangle.h"
+
+namespace raycast {
+namespace {
+
+struct Brute {
+  bool found = false;
+  float t = 0;
+  std::vector<std::uint32_t> tris;  // every triangle at the nearest t (ties)
+};
+
+Brute brute_force(const TriangleSoup& s, const MeshRay& r) {
+  const WatertightRay w = make_watertight_ray(r.o, r.d);
+  Brute b;
+  for (std::uint32_t i = 0; i < s.triangles.size(); ++i) {
+    const auto& t = s.triangles[i];
+    TriangleHit h;
+    if (!intersect_watertight(w, s.positions[t[0]], s.positions[t[1]], s.positions[t[2]], r.tmin,
+                              r.tmax, h))
+      continue;
+    if (!b.found || h.t < b.t) {
+      b.found = true;
+      b.t = h.t;
+      b.tris.clear();
+    }
+    if (h.t == b.t) b.tris.push_back(i);
+  }
+  return b;
+}
+
+TriangleSoup random_soup(std::mt19937& rng, int n, float spread, float size) {
+  std::uniform_real_distribution<float> pos(-spread, spread), off(-size, size);
+  TriangleSoup s;
+  for (int i = 0; i < n; ++i) {
+    const Vec3f c{pos(rng), pos(rng), pos(rng)};
+    const auto base = static_cast<std::uint32_t>(s.positions.size());
+    for (int k = 0; k < 3; ++k) s.positions.push_back(c + Vec3f{off(rng), off(rng), off(rng)});
+    s.triangles.push_back({base, base + 1, base + 2});
+  }
+  return s;
+}
+
+MeshRay random_ray(std::mt19937& rng, float spread) {
+  std::uniform_real_distribution<float> pos(-1.5f * spread, 1.5f * spread);
+  std::normal_distribution<float> dir;
+  MeshRay r;
+  r.o = {pos(rng), pos(rng), pos(rng)};
+  do r.d = {dir(rng), dir(rng), dir(rng)};
+  while (!(length_squared(r.d) > 0.01f));
+  r.tmin = 0;
+  r.tmax = std::uniform_real_distribution<float>(0.5f, 10.0f)(rng) * spread;
+  return r;
+}
+
+void check_against_brute_force(const TriangleSoup& soup, const MeshBvh& bvh, const MeshRay& r) {
+  const Brute b = brute_force(soup, r);
+  MeshBvhHit h;
+  const bool hit = intersect_closest(bvh, r, h);
+  ASSERT_EQ(hit, b.found);
+  EXPECT_EQ(intersect_any(bvh, r), b.found);
+  if (!hit) return;
+  EXPECT_EQ(h.t, b.t);
+  EXPECT_NE(std::find(b.tris.begin(), b.tris.end(), h.triangle), b.tris.end())
+      << "triangle " << h.triangle;
+}
+
+TEST(MeshBvh, RandomSoups_MatchBruteForce) {
+  for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    const int n = 1 + static_cast<int>(rng() % 3000);
+    const TriangleSoup soup = random_soup(rng, n, 10, seed % 2 ? 0.5f : 3.0f);
+    MeshBvhConfig config;
+    config.max_leaf_size = 1 + static_cast<int>(seed % 16);
+    const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, config);
+    for (int i = 0; i < 300; ++i) {
+      check_against_brute_force(soup, bvh, random_ray(rng, 10));
+      if (HasFatalFailure()) return;
+    }
+  }
+}
+
+TEST(MeshBvh, ProceduralSphere_MatchesBruteForce) {
+  const TriangleSoup soup = make_octa_sphere(20);
+  const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
+  std::mt19937 rng(7);
+  for (int i = 0; i < 500; ++i) {
+    check_against_brute_force(soup, bvh, random_ray(rng, 1));
+    if (HasFatalFailure()) return;
+  }
+}
+
+TEST(MeshBvh, EveryHit_MatchesBruteForceCount) {
+  const TriangleSoup soup = make_octa_sphere(10);
+  const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
+  std::mt19937 rng(3);
+  for (int i = 0; i < 200; ++i) {
+    MeshRay r = random_ray(rng, 1);
+    r.tmin = -std::numeric_limits<float>::infinity();
+    r.tmax = std::numeric_limits<float>::infinity();
+    const WatertightRay w = make_watertight_ray(r.o, r.d);
+    std::size_t expected = 0;
+    for (const auto& t : soup.triangles) {
+      TriangleHit h;
+      expected += intersect_watertight(w, soup.positions[t[0]], soup.positions[t[1]],
+                                       soup.positions[t[2]], r.tmin, r.tmax, h);
+    }
+    std::vector<MeshBvhHit> hits;
+    intersect_every(bvh, r, hits);
+    EXPECT_EQ(hits.size(), expected) << "ray " << i;
+  }
+}
+
+TEST(MeshBvh, Empty_NeverHits) {
+  const MeshBvh bvh = build_mesh_bvh({}, {});
+  MeshRay r{{0, 0, 0}, {0, 0, 1}, 0, 1e30f};
+  MeshBvhHit h;
+  EXPECT_FALSE(intersect_closest(bvh, r, h));
+  EXPECT_FALSE(intersect_any(bvh, r));
+  EXPECT_EQ(bvh.memory_bytes(), 0u);
+}
+
+TEST(MeshBvh, SingleTriangle_TminTmaxAreInclusive) {
+  const std::vector<Vec3f> p{{-1, -1, 2}, {1, -1, 2}, {0, 1, 2}};
+  const std::vector<std::array<std::uint32_t, 3>> t{{0, 1, 2}};
+  const MeshBvh bvh = build_mesh_bvh(p, t);
+  MeshBvhHit h;
+  EXPECT_TRUE(intersect_closest(bvh, {{0, 0, 0}, {0, 0, 1}, 0, 2}, h));
+  EXPECT_EQ(h.t, 2.0f);
+  EXPECT_TRUE(intersect_closest(bvh, {{0, 0, 0}, {0, 0, 1}, 2, 3}, h));
+  EXPECT_FALSE(intersect_closest(bvh, {{0, 0, 0}, {0, 0, 1}, 0, std::nextafter(2.0f, 0.0f)}, h));
+  EXPECT_FALSE(intersect_any(bvh, {{0, 0, 0}, {0, 0, 1}, std::nextafter(2.0f, 3.0f), 3}));
+}
+
+TEST(MeshBvh, AxisParallelRays_HitBoxesWithZeroExtent) {
+  // A triangle in the plane z = 0 has a flat box; rays along every axis and exactly in the plane.
+  const std::vector<Vec3f> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::vector<std::array<std::uint32_t, 3>> t{{0, 1, 2}};
+  const MeshBvh bvh = build_mesh_bvh(p, t);
+  MeshBvhHit h;
+  ASSERT_TRUE(intersect_closest(bvh, {{0.25f, 0.25f, 5}, {0, 0, -1}, 0, 100}, h));
+  EXPECT_EQ(h.t, 5.0f);
+  EXPECT_FLOAT_EQ(h.b1, 0.25f);
+  EXPECT_FLOAT_EQ(h.b2, 0.25f);
+  EXPECT_FALSE(intersect_closest(bvh, {{2, 0.25f, 5}, {0, 0, -1}, 0, 100}, h));
+}
+
+}  // namespace
+}  // namespace raycast
