@@ -15,6 +15,9 @@ namespace raycast {
 namespace {
 
 constexpr const char* kObjectKeys = "name, material, transform";
+// Library entries and `use` inside them are expanded into shapes; a scene that needs more than this
+// many (summed over all expansions) is refused rather than exhausting memory.
+constexpr std::size_t kMaxExpandedObjects = std::size_t{1} << 16;
 constexpr const char* kCompoundKeys = "group, union, intersection, difference, use";
 
 class Loader {
@@ -254,6 +257,10 @@ class Loader {
 
   // One primitive shape, placed.
   Object read_shape(const YAML::Node& node, const std::string& key, const Placement& here, int entry) {
+    // Library entries using each other twice at every level would grow exponentially: bound it.
+    if (!expanding_.empty() && ++expanded_ > kMaxExpandedObjects)
+      fail_at(ctx_, node, "library expansion makes more than " + std::to_string(kMaxExpandedObjects) +
+                              " objects (entries using each other repeatedly?)");
     Object obj;
     obj.entry = entry;
     obj.material = here.material;
@@ -272,8 +279,12 @@ class Loader {
     if (!use.IsScalar()) fail_at(ctx_, use, "use must name a library entry, got " + describe(use));
     const auto it = library_.find(use.Scalar());
     if (it == library_.end()) fail_at(ctx_, use, "unknown library entry '" + use.Scalar() + "'");
-    if (std::find(expanding_.begin(), expanding_.end(), use.Scalar()) != expanding_.end())
-      fail_at(ctx_, use, "library entry '" + use.Scalar() + "' uses itself");
+    const auto cycle = std::find(expanding_.begin(), expanding_.end(), use.Scalar());
+    if (cycle != expanding_.end()) {
+      std::string path;
+      for (auto k = cycle; k != expanding_.end(); ++k) path += *k + " -> ";
+      fail_at(ctx_, use, "library entry '" + use.Scalar() + "' uses itself (" + path + use.Scalar() + ")");
+    }
     return it->second;
   }
 
@@ -381,6 +392,7 @@ class Loader {
   std::map<std::string, YAML::Node> library_;
   std::map<std::string, std::shared_ptr<const Prototype>> prototypes_;
   std::vector<std::string> expanding_;  // library entries being read, innermost last
+  std::size_t expanded_ = 0;            // shapes read while expanding library entries
 };
 
 }  // namespace
