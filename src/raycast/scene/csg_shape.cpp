@@ -37,13 +37,26 @@ bool box_meets(const Aabb& b, const Vec3& o, const Vec3& inv_d, double lo, doubl
   return true;
 }
 
+// Scratch span lists, two per tree level and one for the result, kept per thread so that building
+// a SpanList (whose inline storage is sizeable) is not paid on every node of every ray. Grows on a
+// thread's first evaluation of a deeper tree, never afterwards. Evaluations do not nest (leaves
+// are primitives), so one pool per thread suffices.
+SpanList* scratch(std::size_t lists) {
+  thread_local std::vector<SpanList> pool;
+  if (pool.size() < lists) pool.resize(lists);
+  return pool.data();
+}
+
 struct Evaluator {
   const CsgTree& tree;
   const Ray& ray;
   Vec3 inv_d;
+  SpanList* pool = nullptr;  // 2 * (tree.depth + 1) lists
 
-  // The spans of operand `code`, correct within [lo, hi] (and possibly wrong outside it).
-  void operand(std::int32_t code, double lo, double hi, SpanList& out) const {
+  // The spans of operand `code` at tree level `level`, correct within [lo, hi] (and possibly
+  // wrong outside it).
+  void operand(std::int32_t code, double lo, double hi, SpanList& out,
+               std::size_t level = 0) const {
     out.clear();
     if (code < 0) {
       const std::size_t leaf = static_cast<std::size_t>(-code - 1);
@@ -54,8 +67,9 @@ struct Evaluator {
     }
     const CsgNode& node = tree.nodes[static_cast<std::size_t>(code)];
     if (!box_meets(node.box, ray.o, inv_d, lo, hi)) return;
-    operand(node.operands[0], lo, hi, out);
-    SpanList child, merged;
+    operand(node.operands[0], lo, hi, out, level + 1);
+    SpanList& child = pool[2 * level];
+    SpanList& merged = pool[2 * level + 1];
     for (std::size_t i = 1; i < node.operands.size(); ++i) {
       double wlo = lo, whi = hi;
       if (node.op != CsgOp::kUnion) {
@@ -65,7 +79,7 @@ struct Evaluator {
         wlo = std::max(lo, out[0].in.t);
         whi = std::min(hi, out.back().out.t);
       }
-      operand(node.operands[i], wlo, whi, child);
+      operand(node.operands[i], wlo, whi, child, level + 1);
       if (child.empty()) {
         if (node.op == CsgOp::kIntersection) out.clear();
         if (node.op == CsgOp::kIntersection) return;
@@ -94,7 +108,12 @@ struct Evaluator {
 std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
   if (tree.nodes.empty()) throw std::invalid_argument("a CSG tree needs a root operation");
   tree.leaf_boxes.clear();
-  for (const Object& leaf : tree.leaves) tree.leaf_boxes.push_back(bounds(leaf));
+  for (const Object& leaf : tree.leaves) {
+    if (std::holds_alternative<CsgShape>(leaf.shape) ||
+        std::holds_alternative<InstanceShape>(leaf.shape))
+      throw std::invalid_argument("a CSG leaf must be a primitive shape");
+    tree.leaf_boxes.push_back(bounds(leaf));
+  }
   for (std::size_t k = tree.nodes.size(); k-- > 0;) {
     CsgNode& node = tree.nodes[k];
     if (node.operands.empty()) throw std::invalid_argument("a CSG operation needs an operand");
@@ -121,14 +140,25 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
     }
     node.box = box;
   }
+  // Levels, top-down (operands have larger indices than their node), to size the scratch lists.
+  std::vector<std::size_t> level(tree.nodes.size(), 0);
+  tree.depth = 0;
+  for (std::size_t k = 0; k < tree.nodes.size(); ++k) {
+    tree.depth = std::max(tree.depth, level[k]);
+    for (const std::int32_t code : tree.nodes[k].operands)
+      if (code >= 0)
+        level[static_cast<std::size_t>(code)] =
+            std::max(level[static_cast<std::size_t>(code)], level[k] + 1);
+  }
   return std::make_shared<const CsgTree>(std::move(tree));
 }
 
 Aabb bounds(const CsgShape& s) { return s.tree->nodes[0].box; }
 
 bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
-  SpanList list;
-  Evaluator{*s.tree, ray, reciprocal(ray.d)}.operand(0, ray.tmin, ray.tmax, list);
+  SpanList* pool = scratch(2 * s.tree->depth + 3);
+  SpanList& list = pool[2 * s.tree->depth + 2];
+  Evaluator{*s.tree, ray, reciprocal(ray.d), pool}.operand(0, ray.tmin, ray.tmax, list);
   for (const Span& span : list) {
     for (const LocalHit* end : {&span.in, &span.out}) {
       if (end->part != kNoSurface && end->t >= ray.tmin && end->t <= ray.tmax) {
@@ -147,8 +177,9 @@ bool occluded(const CsgShape& s, const Ray& ray) {
 }
 
 void spans(const CsgShape& s, const Ray& ray, SpanList& out) {
-  SpanList list;
-  Evaluator{*s.tree, ray, reciprocal(ray.d)}.operand(0, -kInfinity, kInfinity, list);
+  SpanList* pool = scratch(2 * s.tree->depth + 3);
+  SpanList& list = pool[2 * s.tree->depth + 2];
+  Evaluator{*s.tree, ray, reciprocal(ray.d), pool}.operand(0, -kInfinity, kInfinity, list);
   for (const Span& span : list) out.push_back(span);
 }
 

@@ -22,13 +22,15 @@ struct CsgTree {
   std::vector<Object> leaves;
   std::vector<Aabb> leaf_boxes;  // set by finish_csg_tree
   std::vector<CsgNode> nodes;
+  std::size_t depth = 0;  // operation levels below the root; set by finish_csg_tree
 };
 
 inline std::int32_t csg_leaf_code(std::size_t leaf) { return -static_cast<std::int32_t>(leaf) - 1; }
 
 /// Computes the boxes (union: merge; intersection: overlap; difference: the first operand's) and
-/// freezes the tree. Throws std::invalid_argument when a node has no operand or a code is out of
-/// range or not below its node.
+/// freezes the tree. Throws std::invalid_argument when a node has no operand, a code is out of
+/// range or not below its node, or a leaf is itself a CSG object or an instance (leaves are
+/// primitives: nested operations are nodes of the same tree).
 std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree);
 
 /// The material of the leaf that made `hit` (-1: the CSG object's own).
