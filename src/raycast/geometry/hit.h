@@ -19,6 +19,7 @@ struct LocalHit {
   double a = 0;
   double b = 0;
   std::int32_t leaf = -1;
+  std::int32_t inner = -1;  // instances: which object of the shared prototype made the hit
   bool flip = false;
 };
 

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "scene/csg_tree.h"
+#include "scene/prototype.h"
+
 namespace raycast {
 
 namespace {
@@ -69,6 +72,13 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit) {
 bool contains(const Object& o, const Vec3& p) {
   const Vec3 q = o.xf ? o.xf->inverse_point(p) : p;
   return std::visit([&](const auto& s) { return contains(s, q); }, o.shape);
+}
+
+int material_of(const Object& o, const LocalHit& hit) {
+  int m = -1;
+  if (const auto* c = std::get_if<CsgShape>(&o.shape)) m = csg_material(*c, hit);
+  if (const auto* i = std::get_if<InstanceShape>(&o.shape)) m = instance_material(*i, hit);
+  return m >= 0 ? m : o.material;
 }
 
 const char* shape_name(const Object& o) {

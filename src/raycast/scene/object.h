@@ -21,12 +21,14 @@
 #include "geometry/torus.h"
 #include "math/transform.h"
 #include "mesh/mesh.h"
+#include "scene/csg_shape.h"
+#include "scene/instance.h"
 
 namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, MeshShape>;
+using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, MeshShape, CsgShape, InstanceShape>;
 
 struct Object {
   ShapeVariant shape;
@@ -44,6 +46,9 @@ void spans(const Object& o, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit);
 bool contains(const Object& o, const Vec3& p);
 bool is_closed(const Object& o);
+/// The material index for a hit on o: the CSG leaf's or prototype object's own when it has one,
+/// else o.material (which may be -1: the default material).
+int material_of(const Object& o, const LocalHit& hit);
 /// The scene-format key of the object's shape ("sphere", "mesh", ...).
 const char* shape_name(const Object& o);
 

@@ -91,7 +91,7 @@ SurfaceInfo Scene::surface(const Ray& ray, const SceneHit& hit) const {
 }
 
 const Material& Scene::material_of(const SceneHit& hit) const {
-  const int m = objects[hit.object].material;
+  const int m = raycast::material_of(objects[hit.object], hit.local);
   return materials[m >= 0 ? m : 0];
 }
 

@@ -1,0 +1,32 @@
+#pragma once
+// CSG objects: a shared, immutable tree of boolean operations over closed solids, evaluated on the
+// ray's span lists. The tree's leaves are ordinary objects placed in the CSG object's space.
+#include <memory>
+
+#include "geometry/shape.h"
+
+namespace raycast {
+
+struct CsgTree;  // scene/csg_tree.h
+
+/// union, intersection or difference (a - b - c ...) of closed solids, nested to any depth.
+/// Hits carry the leaf that made them in LocalHit::leaf, and LocalHit::flip when the surface is
+/// a subtracted solid's (its normal is reversed by the enclosing Object).
+struct CsgShape {
+  static constexpr const char* kName = "csg";
+  std::shared_ptr<const CsgTree> tree;
+};
+
+Aabb bounds(const CsgShape& s);
+/// The nearest boundary of the final solid in [tmin, tmax]; subtrees whose boxes miss the segment
+/// (or the part of it where an intersection or difference can still be non-empty) are skipped.
+bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit);
+bool occluded(const CsgShape& s, const Ray& ray);
+/// The final solid's spans over the whole line (so rays starting inside are right).
+void spans(const CsgShape& s, const Ray& ray, SpanList& out);
+/// The leaf's surface record, its normal not yet flipped (the enclosing Object flips by hit.flip).
+SurfaceInfo surface(const CsgShape& s, const Ray& ray, const LocalHit& hit);
+bool contains(const CsgShape& s, const Vec3& p);
+inline bool is_closed(const CsgShape&) { return true; }
+
+}  // namespace raycast

@@ -1,0 +1,39 @@
+#pragma once
+// The inside of a CsgShape: leaves flattened into one array, operations over operand codes.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "csg/span_ops.h"
+#include "scene/object.h"
+
+namespace raycast {
+
+/// One operation. An operand code >= 0 is a node index, < 0 is the leaf -code - 1.
+struct CsgNode {
+  CsgOp op = CsgOp::kUnion;
+  std::vector<std::int32_t> operands;  // at least one
+  Aabb box;                            // set by finish_csg_tree
+};
+
+/// nodes[0] is the root; every operand of a node has a larger index (pre-order), and leaves'
+/// transforms are relative to the CSG object. A leaf's material -1 means the CSG object's.
+struct CsgTree {
+  std::vector<Object> leaves;
+  std::vector<Aabb> leaf_boxes;  // set by finish_csg_tree
+  std::vector<CsgNode> nodes;
+  std::size_t depth = 0;  // operation levels below the root; set by finish_csg_tree
+};
+
+inline std::int32_t csg_leaf_code(std::size_t leaf) { return -static_cast<std::int32_t>(leaf) - 1; }
+
+/// Computes the boxes (union: merge; intersection: overlap; difference: the first operand's) and
+/// freezes the tree. Throws std::invalid_argument when a node has no operand, a code is out of
+/// range or not below its node, or a leaf is itself a CSG object or an instance (leaves are
+/// primitives: nested operations are nodes of the same tree).
+std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree);
+
+/// The material of the leaf that made `hit` (-1: the CSG object's own).
+int csg_material(const CsgShape& s, const LocalHit& hit);
+
+}  // namespace raycast
