@@ -42,17 +42,14 @@ class Builder {
     out_.nodes.resize(2 * n - 1);
     next_node_ = 1;
     tbb::task_group tasks;
-    build(0, 0, static_cast<std::uint32_t>(n), 0, tasks);
     Aabb box, centre_box;
     node_bounds(0, static_cast<std::uint32_t>(n), box, centre_box);
-    build(0, 0, static_cast<std::uint32_t>(n), box, centre_box, tasks);
+    build(0, 0, static_cast<std::uint32_t>(n), 0, box, centre_box, tasks);
     tasks.wait();
     out_.nodes.resize(next_node_.load());
   }
 
  private:
-  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, std::uint32_t depth,
-             tbb::task_group& tasks) {
   // The boxes of a split's two sides, known from the bins and the partition pass, so that
   // children need no pass of their own to find their bounds.
   struct Sides {
@@ -60,21 +57,19 @@ class Builder {
   };
 
   // Builds node_index over prims[begin, end), whose box and centre box are given.
-  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, Aabb box,
-             Aabb centre_box, tbb::task_group& tasks) {
+  void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, std::uint32_t depth,
+             Aabb box, Aabb centre_box, tbb::task_group& tasks) {
     // Iterative on the right child, recursive (or a task) on the left, to bound the stack depth.
     for (;;) {
       BvhNode& node = out_.nodes[node_index];
       node.box = box;
       const std::uint32_t count = end - begin;
       std::uint32_t mid = 0;
-      const bool leaf = count <= static_cast<std::uint32_t>(config_.min_leaf_size) ||
-                        (depth < kMaxSahDepth ? !split(box, centre_box, begin, end, mid)
-                                              : !split_median(centre_box, begin, end, mid));
-      if (leaf) {
       Sides sides;
-      if (count <= static_cast<std::uint32_t>(config_.min_leaf_size) ||
-          !split(box, centre_box, begin, end, mid, sides)) {
+      const bool leaf = count <= static_cast<std::uint32_t>(config_.min_leaf_size) ||
+                        (depth < kMaxSahDepth ? !split(box, centre_box, begin, end, mid, sides)
+                                              : !split_median(centre_box, begin, end, mid, sides));
+      if (leaf) {
         node.first = begin;
         node.count = count;
         return;
@@ -83,18 +78,15 @@ class Builder {
       node.first = first;
       node.count = 0;
       if (mid - begin >= config_.parallel_threshold) {
-        tasks.run([this, first, begin, mid, depth, &tasks] {
-          build(first, begin, mid, depth + 1, tasks);
+        tasks.run([this, first, begin, mid, depth, sides, &tasks] {
+          build(first, begin, mid, depth + 1, sides.box[0], sides.centre_box[0], tasks);
         });
       } else {
-        build(first, begin, mid, depth + 1, tasks);
+        build(first, begin, mid, depth + 1, sides.box[0], sides.centre_box[0], tasks);
       }
+      ++depth;
       node_index = first + 1;
       begin = mid;
-      ++depth;
-        tasks.run([this, first, begin, mid, sides, &tasks] {
-          build(first, begin, mid, sides.box[0], sides.centre_box[0], tasks);
-        build(first, begin, mid, sides.box[0], sides.centre_box[0], tasks);
       box = sides.box[1];
       centre_box = sides.centre_box[1];
     }
@@ -156,16 +148,6 @@ class Builder {
     const Vec3 extent = centre_box.extent();
     Vec3 scale;
     for (int axis = 0; axis < 3; ++axis) {
-      // A subnormal extent would make the scale infinite and a bin index NaN (undefined on cast).
-      const double scale = bins / extent[axis];
-      if (!(extent[axis] > 0) || !std::isfinite(scale)) continue;
-      std::array<Bin, kMaxBins> bin{};
-      for (std::uint32_t i = begin; i < end; ++i) {
-        const std::uint32_t p = out_.prims[i];
-        const int b = bin_of(centres_[p][axis], centre_box.lo[axis], scale);
-        bin[b].box.grow(boxes_[p]);
-        ++bin[b].count;
-      }
       scale[axis] = extent[axis] > 0 ? bins / extent[axis] : 0;
       if (!std::isfinite(scale[axis])) scale[axis] = 0;  // a denormal extent: treat as flat
     }
@@ -253,7 +235,7 @@ class Builder {
   // Splits prims[begin, end) at the median centre along the widest centre axis (by index when
   // all centres coincide). Returns false for a node small enough to be a leaf.
   bool split_median(const Aabb& centre_box, std::uint32_t begin, std::uint32_t end,
-                    std::uint32_t& mid) {
+                    std::uint32_t& mid, Sides& sides) {
     const std::uint32_t count = end - begin;
     if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
     const int axis = max_dimension(centre_box.extent());
@@ -262,6 +244,8 @@ class Builder {
                      [&](std::uint32_t a, std::uint32_t b) {
                        return centres_[a][axis] < centres_[b][axis];
                      });
+    node_bounds(begin, mid, sides.box[0], sides.centre_box[0]);
+    node_bounds(mid, end, sides.box[1], sides.centre_box[1]);
     return true;
   }
 

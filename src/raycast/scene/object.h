@@ -5,18 +5,18 @@
 #include <string>
 #include <variant>
 
+#include "geometry/algebraic.h"
 #include "geometry/basic_shapes.h"
 #include "geometry/cone.h"
 #include "geometry/cylinder.h"
 #include "geometry/ellipsoid.h"
-#include "geometry/algebraic.h"
 #include "geometry/implicit.h"
 #include "geometry/plane.h"
 #include "geometry/polygon.h"
 #include "geometry/polyhedron.h"
 #include "geometry/quadric.h"
-#include "geometry/slab.h"
 #include "geometry/shape.h"
+#include "geometry/slab.h"
 #include "geometry/sphere.h"
 #include "geometry/torus.h"
 #include "math/transform.h"
@@ -28,7 +28,9 @@ namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, MeshShape, CsgShape, InstanceShape>;
+using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid,
+                                  Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron, Torus,
+                                  Algebraic, Implicit, MeshShape, CsgShape, InstanceShape>;
 
 struct Object {
   ShapeVariant shape;

@@ -6,7 +6,10 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
   static const std::map<std::string, ShapeParser> table = {
       {"plane", parse_plane},
       {"sphere", parse_sphere},
-      {"box", parse_box}, {"triangle", parse_triangle}, {"parallelogram", parse_parallelogram}, {"disk", parse_disk},
+      {"box", parse_box},
+      {"triangle", parse_triangle},
+      {"parallelogram", parse_parallelogram},
+      {"disk", parse_disk},
       {"ellipsoid", parse_ellipsoid},
       {"quadric", parse_quadric},
       {"cylinder", parse_cylinder},
