@@ -1,5 +1,6 @@
 // `raycast render [SCENE] [-o out.png] ...` (SPEC.md "Command line"): renders a scene, or the
 // built-in demo, to an image whose format follows the extension; AOVs go beside it.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
