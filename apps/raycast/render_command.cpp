@@ -30,12 +30,20 @@ int usage_error(const std::string& message) {
   return 2;
 }
 
-/// Depth in an 8-bit file: distances scaled by the largest finite one, misses white.
+/// Depth in an 8-bit file: distances divided by twice the median finite distance and clamped
+/// (robust against a ground plane running to the horizon), misses white.
 void normalize_depth(Image& image) {
-  float far = 0;
-  for (float d : image.rgb)
-    if (std::isfinite(d)) far = std::max(far, d);
-  for (float& d : image.rgb) d = std::isfinite(d) ? (far > 0 ? d / far : 0.f) : 1.f;
+  std::vector<float> finite;
+  for (std::size_t i = 0; i < image.rgb.size(); i += 3)
+    if (std::isfinite(image.rgb[i])) finite.push_back(image.rgb[i]);
+  float scale = 0;
+  if (!finite.empty()) {
+    auto middle = finite.begin() + std::ptrdiff_t(finite.size() / 2);
+    std::nth_element(finite.begin(), middle, finite.end());
+    scale = 2 * *middle;
+  }
+  for (float& d : image.rgb)
+    d = std::isfinite(d) ? (scale > 0 ? std::min(1.f, d / scale) : 0.f) : 1.f;
 }
 
 /// "out.png" + "depth" -> "out.depth.pfm" (next to the output).

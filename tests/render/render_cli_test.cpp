@@ -67,6 +67,16 @@ TEST_F(RenderCli, Integrators_AllRun) {
         << integrator;
 }
 
+TEST_F(RenderCli, DepthPng_IsScaledForViewing) {
+  ASSERT_EQ(
+      run("render -o " + path("z.png") + " --width 16 --height 12 --spp 1 --integrator depth"), 0);
+  const Image z = load_png(path("z.png"));
+  EXPECT_EQ(z.at(8, 0), (Vec3f{1, 1, 1}));  // the sky: a miss
+  const float floor = z.at(8, 11).x;        // the floor just below the camera
+  EXPECT_GT(floor, 0.05f);
+  EXPECT_LT(floor, 0.95f);
+}
+
 TEST_F(RenderCli, BadValues_ExitWithTwo) {
   const std::string out = " -o " + path("bad.png");
   EXPECT_EQ(run("render" + out + " --width 0"), 2);
