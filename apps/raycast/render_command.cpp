@@ -1,5 +1,6 @@
 // `raycast render [SCENE] [-o out.png] ...` (SPEC.md "Command line"): renders a scene, or the
 // built-in demo, to an image whose format follows the extension; AOVs go beside it.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -29,12 +30,20 @@ int usage_error(const std::string& message) {
   return 2;
 }
 
-/// Depth in an 8-bit file: distances scaled by the largest finite one, misses white.
+/// Depth in an 8-bit file: distances divided by twice the median finite distance and clamped
+/// (robust against a ground plane running to the horizon), misses white.
 void normalize_depth(Image& image) {
-  float far = 0;
-  for (float d : image.rgb)
-    if (std::isfinite(d)) far = std::max(far, d);
-  for (float& d : image.rgb) d = std::isfinite(d) ? (far > 0 ? d / far : 0.f) : 1.f;
+  std::vector<float> finite;
+  for (std::size_t i = 0; i < image.rgb.size(); i += 3)
+    if (std::isfinite(image.rgb[i])) finite.push_back(image.rgb[i]);
+  float scale = 0;
+  if (!finite.empty()) {
+    auto middle = finite.begin() + std::ptrdiff_t(finite.size() / 2);
+    std::nth_element(finite.begin(), middle, finite.end());
+    scale = 2 * *middle;
+  }
+  for (float& d : image.rgb)
+    d = std::isfinite(d) ? (scale > 0 ? std::min(1.f, d / scale) : 0.f) : 1.f;
 }
 
 /// "out.png" + "depth" -> "out.depth.pfm" (next to the output).
@@ -57,8 +66,10 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("SCENE", opt->scene, "Scene file (YAML or JSON); none renders the built-in demo");
   cmd->add_option("-o,--output", opt->output,
                   "Output image: .png (8-bit sRGB), .pfm or .exr (linear float); default out.png");
-  auto* width = cmd->add_option("--width", opt->width, "Image width in pixels (overrides the scene)");
-  auto* height = cmd->add_option("--height", opt->height, "Image height in pixels (overrides the scene)");
+  auto* width =
+      cmd->add_option("--width", opt->width, "Image width in pixels (overrides the scene)");
+  auto* height =
+      cmd->add_option("--height", opt->height, "Image height in pixels (overrides the scene)");
   auto* spp = cmd->add_option("--spp", opt->spp, "Samples per pixel (overrides the scene)");
   auto* threads = cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
   cmd->add_option("--integrator", opt->integrator,
@@ -85,8 +96,10 @@ Action add_render_command(CLI::App& app) {
     options.threads = opt->threads;
     if (!opt->integrator.empty()) {
       static const std::map<std::string, IntegratorType> kIntegrators = {
-          {"whitted", IntegratorType::kWhitted}, {"raycast", IntegratorType::kRaycast},
-          {"depth", IntegratorType::kDepth},     {"normal", IntegratorType::kNormal},
+          {"whitted", IntegratorType::kWhitted},
+          {"raycast", IntegratorType::kRaycast},
+          {"depth", IntegratorType::kDepth},
+          {"normal", IntegratorType::kNormal},
           {"id", IntegratorType::kId}};
       const auto it = kIntegrators.find(opt->integrator);
       if (it == kIntegrators.end())
@@ -96,15 +109,18 @@ Action add_render_command(CLI::App& app) {
     }
     std::vector<std::pair<std::string, Aov>> aovs;
     if (!opt->aovs.empty()) {
-      static const std::map<std::string, Aov> kAovs = {
-          {"depth", Aov::kDepth}, {"normal", Aov::kNormal}, {"id", Aov::kId}, {"albedo", Aov::kAlbedo}};
+      static const std::map<std::string, Aov> kAovs = {{"depth", Aov::kDepth},
+                                                       {"normal", Aov::kNormal},
+                                                       {"id", Aov::kId},
+                                                       {"albedo", Aov::kAlbedo}};
       std::stringstream list(opt->aovs);
       std::string name;
       while (std::getline(list, name, ',')) {
         const auto it = kAovs.find(name);
         if (it == kAovs.end())
-          return usage_error("--aov takes a comma-separated list of depth, normal, id, albedo; got '" +
-                             name + "'");
+          return usage_error(
+              "--aov takes a comma-separated list of depth, normal, id, albedo; got '" + name +
+              "'");
         aovs.emplace_back(name, it->second);
       }
     }
@@ -117,7 +133,8 @@ Action add_render_command(CLI::App& app) {
     const Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
     RenderStats stats;
     const Image image = render(scene, options, &stats);
-    const bool depth = options.integrator.value_or(scene.render.integrator) == IntegratorType::kDepth;
+    const bool depth =
+        options.integrator.value_or(scene.render.integrator) == IntegratorType::kDepth;
     try {
       save(image, opt->output, depth);
       for (const auto& [name, aov] : aovs) {

@@ -86,10 +86,10 @@ TEST(Png, MissingOrCorruptFile_ThrowsImageError) {
 
 TEST(Pfm, Contents_HeaderThenLittleEndianFloatsBottomRowFirst) {
   Image image(2, 2);
-  image.set(0, 0, {1.f, 2.f, 3.f});        // top-left
-  image.set(1, 0, {4.f, 5.f, 6.f});        // top-right
-  image.set(0, 1, {-7.f, 0.25f, 1e20f});   // bottom-left
-  image.set(1, 1, {10.f, 11.f, 12.5f});    // bottom-right
+  image.set(0, 0, {1.f, 2.f, 3.f});       // top-left
+  image.set(1, 0, {4.f, 5.f, 6.f});       // top-right
+  image.set(0, 1, {-7.f, 0.25f, 1e20f});  // bottom-left
+  image.set(1, 1, {10.f, 11.f, 12.5f});   // bottom-right
   const std::string path = temp_path("contents.pfm");
   save_pfm(image, path);
   const std::string bytes = read_bytes(path);

@@ -61,8 +61,8 @@ TEST(Refract, RandomDirections_ObeySnellsLaw) {
     EXPECT_NEAR(length(t), 1, 1e-14);
     const double sin_t = length(cross(t, n));
     EXPECT_NEAR(1.0 * std::sin(theta), 1.5 * sin_t, 1e-12);
-    EXPECT_LT(dot(t, n), 0);                                    // goes through the surface
-    EXPECT_NEAR(dot(cross(wi, n), t), 0, 1e-12);                // stays in the plane of incidence
+    EXPECT_LT(dot(t, n), 0);                      // goes through the surface
+    EXPECT_NEAR(dot(cross(wi, n), t), 0, 1e-12);  // stays in the plane of incidence
   }
 }
 

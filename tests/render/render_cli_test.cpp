@@ -24,7 +24,8 @@ class RenderCli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("raycast_render_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("raycast_render_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -41,14 +42,17 @@ TEST_F(RenderCli, Demo_WritesAPngOfTheRequestedSize) {
 
 TEST_F(RenderCli, SceneFile_IsRendered) {
   const std::string scene = std::string(RAYCAST_SOURCE_DIR) + "/scenes/demo.yaml";
-  ASSERT_EQ(run("render " + scene + " -o " + path("file.pfm") + " --width 8 --height 6 --threads 1"), 0);
+  ASSERT_EQ(
+      run("render " + scene + " -o " + path("file.pfm") + " --width 8 --height 6 --threads 1"), 0);
   const Image image = load_pfm(path("file.pfm"));
   EXPECT_EQ(image.width, 8);
   EXPECT_EQ(image.height, 6);
 }
 
 TEST_F(RenderCli, Aovs_AreWrittenBesideTheOutput) {
-  ASSERT_EQ(run("render -o " + path("a.png") + " --width 8 --height 6 --spp 1 --aov depth,normal,id,albedo"), 0);
+  ASSERT_EQ(run("render -o " + path("a.png") +
+                " --width 8 --height 6 --spp 1 --aov depth,normal,id,albedo"),
+            0);
   for (const char* aov : {"depth", "normal", "id", "albedo"}) {
     const std::string file = path(std::string("a.") + aov + ".pfm");
     ASSERT_TRUE(fs::exists(file)) << file;
@@ -58,8 +62,19 @@ TEST_F(RenderCli, Aovs_AreWrittenBesideTheOutput) {
 
 TEST_F(RenderCli, Integrators_AllRun) {
   for (const char* integrator : {"whitted", "raycast", "depth", "normal", "id"})
-    EXPECT_EQ(run("render -o " + path("i.png") + " --width 6 --height 4 --integrator " + integrator), 0)
+    EXPECT_EQ(
+        run("render -o " + path("i.png") + " --width 6 --height 4 --integrator " + integrator), 0)
         << integrator;
+}
+
+TEST_F(RenderCli, DepthPng_IsScaledForViewing) {
+  ASSERT_EQ(
+      run("render -o " + path("z.png") + " --width 16 --height 12 --spp 1 --integrator depth"), 0);
+  const Image z = load_png(path("z.png"));
+  EXPECT_EQ(z.at(8, 0), (Vec3f{1, 1, 1}));  // the sky: a miss
+  const float floor = z.at(8, 11).x;        // the floor just below the camera
+  EXPECT_GT(floor, 0.05f);
+  EXPECT_LT(floor, 0.95f);
 }
 
 TEST_F(RenderCli, BadValues_ExitWithTwo) {

@@ -37,7 +37,8 @@ TEST(OffsetRayOrigin, RandomSphereHits_NeverReHitTheSphereOutward) {
   int tested = 0;
   for (int i = 0; i < 2000; ++i) {
     const Vec3 o{uniform() * 8 - 4, uniform() * 8 - 4, uniform() * 8 - 4 + 10};
-    const Ray r{o, Vec3{0.3, -1.7, 2.2} - o + Vec3{uniform() - 0.5, uniform() - 0.5, uniform() - 0.5}};
+    const Ray r{o,
+                Vec3{0.3, -1.7, 2.2} - o + Vec3{uniform() - 0.5, uniform() - 0.5, uniform() - 0.5}};
     LocalHit hit;
     if (!intersect(sphere, r, hit)) continue;
     const SurfaceInfo si = surface(sphere, r, hit);

@@ -106,7 +106,8 @@ objects:
   const Vec3 want = mul(0.5 * Vec3{0.8, 0.6, 0.4}, 0.9 * Vec3{1, 0.5, 0.25});
   expect_color(integrator.shadow({0, 0, 0}, {0, 0, 10}, false, state), want, 1e-15);
   expect_color(integrator.shadow({0, 0, 0}, {0, 0, 1}, true, state), want, 1e-15);
-  expect_color(integrator.shadow({0, 0, 0}, {0, 0, 3.5}, false, state), 0.5 * Vec3{0.8, 0.6, 0.4}, 1e-15);
+  expect_color(integrator.shadow({0, 0, 0}, {0, 0, 3.5}, false, state), 0.5 * Vec3{0.8, 0.6, 0.4},
+               1e-15);
   expect_color(integrator.shadow({0, 0, 0}, {1, 0, 0}, true, state), {1, 1, 1}, 0);
 }
 
@@ -119,7 +120,8 @@ TEST(Whitted, LightBehindTheSurface_ContributesNothing) {
 
 TEST(Whitted, DirectionalLight_HasNoFalloff) {
   std::string text = kSphereScene;
-  text.replace(text.find("type: point, position: [3, 0, 5]"), 32, "type: directional, direction: [-3, 0, -4]");
+  text.replace(text.find("type: point, position: [3, 0, 5]"), 32,
+               "type: directional, direction: [-3, 0, -4]");
   expect_color(pixel(load_scene_text(text)), expected_lit(), 1e-6);
 }
 
@@ -130,7 +132,8 @@ TEST(Whitted, SpotLight_LightsInsideItsConeOnly) {
   outside.replace(outside.find("type: point, position: [3, 0, 5]"), 32,
                   "type: spot, position: [3, 0, 5], direction: [0, 0, -1], angle: 20, falloff: 5");
   expect_color(pixel(load_scene_text(inside)), expected_lit(), 1e-6);
-  expect_color(pixel(load_scene_text(outside)), 0.5 * mul(Vec3{0.1, 0.2, 0.3}, Vec3{0.5, 0.6, 0.7}), 1e-7);
+  expect_color(pixel(load_scene_text(outside)), 0.5 * mul(Vec3{0.1, 0.2, 0.3}, Vec3{0.5, 0.6, 0.7}),
+               1e-7);
 }
 
 TEST(Whitted, TinySphereLight_MatchesThePointLight) {
@@ -170,7 +173,8 @@ objects:
 Vec3 trace_from_inside(const Scene& scene, double degrees_from_normal) {
   const double a = degrees_from_normal * std::numbers::pi / 180;
   SampleState state{Rng(1), 0};
-  return Integrator(scene, Channel::kWhitted).whitted({{0, -1, 0}, {std::sin(a), std::cos(a), 0}}, 0, state);
+  return Integrator(scene, Channel::kWhitted)
+      .whitted({{0, -1, 0}, {std::sin(a), std::cos(a), 0}}, 0, state);
 }
 
 TEST(Whitted, BeyondCriticalAngle_AllLightIsReflected) {
@@ -234,8 +238,10 @@ objects:
   const Integrator integrator(scene, Channel::kAlbedo);
   SampleState state{Rng(1), 0};
   // Object-space x = world x - 0.5; y = 0.5, z = 0.5 -> floor sum = floor(x - 0.5).
-  expect_color(integrator.li({{0.25, 1, 0.5}, {0, -1, 0}}, state), {0, 0, 1}, 0);  // floor(-0.25) = -1: odd
-  expect_color(integrator.li({{0.75, 1, 0.5}, {0, -1, 0}}, state), {1, 0, 0}, 0);  // floor(0.25) = 0: even
+  expect_color(integrator.li({{0.25, 1, 0.5}, {0, -1, 0}}, state), {0, 0, 1},
+               0);  // floor(-0.25) = -1: odd
+  expect_color(integrator.li({{0.75, 1, 0.5}, {0, -1, 0}}, state), {1, 0, 0},
+               0);  // floor(0.25) = 0: even
   expect_color(integrator.li({{1.75, 1, 0.5}, {0, -1, 0}}, state), {0, 0, 1}, 0);
 }
 

@@ -16,7 +16,8 @@ namespace raycast {
 bool have_exr() { return true; }
 
 void save_exr(const Image& image, const std::string& path) {
-  if (image.width <= 0 || image.height <= 0) throw ImageError(path + ": cannot write an empty image");
+  if (image.width <= 0 || image.height <= 0)
+    throw ImageError(path + ": cannot write an empty image");
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;

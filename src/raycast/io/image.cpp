@@ -28,7 +28,8 @@ ImageFormat image_format_for(const std::string& path) {
   if (ext == ".png") return ImageFormat::kPng;
   if (ext == ".pfm") return ImageFormat::kPfm;
   if (ext == ".exr") {
-    if (!have_exr()) throw ImageError(path + ": this build has no OpenEXR support; write .png or .pfm");
+    if (!have_exr())
+      throw ImageError(path + ": this build has no OpenEXR support; write .png or .pfm");
     return ImageFormat::kExr;
   }
   throw ImageError(path + ": unknown image extension '" + ext + "'; expected .png, .pfm or .exr");
@@ -36,9 +37,12 @@ ImageFormat image_format_for(const std::string& path) {
 
 void save_image(const Image& image, const std::string& path) {
   switch (image_format_for(path)) {
-    case ImageFormat::kPng: return save_png(image, path);
-    case ImageFormat::kPfm: return save_pfm(image, path);
-    case ImageFormat::kExr: return save_exr(image, path);
+    case ImageFormat::kPng:
+      return save_png(image, path);
+    case ImageFormat::kPfm:
+      return save_pfm(image, path);
+    case ImageFormat::kExr:
+      return save_exr(image, path);
   }
 }
 

@@ -17,7 +17,8 @@ struct Image {
 
   Image() = default;
   /// A black image; width and height must be >= 0.
-  Image(int w, int h) : width(w), height(h), rgb(std::size_t(3) * std::size_t(w) * std::size_t(h), 0.f) {}
+  Image(int w, int h)
+      : width(w), height(h), rgb(std::size_t(3) * std::size_t(w) * std::size_t(h), 0.f) {}
 
   Vec3f at(int x, int y) const {
     const std::size_t i = index(x, y);
@@ -57,7 +58,8 @@ Image load_png(const std::string& path);
 void save_pfm(const Image& image, const std::string& path);
 /// Reads a colour ("PF") or grey ("Pf") PFM of either endianness. Throws ImageError.
 Image load_pfm(const std::string& path);
-/// OpenEXR, 32-bit float RGB channels, linear, ZIP-compressed. Throws ImageError when this build has no OpenEXR.
+/// OpenEXR, 32-bit float RGB channels, linear, ZIP-compressed. Throws ImageError when this build
+/// has no OpenEXR.
 void save_exr(const Image& image, const std::string& path);
 /// Whether this build can write OpenEXR files.
 bool have_exr();

@@ -32,7 +32,8 @@ void save_pfm(const Image& image, const std::string& path) {
     }
     if constexpr (std::endian::native == std::endian::big)
       for (float& f : row) f = std::bit_cast<float>(byte_swap(std::bit_cast<std::uint32_t>(f)));
-    out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * sizeof(float)));
+    out.write(reinterpret_cast<const char*>(row.data()),
+              std::streamsize(row.size() * sizeof(float)));
   }
   if (!out) throw ImageError(path + ": write failed");
 }
@@ -44,8 +45,8 @@ Image load_pfm(const std::string& path) {
   long long w = 0, h = 0;
   double scale = 0;
   in >> magic >> w >> h >> scale;
-  if (!in || (magic != "PF" && magic != "Pf") || w <= 0 || h <= 0 || w > (1 << 16) || h > (1 << 16) ||
-      scale == 0)
+  if (!in || (magic != "PF" && magic != "Pf") || w <= 0 || h <= 0 || w > (1 << 16) ||
+      h > (1 << 16) || scale == 0)
     throw ImageError(path + ": not a PFM file (bad header)");
   in.get();  // the single whitespace character after the scale
   const int channels = magic == "PF" ? 3 : 1;

@@ -20,7 +20,8 @@ std::uint8_t encode_8bit(float linear) {
 }  // namespace
 
 void save_png(const Image& image, const std::string& path) {
-  if (image.width <= 0 || image.height <= 0) throw ImageError(path + ": cannot write an empty image");
+  if (image.width <= 0 || image.height <= 0)
+    throw ImageError(path + ": cannot write an empty image");
   std::vector<std::uint8_t> bytes(image.rgb.size());
   for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = encode_8bit(image.rgb[i]);
   png_image png;

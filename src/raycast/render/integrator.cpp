@@ -60,10 +60,14 @@ Color Integrator::li(const Ray& ray, SampleState& state) const {
       const double distance = hit.local.t * length(ray.d);
       return {distance, distance, distance};
     }
-    case Channel::kNormal: return 0.5 * si.n + Vec3{0.5, 0.5, 0.5};
-    case Channel::kId: return id_color(scene_.objects[hit.object].entry);
-    case Channel::kAlbedo: return albedo(scene_, textures_, ray, hit, si);
-    case Channel::kWhitted: break;
+    case Channel::kNormal:
+      return 0.5 * si.n + Vec3{0.5, 0.5, 0.5};
+    case Channel::kId:
+      return id_color(scene_.objects[hit.object].entry);
+    case Channel::kAlbedo:
+      return albedo(scene_, textures_, ray, hit, si);
+    case Channel::kWhitted:
+      break;
   }
   return {0, 0, 0};
 }
@@ -111,7 +115,8 @@ Color Integrator::light_term(const Vec3& n, const Vec3& v, const Vec3& l, const 
                              const Material& m, const Color& c) const {
   const double nl = dot(n, l);
   const Vec3 r = 2 * nl * n - l;
-  const double highlight = m.specular > 0 ? m.specular * std::pow(std::max(0.0, dot(r, v)), m.shininess) : 0;
+  const double highlight =
+      m.specular > 0 ? m.specular * std::pow(std::max(0.0, dot(r, v)), m.shininess) : 0;
   return mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
 }
 
@@ -130,7 +135,9 @@ Color Integrator::direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, co
     const Color emitted = light.emitted();
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
-      case LightType::kDirectional: add(-light.direction, -light.direction, true, emitted); break;
+      case LightType::kDirectional:
+        add(-light.direction, -light.direction, true, emitted);
+        break;
       case LightType::kPoint:
       case LightType::kSpot: {
         const Vec3 to = light.position - si.p;
@@ -162,7 +169,8 @@ Color Integrator::direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, co
           const double cos_theta = 1 - state.rng.uniform() * (1 - cos_max);
           const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
           const double phi = 2 * std::numbers::pi * state.rng.uniform();
-          const Vec3 l = sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * w;
+          const Vec3 l =
+              sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * w;
           // The nearer crossing of the light's sphere along l (cancellation-free form).
           const double b = dot(l, to);
           const double disc = std::max(0.0, b * b - (dist2 - r2));
@@ -177,7 +185,8 @@ Color Integrator::direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, co
   return sum;
 }
 
-Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const {
+Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
+                         SampleState& state) const {
   Color through{1, 1, 1};
   Vec3 o = from;
   std::array<std::int32_t, kMaxShadowCrossings> counted;
@@ -191,7 +200,8 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity, Sam
     const Material& m = scene_.material_of(hit);
     if (!(m.transmission > 0)) return {0, 0, 0};
     const SurfaceInfo si = scene_.surface(segment, hit);
-    if (std::find(counted.begin(), counted.begin() + n_counted, hit.object) == counted.begin() + n_counted) {
+    if (std::find(counted.begin(), counted.begin() + n_counted, hit.object) ==
+        counted.begin() + n_counted) {
       counted[n_counted++] = hit.object;
       through = mul(through, m.transmission * albedo(scene_, textures_, segment, hit, si));
       if (max_component(through) <= 0) return {0, 0, 0};

@@ -25,18 +25,27 @@ constexpr int kTileSize = 16;
 Channel channel_for(const Scene& scene, const RenderOptions& options) {
   if (options.aov) {
     switch (*options.aov) {
-      case Aov::kDepth: return Channel::kDepth;
-      case Aov::kNormal: return Channel::kNormal;
-      case Aov::kId: return Channel::kId;
-      case Aov::kAlbedo: return Channel::kAlbedo;
+      case Aov::kDepth:
+        return Channel::kDepth;
+      case Aov::kNormal:
+        return Channel::kNormal;
+      case Aov::kId:
+        return Channel::kId;
+      case Aov::kAlbedo:
+        return Channel::kAlbedo;
     }
   }
   switch (options.integrator.value_or(scene.render.integrator)) {
-    case IntegratorType::kWhitted: return Channel::kWhitted;
-    case IntegratorType::kRaycast: return Channel::kRaycast;
-    case IntegratorType::kDepth: return Channel::kDepth;
-    case IntegratorType::kNormal: return Channel::kNormal;
-    case IntegratorType::kId: return Channel::kId;
+    case IntegratorType::kWhitted:
+      return Channel::kWhitted;
+    case IntegratorType::kRaycast:
+      return Channel::kRaycast;
+    case IntegratorType::kDepth:
+      return Channel::kDepth;
+    case IntegratorType::kNormal:
+      return Channel::kNormal;
+    case IntegratorType::kId:
+      return Channel::kId;
   }
   return Channel::kWhitted;
 }
@@ -97,7 +106,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     throw std::invalid_argument("render: image width, height and samples must be positive");
 
   std::optional<tbb::global_control> limit;
-  if (options.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+  if (options.threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
 
   const Camera camera(camera_or_default(scene), width, height);
   const Integrator integrator(scene, channel_for(scene, options));
@@ -109,39 +119,42 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   Progress progress(options.progress && isatty(STDERR_FILENO), std::size_t(tiles_x) * tiles_y);
 
   const auto start = std::chrono::steady_clock::now();
-  tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1), [&](const auto& range) {
-    std::uint64_t& counter = rays.local();
-    for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
-      for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
-        const int y1 = std::min(height, (ty + 1) * kTileSize);
-        const int x1 = std::min(width, (tx + 1) * kTileSize);
-        for (int y = ty * kTileSize; y < y1; ++y) {
-          for (int x = tx * kTileSize; x < x1; ++x) {
-            SampleState state{Rng::for_pixel(x, y, seed), 0};
-            Color sum{0, 0, 0};
-            for (int k = 0; k < spp; ++k) {
-              double ox, oy;
-              const double jx = spp > 1 ? state.rng.uniform() : 0.5;
-              const double jy = spp > 1 ? state.rng.uniform() : 0.5;
-              sample_offset(k, spp, jx, jy, ox, oy);
-              sum += integrator.li(camera.ray(x + ox, y + oy), state);
-            }
-            image.set(x, y, Vec3f(sum / double(spp)));
-            counter += state.rays;
-          }
-        }
-        progress.advance();
-      }
-    }
-  });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
+                    [&](const auto& range) {
+                      std::uint64_t& counter = rays.local();
+                      for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
+                        for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+                          const int y1 = std::min(height, (ty + 1) * kTileSize);
+                          const int x1 = std::min(width, (tx + 1) * kTileSize);
+                          for (int y = ty * kTileSize; y < y1; ++y) {
+                            for (int x = tx * kTileSize; x < x1; ++x) {
+                              SampleState state{Rng::for_pixel(x, y, seed), 0};
+                              Color sum{0, 0, 0};
+                              for (int k = 0; k < spp; ++k) {
+                                double ox, oy;
+                                const double jx = spp > 1 ? state.rng.uniform() : 0.5;
+                                const double jy = spp > 1 ? state.rng.uniform() : 0.5;
+                                sample_offset(k, spp, jx, jy, ox, oy);
+                                sum += integrator.li(camera.ray(x + ox, y + oy), state);
+                              }
+                              image.set(x, y, Vec3f(sum / double(spp)));
+                              counter += state.rays;
+                            }
+                          }
+                          progress.advance();
+                        }
+                      }
+                    });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
 
   if (stats) {
     stats->width = width;
     stats->height = height;
     stats->spp = spp;
-    stats->threads = int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    stats->threads =
+        int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
     stats->seconds = seconds;
     stats->rays = rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
   }
@@ -151,8 +164,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
 std::string format_summary(const RenderStats& s) {
   char line[256];
   std::snprintf(line, sizeof line, "%dx%d, %d spp, %d threads: %.3f s, %llu rays, %.2f Mrays/s",
-                s.width, s.height, s.spp, s.threads, s.seconds, static_cast<unsigned long long>(s.rays),
-                s.mrays_per_second());
+                s.width, s.height, s.spp, s.threads, s.seconds,
+                static_cast<unsigned long long>(s.rays), s.mrays_per_second());
   return line;
 }
 

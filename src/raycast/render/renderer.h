@@ -16,9 +16,9 @@ namespace raycast {
 enum class Aov { kDepth, kNormal, kId, kAlbedo };
 
 struct RenderOptions {
-  int width = 0;   // > 0 overrides the scene's image.width
-  int height = 0;  // > 0 overrides image.height
-  int spp = 0;     // > 0 overrides image.samples
+  int width = 0;                             // > 0 overrides the scene's image.width
+  int height = 0;                            // > 0 overrides image.height
+  int spp = 0;                               // > 0 overrides image.samples
   std::optional<IntegratorType> integrator;  // overrides render.integrator
   std::optional<Aov> aov;                    // render this output variable instead
   int threads = 0;                           // > 0 caps the worker threads (tbb::global_control)
@@ -27,9 +27,9 @@ struct RenderOptions {
 
 struct RenderStats {
   int width = 0, height = 0, spp = 0;
-  int threads = 0;            // the parallelism allowed while rendering
-  double seconds = 0;         // wall time of the pixel loop
-  std::uint64_t rays = 0;     // every scene query: primary, secondary and shadow rays
+  int threads = 0;         // the parallelism allowed while rendering
+  double seconds = 0;      // wall time of the pixel loop
+  std::uint64_t rays = 0;  // every scene query: primary, secondary and shadow rays
   double mrays_per_second() const { return seconds > 0 ? double(rays) / seconds * 1e-6 : 0; }
 };
 

@@ -9,9 +9,14 @@ namespace raycast {
 std::shared_ptr<const ImageTexture> load_image_texture(const std::string& path) {
   auto texture = std::make_shared<ImageTexture>();
   switch (image_format_for(path)) {
-    case ImageFormat::kPng: texture->image = load_png(path); break;
-    case ImageFormat::kPfm: texture->image = load_pfm(path); break;
-    case ImageFormat::kExr: throw ImageError(path + ": image textures must be .png or .pfm");
+    case ImageFormat::kPng:
+      texture->image = load_png(path);
+      break;
+    case ImageFormat::kPfm:
+      texture->image = load_pfm(path);
+      break;
+    case ImageFormat::kExr:
+      throw ImageError(path + ": image textures must be .png or .pfm");
   }
   return texture;
 }
@@ -69,7 +74,8 @@ Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTe
     // The object-space point from the object-space ray, as the shape itself computed it.
     return checker(m.checker, to_object_space(object, ray).at(hit.local.t));
   }
-  if (std::size_t(index) < textures.size() && textures[index]) return lookup(*textures[index], si.u, si.v);
+  if (std::size_t(index) < textures.size() && textures[index])
+    return lookup(*textures[index], si.u, si.v);
   return m.color;
 }
 
