@@ -3,11 +3,11 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -46,7 +46,8 @@ std::string read(const fs::path& p) {
 Outcome run(const std::string& args) {
   const fs::path dir = temp_dir();
   const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
-  const std::string cmd = std::string("'") + RAYCAST_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const std::string cmd =
+      std::string("'") + RAYCAST_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
   const int status = std::system(cmd.c_str());
   Outcome r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -117,7 +118,7 @@ TEST(Cli, Cast_WritesOneRowPerRayInInputOrder) {
   EXPECT_EQ(s[6], -1);
   EXPECT_EQ(s[9], 1);
   EXPECT_EQ(s[10], -1);
-  EXPECT_EQ(rows[3], kMiss);  // tmax 3.5 stops short of the box
+  EXPECT_EQ(rows[3], kMiss);                           // tmax 3.5 stops short of the box
   EXPECT_EQ(rows[4], "4 0 0 -1 0 0 -1 0.5 0.5 0 -1");  // tmin = tmax = t: inclusive
 }
 
@@ -131,8 +132,8 @@ TEST(Cli, CastFromStdin_SameAsFromFile) {
 
 TEST(Cli, CastAny_WritesOneOrZero) {
   const std::string scene = write("box.yaml", kBoxScene);
-  const std::string rays =
-      write("rays.txt", "0 0 -5 0 0 1\n0 5 0 1 0 0\n0 0 -5 0 0 1 0 3.9\n0 0 -5 0 0 1 0 4\n0 0 0 1 0 0\n");
+  const std::string rays = write(
+      "rays.txt", "0 0 -5 0 0 1\n0 5 0 1 0 0\n0 0 -5 0 0 1 0 3.9\n0 0 -5 0 0 1 0 4\n0 0 0 1 0 0\n");
   const Outcome r = run("cast --any '" + scene + "' --rays '" + rays + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out, "1\n0\n0\n1\n1\n");
@@ -152,15 +153,16 @@ TEST(Cli, CastAll_ListsEveryCrossingInOrder) {
 
 TEST(Cli, CastBinary_RoundTripsTheTextAnswers) {
   const std::string scene = write("box.yaml", kBoxScene);
-  const std::vector<std::vector<double>> rays = {
-      {0, 0, -5, 0, 0, 1, 0, INFINITY}, {0, 5, 0, 1, 0, 0, 0, INFINITY},
-      {0.3, -0.2, -5, 0.1, 0.05, 1, 0, INFINITY}, {5.5, 0.2, 7, 0, 0, -3, 0, INFINITY}};
+  const std::vector<std::vector<double>> rays = {{0, 0, -5, 0, 0, 1, 0, INFINITY},
+                                                 {0, 5, 0, 1, 0, 0, 0, INFINITY},
+                                                 {0.3, -0.2, -5, 0.1, 0.05, 1, 0, INFINITY},
+                                                 {5.5, 0.2, 7, 0, 0, -3, 0, INFINITY}};
   std::string bin, text;
   for (const auto& r : rays) {
     bin.append(reinterpret_cast<const char*>(r.data()), 8 * sizeof(double));
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", r[0], r[1], r[2],
-                  r[3], r[4], r[5], r[6], r[7]);
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", r[0], r[1],
+                  r[2], r[3], r[4], r[5], r[6], r[7]);
     text += buf;
   }
   const std::string bin_path = write("rays.bin", bin), text_path = write("rays.txt", text);
@@ -186,7 +188,8 @@ TEST(Cli, CastBinary_RoundTripsTheTextAnswers) {
   EXPECT_EQ(got[11 * 1 + 0], INFINITY);
   EXPECT_EQ(got[11 * 1 + 9], -1);
   // A truncated record is an error naming the ray.
-  const Outcome bad = run("cast --binary '" + scene + "' --rays '" + write("short.bin", bin.substr(0, 100)) + "'");
+  const Outcome bad =
+      run("cast --binary '" + scene + "' --rays '" + write("short.bin", bin.substr(0, 100)) + "'");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("ray 2: truncated record"), std::string::npos) << bad.err;
 }
@@ -199,12 +202,16 @@ TEST(Cli, MalformedRayLine_ExitsTwoNamingTheLine) {
   EXPECT_NE(r.err.find(rays + ":3:5: expected a number"), std::string::npos) << r.err;
   const Outcome few = run("cast '" + scene + "' --rays '" + write("few.txt", "1 2 3 4 5\n") + "'");
   EXPECT_EQ(few.code, 2);
-  EXPECT_NE(few.err.find(":1:1: expected ox oy oz dx dy dz [tmin [tmax]], got 5 numbers"), std::string::npos)
+  EXPECT_NE(few.err.find(":1:1: expected ox oy oz dx dy dz [tmin [tmax]], got 5 numbers"),
+            std::string::npos)
       << few.err;
-  const Outcome zero = run("cast '" + scene + "' --rays '" + write("zero.txt", "\n\n0 0 0 0 0 0\n") + "'");
+  const Outcome zero =
+      run("cast '" + scene + "' --rays '" + write("zero.txt", "\n\n0 0 0 0 0 0\n") + "'");
   EXPECT_EQ(zero.code, 2);
-  EXPECT_NE(zero.err.find(":3:1: ray direction must be finite and non-zero"), std::string::npos) << zero.err;
-  const Outcome nan = run("cast '" + scene + "' --rays '" + write("nan.txt", "nan 0 0 1 0 0\n") + "'");
+  EXPECT_NE(zero.err.find(":3:1: ray direction must be finite and non-zero"), std::string::npos)
+      << zero.err;
+  const Outcome nan =
+      run("cast '" + scene + "' --rays '" + write("nan.txt", "nan 0 0 1 0 0\n") + "'");
   EXPECT_EQ(nan.code, 2);
   EXPECT_NE(nan.err.find(":1:1: ray origin must be finite"), std::string::npos) << nan.err;
 }
@@ -212,12 +219,15 @@ TEST(Cli, MalformedRayLine_ExitsTwoNamingTheLine) {
 TEST(Cli, MissingOrBadScene_ExitsTwoWithPosition) {
   const Outcome r = run("cast /nonexistent/scene.yaml </dev/null");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("/nonexistent/scene.yaml: cannot open the scene file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent/scene.yaml: cannot open the scene file"), std::string::npos)
+      << r.err;
   const std::string bad = write("bad.yaml", "objects:\n  - sphere: {radius: -1}\n");
   const Outcome b = run("info '" + bad + "'");
   EXPECT_EQ(b.code, 2);
-  EXPECT_NE(b.err.find(bad + ":2:22: sphere.radius must be > 0, got -1"), std::string::npos) << b.err;
-  const Outcome missing_rays = run("cast '" + write("box.yaml", kBoxScene) + "' --rays /nonexistent/rays.txt");
+  EXPECT_NE(b.err.find(bad + ":2:22: sphere.radius must be > 0, got -1"), std::string::npos)
+      << b.err;
+  const Outcome missing_rays =
+      run("cast '" + write("box.yaml", kBoxScene) + "' --rays /nonexistent/rays.txt");
   EXPECT_EQ(missing_rays.code, 2);
 }
 
@@ -225,7 +235,8 @@ TEST(Cli, Info_ReportsObjectsByTypeAndBounds) {
   const std::string scene = write("box.yaml", kBoxScene);
   const Outcome r = run("info '" + scene + "'");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("entries: 2\nobjects: 2\n  box: 1\n  sphere: 1\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("entries: 2\nobjects: 2\n  box: 1\n  sphere: 1\n"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("bounds: [-1, -1, -1] - [6, 1, 1]"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("acceleration: top-level BVH"), std::string::npos) << r.out;
 }
