@@ -151,6 +151,20 @@ TEST(Cli, CastAll_ListsEveryCrossingInOrder) {
   EXPECT_EQ(rows[2], "2 6 1 0 0 0 9 -1 0 0 1");
 }
 
+TEST(Cli, CastAll_OpenSurfacesCrossOnce) {
+  const std::string scene = write("open.yaml", R"(objects:
+  - triangle: {vertices: [[0, 0, 0], [2, 0, 0], [0, 2, 0]]}
+  - disk: {radius: 1, height: -2}
+  - parallelogram: {origin: [-1, -1, -4], u: [0, 2, 0], v: [2, 0, 0]}
+)");
+  const std::string rays = write("rays.txt", "0.5 0.5 5 0 0 -1\n");
+  const Outcome r = run("cast --all '" + scene + "' --rays '" + rays + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "3 5 0 0 1 0 7 0 0 1 1 9 0 0 -1 2\n");
+  const Outcome n = run("cast '" + scene + "' --rays '" + rays + "'");
+  EXPECT_EQ(n.out, "5 0.5 0.5 0 0 0 1 0.25 0.25 0 -1\n");
+}
+
 TEST(Cli, CastBinary_RoundTripsTheTextAnswers) {
   const std::string scene = write("box.yaml", kBoxScene);
   const std::vector<std::vector<double>> rays = {{0, 0, -5, 0, 0, 1, 0, INFINITY},
