@@ -157,6 +157,16 @@ fs::path temp_dir() {
   return dir;
 }
 
+// Removes this process's temporary folder once every test has run.
+class RemoveTempDir : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(temp_dir(), ec);
+  }
+};
+const auto* const kRemoveTempDir = ::testing::AddGlobalTestEnvironment(new RemoveTempDir);
+
 TEST(CastAccuracy, EveryBasicShape_TMatchesIndependentReferenceTo1e9) {
   const std::string scene = R"(objects:
   - sphere: {center: [0, 0, 0], radius: 1}

@@ -29,6 +29,16 @@ fs::path temp_dir() {
   return dir;
 }
 
+// Removes this process's temporary folder once every test has run.
+class RemoveTempDir : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(temp_dir(), ec);
+  }
+};
+const auto* const kRemoveTempDir = ::testing::AddGlobalTestEnvironment(new RemoveTempDir);
+
 std::string write(const std::string& name, const std::string& content) {
   const fs::path p = temp_dir() / name;
   std::ofstream(p, std::ios::binary) << content;
