@@ -166,6 +166,11 @@ TEST(Loader, NestingWithinLimit_AndBracketsInStrings_AreFine) {
   const Scene s = load_scene_text(
       "# [[[[[[[[\nobjects:\n  - sphere: {radius: 1}  # ]]]][[[[\n    name: \"[[[[{{{{\"\n");
   EXPECT_EQ(s.objects.size(), 1u);
+  // Block scalars are text, whatever brackets they hold.
+  std::string text = "objects:\n  - sphere: {radius: 1}\n    name: |\n";
+  for (int i = 0; i < 100; ++i) text += "      [[[[ {{{{ - - - -\n";
+  text += "\n      more text\n  - box: {min: [0, 0, 0], max: [1, 1, 1]}\n";
+  EXPECT_EQ(load_scene_text(text).objects.size(), 2u);
   // 200 levels of flow lists are parsed (and then rejected as an object, not as nesting).
   expect_error("objects: " + std::string(200, '[') + std::string(200, ']'), 1, 11,
                "an object must be a mapping with one shape key, got a list of 1");

@@ -400,24 +400,33 @@ class Loader {
 // after 2000 deep frames, and later readers recurse too), so text nested deeper than kMaxNesting
 // is rejected before parsing, at the position of the first level too deep. Flow collections
 // ([, {) count one level each; block collections one level per indentation step and per inline
-// `- ` item. Quoted scalars and comments are skipped.
+// `- ` item. Quoted scalars, block scalars (| and >) and comments are skipped.
 void check_nesting(const std::string& text, const std::string& name) {
   const std::string too_deep = "the YAML is nested deeper than " + std::to_string(kMaxNesting) + " levels";
   std::vector<std::size_t> indents;  // block indentation levels open at this line
   int flow = 0;                      // open [ and { around the current character
   char quote = 0;                    // the open quote character, or 0
+  std::size_t scalar_indent = std::string::npos;  // inside a block scalar: its parent's indent
   int line = 1;
   std::size_t i = 0;
   const std::size_t n = text.size();
   while (i < n) {
     const std::size_t line_start = i;
-    std::size_t block = indents.size();
+    std::size_t block = indents.size(), indent = 0;
     if (flow == 0 && quote == 0) {
       // A block line: its indentation and leading `- ` items.
       std::size_t j = i;
       while (j < n && text[j] == ' ') ++j;
-      if (j < n && text[j] != '\n' && text[j] != '\r' && text[j] != '#') {
-        const std::size_t indent = j - i;
+      indent = j - i;
+      const bool blank = j == n || text[j] == '\n' || text[j] == '\r';
+      if (scalar_indent != std::string::npos && (blank || indent > scalar_indent)) {
+        while (i < n && text[i] != '\n') ++i;  // block scalar content: plain text
+        if (i < n) ++i;
+        ++line;
+        continue;
+      }
+      scalar_indent = std::string::npos;
+      if (!blank && text[j] != '#') {
         while (!indents.empty() && indents.back() > indent) indents.pop_back();
         if (indents.empty() || indents.back() < indent) indents.push_back(indent);
         block = indents.size();
@@ -433,6 +442,7 @@ void check_nesting(const std::string& text, const std::string& name) {
       }
     }
     char prev = '\n';  // previous non-blank character on this line ('\n' at its start)
+    char last_token = 0;  // first character of the line's last token
     bool after_blank = true;
     for (; i < n && text[i] != '\n'; ++i) {
       const char c = text[i];
@@ -456,9 +466,11 @@ void check_nesting(const std::string& text, const std::string& name) {
       } else if ((c == ']' || c == '}') && flow > 0) {
         --flow;
       }
+      if (after_blank && c != ' ' && c != '\t') last_token = c;
       after_blank = c == ' ' || c == '\t';
       if (!after_blank) prev = c;
     }
+    if (flow == 0 && quote == 0 && (last_token == '|' || last_token == '>')) scalar_indent = indent;
     if (i < n) ++i;  // the newline
     ++line;
   }
