@@ -339,6 +339,24 @@ TEST(Quadric, OpenBoundedHemisphere_IsSeenFromInside) {
   EXPECT_FALSE(contains(q, {0, 0, 0.5}));
 }
 
+TEST(Quadric, OpenWithoutBounds_IsTheWholeCurvedSurface) {
+  const Quadric q =
+      make_quadric(quadric_of_kind(QuadricKind::kCylinder, 1, 1, 1), std::nullopt, true);
+  EXPECT_FALSE(is_closed(q));
+  EXPECT_FALSE(contains(q, {0, 0, 0}));
+  const Ray ray{{0, 0, 100}, {0.5, 0, 0}};
+  LocalHit h;
+  ASSERT_TRUE(intersect(q, ray, h));
+  EXPECT_DOUBLE_EQ(h.t, 2);
+  EXPECT_DOUBLE_EQ(surface(q, ray, h).n.x, 1);
+  SpanList sl;
+  spans(q, ray, sl);
+  ASSERT_EQ(sl.size(), 2u);
+  EXPECT_DOUBLE_EQ(sl[0].in.t, -2);
+  EXPECT_DOUBLE_EQ(sl[0].out.t, -2);
+  EXPECT_DOUBLE_EQ(sl[1].in.t, 2);
+}
+
 TEST(Quadric, TMinTMax_AreClosedAtBothEnds) {
   const Quadric q = make_quadric(quadric_of_kind(QuadricKind::kEllipsoid, 1, 1, 1));
   LocalHit h;
