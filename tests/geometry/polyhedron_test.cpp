@@ -150,8 +150,28 @@ TEST(Polyhedron, EmptyOrDegenerate_IsRejected) {
   EXPECT_THROW(make_polyhedron({{0, 0, 1, std::nan("")}}), std::invalid_argument);
   EXPECT_NO_THROW(
       make_polyhedron({{1, 1, 1, 1}, {-1, 0, 0, 0}, {0, -1, 0, 0}}));  // unbounded, not empty
+  EXPECT_THROW(make_polyhedron({{0, 0, 1, 0}, {0, 0, -1, 0}, {-1, 0, 0, 0}, {0, -1, 0, 0}}),
+               std::invalid_argument);  // a flat unbounded quadrant: no interior
   std::vector<std::array<double, 4>> many(kMaxPolyhedronPlanes + 1, {0, 0, 1, -1});
   EXPECT_THROW(make_polyhedron(many), std::invalid_argument);
+}
+
+TEST(Polyhedron, HundredPlanes_LoadWithTheirHull) {
+  // The largest allowed polyhedron: 100 tangent planes of the unit sphere, and the same with
+  // every normal in the upper half (unbounded below).
+  Rng rng(97);
+  std::vector<std::array<double, 4>> closed, open;
+  for (std::size_t i = 0; i < kMaxPolyhedronPlanes; ++i) {
+    const Vec3 n = rng.direction();
+    closed.push_back({n.x, n.y, n.z, -1});
+    open.push_back({n.x, n.y, std::abs(n.z), -1});
+  }
+  const Polyhedron a = make_polyhedron(closed), b = make_polyhedron(open);
+  EXPECT_TRUE(bounds(a).is_bounded());
+  EXPECT_LT(bounds(a).hi.x, 3);
+  EXPECT_FALSE(bounds(b).is_bounded());
+  EXPECT_TRUE(contains(a, {0, 0, 0}));
+  EXPECT_TRUE(contains(b, {0, 0, -100}));
 }
 
 }  // namespace

@@ -223,6 +223,19 @@ TEST(Quadric, ParaboloidRayAlongItsAxis_HasOneRoot) {
   EXPECT_EQ(sl[0].out.part, kNoSurface);
 }
 
+TEST(Quadric, ParaboloidRayNearlyAlongItsAxis_KeepsTheFiniteRoot) {
+  // a2 = 1e-20: the cancellation-free form gives the far root huge and the near one exact.
+  const Quadric q = make_quadric(quadric_of_kind(QuadricKind::kParaboloid, 1, 1, 1));
+  const Ray ray{{0.5, 0, -5}, {1e-10, 0, 1}};
+  LocalHit h;
+  ASSERT_TRUE(intersect(q, ray, h));
+  EXPECT_NEAR(h.t, 5.25, 1e-9);
+  SpanList sl;
+  spans(q, ray, sl);
+  ASSERT_EQ(sl.size(), 1u);
+  EXPECT_GT(sl[0].out.t, 1e15);
+}
+
 TEST(Quadric, ConeRayParallelToAGenerator_HasOneRoot) {
   // x^2 + y^2 - z^2 along (1, 0, 0) + t (1, 0, 1): f = 1 + 2t, inside for t < -0.5.
   const Quadric q = make_quadric(quadric_of_kind(QuadricKind::kCone, 1, 1, 1));
@@ -324,6 +337,24 @@ TEST(Quadric, OpenBoundedHemisphere_IsSeenFromInside) {
   EXPECT_NEAR(si.n.x, 0.5, 1e-15);  // outward, as the closed solid's
   EXPECT_GT(dot(si.n, up.d), 0);
   EXPECT_FALSE(contains(q, {0, 0, 0.5}));
+}
+
+TEST(Quadric, OpenWithoutBounds_IsTheWholeCurvedSurface) {
+  const Quadric q =
+      make_quadric(quadric_of_kind(QuadricKind::kCylinder, 1, 1, 1), std::nullopt, true);
+  EXPECT_FALSE(is_closed(q));
+  EXPECT_FALSE(contains(q, {0, 0, 0}));
+  const Ray ray{{0, 0, 100}, {0.5, 0, 0}};
+  LocalHit h;
+  ASSERT_TRUE(intersect(q, ray, h));
+  EXPECT_DOUBLE_EQ(h.t, 2);
+  EXPECT_DOUBLE_EQ(surface(q, ray, h).n.x, 1);
+  SpanList sl;
+  spans(q, ray, sl);
+  ASSERT_EQ(sl.size(), 2u);
+  EXPECT_DOUBLE_EQ(sl[0].in.t, -2);
+  EXPECT_DOUBLE_EQ(sl[0].out.t, -2);
+  EXPECT_DOUBLE_EQ(sl[1].in.t, 2);
 }
 
 TEST(Quadric, TMinTMax_AreClosedAtBothEnds) {

@@ -9,8 +9,8 @@ namespace raycast {
 /// to `to` (radius_to), with a disk at each end of non-zero radius when capped. A closed solid
 /// when phi_max = 360 and capped, else an open surface. u = phi / phi_max, v = the height
 /// fraction (0 at the base or `from`, 1 at the apex or `to`).
-/// Throws std::invalid_argument for bad parameters. Errors in t: the side is a quadratic solved
-/// in the cancellation-free form (math/quadratic.h).
+/// The side is a quadratic in t solved in the cancellation-free form (math/quadratic.h); the
+/// make_ functions throw std::invalid_argument for bad parameters.
 struct Cone {
   static constexpr const char* kName = "cone";
   Frustum f;

@@ -8,8 +8,8 @@ namespace raycast {
 /// 0 <= phi <= phi_max, with disks closing its ends when capped; or the same from `from` to `to`
 /// (z_min = 0 at from). A closed solid when phi_max = 360 and capped, else an open surface.
 /// u = phi / phi_max, v = (z - z_min) / (z_max - z_min) (also on the caps: 0 and 1).
-/// Throws std::invalid_argument for bad parameters. Errors in t: the side is a quadratic solved
-/// in the cancellation-free form (math/quadratic.h).
+/// The side is a quadratic in t solved in the cancellation-free form (math/quadratic.h); the
+/// make_ functions throw std::invalid_argument for bad parameters.
 struct Cylinder {
   static constexpr const char* kName = "cylinder";
   Frustum f;

@@ -210,8 +210,8 @@ SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hi
   Vec3 err = gamma(5) * (abs(r.o) + abs(hit.t * r.d));
   Vec3 n;
   if (hit.part == kFrustumCap0 || hit.part == kFrustumCap1) {
+    // Snapped onto the cap; err.z stays the computed point's so spawned rays move off it.
     p.z = hit.part == kFrustumCap0 ? f.z0 : f.z1;
-    err.z = 0;
     n = {0, 0, hit.part == kFrustumCap0 ? -1.0 : 1.0};
   } else {
     const double rz = f.r0 + f.k * (p.z - f.z0);
@@ -236,6 +236,13 @@ SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hi
     }
     // At a cone's apex the gradient vanishes: the tip's own direction along the axis.
     n = ln > 0 ? n / ln : Vec3{0, 0, f.k < 0 ? 1.0 : -1.0};
+    if (f.k != 0 && ln > 0) {
+      // The root's own error: the distance to the surface to first order, |g| / |grad g| with
+      // g = x^2 + y^2 - r(z)^2, plus g's rounding.
+      const double g = p.x * p.x + p.y * p.y - rz * rz;
+      const double dist = (std::abs(g) + gamma(6) * (p.x * p.x + p.y * p.y + rz * rz)) / (2 * ln);
+      err += dist * abs(n);
+    }
   }
   SurfaceInfo si;
   si.u = phi_of(p.x, p.y) / f.phi_max;

@@ -94,13 +94,13 @@ double largest_inscribed_radius(const std::vector<Plane4>& planes, double cap, d
   return best;
 }
 
-// Bounded when the normals span space and no direction q (an edge of the recession cone, so
-// along n_i x n_j) has n . q <= 0 for every plane; then the hull of the feasible vertices.
-bool bounded_hull(const std::vector<Plane4>& planes, double tol, Aabb& hull) {
-  Vec3 basis[3];
-  if (normal_basis(planes, basis) < 3) return false;
+// The unit directions q along some n_i x n_j with n . q <= 0 for every plane: when the normals
+// span space, these include every edge of the recession cone, so the polyhedron is bounded
+// exactly when there are none. Holds for empty sets too (the cone is theirs).
+std::vector<Vec3> receding_directions(const std::vector<Plane4>& planes) {
+  constexpr double kRecession = 1e-9;  // a direction this close to feasible counts as receding
+  std::vector<Vec3> out;
   const std::size_t m = planes.size();
-  constexpr double kRecession = 1e-9;  // a direction this close to feasible counts as unbounded
   for (std::size_t i = 0; i < m; ++i)
     for (std::size_t j = i + 1; j < m; ++j) {
       const Vec3 q = cross(normal_of(planes[i]), normal_of(planes[j]));
@@ -110,10 +110,16 @@ bool bounded_hull(const std::vector<Plane4>& planes, double tol, Aabb& hull) {
         bool recedes = true;
         for (std::size_t l = 0; l < m && recedes; ++l)
           recedes = sign * dot(normal_of(planes[l]), q) / len <= kRecession;
-        if (recedes) return false;
+        if (recedes) out.push_back((sign / len) * q);
       }
     }
-  Aabb b;
+  return out;
+}
+
+// Every point where three planes meet that satisfies all planes to within tol: O(n^3) systems.
+std::vector<Vec3> feasible_vertices(const std::vector<Plane4>& planes, double tol) {
+  std::vector<Vec3> out;
+  const std::size_t m = planes.size();
   for (std::size_t i = 0; i < m; ++i)
     for (std::size_t j = i + 1; j < m; ++j)
       for (std::size_t l = j + 1; l < m; ++l) {
@@ -128,12 +134,16 @@ bool bounded_hull(const std::vector<Plane4>& planes, double tol, Aabb& hull) {
         bool feasible = true;
         for (std::size_t q = 0; q < m && feasible; ++q)
           feasible = dot(normal_of(planes[q]), v) + planes[q][3] <= tol;
-        if (feasible) b.grow(v);
+        if (feasible) out.push_back(v);
       }
-  if (b.is_empty() || !b.is_bounded()) return false;
-  const Vec3 pad = Vec3{tol, tol, tol} + 1e-9 * (abs(b.lo) + abs(b.hi));
-  hull = {b.lo - pad, b.hi + pad};
-  return true;
+  return out;
+}
+
+// The smallest slack -(n_i . c + d_i) over the planes: > 0 when c is strictly inside.
+double slack(const std::vector<Plane4>& planes, const Vec3& c) {
+  double s = kInfinity;
+  for (const Plane4& q : planes) s = std::min(s, -(dot(normal_of(q), c) + q[3]));
+  return s;
 }
 
 }  // namespace
@@ -155,10 +165,32 @@ Polyhedron make_polyhedron(const std::vector<std::array<double, 4>>& given) {
     scale = std::max(scale, std::abs(g[3] / len));
   }
   const double tol = kPolyhedronTolerance * scale;
-  if (!(largest_inscribed_radius(p.planes, scale, tol) > tol))
-    throw std::invalid_argument("is empty: no point is strictly inside every plane");
-  Aabb hull;
-  if (bounded_hull(p.planes, tol, hull)) p.hull = hull;
+  const char* kEmpty = "is empty: no point is strictly inside every plane";
+  Vec3 basis[3];
+  if (normal_basis(p.planes, basis) < 3) {
+    // Normals in a plane or along a line (a prism, a slab): the linear program is small here.
+    if (!(largest_inscribed_radius(p.planes, scale, tol) > tol))
+      throw std::invalid_argument(kEmpty);
+    return p;
+  }
+  // A pointed polyhedron is conv(vertices) + cone(receding directions); when it has an interior,
+  // a combination with positive weights on all of them lies strictly inside. O(n^3).
+  const std::vector<Vec3> vertices = feasible_vertices(p.planes, tol);
+  if (vertices.empty()) throw std::invalid_argument(kEmpty);
+  const std::vector<Vec3> rays = receding_directions(p.planes);
+  Vec3 c;
+  Aabb b;
+  for (const Vec3& v : vertices) {
+    c += v;
+    b.grow(v);
+  }
+  c /= static_cast<double>(vertices.size());
+  for (const Vec3& r : rays) c += r / static_cast<double>(rays.size());
+  if (!(slack(p.planes, c) > tol)) throw std::invalid_argument(kEmpty);
+  if (rays.empty()) {
+    const Vec3 pad = Vec3{tol, tol, tol} + 1e-9 * (abs(b.lo) + abs(b.hi));
+    p.hull = {b.lo - pad, b.hi + pad};
+  }
   return p;
 }
 

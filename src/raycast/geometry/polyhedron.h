@@ -16,8 +16,8 @@ struct Polyhedron {
   Aabb hull = Aabb::everything();
 };
 
-/// The most planes a polyhedron may have: validation enumerates subsets of 4 planes (a
-/// Chebyshev-centre linear program solved at its vertices), O(n^4) at load time.
+/// The most planes a polyhedron may have: validation enumerates the vertices and the receding
+/// edge directions, O(n^3) at load time (35 ms for 100 planes).
 inline constexpr std::size_t kMaxPolyhedronPlanes = 100;
 /// Relative tolerance (to the planes' largest |d|, at least 1) of feasibility tests at load time.
 inline constexpr double kPolyhedronTolerance = 1e-9;

@@ -228,11 +228,11 @@ SurfaceInfo surface(const Quadric& q, const Ray& ray, const LocalHit& hit) {
   Vec3 p = ray.at(hit.t);
   si.p_error = gamma(3) * (abs(ray.o) + abs(hit.t * ray.d));
   if (hit.part > kCurved && q.box) {
-    // A box face: snap the coordinate onto the face exactly.
+    // A box face: snap the coordinate onto the face exactly, but keep the computed point's
+    // error bound on that axis so that spawned rays move off the face (a zero offset re-hits).
     const int axis = (hit.part - 1) / 2;
     const bool hi = (hit.part - 1) % 2 == 1;
     p[axis] = hi ? q.box->hi[axis] : q.box->lo[axis];
-    si.p_error[axis] = 0;
     si.n = Vec3{};
     si.n[axis] = hi ? 1 : -1;
   } else {
