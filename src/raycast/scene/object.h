@@ -8,6 +8,7 @@
 #include "geometry/algebraic.h"
 #include "geometry/implicit.h"
 #include "geometry/plane.h"
+#include "geometry/revolution.h"
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
 #include "geometry/torus.h"
@@ -17,7 +18,7 @@ namespace raycast {
 
 /// The closed set of shape types. Adding one here makes the compiler point at every place that
 /// must handle it (object.cpp's dispatch, the loader's table).
-using ShapeVariant = std::variant<Plane, Sphere, Torus, Algebraic, Implicit>;
+using ShapeVariant = std::variant<Plane, Sphere, Torus, Algebraic, Implicit, Revolution>;
 
 struct Object {
   ShapeVariant shape;

@@ -19,5 +19,6 @@ ShapeVariant parse_sphere(Fields& f);
 ShapeVariant parse_torus(Fields& f);
 ShapeVariant parse_algebraic(Fields& f);
 ShapeVariant parse_implicit(Fields& f);
+ShapeVariant parse_revolution(Fields& f);
 
 }  // namespace raycast

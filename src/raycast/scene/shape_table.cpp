@@ -9,6 +9,7 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
       {"torus", parse_torus},
       {"algebraic", parse_algebraic},
       {"implicit", parse_implicit},
+      {"revolution", parse_revolution},
   };
   return table;
 }
