@@ -1,7 +1,7 @@
 // Failure rates of a plain closed-form quartic (textbook Ferrari on the ray's raw coefficients)
 // against the torus's isolating solver, on ordinary and grazing rays; and their cost per ray.
 // Run: build/release/bench/torus_quartic_bench  (prints a table; no Google Benchmark flags).
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -113,14 +113,15 @@ void report(const char* what, const char* solver, const Tally& t) {
 }  // namespace
 
 int main() {
-  const Torus torus = make_torus(1.0, 0.25);
-  for (double distance : {3.0, 30.0}) {
+  for (double minor : {0.25, 0.02}) {
+  const Torus torus = make_torus(1.0, minor);
+  for (double distance : {3.0, 30.0, 300.0}) {
     for (double depth : {1e-2, 1e-4, 1e-6, 1e-8}) {
       // Tangent at a random surface point, moved `depth` into the solid, starting `distance` back.
       std::mt19937 rng(1);
       std::uniform_real_distribution<double> u(0, 1);
       Tally naive, ours;
-      for (int i = 0; i < 100000; ++i) {
+      for (int i = 0; i < 20000; ++i) {
         const double phi = 2 * M_PI * u(rng), theta = 2 * M_PI * u(rng);
         const Vec3 radial{std::cos(phi), std::sin(phi), 0};
         const Vec3 n = std::cos(theta) * radial + Vec3{0, 0, std::sin(theta)};
@@ -133,7 +134,7 @@ int main() {
         // The true first crossing: bisect f from the ray's start to the inside point.
         long double lo = 0;
         // Step forward to bracket the first sign change before the inside point.
-        const int steps = 4000;
+        const int steps = 1000 + static_cast<int>(distance) * 20;
         long double truth = -1;
         long double prev = f_ld(torus, ray, 0);
         for (int k = 1; k <= steps; ++k) {
@@ -163,18 +164,23 @@ int main() {
             ++tl.missed;
             continue;
           }
+          // A root before the reference's is a close pair the sampling stepped over when the
+          // function really vanishes there (checked in long double); it is then correct.
+          if (t < (double)truth && std::abs((double)f_ld(torus, ray, t)) < 1e-9) continue;
           const double rel = std::abs(t - (double)truth) / (double)truth;
           if (rel > 1e-6) ++tl.inaccurate;
           if (rel > tl.worst) tl.worst = rel;
         }
       }
       char what[96];
-      std::snprintf(what, sizeof what, "grazing: depth %.0e, distance %.0f", depth, distance);
+      std::snprintf(what, sizeof what, "r %.2f depth %.0e distance %.0f", minor, depth, distance);
       report(what, "naive", naive);
       report(what, "isolating", ours);
     }
   }
+  }
   // Cost per ray on ordinary rays (a random mix of hits and misses).
+  const Torus torus = make_torus(1.0, 0.25);
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Ray> rays;
@@ -183,16 +189,15 @@ int main() {
     rays.push_back(Ray{o, Vec3{1.3 * u(rng), 1.3 * u(rng), 0.3 * u(rng)} - o});
   }
   for (int which = 0; which < 2; ++which) {
-    const auto start = std::chrono::steady_clock::now();
+    // CPU time, not wall time: the machine may be shared.
+    const std::clock_t start = std::clock();
     int hits = 0;
     for (const Ray& r : rays) {
       double t;
       LocalHit h;
       hits += which == 0 ? naive_intersect(torus, r, t) : intersect(torus, r, h);
     }
-    const double ns =
-        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
-        rays.size();
+    const double ns = 1e9 * double(std::clock() - start) / CLOCKS_PER_SEC / rays.size();
     std::printf("ordinary rays: %-10s %.1f ns/ray (%d hits of %zu)\n",
                 which == 0 ? "naive" : "isolating", ns, hits, rays.size());
   }
