@@ -27,7 +27,13 @@ double refine_root(const Polynomial& p, double a, double b, double fa, double fb
   for (int i = 0; i < kMaxRefineSteps; ++i) {
     double df, err;
     const double f = evaluate(p, x, df, err);
-    if (f == 0 || std::abs(f) <= err) return x;
+    if (f == 0) return x;
+    if (std::abs(f) <= err) {
+      // Within the (pessimistic) error bound of p: one more Newton step usually lands on the
+      // root to the last bits, as the actual rounding is far below the bound.
+      const double last = x - f / df;
+      return last >= a && last <= b ? last : x;
+    }
     if (same_sign(f, fa)) {
       a = x;
       fa = f;
@@ -140,17 +146,22 @@ int roots_in(const Polynomial& p, double lo, double hi, double* out) {
   return count;
 }
 
-// Fujiwara's bound on the magnitude of every complex root: 2 max |c_{n-i} / c_n|^(1/i)
-// (with the constant term's ratio halved).
+// Fujiwara's bound on the magnitude of every complex root, 2 max |c_{n-i} / c_n|^(1/i) (the
+// constant term's ratio halved), rounded up to powers of two so that no pow() is needed.
 double root_bound(const Polynomial& p) {
   const int n = p.degree;
-  double b = 0;
+  int e = std::numeric_limits<int>::min();
   for (int i = 1; i <= n; ++i) {
-    double ratio = std::abs(p.c[n - i] / p.c[n]);
-    if (i == n) ratio *= 0.5;
-    b = std::max(b, std::pow(ratio, 1.0 / i));
+    const double ratio = std::abs(p.c[n - i] / p.c[n]) * (i == n ? 0.5 : 1.0);
+    if (ratio == 0) continue;
+    if (!std::isfinite(ratio)) return kInfinity;
+    // ratio < 2^(ilogb + 1), so ratio^(1/i) < 2^ceil((ilogb + 1) / i).
+    const int k = std::ilogb(ratio) + 1;
+    const int root_exp = k >= 0 ? (k + i - 1) / i : -((-k) / i);
+    e = std::max(e, root_exp);
   }
-  return 2 * b;
+  if (e == std::numeric_limits<int>::min()) return 0;
+  return std::ldexp(2.0, e);
 }
 
 }  // namespace
@@ -170,7 +181,7 @@ int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots)
 
   // Clip the interval to the root bound, then scale the variable so the interval is about
   // [-1, 1]: t = s u with s a power of two, c_i -> c_i s^i.
-  const double bound = std::isfinite(lo) && std::isfinite(hi) ? kInfinity : root_bound(p);
+  const double bound = root_bound(p);
   if (std::isfinite(bound)) {
     lo = std::max(lo, -bound * (1 + gamma(4)));
     hi = std::min(hi, bound * (1 + gamma(4)));
