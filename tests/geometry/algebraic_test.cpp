@@ -212,6 +212,23 @@ TEST(Algebraic, Heart_SpansMatchInsideOracleAndNormalsOutward) {
   EXPECT_GT(normals, 50);
 }
 
+// Pinned: a camera ray hitting the heart just below its equator z = 0, where f vanishes to second
+// order; the double-precision root was 3e-7 off and the gradient there pointed 40 degrees wrong.
+TEST(Algebraic, HeartEquatorHit_NormalFacesTheViewer) {
+  const Algebraic s = make_algebraic(kHeart, Aabb{{-1.5, -1, -1.5}, {1.5, 1, 1.5}});
+  const Ray r{{0.3, -5, 2.5}, {-0.14106469656424878, 0.86507734142178705, -0.49220315393326086}};
+  LocalHit h;
+  ASSERT_TRUE(intersect(s, r, h));
+  const SurfaceInfo si = surface(s, r, h);
+  // The surface near z = 0 is A = c z with A = x^2 + 9/4 y^2 + z^2 - 1, c = cbrt(x^2 + 9/80 y^2):
+  // its normal is grad A - c e_z.
+  const Vec3 p = si.p;
+  const double c = std::cbrt(p.x * p.x + 9.0 / 80 * p.y * p.y);
+  const Vec3 want = normalize(Vec3{2 * p.x, 4.5 * p.y, -c});
+  EXPECT_GT(dot(si.n, want), 0.9999);
+  EXPECT_LT(dot(si.n, normalize(r.d)), -0.5);
+}
+
 TEST(Algebraic, GrazingSphere_NoMissJustInside) {
   const Algebraic s = make_algebraic("x^2 + y^2 + z^2 - 1", kUnitBox);
   for (double eps : {1e-4, 1e-8, 1e-12}) {

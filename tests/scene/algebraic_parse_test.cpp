@@ -62,6 +62,20 @@ TEST(AlgebraicParse, ImplicitFunctionErrors_Positioned) {
   EXPECT_EQ(s.objects.size(), 1u);
 }
 
+TEST(AlgebraicParse, RevolutionErrors_Positioned) {
+  expect_error_at("objects:\n  - revolution: {profile: [[1, 0], [-1, 2]]}\n", 2, 36,
+                  "r must be >= 0");
+  expect_error_at("objects:\n  - revolution: {profile: [[1, 0], [1, 2]], curve: nurbs}\n", 2, 52,
+                  "linear or bspline");
+  expect_error_at("objects:\n  - revolution: {profile: [[1, 0], [1, 2]], curve: bspline}\n", 2, 27,
+                  "at least 4");
+  expect_error_at("objects:\n  - revolution: {profile: [[1, 0, 3], [1, 2]]}\n", 2, 28, "[r, z]");
+  const Scene s = load_scene_text(
+      "objects:\n  - revolution: {profile: [[0, 0], [1, 0], [1, 1], [0, 2]], curve: linear, "
+      "capped: false}\n");
+  EXPECT_EQ(s.objects.size(), 1u);
+}
+
 TEST(AlgebraicParse, FieldErrors_Positioned) {
   expect_error_at("objects:\n  - algebraic: {equation: x^2 - 1}\n", 2, 16, "bounds is required");
   expect_error_at(

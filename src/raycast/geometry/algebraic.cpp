@@ -14,6 +14,10 @@ namespace {
 // The rounding of the substituted coefficients exceeds Horner's own error by a factor growing
 // with the degree; this widens the root's error estimate accordingly (per degree).
 constexpr double kCoefficientErrorFactor = 4;
+// Extended-precision polish of a hit: bracket widenings (x4 each) and bisection steps (64 reach
+// the last bit of an x87 long double from a bracket of the root's error estimate).
+constexpr int kMaxBracketWidenings = 12;
+constexpr int kExtendedBisections = 64;
 
 // The line's polynomial about the chord's middle and its roots on the chord.
 struct LineRoots {
@@ -43,6 +47,48 @@ bool line_roots(const Algebraic& s, const Ray& ray, LineRoots& r) {
     ++r.n;
   }
   return true;
+}
+
+// Polishes a root of f(o + t d) in extended precision and returns the point. Where f's gradient
+// nearly vanishes on the surface (the heart's f behaves like a cube of the distance along its
+// equator z = 0) a double root is only good to about cbrt(eps), and the gradient at such a point
+// points the wrong way; extended precision shrinks that band a thousandfold.
+Vec3 polished_point(const Algebraic& s, const Ray& ray, const LocalHit& hit, long double p[3]) {
+  auto f = [&](long double t) {
+    return evaluate_extended(s.f, ray.o.x + t * ray.d.x, ray.o.y + t * ray.d.y,
+                             ray.o.z + t * ray.d.z);
+  };
+  const long double t0 = hit.t;
+  long double delta = std::max<long double>(hit.a, 1e-12L * (std::abs(t0) + 1));
+  long double lo = t0 - delta, hi = t0 + delta;
+  long double flo = f(lo), fhi = f(hi);
+  for (int k = 0; k < kMaxBracketWidenings && (flo < 0) == (fhi < 0); ++k) {
+    delta *= 4;
+    lo = t0 - delta;
+    hi = t0 + delta;
+    flo = f(lo);
+    fhi = f(hi);
+  }
+  long double t = t0;
+  if ((flo < 0) != (fhi < 0)) {
+    for (int k = 0; k < kExtendedBisections; ++k) {
+      const long double m = 0.5L * (lo + hi);
+      const long double fm = f(m);
+      if (fm == 0) {
+        lo = hi = m;
+        break;
+      }
+      if ((fm < 0) == (flo < 0)) {
+        lo = m;
+        flo = fm;
+      } else {
+        hi = m;
+      }
+    }
+    t = 0.5L * (lo + hi);
+  }
+  for (int i = 0; i < 3; ++i) p[i] = ray.o[i] + t * ray.d[i];
+  return {static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])};
 }
 
 void line_spans(const Algebraic& s, const LineRoots& r, SpanList& out) {
@@ -101,7 +147,14 @@ SurfaceInfo surface(const Algebraic& s, const Ray& ray, const LocalHit& hit) {
     si.n = box_face_normal(face);
     si.p_error = gamma(4) * abs(p);
   } else {
-    const Vec3 g = gradient(s.f, p);
+    long double pe[3], ge[3];
+    p = polished_point(s, ray, hit, pe);
+    gradient_extended(s.f, pe[0], pe[1], pe[2], ge);
+    const long double gmax = std::max({std::abs(ge[0]), std::abs(ge[1]), std::abs(ge[2])});
+    const Vec3 g = gmax > 0
+                       ? Vec3{static_cast<double>(ge[0] / gmax), static_cast<double>(ge[1] / gmax),
+                              static_cast<double>(ge[2] / gmax)}
+                       : Vec3{};
     const double gl = length(g);
     // A singular point of the surface (zero gradient) has no normal: face the ray.
     si.n = gl > 0 && std::isfinite(gl) ? g / gl : -normalize(ray.d);

@@ -17,15 +17,23 @@ constexpr int kMaxRefineSteps = 200;
 
 bool same_sign(double a, double b) { return (a < 0) == (b < 0); }
 
-// The root of p in [a, b], where p(a) and p(b) have opposite signs: Newton steps kept inside the
-// bracket, bisection when a step leaves it or does not halve the bracket.
-double refine_root(const Polynomial& p, double a, double b, double fa) {
-  double x = 0.5 * (a + b);
+// The root of p in [a, b], where p(a) = fa and p(b) = fb have opposite signs: starts at the
+// regula falsi point, then Newton steps kept inside the bracket, bisection when a step leaves it
+// or does not halve the bracket.
+double refine_root(const Polynomial& p, double a, double b, double fa, double fb) {
+  double x = a - fa * (b - a) / (fb - fa);
+  if (!(x > a && x < b)) x = 0.5 * (a + b);
   double step_before = b - a;
   for (int i = 0; i < kMaxRefineSteps; ++i) {
     double df, err;
     const double f = evaluate(p, x, df, err);
-    if (f == 0 || std::abs(f) <= err) return x;
+    if (f == 0) return x;
+    if (std::abs(f) <= err) {
+      // Within the (pessimistic) error bound of p: one more Newton step usually lands on the
+      // root to the last bits, as the actual rounding is far below the bound.
+      const double last = x - f / df;
+      return last >= a && last <= b ? last : x;
+    }
     if (same_sign(f, fa)) {
       a = x;
       fa = f;
@@ -48,6 +56,57 @@ double refine_root(const Polynomial& p, double a, double b, double fa) {
   return x;
 }
 
+// Whether p certainly has no root in [lo, hi]: with the Taylor expansion p(c + u) = sum a_k u^k
+// about the centre, |a_0| > sum_{k >= 1} |a_k| h^k (plus rounding) excludes every |u| <= h.
+bool certainly_no_root(const Polynomial& p, double lo, double hi) {
+  const double c = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
+  const Polynomial q = shifted(p, c);
+  double sum = 0, hk = 1, mag = std::abs(q.c[0]);
+  for (int k = 1; k <= q.degree; ++k) {
+    hk *= h;
+    sum += std::abs(q.c[k]) * hk;
+  }
+  // The shift's rounding: gamma(2n) relative to the coefficients' magnitudes about c.
+  double scale = 0, ck = 1;
+  for (int k = 0; k <= p.degree; ++k) {
+    scale += std::abs(p.c[k]) * ck;
+    ck *= std::abs(c) + h;
+  }
+  return mag > sum + gamma(4 * p.degree + 4) * scale;
+}
+
+// Roots of a quadratic in [lo, hi]: the vertex decides (a double root when p vanishes there to
+// within rounding), then the cancellation-free pair q / a, c / q (Numerical Recipes 5.6),
+// each polished by one Newton step.
+int quadratic_roots(const Polynomial& p, double lo, double hi, double* out) {
+  const double a = p.c[2], b = p.c[1], c = p.c[0];
+  const double vertex = -b / (2 * a);
+  double err;
+  const double fv = evaluate(p, vertex, err);
+  if (std::abs(fv) <= err) {
+    if (!(vertex >= lo && vertex <= hi)) return 0;
+    out[0] = vertex;
+    return 1;
+  }
+  if (same_sign(fv, a)) return 0;
+  const double four_ac = 4 * a * c;
+  const double disc = std::max(std::fma(b, b, -four_ac) + std::fma(-4 * a, c, four_ac), 0.0);
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  double r[2] = {q / a, q != 0 ? c / q : vertex};
+  if (r[0] > r[1]) std::swap(r[0], r[1]);
+  int n = 0;
+  for (double t : r) {
+    double d, e;
+    const double f = evaluate(p, t, d, e);
+    if (std::abs(f) > e && d != 0) {
+      const double polished = t - f / d;
+      if (std::isfinite(polished)) t = polished;
+    }
+    if (t >= lo && t <= hi && (n == 0 || t > out[n - 1])) out[n++] = t;
+  }
+  return n;
+}
+
 // Roots of p in [lo, hi] (finite, lo <= hi), increasing; p is trimmed.
 int roots_in(const Polynomial& p, double lo, double hi, double* out) {
   if (p.degree == 0) return 0;
@@ -57,6 +116,7 @@ int roots_in(const Polynomial& p, double lo, double hi, double* out) {
     out[0] = t;
     return 1;
   }
+  if (p.degree == 2) return quadratic_roots(p, lo, hi, out);
   // The critical points split [lo, hi] into monotone pieces.
   double points[kMaxPolynomialDegree + 1];
   const Polynomial dp = trimmed(derivative(p));
@@ -75,7 +135,7 @@ int roots_in(const Polynomial& p, double lo, double hi, double* out) {
     const double fb = evaluate(p, b, eb);
     const bool b_is_root = std::abs(fb) <= eb;
     if (!a_is_root && !b_is_root && !same_sign(fa, fb)) {
-      const double t = refine_root(p, a, b, fa);
+      const double t = refine_root(p, a, b, fa, fb);
       if (count == 0 || t > out[count - 1]) out[count++] = t;
     }
     if (b_is_root && (count == 0 || b > out[count - 1])) out[count++] = b;
@@ -86,17 +146,22 @@ int roots_in(const Polynomial& p, double lo, double hi, double* out) {
   return count;
 }
 
-// Fujiwara's bound on the magnitude of every complex root: 2 max |c_{n-i} / c_n|^(1/i)
-// (with the constant term's ratio halved).
+// Fujiwara's bound on the magnitude of every complex root, 2 max |c_{n-i} / c_n|^(1/i) (the
+// constant term's ratio halved), rounded up to powers of two so that no pow() is needed.
 double root_bound(const Polynomial& p) {
   const int n = p.degree;
-  double b = 0;
+  int e = std::numeric_limits<int>::min();
   for (int i = 1; i <= n; ++i) {
-    double ratio = std::abs(p.c[n - i] / p.c[n]);
-    if (i == n) ratio *= 0.5;
-    b = std::max(b, std::pow(ratio, 1.0 / i));
+    const double ratio = std::abs(p.c[n - i] / p.c[n]) * (i == n ? 0.5 : 1.0);
+    if (ratio == 0) continue;
+    if (!std::isfinite(ratio)) return kInfinity;
+    // ratio < 2^(ilogb + 1), so ratio^(1/i) < 2^ceil((ilogb + 1) / i).
+    const int k = std::ilogb(ratio) + 1;
+    const int root_exp = k >= 0 ? (k + i - 1) / i : -((-k) / i);
+    e = std::max(e, root_exp);
   }
-  return 2 * b;
+  if (e == std::numeric_limits<int>::min()) return 0;
+  return std::ldexp(2.0, e);
 }
 
 }  // namespace
@@ -140,6 +205,7 @@ int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots)
     lo = std::ldexp(lo, -se);
     hi = std::ldexp(hi, -se);
   }
+  if (certainly_no_root(p, lo, hi)) return 0;
   const int n = roots_in(p, lo, hi, roots);
   for (int i = 0; i < n; ++i) roots[i] = std::ldexp(roots[i], se);
   return n;

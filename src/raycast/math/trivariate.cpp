@@ -174,6 +174,30 @@ Vec3 gradient(const Trivariate& f, const Vec3& p) {
   return g;
 }
 
+namespace {
+long double ipow_ld(long double x, int n) {
+  long double r = 1;
+  for (int i = 0; i < n; ++i) r *= x;
+  return r;
+}
+}  // namespace
+
+long double evaluate_extended(const Trivariate& f, long double x, long double y, long double z) {
+  long double s = 0;
+  for (const auto& t : f.terms) s += t.c * ipow_ld(x, t.i) * ipow_ld(y, t.j) * ipow_ld(z, t.k);
+  return s;
+}
+
+void gradient_extended(const Trivariate& f, long double x, long double y, long double z,
+                       long double g[3]) {
+  g[0] = g[1] = g[2] = 0;
+  for (const auto& t : f.terms) {
+    if (t.i > 0) g[0] += t.c * t.i * ipow_ld(x, t.i - 1) * ipow_ld(y, t.j) * ipow_ld(z, t.k);
+    if (t.j > 0) g[1] += t.c * t.j * ipow_ld(x, t.i) * ipow_ld(y, t.j - 1) * ipow_ld(z, t.k);
+    if (t.k > 0) g[2] += t.c * t.k * ipow_ld(x, t.i) * ipow_ld(y, t.j) * ipow_ld(z, t.k - 1);
+  }
+}
+
 Polynomial restrict_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
   Polynomial X[kStride], Y[kStride], Z[kStride];
   linear_powers(o.x, d.x, f.degree, X);

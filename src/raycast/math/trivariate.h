@@ -27,6 +27,11 @@ struct Trivariate {
 Trivariate expand_polynomial(std::string_view text);
 
 double evaluate(const Trivariate& f, const Vec3& p);
+/// f and its gradient in long double (x87 extended precision where available), for polishing hits
+/// where f is badly conditioned.
+long double evaluate_extended(const Trivariate& f, long double x, long double y, long double z);
+void gradient_extended(const Trivariate& f, long double x, long double y, long double z,
+                       long double g[3]);
 /// The gradient (df/dx, df/dy, df/dz) at p.
 Vec3 gradient(const Trivariate& f, const Vec3& p);
 

@@ -66,4 +66,31 @@ ShapeVariant parse_implicit(Fields& f) {
   });
 }
 
+ShapeVariant parse_revolution(Fields& f) {
+  const YAML::Node list = f.required("profile");
+  if (!list.IsSequence())
+    fail_at(f.ctx(), list,
+            f.name("profile") + " must be a list of [r, z] points, got " + describe(list));
+  std::vector<std::array<double, 2>> profile;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string what = f.name("profile") + "[" + std::to_string(i) + "]";
+    const auto v = read_numbers(f.ctx(), list[i], what);
+    if (v.size() != 2)
+      fail_at(f.ctx(), list[i], what + " must be [r, z], got " + describe(list[i]));
+    if (v[0] < 0) fail_at(f.ctx(), list[i], what + ": r must be >= 0, got " + std::to_string(v[0]));
+    profile.push_back({v[0], v[1]});
+  }
+  const std::string curve = f.string("curve", "linear");
+  if (curve != "linear" && curve != "bspline")
+    f.fail("curve", f.name("curve") + " must be linear or bspline, got " + curve);
+  const bool capped = f.boolean("capped", true);
+  const ProfileCurve kind = curve == "linear" ? ProfileCurve::kLinear : ProfileCurve::kBSpline;
+  const std::size_t need = kind == ProfileCurve::kLinear ? 2 : 4;
+  if (profile.size() < need)
+    fail_at(f.ctx(), list,
+            f.name("profile") + " needs at least " + std::to_string(need) + " points for a " +
+                curve + " curve, got " + std::to_string(profile.size()));
+  return make_revolution(profile, kind, capped);
+}
+
 }  // namespace raycast
