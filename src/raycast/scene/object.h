@@ -12,13 +12,10 @@
 #include "geometry/ellipsoid.h"
 #include "geometry/implicit.h"
 #include "geometry/plane.h"
-<<<<<<< HEAD
 #include "geometry/polygon.h"
 #include "geometry/polyhedron.h"
 #include "geometry/quadric.h"
-    =======
 #include "geometry/revolution.h"
-    >>>>>>> algebraic
 #include "geometry/shape.h"
 #include "geometry/slab.h"
 #include "geometry/sphere.h"
@@ -28,44 +25,41 @@
 #include "scene/csg_shape.h"
 #include "scene/instance.h"
 
-    namespace raycast {
+namespace raycast {
 
-  /// The closed set of shape types. Adding one here makes the compiler point at every place that
-  /// must handle it (object.cpp's dispatch, the loader's table).
-<<<<<<< HEAD
-  using ShapeVariant = std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid,
-                                    Quadric, Cylinder, Cone, Polygon, Slab, Polyhedron, Torus,
-                                    Algebraic, Implicit, MeshShape, CsgShape, InstanceShape>;
-=======
-  using ShapeVariant = std::variant<Plane, Sphere, Torus, Algebraic, Implicit, Revolution>;
->>>>>>> algebraic
+/// The closed set of shape types. Adding one here makes the compiler point at every place that
+/// must handle it (object.cpp's dispatch, the loader's table).
+using ShapeVariant =
+    std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder,
+                 Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, Revolution, MeshShape,
+                 CsgShape, InstanceShape>;
 
-  struct Object {
-    ShapeVariant shape;
-    std::optional<Transform> xf;  // object -> world; absent means the identity
-    int material = -1;            // index into Scene::materials
-    int entry = -1;               // index of the top-level `objects` entry it came from
-  };
+struct Object {
+  ShapeVariant shape;
+  std::optional<Transform> xf;  // object -> world; absent means the identity
+  int material = -1;            // index into Scene::materials
+  int entry = -1;               // index of the top-level `objects` entry it came from
+};
 
-  // World-space versions of the shape functions (geometry/shape.h): the ray goes to object space
-  // through the inverse transform (t unchanged), results come back to world space.
-  Aabb bounds(const Object& o);
-  bool intersect(const Object& o, const Ray& ray, LocalHit& hit);
-  bool occluded(const Object& o, const Ray& ray);
-  void spans(const Object& o, const Ray& ray, SpanList& out);
-  SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit);
-  bool contains(const Object& o, const Vec3& p);
-  bool is_closed(const Object& o);
-  /// The material index for a hit on o: the CSG leaf's or prototype object's own when it has one,
-  /// else o.material (which may be -1: the default material).
-  int material_of(const Object& o, const LocalHit& hit);
-  /// The scene-format key of the object's shape ("sphere", "mesh", ...).
-  const char* shape_name(const Object& o);
+// World-space versions of the shape functions (geometry/shape.h): the ray goes to object space
+// through the inverse transform (t unchanged), results come back to world space.
+Aabb bounds(const Object& o);
+bool intersect(const Object& o, const Ray& ray, LocalHit& hit);
+bool occluded(const Object& o, const Ray& ray);
+void spans(const Object& o, const Ray& ray, SpanList& out);
+SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit);
+bool contains(const Object& o, const Vec3& p);
+bool is_closed(const Object& o);
+/// The material index for a hit on o: the CSG leaf's or prototype object's own when it has one,
+/// else o.material (which may be -1: the default material).
+int material_of(const Object& o, const LocalHit& hit);
+/// The scene-format key of the object's shape ("sphere", "mesh", ...).
+const char* shape_name(const Object& o);
 
-  /// The ray in the object's own space (t is preserved: the direction is not renormalised).
-  inline Ray to_object_space(const Object& o, const Ray& ray) {
-    if (!o.xf) return ray;
-    return {o.xf->inverse_point(ray.o), o.xf->inverse_vector(ray.d), ray.tmin, ray.tmax};
-  }
+/// The ray in the object's own space (t is preserved: the direction is not renormalised).
+inline Ray to_object_space(const Object& o, const Ray& ray) {
+  if (!o.xf) return ray;
+  return {o.xf->inverse_point(ray.o), o.xf->inverse_vector(ray.d), ray.tmin, ray.tmax};
+}
 
 }  // namespace raycast

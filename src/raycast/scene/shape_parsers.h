@@ -30,10 +30,7 @@ ShapeVariant parse_polyhedron(Fields& f);
 ShapeVariant parse_torus(Fields& f);
 ShapeVariant parse_algebraic(Fields& f);
 ShapeVariant parse_implicit(Fields& f);
-<<<<<<< HEAD
 ShapeVariant parse_mesh(Fields& f);
-=======
 ShapeVariant parse_revolution(Fields& f);
->>>>>>> algebraic
 
 }  // namespace raycast

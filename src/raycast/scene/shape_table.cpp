@@ -20,11 +20,8 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
       {"torus", parse_torus},
       {"algebraic", parse_algebraic},
       {"implicit", parse_implicit},
-<<<<<<< HEAD
       {"mesh", parse_mesh},
-=======
       {"revolution", parse_revolution},
->>>>>>> algebraic
   };
   return table;
 }
