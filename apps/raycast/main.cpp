@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   CLI::App app{"raycast: a ray-casting engine and Whitted-style renderer"};
   app.require_subcommand(1);
   std::vector<std::pair<CLI::App*, raycast::cli::Action>> actions;
-  for (auto add : {raycast::cli::add_cast_command, raycast::cli::add_info_command, raycast::cli::add_bench_command}) {
+  for (auto add : {raycast::cli::add_cast_command, raycast::cli::add_info_command,
+                   raycast::cli::add_bench_command}) {
     auto action = add(app);
     actions.emplace_back(app.get_subcommands({}).back(), std::move(action));
   }
