@@ -87,7 +87,9 @@ std::shared_ptr<const Mesh> bench_mesh(const BenchOptions& o, std::string& what)
     }
   }
   try {
-    return make_mesh(std::move(soup.positions), std::move(soup.triangles));
+    MeshOptions options;
+    options.bvh = o.bvh;
+    return make_mesh(std::move(soup.positions), std::move(soup.triangles), {}, options);
   } catch (const std::invalid_argument& e) {
     throw SceneError(what, 0, 0, e.what());
   }

@@ -21,6 +21,7 @@ struct BenchOptions {
   int repeat = 3;    // tracing passes; the fastest counts
   int width = 1024;  // primary rays: width x height pinhole camera
   int height = 1024;
+  MeshBvhConfig bvh;  // for --mesh and --procedural (tuning: leaf size, bins, traversal cost)
 };
 
 /// One benchmark ray, in double (Embree gets it rounded to float).
