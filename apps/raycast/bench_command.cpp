@@ -31,7 +31,15 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--repeat", opt->repeat, "Tracing passes; the fastest counts (default 3)")
       ->check(CLI::Range(1, 100));
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  return [opt] {
+  auto bvh = std::make_shared<MeshBvhConfig>();
+  cmd->add_option("--leaf-size", bvh->max_leaf_size, "Tuning: most triangles per leaf (1-16)")
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--bins", bvh->bins, "Tuning: SAH bins per axis (2-64)")
+      ->check(CLI::Range(2, 64));
+  cmd->add_option("--traversal-cost", bvh->traversal_cost,
+                  "Tuning: SAH node cost per group of 4 triangles")
+      ->check(CLI::Range(0.01, 100.0));
+  return [opt, bvh] {
     BenchOptions o;
     o.scene = opt->scene;
     o.mesh_file = opt->mesh;
@@ -42,6 +50,7 @@ Action add_bench_command(CLI::App& app) {
     o.vs_embree = opt->vs == "embree";
     o.threads = opt->threads;
     o.repeat = opt->repeat;
+    o.bvh = *bvh;
     const BenchResult r = run_bench(o);
     std::fputs(format_bench(r, opt->json).c_str(), stdout);
     return 0;

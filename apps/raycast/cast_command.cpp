@@ -10,7 +10,8 @@
 namespace raycast::cli {
 
 Action add_cast_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("cast", "Answer ray queries on a scene: nearest hit, --any or --all");
+  auto* cmd =
+      app.add_subcommand("cast", "Answer ray queries on a scene: nearest hit, --any or --all");
   struct Options {
     std::string scene, rays;
     bool any = false, all = false, binary = false;

@@ -14,7 +14,29 @@ void print_box(const char* label, const Aabb& b) {
     std::printf("%s: empty\n", label);
     return;
   }
-  std::printf("%s: [%g, %g, %g] - [%g, %g, %g]\n", label, b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z);
+  std::printf("%s: [%g, %g, %g] - [%g, %g, %g]\n", label, b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y,
+              b.hi.z);
+}
+
+// Triangle counts, dropped degenerate triangles and the mesh BVHs.
+void print_meshes(const Scene& scene) {
+  std::size_t meshes = 0, triangles = 0, dropped = 0, closed = 0, bvh = 0, total = 0;
+  double build_ms = 0;
+  for (const Object& o : scene.objects)
+    if (const auto* m = std::get_if<MeshShape>(&o.shape)) {
+      ++meshes;
+      triangles += m->mesh->triangle_count();
+      dropped += m->mesh->dropped;
+      closed += m->mesh->closed;
+      bvh += m->mesh->bvh_bytes();
+      total += m->mesh->memory_bytes();
+      build_ms += m->mesh->build_ms;
+    }
+  if (meshes == 0) return;
+  std::printf("triangles: %zu in %zu meshes (%zu closed); %zu degenerate triangles dropped\n",
+              triangles, meshes, closed, dropped);
+  std::printf("mesh BVHs: %zu bytes (%.1f per triangle), built in %.3f ms; mesh memory %zu bytes\n",
+              bvh, triangles ? double(bvh) / triangles : 0.0, build_ms, total);
 }
 
 }  // namespace
@@ -35,6 +57,7 @@ Action add_info_command(CLI::App& app) {
     print_box("finite bounds", scene.finite_bounds());
     std::printf("acceleration: top-level BVH, %zu bytes, built in %.3f ms\n", scene.accel_bytes(),
                 scene.build_ms());
+    print_meshes(scene);
     return 0;
   };
 }

@@ -21,6 +21,7 @@ struct BenchOptions {
   int repeat = 3;    // tracing passes; the fastest counts
   int width = 1024;  // primary rays: width x height pinhole camera
   int height = 1024;
+  MeshBvhConfig bvh;  // for --mesh and --procedural (tuning: leaf size, bins, traversal cost)
 };
 
 /// One benchmark ray, in double (Embree gets it rounded to float).
@@ -41,6 +42,7 @@ struct BenchResult {
   bool embree = false;
   double embree_build_ms = 0, embree_mrays = 0, embree_bytes_per_tri = 0;
   double ratio = 0;
+  double raycast_mrays_cpu = 0, embree_mrays_cpu = 0;  // rays per CPU second (all threads)
   std::uint64_t disagree = 0, disagree_hit = 0, disagree_t = 0, disagree_prim = 0;
 };
 

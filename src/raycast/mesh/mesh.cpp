@@ -1,6 +1,7 @@
 #include "mesh/mesh.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -179,15 +180,21 @@ std::shared_ptr<const Mesh> make_mesh(std::vector<Vec3f> positions,
 
 MeshRay to_mesh_ray(const Ray& ray, double& scale) {
   // Scale d by a power of two (exact) so that its largest component lies in [1, 2): then it is a
-  // normal float whatever the caller's units, and t scales by the same power.
+  // normal float whatever the caller's units, and t scales by the same power. The exponent is read
+  // from the bits (the direction is finite and non-zero: is_valid rays only).
   const double m = max_component(abs(ray.d));
-  scale = std::ldexp(1.0, -std::ilogb(m));
+  const int e = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7FF) - 1023;
+  const bool normal = e > -1022 && e < 1022;
+  scale = normal ? std::bit_cast<double>(static_cast<std::uint64_t>(1023 - e) << 52)
+                 : std::ldexp(1.0, -std::ilogb(m));
+  const double inv_scale =
+      normal ? std::bit_cast<double>(static_cast<std::uint64_t>(1023 + e) << 52) : 1 / scale;
   const Vec3 d = ray.d * scale;
   MeshRay r;
   r.o = Vec3f(ray.o);
   r.d = Vec3f(d);
-  r.tmin = round_down(ray.tmin / scale);
-  r.tmax = round_up(ray.tmax / scale);
+  r.tmin = round_down(ray.tmin * inv_scale);
+  r.tmax = round_up(ray.tmax * inv_scale);
   return r;
 }
 

@@ -452,8 +452,8 @@ void intersect_every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvh
         while (m) {
           const int l = __builtin_ctz(m);
           m &= m - 1;
-          out.push_back(
-              {res.t[l], res.v[l] / res.det[l], res.w[l] / res.det[l], bvh.groups[gi].id[l]});
+          out.push_back({res.t[l], res.v[l] / res.det[l], res.w[l] / res.det[l],
+                         bvh.groups[gi].id[l], gi, static_cast<std::uint32_t>(l)});
         }
       }
     }
