@@ -19,8 +19,8 @@ struct LocalHit {
   double a = 0;
   double b = 0;
   std::int32_t leaf = -1;
-  std::int32_t inner = -1;  // instances: which object of the shared prototype made the hit
   bool flip = false;
+  std::int32_t inner = -1;  // instances: which object of the shared prototype made the hit
 };
 
 inline constexpr std::int32_t kNoSurface = -1;
