@@ -370,13 +370,16 @@ class Loader {
   // built once into a shared prototype.
   void read_library(const YAML::Node& node) {
     if (!node.IsMap()) fail_at(ctx_, node, "library must be a mapping of names to objects, got " + describe(node));
+    std::vector<std::string> order;  // file order, so that the first mistake is reported first
     for (const auto& kv : node) {
       if (!kv.first.IsScalar()) fail_at(ctx_, kv.first, "a library name must be text");
       const std::string name = kv.first.Scalar();
       if (library_.count(name)) fail_at(ctx_, kv.first, "library entry '" + name + "' is defined twice");
       library_[name] = kv.second;
+      order.push_back(name);
     }
-    for (const auto& [name, def] : library_) {
+    for (const std::string& name : order) {
+      const YAML::Node def = library_.at(name);
       std::vector<Object> objects;
       expanding_.push_back(name);
       read_object(def, 1, -1, Placement{std::nullopt, -1}, objects);
