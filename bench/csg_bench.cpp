@@ -153,6 +153,61 @@ void BM_Instances(benchmark::State& state) {
 }
 BENCHMARK(BM_Instances)->Arg(1000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(3);
 
+// Memory per copy of an 8-object group (a CSG object and seven spheres): instanced (one Object
+// per copy, the group stored once) against flattened (eight Objects per copy).
+void BM_GroupMemory(benchmark::State& state) {
+  const bool instanced = state.range(0) == 1;
+  const int copies = 100000;
+  const Scene parts = load_scene_text(
+      "objects:\n"
+      "  - difference: [{sphere: {radius: 0.3}}, {sphere: {center: [0.2, 0, 0], radius: 0.2}}]\n"
+      "  - group:\n"
+      "      - {sphere: {center: [0.3, 0, 0], radius: 0.1}}\n"
+      "      - {sphere: {center: [-0.3, 0, 0], radius: 0.1}}\n"
+      "      - {sphere: {center: [0, 0.3, 0], radius: 0.1}}\n"
+      "      - {sphere: {center: [0, -0.3, 0], radius: 0.1}}\n"
+      "      - {sphere: {center: [0, 0, 0.3], radius: 0.1}}\n"
+      "      - {sphere: {center: [0, 0, -0.3], radius: 0.1}}\n"
+      "      - {sphere: {center: [0.2, 0.2, 0.2], radius: 0.1}}\n");
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const std::size_t before = rss_bytes();
+    {
+      Scene scene;
+      scene.materials.emplace_back();
+      const auto proto = make_prototype(parts.objects);
+      for (int i = 0; i < copies; ++i) {
+        const Transform xf =
+            Transform::translate({double(i % 100), double(i / 100 % 100), double(i / 10000)});
+        if (instanced) {
+          Object o;
+          o.shape = InstanceShape{proto};
+          o.xf = xf;
+          o.entry = i;
+          scene.objects.push_back(std::move(o));
+        } else {
+          for (Object o : parts.objects) {
+            o.xf = o.xf ? xf * *o.xf : xf;
+            o.entry = i;
+            scene.objects.push_back(std::move(o));
+          }
+        }
+      }
+      scene.objects.shrink_to_fit();
+      scene.build();
+      bytes = rss_bytes() - before;
+      benchmark::DoNotOptimize(scene.objects.data());
+    }
+  }
+  state.counters["rss_bytes/copy"] = double(bytes) / copies;
+}
+BENCHMARK(BM_GroupMemory)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("instanced")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace raycast
 

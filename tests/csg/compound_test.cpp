@@ -233,6 +233,12 @@ TEST(CompoundLoader, Errors_NameThePosition) {
             "s.yaml:2:10: unknown library entry 'nothing'");
   EXPECT_EQ(error_of("library:\n  a: {use: b}\n  b: {use: a}\nobjects: []\n"),
             "s.yaml:3:12: library entry 'a' uses itself (a -> b -> a)");
+  EXPECT_EQ(
+      error_of("library:\n  a: {sphere: {radius: 1}}\n  a: {sphere: {radius: 2}}\nobjects: []\n"),
+      "s.yaml:3:3: library entry 'a' is defined twice");
+  // Library entries are checked in file order, used or not.
+  EXPECT_EQ(error_of("library:\n  z: {sphere: {radius: 0}}\n  a: {box: 1}\nobjects: []\n"),
+            "s.yaml:2:24: sphere.radius must be > 0, got 0");
   EXPECT_EQ(error_of("objects:\n  - union: []\n"),
             "s.yaml:2:12: union must be a non-empty list of solids, got a list of 0");
   EXPECT_EQ(error_of("objects:\n  - group: {sphere: {radius: 1}}\n"),

@@ -3,10 +3,13 @@
 // faces. New closed shapes join by adding a case to kCases.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <tbb/parallel_for.h>
 
 #include "csg_oracle.h"
 
@@ -323,6 +326,33 @@ TEST(CsgObject, DeepNesting_EvaluatesWithinTheLimit) {
   ASSERT_TRUE(scene.intersect(Ray{{0, 0, 0.75}, {0, 0, 1}}, hit));
   EXPECT_EQ(hit.local.t, 0.25);
   EXPECT_EQ(scene.surface(Ray{{0, 0, 0.75}, {0, 0, 1}}, hit).n.z, -1);
+}
+
+TEST(CsgObject, ConcurrentQueries_MatchSequentialAnswers) {
+  // Per-thread scratch lists: many threads querying one scene give the sequential answers.
+  const Scene scene =
+      scene_of("- difference:\n" + cube_yaml(1, "    ") + "    - sphere: {radius: 1.3}\n" +
+               "- union:\n    - sphere: {center: [3, 0, 0], radius: 1}\n"
+               "    - intersection:\n        - sphere: {center: [3.5, 0, 0], radius: 1}\n"
+               "        - plane: {normal: [0, 1, 0], point: [0, 0.2, 0]}\n");
+  std::mt19937 rng(11);
+  std::vector<Ray> rays;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 d = normalize(csg_test::random_direction(rng));
+    rays.push_back({csg_test::random_point(rng, 2) + Vec3{1.5, 0, 0} - 4.0 * d, d});
+  }
+  std::vector<double> sequential(rays.size()), parallel(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    SceneHit h;
+    sequential[i] = scene.intersect(rays[i], h) ? h.local.t : -1;
+  }
+  tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
+    SceneHit h;
+    parallel[i] = scene.intersect(rays[i], h) ? h.local.t : -1;
+  });
+  EXPECT_EQ(sequential, parallel);
+  EXPECT_GT(std::count_if(sequential.begin(), sequential.end(), [](double t) { return t >= 0; }),
+            2000);
 }
 
 }  // namespace

@@ -90,17 +90,21 @@ inline int check_ray(const Object& obj, const Oracle& inside, const Ray& ray, do
 }
 
 /// Random rays through the region [-extent, extent]^3: half start far outside and cross it, half
-/// start at a random point inside the region (often inside the solid), with tmin 0.
+/// start at a random point inside the region (often inside the solid), with tmin 0. Directions
+/// have random lengths in [0.25, 4] (t is in units of d).
 inline void check_random_rays(const Object& obj, const Oracle& inside, unsigned seed, int rays,
                               double extent, int samples = 400) {
   std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> log_scale(std::log(0.25), std::log(4.0));
   int with_spans = 0;
   for (int i = 0; i < rays; ++i) {
     SCOPED_TRACE(testing::Message() << "seed " << seed << " ray " << i);
     const Vec3 target = random_point(rng, extent);
-    const Vec3 d = normalize(random_direction(rng));
-    const Vec3 o = i % 2 ? target : target - 3.0 * extent * d;
-    with_spans += check_ray(obj, inside, Ray{o, d, 0, kInfinity}, 6.0 * extent, samples) > 0;
+    const Vec3 unit = normalize(random_direction(rng));
+    const double scale = std::exp(log_scale(rng));
+    const Vec3 o = i % 2 ? target : target - 3.0 * extent * unit;
+    with_spans += check_ray(obj, inside, Ray{o, scale * unit, 0, kInfinity}, 6.0 * extent / scale,
+                            samples) > 0;
     if (testing::Test::HasFailure()) return;
   }
   EXPECT_GT(with_spans, rays / 10) << "the rays hardly meet the solid: the test would prove little";

@@ -44,9 +44,58 @@ Step advance(Cursor& c, double t, bool state, bool force) {
   return s;
 }
 
+// Out of line on purpose: inlined right after clear(), GCC 12 reports a false -Warray-bounds in
+// SpanList::grow().
+[[gnu::noinline]] void append(SpanList& out, const LocalHit& in, const LocalHit& exit) {
+  out.add(in, exit);
+}
+
+// Two convex pieces of positive length (the common case), exactly as the merge below would
+// combine them: ties go to x, subtracted ends are flipped.
+void combine_single(CsgOp op, const Span& x, const Span& y, SpanList& out) {
+  out.clear();
+  switch (op) {
+    case CsgOp::kIntersection: {
+      const LocalHit& in = y.in.t > x.in.t ? y.in : x.in;
+      const LocalHit& exit = y.out.t < x.out.t ? y.out : x.out;
+      if (in.t < exit.t) append(out, in, exit);
+      return;
+    }
+    case CsgOp::kUnion:
+      if (y.in.t > x.out.t) {
+        append(out, x.in, x.out);
+        out.push_back(y);
+      } else if (x.in.t > y.out.t) {
+        append(out, y.in, y.out);
+        out.push_back(x);
+      } else {  // overlapping or touching: one piece
+        append(out, y.in.t < x.in.t ? y.in : x.in, y.out.t > x.out.t ? y.out : x.out);
+      }
+      return;
+    case CsgOp::kDifference: {
+      LocalHit y_in = y.in, y_out = y.out;
+      y_in.flip = !y_in.flip;
+      y_out.flip = !y_out.flip;
+      if (y.out.t <= x.in.t || y.in.t >= x.out.t) {
+        append(out, x.in, x.out);  // apart or touching: x whole
+      } else if (y.in.t <= x.in.t) {
+        if (y.out.t < x.out.t) append(out, y_out, x.out);  // else x is covered: nothing
+      } else {
+        append(out, x.in, y_in);
+        if (y.out.t < x.out.t) out.add(y_out, x.out);
+      }
+      return;
+    }
+  }
+}
+
 }  // namespace
 
 void combine_spans(CsgOp op, const SpanList& a, const SpanList& b, SpanList& out) {
+  if (a.size() == 1 && b.size() == 1 && a[0].in.t < a[0].out.t && b[0].in.t < b[0].out.t) {
+    combine_single(op, a[0], b[0], out);
+    return;
+  }
   out.clear();
   Cursor ca{a}, cb{b};
   bool in_a = false, in_b = false, in_r = false;

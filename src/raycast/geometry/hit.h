@@ -11,7 +11,8 @@ namespace raycast {
 /// and two shape-defined local coordinates (barycentrics, ...). `surface` expands it once, for
 /// the hit finally kept. A crossing at t = +-inf with part kNoSurface marks the open end of an
 /// unbounded solid's span. Composite objects use `leaf` (which of their flattened leaves made the
-/// hit) and `flip` (the normal must be reversed: a subtracted solid's surface).
+/// hit) and `flip` (the normal must be reversed: a subtracted solid's surface); instances use
+/// `inner` (which object of their shared prototype made the hit).
 struct LocalHit {
   double t = kInfinity;
   std::int32_t prim = -1;
@@ -19,8 +20,8 @@ struct LocalHit {
   double a = 0;
   double b = 0;
   std::int32_t leaf = -1;
-  std::int32_t inner = -1;  // instances: which object of the shared prototype made the hit
   bool flip = false;
+  std::int32_t inner = -1;  // instances: which object of the shared prototype made the hit
 };
 
 inline constexpr std::int32_t kNoSurface = -1;

@@ -51,7 +51,7 @@ struct Evaluator {
   const CsgTree& tree;
   const Ray& ray;
   Vec3 inv_d;
-  SpanList* pool = nullptr;  // 2 * (tree.depth + 1) lists
+  SpanList* pool = nullptr;  // level L uses pool[2 L] and pool[2 L + 1]
 
   // The spans of operand `code` at tree level `level`, correct within [lo, hi] (and possibly
   // wrong outside it).
@@ -81,9 +81,9 @@ struct Evaluator {
       }
       operand(node.operands[i], wlo, whi, child, level + 1);
       if (child.empty()) {
-        if (node.op == CsgOp::kIntersection) out.clear();
-        if (node.op == CsgOp::kIntersection) return;
-        continue;
+        if (node.op != CsgOp::kIntersection) continue;  // a union or difference keeps `out`
+        out.clear();
+        return;
       }
       combine_spans(node.op, out, child, merged);
       out = merged;

@@ -79,8 +79,11 @@ void spans(const InstanceShape& s, const Ray& ray, SpanList& out) {
     for (std::size_t k = before; k < out.size(); ++k)
       out[k].in.inner = out[k].out.inner = static_cast<std::int32_t>(i);
   }
-  std::stable_sort(out.begin() + first, out.end(),
-                   [](const Span& a, const Span& b) { return a.in.t < b.in.t; });
+  // std::sort, not stable_sort: no buffer to allocate; ties are broken by object, so the order
+  // is still deterministic.
+  std::sort(out.begin() + first, out.end(), [](const Span& a, const Span& b) {
+    return a.in.t < b.in.t || (a.in.t == b.in.t && a.in.inner < b.in.inner);
+  });
 }
 
 SurfaceInfo surface(const InstanceShape& s, const Ray& ray, const LocalHit& hit) {

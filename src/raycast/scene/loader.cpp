@@ -16,8 +16,8 @@ namespace raycast {
 namespace {
 
 constexpr const char* kObjectKeys = "name, material, transform";
-// Library entries and `use` inside them are expanded into shapes; a scene that needs more than this
-// many (summed over all expansions) is refused rather than exhausting memory.
+// A `use` inside a library entry or a CSG operation is copied in place; a scene whose copies make
+// more shapes than this (summed over all copies) is refused rather than exhausting memory.
 constexpr std::size_t kMaxExpandedObjects = std::size_t{1} << 16;
 constexpr const char* kCompoundKeys = "group, union, intersection, difference, use";
 
@@ -259,7 +259,7 @@ class Loader {
   // One primitive shape, placed.
   Object read_shape(const YAML::Node& node, const std::string& key, const Placement& here, int entry) {
     // Library entries using each other twice at every level would grow exponentially: bound it.
-    if (!expanding_.empty() && ++expanded_ > kMaxExpandedObjects)
+    if (copying_ > 0 && ++expanded_ > kMaxExpandedObjects)
       fail_at(ctx_, node, "library expansion makes more than " + std::to_string(kMaxExpandedObjects) +
                               " objects (entries using each other repeatedly?)");
     Object obj;
@@ -312,7 +312,9 @@ class Loader {
       if (!expanding_.empty()) {
         // Inside a library entry: expanded in place, so that prototypes never hold instances.
         expanding_.push_back(body.Scalar());
+        ++copying_;
         read_object(def, depth + 1, entry, here, out);
+        --copying_;
         expanding_.pop_back();
         return;
       }
@@ -353,7 +355,9 @@ class Loader {
     if (key == "use") {
       const YAML::Node& def = library_entry(node[key]);
       expanding_.push_back(node[key].Scalar());
+      ++copying_;
       const std::int32_t code = read_csg_operand(def, depth + 1, tree, here);
+      --copying_;
       expanding_.pop_back();
       return code;
     }
@@ -367,13 +371,16 @@ class Loader {
   // built once into a shared prototype.
   void read_library(const YAML::Node& node) {
     if (!node.IsMap()) fail_at(ctx_, node, "library must be a mapping of names to objects, got " + describe(node));
+    std::vector<std::string> order;  // file order, so that the first mistake is reported first
     for (const auto& kv : node) {
       if (!kv.first.IsScalar()) fail_at(ctx_, kv.first, "a library name must be text");
       const std::string name = kv.first.Scalar();
       if (library_.count(name)) fail_at(ctx_, kv.first, "library entry '" + name + "' is defined twice");
       library_[name] = kv.second;
+      order.push_back(name);
     }
-    for (const auto& [name, def] : library_) {
+    for (const std::string& name : order) {
+      const YAML::Node def = library_.at(name);
       std::vector<Object> objects;
       expanding_.push_back(name);
       read_object(def, 1, -1, Placement{std::nullopt, -1}, objects);
@@ -393,7 +400,8 @@ class Loader {
   std::map<std::string, YAML::Node> library_;
   std::map<std::string, std::shared_ptr<const Prototype>> prototypes_;
   std::vector<std::string> expanding_;  // library entries being read, innermost last
-  std::size_t expanded_ = 0;            // shapes read while expanding library entries
+  int copying_ = 0;                     // > 0 while a `use` is being copied in place
+  std::size_t expanded_ = 0;            // shapes read while copying
 };
 
 // yaml-cpp 0.7 parses nested collections recursively (its DepthGuard stops only at 2000 levels,
