@@ -225,15 +225,6 @@ SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hi
     }
     n = {p.x, p.y, -f.k * rz};
     const double ln = length(n);
-    // t carries the conditioning error of the quadratic, which gamma(5) of o + t d does not
-    // cover at grazing angles: bound the distance to the surface by the residual of the implicit
-    // x^2 + y^2 - r(z)^2 over its gradient's length (first order, doubled for safety).
-    if (ln > 0) {
-      const double residual = p.x * p.x + p.y * p.y - rz * rz;
-      const double dist =
-          2 * std::abs(residual) / (2 * ln) + gamma(4) * (p.x * p.x + p.y * p.y + rz * rz) / ln;
-      err += dist * abs(n / ln);
-    }
     // At a cone's apex the gradient vanishes: the tip's own direction along the axis.
     n = ln > 0 ? n / ln : Vec3{0, 0, f.k < 0 ? 1.0 : -1.0};
     if (f.k != 0 && ln > 0) {
