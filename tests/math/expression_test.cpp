@@ -46,6 +46,8 @@ TEST(Expression, Errors_PointAtTheOffendingCharacter) {
   EXPECT_EQ(error_offset("x # y"), 2u);
   EXPECT_EQ(error_offset("min(x)"), 5u);
   EXPECT_EQ(error_offset("x^9 * y^9"), 4u);
+  EXPECT_EQ(error_offset("x^2 + y^2 1"), 10u);
+  EXPECT_EQ(error_offset("1.2.3"), 3u);
 }
 
 TEST(Expression, DeepNesting_RejectedNotCrashed) {
