@@ -1,9 +1,9 @@
 // Failure rates of a plain closed-form quartic (textbook Ferrari on the ray's raw coefficients)
 // against the torus's isolating solver, on ordinary and grazing rays; and their cost per ray.
 // Run: build/release/bench/torus_quartic_bench  (prints a table; no Google Benchmark flags).
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <random>
 #include <vector>
 
@@ -114,70 +114,71 @@ void report(const char* what, const char* solver, const Tally& t) {
 
 int main() {
   for (double minor : {0.25, 0.02}) {
-  const Torus torus = make_torus(1.0, minor);
-  for (double distance : {3.0, 30.0, 300.0}) {
-    for (double depth : {1e-2, 1e-4, 1e-6, 1e-8}) {
-      // Tangent at a random surface point, moved `depth` into the solid, starting `distance` back.
-      std::mt19937 rng(1);
-      std::uniform_real_distribution<double> u(0, 1);
-      Tally naive, ours;
-      for (int i = 0; i < 20000; ++i) {
-        const double phi = 2 * M_PI * u(rng), theta = 2 * M_PI * u(rng);
-        const Vec3 radial{std::cos(phi), std::sin(phi), 0};
-        const Vec3 n = std::cos(theta) * radial + Vec3{0, 0, std::sin(theta)};
-        const Vec3 p = torus.major_radius * radial + torus.minor_radius * n;
-        Vec3 a, b;
-        make_frame(n, a, b);
-        const double w = 2 * M_PI * u(rng);
-        const Vec3 tangent = std::cos(w) * a + std::sin(w) * b;
-        const Ray ray{p - depth * n - distance * tangent, tangent};
-        // The true first crossing: bisect f from the ray's start to the inside point.
-        long double lo = 0;
-        // Step forward to bracket the first sign change before the inside point.
-        const int steps = 1000 + static_cast<int>(distance) * 20;
-        long double truth = -1;
-        long double prev = f_ld(torus, ray, 0);
-        for (int k = 1; k <= steps; ++k) {
-          const long double t = (long double)distance * k / steps;
-          const long double f = f_ld(torus, ray, t);
-          if ((f < 0) != (prev < 0)) {
-            truth = bisect_ld(torus, ray, lo, t);
-            break;
+    const Torus torus = make_torus(1.0, minor);
+    for (double distance : {3.0, 30.0, 300.0}) {
+      for (double depth : {1e-2, 1e-4, 1e-6, 1e-8}) {
+        // Tangent at a random surface point, moved `depth` into the solid, starting `distance`
+        // back.
+        std::mt19937 rng(1);
+        std::uniform_real_distribution<double> u(0, 1);
+        Tally naive, ours;
+        for (int i = 0; i < 20000; ++i) {
+          const double phi = 2 * M_PI * u(rng), theta = 2 * M_PI * u(rng);
+          const Vec3 radial{std::cos(phi), std::sin(phi), 0};
+          const Vec3 n = std::cos(theta) * radial + Vec3{0, 0, std::sin(theta)};
+          const Vec3 p = torus.major_radius * radial + torus.minor_radius * n;
+          Vec3 a, b;
+          make_frame(n, a, b);
+          const double w = 2 * M_PI * u(rng);
+          const Vec3 tangent = std::cos(w) * a + std::sin(w) * b;
+          const Ray ray{p - depth * n - distance * tangent, tangent};
+          // The true first crossing: bisect f from the ray's start to the inside point.
+          long double lo = 0;
+          // Step forward to bracket the first sign change before the inside point.
+          const int steps = 1000 + static_cast<int>(distance) * 20;
+          long double truth = -1;
+          long double prev = f_ld(torus, ray, 0);
+          for (int k = 1; k <= steps; ++k) {
+            const long double t = (long double)distance * k / steps;
+            const long double f = f_ld(torus, ray, t);
+            if ((f < 0) != (prev < 0)) {
+              truth = bisect_ld(torus, ray, lo, t);
+              break;
+            }
+            lo = t;
+            prev = f;
           }
-          lo = t;
-          prev = f;
+          if (truth < 0) continue;
+          for (int which = 0; which < 2; ++which) {
+            Tally& tl = which == 0 ? naive : ours;
+            ++tl.rays;
+            double t;
+            bool hit;
+            if (which == 0) {
+              hit = naive_intersect(torus, ray, t);
+            } else {
+              LocalHit h;
+              hit = intersect(torus, ray, h);
+              t = h.t;
+            }
+            if (!hit) {
+              ++tl.missed;
+              continue;
+            }
+            // A root before the reference's is a close pair the sampling stepped over when the
+            // function really vanishes there (checked in long double); it is then correct.
+            if (t < (double)truth && std::abs((double)f_ld(torus, ray, t)) < 1e-9) continue;
+            const double rel = std::abs(t - (double)truth) / (double)truth;
+            if (rel > 1e-6) ++tl.inaccurate;
+            if (rel > tl.worst) tl.worst = rel;
+          }
         }
-        if (truth < 0) continue;
-        for (int which = 0; which < 2; ++which) {
-          Tally& tl = which == 0 ? naive : ours;
-          ++tl.rays;
-          double t;
-          bool hit;
-          if (which == 0) {
-            hit = naive_intersect(torus, ray, t);
-          } else {
-            LocalHit h;
-            hit = intersect(torus, ray, h);
-            t = h.t;
-          }
-          if (!hit) {
-            ++tl.missed;
-            continue;
-          }
-          // A root before the reference's is a close pair the sampling stepped over when the
-          // function really vanishes there (checked in long double); it is then correct.
-          if (t < (double)truth && std::abs((double)f_ld(torus, ray, t)) < 1e-9) continue;
-          const double rel = std::abs(t - (double)truth) / (double)truth;
-          if (rel > 1e-6) ++tl.inaccurate;
-          if (rel > tl.worst) tl.worst = rel;
-        }
+        char what[96];
+        std::snprintf(what, sizeof what, "r %.2f depth %.0e distance %.0f", minor, depth, distance);
+        report(what, "naive", naive);
+        report(what, "isolating", ours);
       }
-      char what[96];
-      std::snprintf(what, sizeof what, "r %.2f depth %.0e distance %.0f", minor, depth, distance);
-      report(what, "naive", naive);
-      report(what, "isolating", ours);
     }
-  }
   }
   // Cost per ray on ordinary rays (a random mix of hits and misses).
   const Torus torus = make_torus(1.0, 0.25);

@@ -210,6 +210,29 @@ TEST(Revolution, BSplineVase_SpansMatchInsideOracleAndNormalsOutward) {
   EXPECT_GT(normals, 50);
 }
 
+TEST(Revolution, EndsOnTheAxis_ClosedWithoutCaps) {
+  const Revolution s =
+      make_revolution({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, ProfileCurve::kLinear, false);
+  EXPECT_TRUE(is_closed(s));
+  EXPECT_TRUE(s.caps.empty());
+  EXPECT_TRUE(contains(s, Vec3{0.5, 0, 0.5}));
+  EXPECT_FALSE(contains(s, Vec3{1.5, 0, 0.5}));
+  const Ray down{{0.2, 0.1, 3}, {0, 0, -1}};  // through the annulus top (a horizontal segment)
+  SpanList l;
+  spans(s, down, l);
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_NEAR(l[0].in.t, 2, 1e-12);
+  EXPECT_NEAR(l[0].out.t, 3, 1e-12);
+  EXPECT_NEAR(surface(s, down, l[0].in).n.z, 1, 1e-12);
+  EXPECT_NEAR(surface(s, down, l[0].out).n.z, -1, 1e-12);
+  // One end off the axis: open unless capped, then one cap.
+  const Revolution cup = make_revolution({{0, 0}, {1, 0}, {1, 1}}, ProfileCurve::kLinear, false);
+  EXPECT_FALSE(is_closed(cup));
+  const Revolution capped = make_revolution({{0, 0}, {1, 0}, {1, 1}}, ProfileCurve::kLinear, true);
+  EXPECT_TRUE(is_closed(capped));
+  EXPECT_EQ(capped.caps.size(), 1u);
+}
+
 TEST(Revolution, MakeRevolution_RejectsBadProfiles) {
   EXPECT_THROW(make_revolution({{1, 0}}, ProfileCurve::kLinear), std::invalid_argument);
   EXPECT_THROW(make_revolution({{1, 0}, {1, 1}, {1, 2}}, ProfileCurve::kBSpline),

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
+#include "math/formula.h"
 #include "math/trivariate.h"
 
 namespace raycast {
@@ -43,12 +46,43 @@ TEST(Expression, Errors_PointAtTheOffendingCharacter) {
   EXPECT_EQ(error_offset("x # y"), 2u);
   EXPECT_EQ(error_offset("min(x)"), 5u);
   EXPECT_EQ(error_offset("x^9 * y^9"), 4u);
+  EXPECT_EQ(error_offset("x^2 + y^2 1"), 10u);
+  EXPECT_EQ(error_offset("1.2.3"), 3u);
 }
 
 TEST(Expression, DeepNesting_RejectedNotCrashed) {
   EXPECT_THROW(parse_expression(std::string(100000, '(') + "x" + std::string(100000, ')')),
                ExpressionError);
   EXPECT_THROW(parse_expression(std::string(100000, '-') + "x"), ExpressionError);
+}
+
+// Random strings over the formula alphabet: every one either compiles or throws ExpressionError
+// with an offset inside the text; nothing else escapes.
+TEST(Expression, RandomText_ParsesOrThrowsPositionedError) {
+  const std::string alphabet = "xyz0123456789.+-*/^(),e pisqrtcoanbmlgw";
+  std::mt19937 rng(17);
+  int parsed = 0;
+  for (int i = 0; i < 5000; ++i) {
+    std::string text;
+    const int n = static_cast<int>(rng() % 24);
+    for (int k = 0; k < n; ++k) text += alphabet[rng() % alphabet.size()];
+    SCOPED_TRACE(text);
+    for (int mode = 0; mode < 2; ++mode) {
+      try {
+        if (mode == 0) {
+          expand_polynomial(text);
+        } else {
+          const Formula f = compile_formula(text);
+          run<double>(f, 0.5, -0.25, 2.0);
+          run<Interval>(f, Interval{0, 1}, Interval{-1, 0}, Interval{1, 2});
+        }
+        ++parsed;
+      } catch (const ExpressionError& e) {
+        EXPECT_LE(e.offset(), text.size());
+      }
+    }
+  }
+  EXPECT_GT(parsed, 100);
 }
 
 }  // namespace

@@ -89,3 +89,38 @@ TEST(AlgebraicParse, FieldErrors_Positioned) {
 
 }  // namespace
 }  // namespace raycast
+
+namespace raycast {
+namespace {
+
+// The example scenes load, and a ray at each shape hits it with a unit normal facing the ray.
+TEST(AlgebraicScenes, ExampleScenes_LoadAndHit) {
+  const std::string dir = std::string(RAYCAST_SOURCE_DIR) + "/scenes/";
+  struct Case {
+    const char* file;
+    Ray ray;
+  };
+  const Case cases[] = {
+      {"torus.yaml", {{0, 2.2, -4.5}, {1, -1.7, 4.5}}},
+      {"heart.yaml", {{0, -5, 0.6}, {0, 1, -0.12}}},
+      {"implicit.yaml", {{9, -11, 7}, {-9, 11, -7}}},
+      {"revolution.yaml", {{0, -9, 4}, {-1.3, 9, -2}}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.file);
+    const Scene s = load_scene_file(dir + c.file);
+    bool hit_shape = false;
+    for (const Object& o : s.objects) {
+      LocalHit h;
+      if (std::string(shape_name(o)) == "plane" || !intersect(o, c.ray, h)) continue;
+      const SurfaceInfo si = surface(o, c.ray, h);
+      EXPECT_NEAR(length(si.n), 1, 1e-9);
+      EXPECT_LT(dot(si.n, c.ray.d), 0);
+      hit_shape = true;
+    }
+    EXPECT_TRUE(hit_shape);
+  }
+}
+
+}  // namespace
+}  // namespace raycast

@@ -52,8 +52,10 @@ class Parser {
     e_.nodes.push_back(ExprNode{op, value, a, b, offset});
     return static_cast<int>(e_.nodes.size()) - 1;
   }
-  static bool starts_primary(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '(' || c == '_';
+  // A juxtaposed factor starts with a name or '(' ("2 x", "x (y + 1)"); a number right after a
+  // factor ("x 2", "1.2.3") is refused as a likely typo.
+  static bool starts_juxtaposed(char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '(' || c == '_';
   }
   void check_depth(int depth) {
     if (depth > kMaxNesting) throw ExpressionError(pos_, "formula nested too deeply");
@@ -72,7 +74,7 @@ class Parser {
 
   int term(int depth) {
     int left = unary(depth);
-    for (char c = peek(); c == '*' || c == '/' || starts_primary(c); c = peek()) {
+    for (char c = peek(); c == '*' || c == '/' || starts_juxtaposed(c); c = peek()) {
       const std::size_t at = pos_;
       if (c == '*' || c == '/') ++pos_;
       const int right = unary(depth);

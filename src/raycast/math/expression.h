@@ -59,7 +59,8 @@ struct Expression {
 
 /// Parses formula text. Grammar (whitespace ignored):
 ///   expr    := term (('+' | '-') term)*
-///   term    := unary (('*' | '/') unary | juxtaposed unary)*      "2 x", "a (x + z)"
+///   term    := unary (('*' | '/') unary | juxtaposed unary)*      "2 x", "2 (x + z)"; a
+///              juxtaposed factor starts with a name or '(' (so "x 2" is an error)
 ///   unary   := ('-' | '+') unary | power
 ///   power   := primary ('^' unary)?                               right associative; -x^2 = -(x^2)
 ///   primary := number | x | y | z | pi | e | name '(' expr (',' expr)* ')' | '(' expr ')'
