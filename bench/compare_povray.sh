@@ -3,17 +3,28 @@
 # scene) at the same resolution, one sample per pixel (POV-Ray: -A; raycast: --spp 1), the same
 # number of threads (POV-Ray: +WTn; raycast: --threads n), REPEATS runs each, and prints the best
 # wall and CPU (user + system) times and the ratios POV-Ray / raycast.
-#   bench/compare_povray.sh [SCENE [WIDTH [HEIGHT]]]     SCENE: analytic (default) or csg
-# Environment: THREADS (default 1), REPEATS (default 3), RAYCAST (default build/release/raycast),
-# KEEP=dir to keep both images (dir/SCENE-raycast.png, dir/SCENE-povray.png).
+#   bench/compare_povray.sh [SCENE] [WIDTH [HEIGHT]]
+# SCENE: csg (the default, 640x480, as this script's first form `[WIDTH [HEIGHT]]` did) or analytic
+# (1280x720 unless given). Environment: THREADS (default: nproc, on both sides), REPEATS (default 3),
+# RAYCAST (default build/release/raycast), KEEP=dir to keep both images (dir/SCENE-raycast.png,
+# dir/SCENE-povray.png).
 # Both times cover the whole process (parsing, building, rendering, writing the PNG). On a
 # shared machine the CPU time is the steadier figure; the best of the repeats is reported.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scene=${1:-analytic}
-width=${2:-1280}
-height=${3:-720}
-threads=${THREADS:-1}
+scene=csg
+if [ $# -gt 0 ] && ! [[ $1 =~ ^[0-9]+$ ]]; then
+  scene=$1
+  shift
+fi
+if [ "$scene" = csg ]; then
+  width=${1:-640}
+  height=${2:-480}
+else
+  width=${1:-1280}
+  height=${2:-720}
+fi
+threads=${THREADS:-$(nproc)}
 repeats=${REPEATS:-3}
 raycast=${RAYCAST:-build/release/raycast}
 pov_file=bench/povray/$scene.pov

@@ -1,6 +1,6 @@
 // POV-Ray 3.7 twin of scenes/analytic.yaml (the same coordinates, objects and materials), timed
 // against raycast by bench/compare_povray.sh analytic. Render alone with:
-//   povray +Ibench/povray/analytic.pov +Oanalytic-pov.png +W800 +H450 -A -D +FN
+//   povray +Ibench/povray/analytic.pov +Oanalytic-pov.png +W1280 +H720 -A -D +FN
 // Matching raycast's conventions (docs/rendering.md):
 // - raycast's frame is right-handed; POV-Ray's is left-handed. Every coordinate is copied as is
 //   and the camera's right vector is negated (right -x*aspect), which mirrors the image back.
