@@ -1,19 +1,42 @@
 #!/usr/bin/env bash
-# Times POV-Ray on bench/povray/csg.pov against raycast on scenes/csg.yaml (the same scene) at the
-# same resolution, one sample per pixel (POV-Ray: +W +H -A; raycast: --spp 1), and prints the ratio.
-#   bench/compare_povray.sh [WIDTH [HEIGHT]]      (RAYCAST=path/to/raycast to choose the binary)
-# When `raycast render` is not built yet, the raycast side answers the camera's primary rays with
-# `raycast cast --binary` instead (ray queries only: no shading, no shadow rays), and says so.
+# Times POV-Ray on bench/povray/SCENE.pov against `raycast render` on scenes/SCENE.yaml (the same
+# scene) at the same resolution, one sample per pixel (POV-Ray: -A; raycast: --spp 1), the same
+# number of threads (POV-Ray: +WTn; raycast: --threads n), REPEATS runs each, and prints the best
+# wall and CPU (user + system) times and the ratios POV-Ray / raycast.
+#   bench/compare_povray.sh [SCENE] [WIDTH [HEIGHT]]
+# SCENE: csg (the default, 640x480, as this script's first form `[WIDTH [HEIGHT]]` did) or analytic
+# (1280x720 unless given). Environment: THREADS (default: nproc, on both sides), REPEATS (default 3),
+# RAYCAST (default build/release/raycast), KEEP=dir to keep both images (dir/SCENE-raycast.png,
+# dir/SCENE-povray.png).
+# Both times cover the whole process (parsing, building, rendering, writing the PNG). On a
+# shared machine the CPU time is the steadier figure; the best of the repeats is reported.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-width=${1:-640}
-height=${2:-480}
+scene=csg
+if [ $# -gt 0 ] && ! [[ $1 =~ ^[0-9]+$ ]]; then
+  scene=$1
+  shift
+fi
+if [ "$scene" = csg ]; then
+  width=${1:-640}
+  height=${2:-480}
+else
+  width=${1:-1280}
+  height=${2:-720}
+fi
+threads=${THREADS:-$(nproc)}
+repeats=${REPEATS:-3}
 raycast=${RAYCAST:-build/release/raycast}
+pov_file=bench/povray/$scene.pov
+yaml_file=scenes/$scene.yaml
+for f in "$pov_file" "$yaml_file" "$raycast"; do
+  [ -e "$f" ] || { echo "missing: $f" >&2; exit 2; }
+done
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 TIMEFORMAT='%R %U %S'  # wall, user, system seconds
 
-seconds() {  # runs "$@" quietly, prints "wall user system" seconds; stops the script if it fails
+seconds() {  # runs "$@" quietly, prints "wall cpu" seconds; stops the script if it fails
   local log="$tmp/log" status=0
   { time "$@" >"$log" 2>&1; } 2>"$tmp/time" || status=$?
   if [ "$status" -ne 0 ]; then
@@ -21,25 +44,37 @@ seconds() {  # runs "$@" quietly, prints "wall user system" seconds; stops the s
     cat "$log" >&2
     exit 1
   fi
-  tail -1 "$tmp/time"
+  tail -1 "$tmp/time" | awk '{ printf "%.3f %.3f\n", $1, $2 + $3 }'
 }
 
-pov=$(seconds povray +Ibench/povray/csg.pov +O"$tmp/pov.png" +W"$width" +H"$height" -A -D +FN)
-if "$raycast" --help | grep -Eq '^ +render +'; then
-  what="raycast render (whitted, spp 1)"
-  ours=$(seconds "$raycast" render scenes/csg.yaml -o "$tmp/raycast.png" --width "$width" --height "$height" --spp 1)
-else
-  what="raycast cast --binary on the camera rays (no render command in this build: queries only)"
-  python3 bench/povray/camera_rays.py scenes/csg.yaml "$width" "$height" >"$tmp/rays.bin"
-  ours=$(seconds "$raycast" cast scenes/csg.yaml --binary --rays "$tmp/rays.bin")
+best() {  # best "wall cpu" over the lines on stdin (each column separately)
+  awk 'NR == 1 || $1 < w { w = $1 } NR == 1 || $2 < c { c = $2 } END { printf "%.3f %.3f\n", w, c }'
+}
+
+pov_cmd=(povray +I"$pov_file" +O"$tmp/povray.png" +W"$width" +H"$height" -A -D +FN +WT"$threads"
+         +L/usr/share/povray-3.7/include File_Gamma=sRGB)
+our_cmd=("$raycast" render "$yaml_file" -o "$tmp/raycast.png" --width "$width" --height "$height"
+         --spp 1 --threads "$threads")
+: >"$tmp/pov.times"
+: >"$tmp/our.times"
+for ((i = 1; i <= repeats; ++i)); do  # interleaved, so a burst of load hits both alike
+  seconds "${pov_cmd[@]}" >>"$tmp/pov.times"
+  seconds "${our_cmd[@]}" >>"$tmp/our.times"
+done
+read -r pov_wall pov_cpu < <(best <"$tmp/pov.times")
+read -r our_wall our_cpu < <(best <"$tmp/our.times")
+if [ -n "${KEEP:-}" ]; then
+  mkdir -p "$KEEP"
+  cp "$tmp/povray.png" "$KEEP/$scene-povray.png"
+  cp "$tmp/raycast.png" "$KEEP/$scene-raycast.png"
 fi
-read -r pov_wall pov_user pov_sys <<<"$pov"
-read -r our_wall our_user our_sys <<<"$ours"
-echo "resolution: ${width}x${height}, 1 sample per pixel (machine load: $(cut -d' ' -f1 /proc/loadavg))"
-echo "povray:  wall ${pov_wall} s, cpu $(awk -v u="$pov_user" -v s="$pov_sys" 'BEGIN { print u + s }') s (render, no antialiasing)"
-echo "raycast: wall ${our_wall} s, cpu $(awk -v u="$our_user" -v s="$our_sys" 'BEGIN { print u + s }') s (${what})"
-awk -v pw="$pov_wall" -v pu="$pov_user" -v ps="$pov_sys" -v rw="$our_wall" -v ru="$our_user" -v rs="$our_sys" 'BEGIN {
-  if (rw > 0) printf "ratio povray / raycast: wall %.2f", pw / rw
-  if (ru + rs > 0) printf ", cpu %.2f", (pu + ps) / (ru + rs)
+echo "scene: $scene ($yaml_file vs $pov_file), ${width}x${height}, 1 sample per pixel, $threads thread(s)"
+echo "best of $repeats runs (load average at the end: $(cut -d' ' -f1 /proc/loadavg)):"
+echo "povray:  wall ${pov_wall} s, cpu ${pov_cpu} s   ($(povray --version 2>&1 | grep -m1 "^POV-Ray"))"
+echo "raycast: wall ${our_wall} s, cpu ${our_cpu} s   (raycast render, whitted)"
+awk -v pw="$pov_wall" -v pc="$pov_cpu" -v rw="$our_wall" -v rc="$our_cpu" 'BEGIN {
+  printf "ratio povray / raycast:"
+  if (rw > 0) printf " wall %.2f", pw / rw
+  if (rc > 0) printf ", cpu %.2f", pc / rc
   printf "\n"
 }'
