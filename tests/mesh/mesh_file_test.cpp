@@ -196,6 +196,11 @@ TEST_F(MeshFiles, TruncatedBinaryPly_IsPositionedError) {
   expect_error("t.ply", "truncated");
   write("h.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\n");
   expect_error("h.ply", "truncated");
+  write("c.ply",
+        "ply\nformat binary_little_endian 1.0\nelement vertex 18446744073709551615\nproperty float "
+        "x\n"
+        "property float y\nproperty float z\nend_header\n");
+  expect_error("c.ply", "truncated");
 }
 
 TEST_F(MeshFiles, OutOfRangeIndex_IsPositionedError) {
