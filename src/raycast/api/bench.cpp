@@ -178,6 +178,9 @@ std::vector<BenchRay> incoherent_rays(const Aabb& box, std::size_t count) {
 }
 
 BenchResult run_bench(const BenchOptions& o) {
+  if (o.vs_embree && !EmbreePeer::available())
+    throw SceneError("--vs embree", 0, 0,
+                     "this build has no Embree (install libembree-dev and reconfigure)");
   const int threads =
       o.threads > 0 ? o.threads : static_cast<int>(tbb::info::default_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
