@@ -107,6 +107,21 @@ std::shared_ptr<const Mesh> bench_mesh(const BenchOptions& o, std::string& what)
   }
 }
 
+std::string json_escape(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+      continue;
+    }
+    out += c;
+  }
+  return out;
+}
+
 bool t_differs(double a, double b) {
   return std::abs(a - b) > 1e-4 * std::max(std::abs(a), std::abs(b));
 }
@@ -163,6 +178,9 @@ std::vector<BenchRay> incoherent_rays(const Aabb& box, std::size_t count) {
 }
 
 BenchResult run_bench(const BenchOptions& o) {
+  if (o.vs_embree && !EmbreePeer::available())
+    throw SceneError("--vs embree", 0, 0,
+                     "this build has no Embree (install libembree-dev and reconfigure)");
   const int threads =
       o.threads > 0 ? o.threads : static_cast<int>(tbb::info::default_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
@@ -313,7 +331,7 @@ BenchResult run_bench(const BenchOptions& o) {
 }
 
 std::string format_bench(const BenchResult& r, bool json) {
-  char buf[2048];
+  char buf[8192];
   std::string out;
   if (json) {
     std::snprintf(buf, sizeof buf,
@@ -322,7 +340,8 @@ std::string format_bench(const BenchResult& r, bool json) {
                   "\"threads\": %d, \"raycast_build_ms\": %.3f, \"raycast_mrays\": %.4f, "
                   "\"raycast_bytes_per_tri\": %.2f, \"raycast_total_bytes_per_tri\": %.2f, "
                   "\"raycast_mrays_cpu\": %.4f",
-                  r.what.c_str(), r.ray_kind.c_str(), static_cast<unsigned long long>(r.triangles),
+                  json_escape(r.what).c_str(), r.ray_kind.c_str(),
+                  static_cast<unsigned long long>(r.triangles),
                   static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
                   r.threads, r.raycast_build_ms, r.raycast_mrays, r.raycast_bytes_per_tri,
                   r.raycast_total_bytes_per_tri, r.raycast_mrays_cpu);

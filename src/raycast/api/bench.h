@@ -49,8 +49,8 @@ struct BenchResult {
 /// Parses "primary", "incoherent" or "shadow"; throws SceneError otherwise.
 BenchRays parse_bench_rays(const std::string& s);
 
-/// Runs the benchmark. Throws SceneError for bad input (files, names), std::runtime_error when
-/// --vs embree is asked of a build without Embree.
+/// Runs the benchmark. Throws SceneError for bad input (files, names) and when --vs embree is
+/// asked of a build without Embree.
 BenchResult run_bench(const BenchOptions& options);
 
 /// The result as text lines, or as one JSON object.

@@ -294,6 +294,53 @@ class Stack {
   StackEntry* data_ = local_;
 };
 
+// Starts loading every hit child (node or first leaf group) at once, so that the memory latency
+// of siblings overlaps instead of adding up.
+inline void prefetch_children(const MeshBvh& bvh, const WideNode& node, int mask) {
+  while (mask) {
+    const std::uint32_t ref = node.child[__builtin_ctz(mask)];
+    mask &= mask - 1;
+    const char* p = (ref & kLeafBit) ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
+                                     : reinterpret_cast<const char*>(&bvh.nodes[ref]);
+    _mm_prefetch(p, _MM_HINT_T0);
+    _mm_prefetch(p + 64, _MM_HINT_T0);
+    if (ref & kLeafBit) _mm_prefetch(p + 128, _MM_HINT_T0);
+  }
+}
+
+// Ordered descent: pushes the hit children except the nearest (farthest first, so they pop
+// nearest first) with their entry distances, and returns the nearest.
+inline std::uint32_t order_children(const WideNode& node, int mask, __m128 tn, StackEntry* stack,
+                                    int& top) {
+  const int first = __builtin_ctz(mask);
+  mask &= mask - 1;
+  if (!mask) return node.child[first];  // one child hit: no ordering, no push
+  alignas(16) float tnear[4];
+  _mm_store_ps(tnear, tn);
+  const int second = __builtin_ctz(mask);
+  mask &= mask - 1;
+  if (!mask) {  // two: push the farther
+    const bool swap = tnear[second] < tnear[first];
+    const int near = swap ? second : first, far = swap ? first : second;
+    stack[top++] = {node.child[far], tnear[far]};
+    return node.child[near];
+  }
+  mask |= (1 << first) | (1 << second);
+  int order[4], k = 0;
+  while (mask) {
+    const int i = __builtin_ctz(mask);
+    mask &= mask - 1;
+    int j = k++;
+    while (j > 0 && tnear[order[j - 1]] < tnear[i]) {
+      order[j] = order[j - 1];
+      --j;
+    }
+    order[j] = i;
+  }
+  for (int j = 0; j < k - 1; ++j) stack[top++] = {node.child[order[j]], tnear[order[j]]};
+  return node.child[order[k - 1]];
+}
+
 inline std::uint32_t leaf_first(std::uint32_t ref) { return ref & 0x1FFFFFFFu; }
 inline std::uint32_t leaf_groups(std::uint32_t ref) { return ((ref >> 29) & 3u) + 1; }
 
@@ -346,22 +393,8 @@ bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit) 
       __m128 tn;
       int mask = intersect_node(node, p, tmin, tmax, tn);
       if (mask) {
-        alignas(16) float tnear[4];
-        _mm_store_ps(tnear, tn);
-        // Ordered: push the farther children (farthest first), descend into the nearest.
-        int order[4], k = 0;
-        while (mask) {
-          const int i = __builtin_ctz(mask);
-          mask &= mask - 1;
-          int j = k++;
-          while (j > 0 && tnear[order[j - 1]] < tnear[i]) {
-            order[j] = order[j - 1];
-            --j;
-          }
-          order[j] = i;
-        }
-        for (int j = 0; j < k - 1; ++j) stack[top++] = {node.child[order[j]], tnear[order[j]]};
-        ref = node.child[order[k - 1]];
+        prefetch_children(bvh, node, mask);
+        ref = order_children(node, mask, tn, stack, top);
         continue;
       }
     } else {
@@ -403,25 +436,25 @@ bool intersect_any(const MeshBvh& bvh, const MeshRay& ray) {
   StackEntry* stack = stack_storage.data();
   int top = 0;
   GroupResult res;
-  stack[top++] = {bvh.root, 0};
-  while (top > 0) {
-    const std::uint32_t ref = stack[--top].ref;
+  std::uint32_t ref = bvh.root;
+  for (;;) {
     if (!(ref & kLeafBit)) {
       const WideNode& node = bvh.nodes[ref];
       __m128 tn;
-      int mask = intersect_node(node, p, tmin, tmax, tn);
-      while (mask) {
-        const int i = __builtin_ctz(mask);
-        mask &= mask - 1;
-        stack[top++] = {node.child[i], 0};
+      const int mask = intersect_node(node, p, tmin, tmax, tn);
+      if (mask) {
+        prefetch_children(bvh, node, mask);
+        ref = order_children(node, mask, tn, stack, top);
+        continue;
       }
     } else {
       const std::uint32_t first = leaf_first(ref), count = leaf_groups(ref);
       for (std::uint32_t gi = first; gi < first + count; ++gi)
         if (intersect_group(bvh.groups[gi], p, tmin, tmax, res)) return true;
     }
+    if (top == 0) return false;
+    ref = stack[--top].ref;
   }
-  return false;
 }
 
 void intersect_every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out) {

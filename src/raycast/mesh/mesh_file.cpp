@@ -224,6 +224,11 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
   };
   bool have_vertices = false;
   for (const PlyElement& e : elements) {
+    // Every row takes at least one byte: a count beyond the bytes left is a truncated file (and
+    // keeps the size arithmetic below from overflowing).
+    if (e.count > static_cast<std::uint64_t>(end - p))
+      throw MeshFileError("truncated PLY file (element " + e.name +
+                          " has more rows than the file has bytes)");
     const bool any_list = std::any_of(e.props.begin(), e.props.end(),
                                       [](const auto& q) { return q.count_type != PlyType::kNone; });
     if (e.name == "vertex") {
