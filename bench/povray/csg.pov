@@ -1,6 +1,7 @@
 // POV-Ray twin of scenes/csg.yaml (same geometry, camera, light and materials), for
 // bench/compare_povray.sh. `right -x*...` makes POV-Ray's frame right-handed like raycast's, so
 // coordinates are copied unchanged. Planes are written with unit normals and their distances.
+// POV-Ray's torus lies in the xz plane (axis y): raycast's (axis z) is turned 90 degrees about x.
 #version 3.7;
 global_settings { assumed_gamma 1.0 ambient_light rgb 1 max_trace_level 5 }
 
@@ -24,7 +25,6 @@ light_source { <5, 8, -6> color rgb 1 }
 #declare M_Green = texture { pigment { rgb <0.2, 0.7, 0.3> } finish { F_Plain phong 0.3 phong_size 30 } }
 #declare M_White = texture { pigment { rgb <0.9, 0.9, 0.9> } finish { F_Plain phong 0.2 phong_size 20 } }
 #declare M_Default = texture { pigment { rgb <0.8, 0.8, 0.8> } finish { F_Plain } }
-#declare H = 0.7071067811865476;  // 1 / sqrt(2)
 
 plane { <0, 1, 0>, -0.001
   texture { pigment { checker rgb 0.9 rgb 0.3 } finish { ambient 0.1 diffuse 0.8 } }
@@ -32,33 +32,37 @@ plane { <0, 1, 0>, -0.001
 
 // Seed 000: the cube minus the sphere, turned 30 degrees about y (right-hand rule) and moved.
 difference {
-  intersection {
-    plane { <1, 0, 0>, 1 } plane { <-1, 0, 0>, 1 }
-    plane { <0, 1, 0>, 1 } plane { <0, -1, 0>, 1 }
-    plane { <0, 0, 1>, 1 } plane { <0, 0, -1>, 1 }
-  }
+  box { <-1, -1, -1>, <1, 1, 1> }
   sphere { <0, 0, 0>, 1.3 }
   matrix <0.8660254037844387, 0, -0.5, 0, 1, 0, 0.5, 0, 0.8660254037844387, 0, 0, 0>
   translate <-2.6, 1, 1>
   texture { M_Red }
 }
 
-// Three orthogonal bars intersected, minus a sphere with its own material.
+// Three orthogonal capped cylinders intersected, minus a sphere with its own material.
 difference {
   intersection {
-    intersection {
-      plane { <0, H, H>, H } plane { <0, H, -H>, H } plane { <0, -H, H>, H } plane { <0, -H, -H>, H }
-    }
-    intersection {
-      plane { <H, 0, H>, H } plane { <H, 0, -H>, H } plane { <-H, 0, H>, H } plane { <-H, 0, -H>, H }
-    }
-    intersection {
-      plane { <H, H, 0>, H } plane { <H, -H, 0>, H } plane { <-H, H, 0>, H } plane { <-H, -H, 0>, H }
-    }
+    cylinder { <-1, 0, 0>, <1, 0, 0>, 1 }
+    cylinder { <0, -1, 0>, <0, 1, 0>, 1 }
+    cylinder { <0, 0, -1>, <0, 0, 1>, 1 }
     texture { M_Blue }
   }
   sphere { <0, 0, -1>, 0.8 texture { M_Gold } }
   translate <2.6, 1, 1>
+}
+
+// A torus with a notch, and a drilled cone.
+difference {
+  torus { 0.9, 0.3 }
+  box { <-0.5, -0.5, -1.5>, <0.5, 0.5, -0.5> }
+  translate <1.6, 0.3, 4.8>
+  texture { M_Gold }
+}
+difference {
+  cone { <0, 0, 0>, 0.9, <0, 2.2, 0>, 0 }
+  cylinder { <0, 0.8, -1>, <0, 0.8, 1>, 0.25 }
+  translate <-1.5, 0, 5>
+  texture { M_White }
 }
 
 // The lens.
@@ -88,10 +92,7 @@ union {
 #macro Nut(Body)
   difference {
     sphere { <0, 0, 0>, 0.45 texture { Body } }
-    intersection {
-      plane { <1, 0, 0>, 0.2 } plane { <-1, 0, 0>, 0.2 } plane { <0, 0, 1>, 0.2 } plane { <0, 0, -1>, 0.2 }
-      texture { M_Gold }
-    }
+    box { <-0.2, -1, -0.2>, <0.2, 1, 0.2> texture { M_Gold } }
   }
 #end
 object { Nut(M_Red) translate <-2, 0.45, -3.5> }

@@ -168,6 +168,71 @@ TEST(MeshShape, ClosedSphere_SpansMatchContainsOracle) {
   }
 }
 
+// Unit cubes in one mesh: [0, 1]^3 and copies shifted by `shifts`.
+std::shared_ptr<const Mesh> cubes(const std::vector<Vec3f>& shifts) {
+  const auto a = unit_cube();
+  std::vector<Vec3f> p = a->positions;
+  std::vector<std::array<std::uint32_t, 3>> t = a->triangles;
+  for (const Vec3f& shift : shifts) {
+    const auto base = static_cast<std::uint32_t>(p.size());
+    for (std::size_t i = 0; i < 8; ++i) p.push_back(a->positions[i] + shift);
+    for (std::size_t i = 0; i < 12; ++i)
+      t.push_back(
+          {a->triangles[i][0] + base, a->triangles[i][1] + base, a->triangles[i][2] + base});
+  }
+  return make_mesh(p, t);
+}
+
+TEST(MeshShape, GrazingAnEdge_IsNoSpanAndDoesNotOpenOne) {
+  // The line x + 2z = 3 at y = 0.5 touches the first cube only at its edge x = 1, z = 1 (it leaves
+  // through the +x face's plane and enters through the +z face's at the same t), and crosses the
+  // cubes at x in [3.5, 4.5] and x in [-3.5, -2.5]. Both directions, so that a real span follows
+  // the touch either way: only the two real spans.
+  const MeshShape s{cubes({{3.5f, 0, -1}, {-3.5f, 0, 2.5f}})};
+  ASSERT_TRUE(is_closed(s));
+  for (const double k : {1.0, -1.0}) {
+    SCOPED_TRACE(k);
+    const Vec3 d = k * Vec3{1, 0, -0.5};
+    const Ray ray{Vec3{1, 0.5, 1} - 10.0 * d, d};  // the touch at t = 10
+    SpanList out;
+    spans(s, ray, out);
+    ASSERT_EQ(out.size(), 2u);
+    // x = 1 + k (t - 10): the spans at x = -3.5 .. -2.5 and 3.5 .. 4.5.
+    const double first = k > 0 ? 5.5 : 6.5, second = k > 0 ? 12.5 : 13.5;
+    EXPECT_NEAR(out[0].in.t, first, 1e-12);
+    EXPECT_NEAR(out[0].out.t, first + 1, 1e-12);
+    EXPECT_NEAR(out[1].in.t, second, 1e-12);
+    EXPECT_NEAR(out[1].out.t, second + 1, 1e-12);
+  }
+}
+
+TEST(MeshShape, SpansFromInside_IncludeTheFaceBehind) {
+  // The whole line counts: from inside the cube, the entry lies behind the origin (t < 0), on a
+  // face whose BVH box is flat. The box test once shrank negative intervals and culled it.
+  const MeshShape s{unit_cube()};
+  for (const Vec3& d :
+       {Vec3{-1, 0.27, -0.07}, Vec3{1, 0.27, -0.07}, Vec3{0.1, -1, 0.2}, Vec3{0.1, 0.3, 1}}) {
+    SCOPED_TRACE(testing::Message() << d.x << " " << d.y << " " << d.z);
+    const Ray ray{{0.4, 0.45, 0.5}, d};
+    SpanList out;
+    spans(s, ray, out);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_LT(out[0].in.t, 0);
+    EXPECT_GT(out[0].out.t, 0);
+    EXPECT_TRUE(contains(s, ray.o));
+  }
+}
+
+TEST(MeshShape, OverlappingClosedComponents_SpanTheirUnion) {
+  // Two overlapping cubes in one mesh bound their union (nonzero winding): one span.
+  const MeshShape s{cubes({{0.5f, 0.25f, 0.25f}})};
+  SpanList out;
+  spans(s, Ray{{-1, 0.5, 0.5}, {1, 0, 0}}, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].in.t, 1);
+  EXPECT_EQ(out[0].out.t, 2.5);
+}
+
 TEST(MeshShape, OpenMesh_GivesZeroLengthSpans) {
   const auto m = make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
   const MeshShape s{m};

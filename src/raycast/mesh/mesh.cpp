@@ -262,37 +262,47 @@ void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
   }
   std::sort(xs.begin(), xs.end(),
             [](const Crossing& a, const Crossing& b) { return a.hit.t < b.hit.t; });
-  // Two triangles sharing the edge or vertex a ray passes through both report the crossing: merge
-  // same-direction crossings closer than the float resolution of the mesh's coordinates.
+  // Two triangles sharing the edge or vertex a ray passes through both report the crossing:
+  // crossings closer than the float resolution of the mesh's coordinates are one event.
   const double coord = std::max(max_component(abs(m.box.lo)), max_component(abs(m.box.hi)));
   const double tol = 8 * std::numeric_limits<float>::epsilon() * coord / length(ray.d);
-  std::vector<Crossing> merged;
-  for (const Crossing& c : xs) {
-    if (!merged.empty() && merged.back().entering == c.entering &&
-        c.hit.t - merged.back().hit.t <= tol) {
-      if (!c.entering) merged.back() = c;  // keep the first entry, the last exit
-      continue;
-    }
-    merged.push_back(c);
-  }
   if (!m.closed) {
+    // An open mesh: each event is a zero-length span (same-direction duplicates merged).
+    std::vector<Crossing> merged;
+    for (const Crossing& c : xs) {
+      if (!merged.empty() && merged.back().entering == c.entering &&
+          c.hit.t - merged.back().hit.t <= tol)
+        continue;
+      merged.push_back(c);
+    }
     for (const Crossing& c : merged) out.add(c.hit, c.hit);
     return;
   }
-  // A closed mesh: runs of entries open a span at the first one, runs of exits close it at the
-  // last.
-  bool inside = false;
+  // A closed mesh: the nonzero winding rule over events. An event's direction is the sign of its
+  // entries minus its exits, so duplicates of one crossing count once and a ray that only touches
+  // an edge or vertex (leaving through one face's plane, entering through the other's at the same
+  // t, in either sorted order) changes nothing. Overlapping closed components give their union.
+  int winding = 0;
   LocalHit in;
-  for (std::size_t i = 0; i < merged.size(); ++i) {
-    const Crossing& c = merged[i];
-    if (c.entering) {
-      if (!inside) {
-        in = c.hit;
-        inside = true;
+  for (std::size_t i = 0; i < xs.size();) {
+    std::size_t j = i + 1;
+    while (j < xs.size() && xs[j].hit.t - xs[j - 1].hit.t <= tol) ++j;
+    int entries = 0, exits = 0;
+    const LocalHit* first_entry = nullptr;
+    const LocalHit* last_exit = nullptr;
+    for (std::size_t k = i; k < j; ++k) {
+      if (xs[k].entering) {
+        if (entries++ == 0) first_entry = &xs[k].hit;
+      } else {
+        ++exits;
+        last_exit = &xs[k].hit;
       }
-    } else if (inside && (i + 1 == merged.size() || merged[i + 1].entering)) {
-      out.add(in, c.hit);
-      inside = false;
+    }
+    i = j;
+    if (entries > exits) {
+      if (winding++ == 0) in = *first_entry;
+    } else if (exits > entries && winding > 0) {
+      if (--winding == 0) out.add(in, *last_exit);
     }
   }
 }

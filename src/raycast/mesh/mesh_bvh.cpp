@@ -19,6 +19,8 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 // Relative widening of a slab exit so that the float box test is conservative (pbrt-v4 6.8.2:
 // 1 + 2 gamma(3) in float arithmetic).
 constexpr float kSlabWiden = 1.0f + 2.0f * (3 * 0x1p-24f) / (1 - 3 * 0x1p-24f);
+// The same margin for negative distances (multiplying by it moves them towards +infinity).
+constexpr float kSlabNarrow = 2.0f - kSlabWiden;
 // Direction components smaller than this are replaced by it (with their sign) when computing
 // 1 / d, so that the box test never multiplies 0 by infinity (the ray is first scaled so that
 // its largest component is in [1, 2)).
@@ -189,8 +191,15 @@ inline int intersect_node(const WideNode& n, const RayPacket1& p, __m128 tmin, _
   const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(f + p.far_off[1]), p.o[1]), p.inv[1]);
   const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(f + p.far_off[2]), p.o[2]), p.inv[2]);
   tnear = _mm_max_ps(_mm_max_ps(nx, ny), _mm_max_ps(nz, tmin));
-  const __m128 tfar =
-      _mm_min_ps(_mm_mul_ps(_mm_min_ps(_mm_min_ps(fx, fy), fz), _mm_set1_ps(kSlabWiden)), tmax);
+  // Widen the far distance away from the near one: scale it up when it is positive, down when it
+  // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
+  // negative far distance up would shrink the interval and cull flat boxes (a mesh's
+  // axis-aligned face) behind the origin.
+  const __m128 far = _mm_min_ps(_mm_min_ps(fx, fy), fz);
+  const __m128 ahead = _mm_cmpge_ps(far, _mm_setzero_ps());
+  const __m128 widen = _mm_or_ps(_mm_and_ps(ahead, _mm_set1_ps(kSlabWiden)),
+                                 _mm_andnot_ps(ahead, _mm_set1_ps(kSlabNarrow)));
+  const __m128 tfar = _mm_min_ps(_mm_mul_ps(far, widen), tmax);
   return _mm_movemask_ps(_mm_cmple_ps(tnear, tfar));
 }
 

@@ -68,7 +68,9 @@ std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scen
 Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
              const Ray& ray, const SceneHit& hit, const SurfaceInfo& si) {
   const Object& object = scene.objects[hit.object];
-  const int index = object.material >= 0 ? object.material : 0;
+  // The material of the part hit (a CSG leaf's or an instance's own), as Scene::material_of.
+  const int own = material_of(object, hit.local);
+  const int index = own >= 0 ? own : 0;
   const Material& m = scene.materials[index];
   if (m.has_checker) {
     // The object-space point from the object-space ray, as the shape itself computed it.

@@ -62,7 +62,11 @@ struct Evaluator {
       const std::size_t leaf = static_cast<std::size_t>(-code - 1);
       if (!box_meets(tree.leaf_boxes[leaf], ray.o, inv_d, lo, hi)) return;
       spans(tree.leaves[leaf], ray, out);
-      for (Span& s : out) s.in.leaf = s.out.leaf = static_cast<std::int32_t>(leaf);
+      const bool flip = tree.leaf_flipped[leaf] != 0;
+      for (Span& s : out) {
+        s.in.leaf = s.out.leaf = static_cast<std::int32_t>(leaf);
+        s.in.flip = s.out.flip = flip;
+      }
       return;
     }
     const CsgNode& node = tree.nodes[static_cast<std::size_t>(code)];
@@ -108,11 +112,16 @@ struct Evaluator {
 std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
   if (tree.nodes.empty()) throw std::invalid_argument("a CSG tree needs a root operation");
   tree.leaf_boxes.clear();
+  tree.leaf_flipped.clear();
   for (const Object& leaf : tree.leaves) {
     if (std::holds_alternative<CsgShape>(leaf.shape) ||
         std::holds_alternative<InstanceShape>(leaf.shape))
       throw std::invalid_argument("a CSG leaf must be a primitive shape");
     tree.leaf_boxes.push_back(bounds(leaf));
+    // A closed mesh wound inside out reports its winding's (inward) normals; in CSG every
+    // surface's normal points out of the solid, so its hits start flipped.
+    const auto* mesh = std::get_if<MeshShape>(&leaf.shape);
+    tree.leaf_flipped.push_back(mesh && mesh->mesh->orientation < 0);
   }
   for (std::size_t k = tree.nodes.size(); k-- > 0;) {
     CsgNode& node = tree.nodes[k];

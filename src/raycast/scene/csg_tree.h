@@ -20,7 +20,8 @@ struct CsgNode {
 /// transforms are relative to the CSG object. A leaf's material -1 means the CSG object's.
 struct CsgTree {
   std::vector<Object> leaves;
-  std::vector<Aabb> leaf_boxes;  // set by finish_csg_tree
+  std::vector<Aabb> leaf_boxes;    // set by finish_csg_tree
+  std::vector<char> leaf_flipped;  // set by finish_csg_tree: hits of the leaf start flipped
   std::vector<CsgNode> nodes;
   std::size_t depth = 0;  // operation levels below the root; set by finish_csg_tree
 };
