@@ -291,6 +291,14 @@ SurfaceInfo surface(const Revolution& s, const Ray& ray, const LocalHit& hit) {
   si.p = p;
   const double size = std::max({std::abs(s.box.lo.z), std::abs(s.box.hi.z), s.box.hi.x});
   si.p_error = gamma(16) * (abs(p) + Vec3{size, size, size});
+  if (hit.part < n_segments) {
+    // The polished (s, t) leave o + t d off the surface by the root's own error, which grows at
+    // grazing angles: add twice the distance from p to the profile point in the (r, z) plane.
+    const Revolution::Segment& g = s.segments[hit.part];
+    const double dist =
+        std::hypot(std::hypot(p.x, p.y) - evaluate(g.r, hit.a), p.z - evaluate(g.z, hit.a));
+    si.p_error += 2 * dist * abs(si.n);
+  }
   return si;
 }
 
