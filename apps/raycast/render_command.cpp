@@ -79,7 +79,7 @@ Action add_render_command(CLI::App& app) {
                   "depth, normal, id, albedo");
   return [opt, width, height, spp, threads] {
     // Validate everything before the (possibly long) render.
-    constexpr int kMaxSize = 1 << 16;
+    constexpr int kMaxSize = kMaxImageSide;  // also the --spp limit, like image.samples
     const std::tuple<const char*, CLI::Option*, int, int> limits[] = {
         {"--width", width, opt->width, kMaxSize},
         {"--height", height, opt->height, kMaxSize},
@@ -130,7 +130,19 @@ Action add_render_command(CLI::App& app) {
       return usage_error(e.what());
     }
 
+    // Refuse an image too large to allocate before loading (and building) the scene.
+    if (opt->width > 0 && opt->height > 0 &&
+        static_cast<long long>(opt->width) * opt->height > kMaxImagePixels)
+      return usage_error("--width * --height must be at most " + std::to_string(kMaxImagePixels) +
+                         " pixels, got " + std::to_string(opt->width) + " x " +
+                         std::to_string(opt->height));
     const Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
+    const long long pixels =
+        static_cast<long long>(opt->width > 0 ? opt->width : scene.image.width) *
+        (opt->height > 0 ? opt->height : scene.image.height);
+    if (pixels > kMaxImagePixels)
+      return usage_error("the image must be at most " + std::to_string(kMaxImagePixels) +
+                         " pixels, got " + std::to_string(pixels));
     RenderStats stats;
     const Image image = render(scene, options, &stats);
     const bool depth =

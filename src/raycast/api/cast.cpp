@@ -34,6 +34,10 @@ void check_ray(const Ray& r, const CastOptions& opt, long line) {
     why = "ray direction must be finite and non-zero";
   else if (std::isnan(r.tmin) || std::isnan(r.tmax) || r.tmin > r.tmax)
     why = "tmin must be <= tmax (and neither NaN)";
+  else if (!is_valid(r))
+    why =
+        "ray out of range: |o| must be below about 1.3e154 and |d| within about [1.5e-154, "
+        "1.3e154]";
   if (why) {
     if (opt.binary) throw SceneError(opt.source, 0, 0, "ray " + std::to_string(line) + ": " + why);
     throw SceneError(opt.source, static_cast<int>(line), 1, why);

@@ -56,11 +56,14 @@ bool occluded(const Plane& p, const Ray& ray) {
 void spans(const Plane& p, const Ray& ray, SpanList& out) {
   const double dn = dot(p.n, ray.d);
   const LocalHit lo{-kInfinity, -1, kNoSurface, 0, 0}, hi{kInfinity, -1, kNoSurface, 0, 0};
-  if (dn == 0) {
+  const double t = (p.offset - dot(p.n, ray.o)) / dn;
+  // Parallel, or so nearly that the crossing lies beyond every double (a subnormal d . n):
+  // the whole line is in or out, with no surface crossing at +-inf.
+  if (dn == 0 || !std::isfinite(t)) {
     if (dot(p.n, ray.o) <= p.offset) out.add(lo, hi);
     return;
   }
-  const LocalHit at{(p.offset - dot(p.n, ray.o)) / dn, -1, 0, 0, 0};
+  const LocalHit at{t, -1, 0, 0, 0};
   if (dn > 0)
     out.add(lo, at);  // leaving the half-space
   else

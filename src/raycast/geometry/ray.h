@@ -1,4 +1,6 @@
 #pragma once
+#include <limits>
+
 #include "math/float_error.h"
 #include "math/vec3.h"
 
@@ -15,10 +17,15 @@ struct Ray {
   Vec3 at(double t) const { return o + t * d; }
 };
 
-/// A ray is usable when o is finite, d is finite and non-zero, and tmin <= tmax with neither NaN.
+/// A ray is usable when |o|^2 is finite (|o| below about 1.3e154), |d|^2 is a finite normal
+/// double (|d| roughly within [1.5e-154, 1.3e154]) and tmin <= tmax with neither NaN. The shapes
+/// square o and d: outside that range t under- or overflows (a subnormal d put hits at t = inf, a
+/// huge d or o hits at t = 0 or with NaN normals). Scene queries answer "nothing" for other rays.
 inline bool is_valid(const Ray& r) {
-  return is_finite(r.o) && is_finite(r.d) && length_squared(r.d) > 0 && !(r.tmin > r.tmax) &&
-         r.tmin == r.tmin && r.tmax == r.tmax;
+  const double d2 = length_squared(r.d);
+  return length_squared(r.o) <= std::numeric_limits<double>::max() &&
+         d2 >= std::numeric_limits<double>::min() && d2 <= std::numeric_limits<double>::max() &&
+         !(r.tmin > r.tmax) && r.tmin == r.tmin && r.tmax == r.tmax;
 }
 
 }  // namespace raycast

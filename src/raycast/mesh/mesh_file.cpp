@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -309,15 +310,28 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
 #ifdef RAYCAST_HAVE_ASSIMP
 MeshFileData read_with_assimp(const std::string& path) {
   Assimp::Importer importer;
-  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                         aiProcess_PreTransformVertices | aiProcess_SortByPType |
-                         aiProcess_ValidateDataStructure;
+  // Vertices are joined only after checking them: JoinIdenticalVertices merges a NaN vertex into
+  // another one, which silently turned `v 1 nan 0` into a degenerate triangle.
+  const unsigned flags = aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   const aiScene* scene = importer.ReadFile(path, flags);
-  if (!scene) {
+  auto fail = [&] {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "unknown reason";
     throw MeshFileError("cannot read the mesh: " + why);
+  };
+  if (!scene) fail();
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+      const aiVector3D& p = mesh->mVertices[v];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw MeshFileError("a vertex is not finite: (" + std::to_string(p.x) + ", " +
+                            std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
+    }
   }
+  scene = importer.ApplyPostProcessing(aiProcess_JoinIdenticalVertices);
+  if (!scene) fail();
   MeshFileData out;
   bool all_normals = true;
   std::size_t triangle_meshes = 0;

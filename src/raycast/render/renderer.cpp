@@ -104,6 +104,9 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   const int spp = options.spp > 0 ? options.spp : scene.image.samples;
   if (width <= 0 || height <= 0 || spp <= 0)
     throw std::invalid_argument("render: image width, height and samples must be positive");
+  if (static_cast<long long>(width) * height > kMaxImagePixels)
+    throw std::invalid_argument("render: width * height must be at most " +
+                                std::to_string(kMaxImagePixels) + " pixels");
 
   std::optional<tbb::global_control> limit;
   if (options.threads > 0)

@@ -20,6 +20,11 @@ struct ImageSettings {
   int samples = 1;
 };
 
+/// The largest image raycast renders: width * height at most 2^28 pixels (3 GiB of float RGB);
+/// each side is at most 2^16. Larger requests are refused before anything is allocated.
+inline constexpr long long kMaxImagePixels = 1LL << 28;
+inline constexpr int kMaxImageSide = 1 << 16;
+
 enum class IntegratorType { kWhitted, kRaycast, kDepth, kNormal, kId };
 
 struct RenderSettings {

@@ -73,10 +73,15 @@ class Loader {
 
   void read_image(const YAML::Node& node) {
     Fields f(ctx_, node, "image");
-    scene_.image.width = f.integer("width", scene_.image.width, 1, 1 << 16);
-    scene_.image.height = f.integer("height", scene_.image.height, 1, 1 << 16);
+    scene_.image.width = f.integer("width", scene_.image.width, 1, kMaxImageSide);
+    scene_.image.height = f.integer("height", scene_.image.height, 1, kMaxImageSide);
     scene_.image.samples = f.integer("samples", scene_.image.samples, 1, 1 << 16);
     f.finish();
+    if (static_cast<long long>(scene_.image.width) * scene_.image.height > kMaxImagePixels)
+      fail_at(ctx_, node, "image.width * image.height must be at most " +
+                              std::to_string(kMaxImagePixels) + " pixels, got " +
+                              std::to_string(scene_.image.width) + " x " +
+                              std::to_string(scene_.image.height));
   }
 
   void read_render(const YAML::Node& node) {

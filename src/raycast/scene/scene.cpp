@@ -36,6 +36,7 @@ void Scene::build() {
 }
 
 bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
+  if (!is_valid(ray)) return false;
   Ray r = ray;
   bool found = false;
   auto test = [&](std::uint32_t index, double& tmax) {
@@ -56,6 +57,7 @@ bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
 }
 
 bool Scene::occluded(const Ray& ray) const {
+  if (!is_valid(ray)) return false;
   for (std::uint32_t index : unbounded_)
     if (raycast::occluded(objects[index], ray)) return true;
   return traverse_any(bvh_, ray.o, ray.d, ray.tmin, ray.tmax,
@@ -64,6 +66,7 @@ bool Scene::occluded(const Ray& ray) const {
 
 void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
   out.clear();
+  if (!is_valid(ray)) return;
   SpanList spans;
   auto collect = [&](std::uint32_t index) {
     spans.clear();

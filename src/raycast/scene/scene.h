@@ -46,6 +46,8 @@ struct Scene {
   /// The bounds of the bounded objects only (used to frame a default camera).
   const Aabb& finite_bounds() const { return finite_bounds_; }
 
+  // The queries answer "nothing" (no hit, not occluded, no crossings) for a ray that is not
+  // is_valid (geometry/ray.h): |o| or |d| out of range, NaN or empty [tmin, tmax].
   /// Nearest hit with ray.tmin <= t <= ray.tmax.
   bool intersect(const Ray& ray, SceneHit& hit) const;
   /// Whether any surface crosses the ray within [tmin, tmax].
