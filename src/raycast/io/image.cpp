@@ -1,8 +1,10 @@
 #include "io/image.h"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 namespace raycast {
@@ -19,6 +21,47 @@ float srgb_to_linear(float encoded) {
   if (encoded >= 1.f) return 1.f;
   if (encoded <= 0.04045f) return encoded / 12.92f;
   return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+namespace {
+
+std::uint8_t reference_srgb8(float linear) {
+  return static_cast<std::uint8_t>(std::lround(255.f * linear_to_srgb(linear)));
+}
+
+// thresholds[k - 1] = the smallest non-negative float whose code is >= k (k = 1..255). The code is
+// non-decreasing in the value (linear_to_srgb is, and so is rounding), and the order of
+// non-negative floats is the order of their bit patterns, so each threshold is a binary search
+// over bit patterns.
+struct Srgb8Table {
+  float thresholds[255];
+  Srgb8Table() {
+    for (int k = 1; k <= 255; ++k) {
+      std::uint32_t lo = 0, hi = std::bit_cast<std::uint32_t>(1.f);  // code(lo) < k <= code(hi)
+      while (hi - lo > 1) {
+        const std::uint32_t mid = lo + (hi - lo) / 2;
+        if (reference_srgb8(std::bit_cast<float>(mid)) >= k)
+          hi = mid;
+        else
+          lo = mid;
+      }
+      thresholds[k - 1] = std::bit_cast<float>(hi);
+    }
+  }
+};
+
+const Srgb8Table kSrgb8;
+
+}  // namespace
+
+std::uint8_t linear_to_srgb8(float linear) {
+  if (!(linear > 0.f)) return 0;  // also NaN
+  // The number of thresholds <= linear, by a branch-free binary search over 256 slots (the
+  // virtual slot 255 is +inf, never <= a finite value; values >= 1 pass every real threshold).
+  int n = 0;
+  for (int step = 128; step > 0; step /= 2)
+    if (n + step <= 255 && kSrgb8.thresholds[n + step - 1] <= linear) n += step;
+  return static_cast<std::uint8_t>(n);
 }
 
 ImageFormat image_format_for(const std::string& path) {
