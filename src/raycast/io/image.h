@@ -49,8 +49,8 @@ class ImageError : public std::runtime_error {
 float linear_to_srgb(float linear);
 float srgb_to_linear(float encoded);
 /// The 8-bit sRGB code of a linear value: exactly lround(255 * linear_to_srgb(linear)) (NaN and
-/// values <= 0 give 0, values >= 1 give 255), by a binary search in a table of the 255 smallest
-/// floats reaching each code (built once from linear_to_srgb itself).
+/// values <= 0 give 0, values >= 1 give 255), from tables of the 255 smallest floats reaching
+/// each code and of the code of every 2^15th float (built once from linear_to_srgb itself).
 std::uint8_t linear_to_srgb8(float linear);
 
 /// 8-bit sRGB PNG: each value clamped to [0, 1], sRGB-encoded, rounded to the nearest of 0..255.
