@@ -105,6 +105,25 @@ TEST(Png, ValuesOutsideUnitRange_AreClampedWhenWritten) {
   std::filesystem::remove(path);
 }
 
+TEST(Png, UnwritablePath_ThrowsImageError) {
+  const Image image(2, 2);
+  EXPECT_THROW(save_png(image, temp_path("no_such_dir/x.png")), ImageError);
+}
+
+TEST(Png, WrittenFile_HasSignatureIhdrSrgbAndIend) {
+  Image image(3, 2);
+  image.set(2, 1, {0.25f, 0.5f, 0.75f});
+  const std::string path = temp_path("chunks.png");
+  save_png(image, path);
+  const std::string bytes = read_bytes(path);
+  ASSERT_GE(bytes.size(), 8u + 25u + 13u + 12u);
+  EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(bytes.substr(12, 4), "IHDR");
+  EXPECT_EQ(bytes.substr(8 + 25 + 4, 4), "sRGB");
+  EXPECT_EQ(bytes.substr(bytes.size() - 8, 4), "IEND");
+  std::filesystem::remove(path);
+}
+
 TEST(Png, MissingOrCorruptFile_ThrowsImageError) {
   EXPECT_THROW(load_png(temp_path("does_not_exist.png")), ImageError);
   const std::string path = temp_path("corrupt.png");
