@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -42,6 +43,34 @@ TEST(Srgb, OutOfRangeAndNaN_AreClamped) {
   EXPECT_EQ(linear_to_srgb(std::nanf("")), 0.f);
 }
 
+std::uint8_t reference_srgb8(float v) {
+  return static_cast<std::uint8_t>(std::lround(255.f * linear_to_srgb(v)));
+}
+
+TEST(Srgb8, EveryFloatNearEachCodeBoundaryAndSampled_MatchesTheDirectFormula) {
+  // Around each boundary the table finds (where the direct formula's code changes), 64 floats each
+  // side; then every 1021st float of [0, 1]; then the special values.
+  for (std::uint32_t bits = 0; bits <= 0x3f800000u + 64; bits += 1021) {
+    const float v = std::bit_cast<float>(bits);
+    ASSERT_EQ(linear_to_srgb8(v), reference_srgb8(v)) << v;
+  }
+  int boundaries = 0;
+  for (std::uint32_t bits = 1; bits <= 0x3f800000u; bits += 4093) {
+    const float a = std::bit_cast<float>(bits - 1), b = std::bit_cast<float>(bits + 4092);
+    if (reference_srgb8(a) == reference_srgb8(b)) continue;
+    for (std::uint32_t k = bits - 1; k <= bits + 4092; ++k) {
+      const float v = std::bit_cast<float>(k);
+      ASSERT_EQ(linear_to_srgb8(v), reference_srgb8(v)) << v;
+    }
+    ++boundaries;
+  }
+  EXPECT_GE(boundaries, 200);  // most of the 255 boundaries were looked at
+  for (const float v : {0.f, -0.f, -1.f, 1.f, 2.f, std::numeric_limits<float>::infinity(),
+                        -std::numeric_limits<float>::infinity(), std::nanf(""),
+                        std::numeric_limits<float>::denorm_min(), 0.0031308f, 0.5f})
+    EXPECT_EQ(linear_to_srgb8(v), reference_srgb8(v)) << v;
+}
+
 TEST(Png, WriteThenRead_RoundTripsWithin8BitQuantisation) {
   Image image(7, 5);
   for (int y = 0; y < image.height; ++y)
@@ -73,6 +102,25 @@ TEST(Png, ValuesOutsideUnitRange_AreClampedWhenWritten) {
   const Image back = load_png(path);
   EXPECT_EQ(back.at(0, 0), (Vec3f{0.f, 1.f, 0.f}));
   EXPECT_EQ(back.at(1, 0), (Vec3f{1.f, 0.f, 1.f}));
+  std::filesystem::remove(path);
+}
+
+TEST(Png, UnwritablePath_ThrowsImageError) {
+  const Image image(2, 2);
+  EXPECT_THROW(save_png(image, temp_path("no_such_dir/x.png")), ImageError);
+}
+
+TEST(Png, WrittenFile_HasSignatureIhdrSrgbAndIend) {
+  Image image(3, 2);
+  image.set(2, 1, {0.25f, 0.5f, 0.75f});
+  const std::string path = temp_path("chunks.png");
+  save_png(image, path);
+  const std::string bytes = read_bytes(path);
+  ASSERT_GE(bytes.size(), 8u + 25u + 13u + 12u);
+  EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(bytes.substr(12, 4), "IHDR");
+  EXPECT_EQ(bytes.substr(8 + 25 + 4, 4), "sRGB");
+  EXPECT_EQ(bytes.substr(bytes.size() - 8, 4), "IEND");
   std::filesystem::remove(path);
 }
 

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <vector>
 
 #include "math/dual.h"
 #include "math/formula.h"
@@ -47,6 +50,34 @@ TEST(Interval, RandomPoints_ContainedInInclusions) {
       EXPECT_TRUE(tn.contains(std::tan(x)));
     }
   }
+}
+
+TEST(Interval, UlpSteps_MatchRepeatedNextafter) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double max = std::numeric_limits<double>::max();
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const double normal_min = std::numeric_limits<double>::min();
+  std::vector<double> values = {0.0,        -0.0,        tiny,  -tiny,  2 * tiny, -3 * tiny,
+                                normal_min, -normal_min, 1.0,   -1.0,   max,      -max,
+                                inf,        -inf,        1e300, -1e-300};
+  std::mt19937_64 rng(20261122);
+  for (int i = 0; i < 2000; ++i) {
+    const double v = std::bit_cast<double>(rng());
+    if (!std::isnan(v)) values.push_back(v);
+  }
+  for (const double v : values)
+    for (int ulps = 1; ulps <= 6; ++ulps) {
+      double up = v, down = v;
+      for (int i = 0; i < ulps; ++i) {
+        up = std::nextafter(up, inf);
+        down = std::nextafter(down, -inf);
+      }
+      // Compare values (a zero may come out as -0 or +0).
+      EXPECT_EQ(interval_detail::up(v, ulps), up) << v << " " << ulps;
+      EXPECT_EQ(interval_detail::down(v, ulps), down) << v << " " << ulps;
+    }
+  EXPECT_TRUE(std::isnan(interval_detail::up(std::nan(""), 3)));
+  EXPECT_TRUE(std::isnan(interval_detail::down(std::nan(""), 3)));
 }
 
 TEST(Interval, HandComputedRanges) {

@@ -73,6 +73,7 @@ Vec3 polished_point(const Algebraic& s, const Ray& ray, const LocalHit& hit, lon
   if ((flo < 0) != (fhi < 0)) {
     for (int k = 0; k < kExtendedBisections; ++k) {
       const long double m = 0.5L * (lo + hi);
+      if (m <= lo || m >= hi) break;  // lo and hi are adjacent: no step can shrink the bracket
       const long double fm = f(m);
       if (fm == 0) {
         lo = hi = m;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geometry/hit.h"
+#include "math/interval.h"
 
 namespace raycast {
 
@@ -24,7 +25,8 @@ inline Vec3 offset_ray_origin(const SurfaceInfo& s, const Vec3& w) {
   for (int i = 0; i < 3; ++i) {
     if (dir[i] == 0) continue;
     const double away = dir[i] > 0 ? kInfinity : -kInfinity;
-    po[i] = std::nextafter(po[i], away);
+    // One ulp towards `away`, as std::nextafter(po[i], away) but without the libm call.
+    po[i] = dir[i] > 0 ? interval_detail::up(po[i]) : interval_detail::down(po[i]);
     if (std::abs(po[i]) < kMinNormal && (po[i] == 0 || std::signbit(po[i]) == std::signbit(away)))
       po[i] = std::copysign(kMinNormal, away);
   }

@@ -118,8 +118,11 @@ SurfaceInfo surface(const Sphere& s, const Ray& ray, const LocalHit& hit) {
   si.shading_n = si.n;
   si.u = phi_of(p) / s.phi_max;
   const double theta = std::acos(std::clamp(p.z / s.radius, -1.0, 1.0));
-  const double theta_lo = std::acos(std::clamp(s.z_min / s.radius, -1.0, 1.0));
-  const double theta_hi = std::acos(std::clamp(s.z_max / s.radius, -1.0, 1.0));
+  // acos(-1) is pi and acos(1) is 0 exactly: whole spheres skip those two calls.
+  const double z_lo = std::clamp(s.z_min / s.radius, -1.0, 1.0);
+  const double z_hi = std::clamp(s.z_max / s.radius, -1.0, 1.0);
+  const double theta_lo = z_lo == -1 ? std::numbers::pi : std::acos(z_lo);
+  const double theta_hi = z_hi == 1 ? 0.0 : std::acos(z_hi);
   si.v = (theta_lo - theta) / (theta_lo - theta_hi);
   si.p = p + s.center;
   si.p_error += gamma(1) * abs(s.center);

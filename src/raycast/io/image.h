@@ -1,6 +1,7 @@
 #pragma once
 // Images in linear light: float RGB, row-major from the top-left pixel, and the files they go to.
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,10 @@ class ImageError : public std::runtime_error {
 /// The sRGB transfer function (IEC 61966-2-1) and its inverse, on [0, 1].
 float linear_to_srgb(float linear);
 float srgb_to_linear(float encoded);
+/// The 8-bit sRGB code of a linear value: exactly lround(255 * linear_to_srgb(linear)) (NaN and
+/// values <= 0 give 0, values >= 1 give 255), from tables of the 255 smallest floats reaching
+/// each code and of the code of every 2^15th float (built once from linear_to_srgb itself).
+std::uint8_t linear_to_srgb8(float linear);
 
 /// 8-bit sRGB PNG: each value clamped to [0, 1], sRGB-encoded, rounded to the nearest of 0..255.
 void save_png(const Image& image, const std::string& path);

@@ -3,7 +3,9 @@
 #include <png.h>
 
 #include <cmath>
+#include <csetjmp>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -13,28 +15,58 @@ namespace raycast {
 
 namespace {
 
-std::uint8_t encode_8bit(float linear) {
-  return static_cast<std::uint8_t>(std::lround(255.f * linear_to_srgb(linear)));
+// libpng reports errors by calling this and never returning: it jumps back to save_png's setjmp
+// with the message kept in the struct png_set_error_fn was given.
+struct WriteError {
+  std::jmp_buf jump;
+  char message[256];
+};
+
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
+  auto* error = static_cast<WriteError*>(png_get_error_ptr(png));
+  std::snprintf(error->message, sizeof error->message, "%s", message);
+  std::longjmp(error->jump, 1);
 }
+
+void on_png_warning(png_structp, png_const_charp) {}
 
 }  // namespace
 
+// The full libpng API (the simplified one cannot choose the compression): zlib level 2 and the
+// "sub" and "up" filters write a 1280x720 render in a fraction of the default's time (the file is
+// about 30 % larger); the same chunks (IHDR, sRGB, IDAT, IEND) as libpng's simplified writer.
 void save_png(const Image& image, const std::string& path) {
   if (image.width <= 0 || image.height <= 0)
     throw ImageError(path + ": cannot write an empty image");
   std::vector<std::uint8_t> bytes(image.rgb.size());
-  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = encode_8bit(image.rgb[i]);
-  png_image png;
-  std::memset(&png, 0, sizeof png);
-  png.version = PNG_IMAGE_VERSION;
-  png.width = static_cast<png_uint_32>(image.width);
-  png.height = static_cast<png_uint_32>(image.height);
-  png.format = PNG_FORMAT_RGB;
-  if (!png_image_write_to_file(&png, path.c_str(), 0, bytes.data(), 0, nullptr)) {
-    const std::string message = png.message;
-    png_image_free(&png);
-    throw ImageError(path + ": cannot write PNG: " + message);
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = linear_to_srgb8(image.rgb[i]);
+  std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
+  for (std::size_t y = 0; y < rows.size(); ++y)
+    rows[y] = bytes.data() + y * 3 * static_cast<std::size_t>(image.width);
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) throw ImageError(path + ": cannot write PNG: cannot open the file");
+  WriteError error{};
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  // No C++ object is created or changed between setjmp and the libpng calls that may jump back.
+  if (!png || !info || setjmp(error.jump)) {
+    png_destroy_write_struct(&png, &info);
+    std::fclose(file);
+    throw ImageError(path +
+                     ": cannot write PNG: " + (error.message[0] ? error.message : "out of memory"));
   }
+  png_init_io(png, file);
+  png_set_compression_level(png, 2);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_UP);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_set_rows(png, info, rows.data());
+  png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
+  png_destroy_write_struct(&png, &info);
+  if (std::fclose(file) != 0) throw ImageError(path + ": cannot write PNG: error closing the file");
 }
 
 Image load_png(const std::string& path) {

@@ -4,7 +4,9 @@
 // basic operations are widened by one ulp each side (round-to-nearest is off by at most half an
 // ulp), the library's transcendental functions by kLibmUlps (glibc documents errors of a few ulps).
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -34,14 +36,20 @@ struct Interval {
 };
 
 namespace interval_detail {
-inline double down(double x, int ulps = 1) {
-  for (int i = 0; i < ulps; ++i) x = std::nextafter(x, -std::numeric_limits<double>::infinity());
-  return x;
-}
+// x moved ulps representable doubles towards +infinity, as ulps calls of std::nextafter(x, +inf)
+// would (zero counts once; the largest finite double goes to +inf; NaN stays NaN), by stepping
+// the bit pattern: among doubles of one sign the order of magnitudes is the order of patterns.
 inline double up(double x, int ulps = 1) {
-  for (int i = 0; i < ulps; ++i) x = std::nextafter(x, std::numeric_limits<double>::infinity());
-  return x;
+  constexpr std::uint64_t kSign = 0x8000000000000000ull, kInf = 0x7ff0000000000000ull;
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+  const std::uint64_t magnitude = bits & ~kSign, n = static_cast<std::uint64_t>(ulps);
+  if (magnitude > kInf) return x;         // NaN
+  if (!(bits & kSign) || magnitude == 0)  // +x or a zero: the magnitude grows, up to +inf
+    return std::bit_cast<double>(std::min(magnitude + n, kInf));
+  if (magnitude >= n) return std::bit_cast<double>(kSign | (magnitude - n));  // -x shrinks
+  return std::bit_cast<double>(n - magnitude);  // through zero to the positive side
 }
+inline double down(double x, int ulps = 1) { return -up(-x, ulps); }
 inline Interval widen(double lo, double hi, int ulps = 1) {
   if (std::isnan(lo) || std::isnan(hi)) return Interval::entire();
   return {down(lo, ulps), up(hi, ulps)};

@@ -1,7 +1,9 @@
 #include "math/polynomial_solver.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -164,6 +166,13 @@ double root_bound(const Polynomial& p) {
   return std::ldexp(2.0, e);
 }
 
+// x 2^e, as std::ldexp(x, e) (one correctly rounded operation either way) without the libm call
+// while 2^e is a normal double.
+double scale2(double x, int e) {
+  if (e < -1022 || e > 1023) return std::ldexp(x, e);
+  return x * std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+}
+
 }  // namespace
 
 int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots) {
@@ -177,7 +186,7 @@ int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots)
   double cmax = 0;
   for (int i = 0; i <= p.degree; ++i) cmax = std::max(cmax, std::abs(p.c[i]));
   const int ce = std::ilogb(cmax);
-  for (int i = 0; i <= p.degree; ++i) p.c[i] = std::ldexp(p.c[i], -ce);
+  for (int i = 0; i <= p.degree; ++i) p.c[i] = scale2(p.c[i], -ce);
 
   // Clip the interval to the root bound, then scale the variable so the interval is about
   // [-1, 1]: t = s u with s a power of two, c_i -> c_i s^i.
@@ -194,20 +203,20 @@ int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots)
   const double extent = std::max(std::abs(lo), std::abs(hi));
   const int se = extent > 0 ? std::ilogb(extent) : 0;
   if (se != 0) {
-    for (int i = 1; i <= p.degree; ++i) p.c[i] = std::ldexp(p.c[i], se * i);
+    for (int i = 1; i <= p.degree; ++i) p.c[i] = scale2(p.c[i], se * i);
     cmax = 0;
     for (int i = 0; i <= p.degree; ++i) cmax = std::max(cmax, std::abs(p.c[i]));
     if (!std::isfinite(cmax) || cmax == 0) return 0;
     const int ce2 = std::ilogb(cmax);
-    for (int i = 0; i <= p.degree; ++i) p.c[i] = std::ldexp(p.c[i], -ce2);
+    for (int i = 0; i <= p.degree; ++i) p.c[i] = scale2(p.c[i], -ce2);
     p = trimmed(p);
     if (p.degree == 0) return 0;
-    lo = std::ldexp(lo, -se);
-    hi = std::ldexp(hi, -se);
+    lo = scale2(lo, -se);
+    hi = scale2(hi, -se);
   }
   if (certainly_no_root(p, lo, hi)) return 0;
   const int n = roots_in(p, lo, hi, roots);
-  for (int i = 0; i < n; ++i) roots[i] = std::ldexp(roots[i], se);
+  for (int i = 0; i < n; ++i) roots[i] = scale2(roots[i], se);
   return n;
 }
 

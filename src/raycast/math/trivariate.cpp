@@ -121,27 +121,6 @@ double ipow(double x, int n) {
   return r;
 }
 
-// (a + b t)^0 .. (a + b t)^n.
-void linear_powers(double a, double b, int n, Polynomial* out) {
-  out[0] = Polynomial{};
-  out[0].c[0] = 1;
-  for (int i = 1; i <= n; ++i) {
-    Polynomial& p = out[i];
-    const Polynomial& q = out[i - 1];
-    p = Polynomial{};
-    p.degree = i;
-    for (int k = 0; k < i; ++k) {
-      p.c[k] += a * q.c[k];
-      p.c[k + 1] += b * q.c[k];
-    }
-  }
-}
-
-void add_scaled(Polynomial& acc, const Polynomial& p, double s) {
-  if (p.degree > acc.degree) acc.degree = p.degree;
-  for (int i = 0; i <= p.degree; ++i) acc.c[i] += s * p.c[i];
-}
-
 }  // namespace
 
 Trivariate expand_polynomial(std::string_view text) {
@@ -198,20 +177,53 @@ void gradient_extended(const Trivariate& f, long double x, long double y, long d
   }
 }
 
+namespace {
+// (a + b t)^i for i = 0..n: row i holds its i + 1 coefficients (the rest is never read).
+void linear_power_rows(double a, double b, int n, double (*rows)[kStride]) {
+  rows[0][0] = 1;
+  for (int i = 1; i <= n; ++i) {
+    const double* q = rows[i - 1];
+    double* r = rows[i];
+    r[0] = a * q[0];
+    for (int k = 1; k < i; ++k) r[k] = b * q[k - 1] + a * q[k];
+    r[i] = b * q[i - 1];
+  }
+}
+
+// r[0..da+db] = a[0..da] * b[0..db] (the same sums, in the same order, as multiply()).
+void multiply_into(const double* a, int da, const double* b, int db, double* r) {
+  for (int k = 0; k <= da + db; ++k) r[k] = 0;
+  for (int i = 0; i <= da; ++i)
+    for (int j = 0; j <= db; ++j) r[i + j] += a[i] * b[j];
+}
+}  // namespace
+
+// Works on arrays sized by the actual degrees (no full Polynomial copies or zero-filled
+// products); the arithmetic is that of the Polynomial-based form, so the result is the same.
 Polynomial restrict_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
-  Polynomial X[kStride], Y[kStride], Z[kStride];
-  linear_powers(o.x, d.x, f.degree, X);
-  linear_powers(o.y, d.y, f.degree, Y);
-  linear_powers(o.z, d.z, f.degree, Z);
+  double X[kStride][kStride], Y[kStride][kStride], Z[kStride][kStride];
+  linear_power_rows(o.x, d.x, f.degree, X);
+  linear_power_rows(o.y, d.y, f.degree, Y);
+  linear_power_rows(o.z, d.z, f.degree, Z);
   Polynomial result;
   // Terms are sorted by (i, j, k): sum the z parts of each (i, j) group, then multiply once.
   std::size_t n = 0;
   while (n < f.terms.size()) {
     const int i = f.terms[n].i, j = f.terms[n].j;
-    Polynomial zsum;
-    for (; n < f.terms.size() && f.terms[n].i == i && f.terms[n].j == j; ++n)
-      add_scaled(zsum, Z[f.terms[n].k], f.terms[n].c);
-    add_scaled(result, multiply(X[i], multiply(Y[j], zsum)), 1.0);
+    double zsum[kStride], yz[kStride], xyz[kStride];
+    int dz = 0;
+    zsum[0] = 0;
+    for (; n < f.terms.size() && f.terms[n].i == i && f.terms[n].j == j; ++n) {
+      const int k = f.terms[n].k;
+      const double c = f.terms[n].c;
+      for (; dz < k;) zsum[++dz] = 0;
+      for (int m = 0; m <= k; ++m) zsum[m] += c * Z[k][m];
+    }
+    multiply_into(Y[j], j, zsum, dz, yz);
+    multiply_into(X[i], i, yz, j + dz, xyz);
+    const int dr = i + j + dz;
+    if (dr > result.degree) result.degree = dr;
+    for (int m = 0; m <= dr; ++m) result.c[m] += xyz[m];
   }
   return result;
 }
