@@ -125,7 +125,17 @@ bool intersect(const Algebraic& s, const Ray& ray, LocalHit& hit) {
   if (r.chord.t1 < ray.tmin || r.chord.t0 > ray.tmax) return false;
   SpanList l;
   line_spans(s, r, l);
-  return first_crossing(l, ray, hit);
+  // A root of the curved surface closer to tmin than its own error bound (hit.a) cannot be told
+  // from the ray's origin lying on the surface: near singular points (the heart's equator, where
+  // f has a triple root) a secondary ray would otherwise find its own surface again. Skip it.
+  for (const Span& span : l)
+    for (const LocalHit* h : {&span.in, &span.out}) {
+      if (!(h->t >= ray.tmin && h->t <= ray.tmax)) continue;
+      if (h->part < kFacePart && h->t - ray.tmin <= h->a) continue;
+      hit = *h;
+      return true;
+    }
+  return false;
 }
 
 bool occluded(const Algebraic& s, const Ray& ray) {
@@ -160,6 +170,10 @@ SurfaceInfo surface(const Algebraic& s, const Ray& ray, const LocalHit& hit) {
     // A singular point of the surface (zero gradient) has no normal: face the ray.
     si.n = gl > 0 && std::isfinite(gl) ? g / gl : -normalize(ray.d);
     si.p_error = gamma(16) * abs(p) + hit.a * abs(ray.d);
+    // The root's own error leaves p off the surface, most at grazing angles and where the
+    // gradient is small: add twice the first-order distance |f(p)| / |grad f(p)|.
+    const double dist = 2 * std::abs(evaluate(s.f, p)) / length(gradient(s.f, p));
+    if (std::isfinite(dist)) si.p_error += dist * abs(si.n);
   }
   si.shading_n = si.n;
   si.p = p;
