@@ -35,7 +35,8 @@ TEST(Loader, UnknownKey_NamedAtItsPosition) {
   expect_error("objects:\n  - sphere: {radius: 1, radus: 2}\n", 2, 25,
                "unknown key 'radus' in sphere");
   expect_error("objects:\n  - cube: {radius: 1}\n", 2, 5,
-               "unknown key 'cube' in object (expected a shape, group, union, intersection, difference, use or name, material, transform)");
+               "unknown key 'cube' in object (expected a shape, group, union, intersection, "
+               "difference, use or name, material, transform)");
   expect_error("objects: []\ncamra: {}\n", 2, 1, "unknown key 'camra' in scene");
 }
 

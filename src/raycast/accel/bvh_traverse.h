@@ -11,7 +11,8 @@ namespace raycast {
 /// [tmin, tmax] and lowers tmax when it finds a nearer hit. Returns when every node that could hold
 /// a hit below the final tmax has been visited.
 template <class Leaf>
-void traverse_nearest(const Bvh& bvh, const Vec3& o, const Vec3& d, double tmin, double& tmax, Leaf&& leaf) {
+void traverse_nearest(const Bvh& bvh, const Vec3& o, const Vec3& d, double tmin, double& tmax,
+                      Leaf&& leaf) {
   if (bvh.empty()) return;
   const Vec3 inv_d = reciprocal(d);
   constexpr int kStackSize = 128;
@@ -52,7 +53,8 @@ void traverse_nearest(const Bvh& bvh, const Vec3& o, const Vec3& d, double tmin,
 /// Any-hit traversal: `leaf(prim)` returns true to stop (something blocks the segment).
 /// Returns whether some leaf stopped it.
 template <class Leaf>
-bool traverse_any(const Bvh& bvh, const Vec3& o, const Vec3& d, double tmin, double tmax, Leaf&& leaf) {
+bool traverse_any(const Bvh& bvh, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                  Leaf&& leaf) {
   if (bvh.empty()) return false;
   const Vec3 inv_d = reciprocal(d);
   constexpr int kStackSize = 128;
@@ -76,7 +78,8 @@ bool traverse_any(const Bvh& bvh, const Vec3& o, const Vec3& d, double tmin, dou
 
 /// Visits every leaf primitive whose node boxes the line o + t d meets within [tmin, tmax].
 template <class Leaf>
-void traverse_all(const Bvh& bvh, const Vec3& o, const Vec3& d, double tmin, double tmax, Leaf&& leaf) {
+void traverse_all(const Bvh& bvh, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                  Leaf&& leaf) {
   traverse_any(bvh, o, d, tmin, tmax, [&](std::uint32_t prim) {
     leaf(prim);
     return false;

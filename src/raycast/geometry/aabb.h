@@ -15,13 +15,21 @@ struct Aabb {
   Vec3 lo{kInfinity, kInfinity, kInfinity};
   Vec3 hi{-kInfinity, -kInfinity, -kInfinity};
 
-  static Aabb everything() { return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}}; }
+  static Aabb everything() {
+    return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
+  }
   bool is_empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
   bool is_bounded() const { return is_finite(lo) && is_finite(hi); }
   Vec3 centre() const { return 0.5 * (lo + hi); }
   Vec3 extent() const { return hi - lo; }
-  void grow(const Vec3& p) { lo = min(lo, p); hi = max(hi, p); }
-  void grow(const Aabb& b) { lo = min(lo, b.lo); hi = max(hi, b.hi); }
+  void grow(const Vec3& p) {
+    lo = min(lo, p);
+    hi = max(hi, p);
+  }
+  void grow(const Aabb& b) {
+    lo = min(lo, b.lo);
+    hi = max(hi, b.hi);
+  }
   bool contains(const Vec3& p) const {
     return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
   }
@@ -33,7 +41,10 @@ struct Aabb {
   }
 };
 
-inline Aabb merge(Aabb a, const Aabb& b) { a.grow(b); return a; }
+inline Aabb merge(Aabb a, const Aabb& b) {
+  a.grow(b);
+  return a;
+}
 inline Aabb overlap(const Aabb& a, const Aabb& b) { return {max(a.lo, b.lo), min(a.hi, b.hi)}; }
 
 /// The box of the transformed corners of b (exact for affine maps); unbounded boxes stay
@@ -50,8 +61,8 @@ inline Vec3 reciprocal(const Vec3& d) { return {1.0 / d.x, 1.0 / d.y, 1.0 / d.z}
 /// on a slab plane, direction parallel to it, either sign of zero) leaves that axis
 /// unconstrained. The exit is widened by 2 gamma(3) so the test is conservative under rounding
 /// (pbrt-v4 6.8.2). On a hit, t_enter is the entry clipped to tmin.
-inline bool intersect_slabs(const Aabb& b, const Vec3& o, const Vec3& inv_d, double tmin, double tmax,
-                            double& t_enter) {
+inline bool intersect_slabs(const Aabb& b, const Vec3& o, const Vec3& inv_d, double tmin,
+                            double tmax, double& t_enter) {
   double t0 = tmin, t1 = tmax;
   for (int a = 0; a < 3; ++a) {
     const bool negative = std::signbit(inv_d[a]);

@@ -33,7 +33,7 @@ struct SurfaceInfo {
   Vec3 shading_n;  // unit shading normal (interpolated for smooth meshes), same side as n
   double u = 0;    // surface parameters as SPEC.md defines them per shape
   double v = 0;
-  Vec3 p_error;    // absolute error bound on p per component, for offsetting secondary rays
+  Vec3 p_error;  // absolute error bound on p per component, for offsetting secondary rays
 };
 
 }  // namespace raycast

@@ -16,7 +16,8 @@ namespace raycast {
 //   returns true, or returns false and leaves hit untouched.
 // - occluded(s, ray): whether any crossing lies in [tmin, tmax]; may stop at the first found.
 // - spans(s, ray, out): appends, sorted by t, every interval of the whole line (t from -inf to
-//   inf, ignoring tmin/tmax) inside the solid; for open surfaces each crossing as a zero-length span.
+//   inf, ignoring tmin/tmax) inside the solid; for open surfaces each crossing as a zero-length
+//   span.
 // - surface(s, ray, hit): the full record for a hit produced by intersect or spans with this ray.
 // - contains(s, p): p inside the closed solid (false everywhere for open surfaces).
 // - is_closed(s): whether s bounds a solid (only those may be CSG operands).

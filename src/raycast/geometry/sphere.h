@@ -13,7 +13,7 @@ struct Sphere {
   double radius = 1;
   double z_min = -kInfinity;  // relative to center, clamped to [-radius, radius] by make_sphere
   double z_max = kInfinity;
-  double phi_max = 0;         // radians in (0, 2 pi]; set by make_sphere
+  double phi_max = 0;  // radians in (0, 2 pi]; set by make_sphere
 
   bool is_partial() const;
 };

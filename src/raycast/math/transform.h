@@ -51,7 +51,8 @@ class Transform {
   /// Normals map by the inverse transpose (result not normalised).
   Vec3 normal(const Vec3& n) const {
     const auto& a = inv_.m;
-    return {a[0][0] * n.x + a[1][0] * n.y + a[2][0] * n.z, a[0][1] * n.x + a[1][1] * n.y + a[2][1] * n.z,
+    return {a[0][0] * n.x + a[1][0] * n.y + a[2][0] * n.z,
+            a[0][1] * n.x + a[1][1] * n.y + a[2][1] * n.z,
             a[0][2] * n.x + a[1][2] * n.y + a[2][2] * n.z};
   }
   Vec3 inverse_point(const Vec3& p) const { return apply_point(inv_, p); }
@@ -72,7 +73,8 @@ class Transform {
   }
   static Vec3 apply_vector(const Mat4& a, const Vec3& v) {
     const auto& r = a.m;
-    return {r[0][0] * v.x + r[0][1] * v.y + r[0][2] * v.z, r[1][0] * v.x + r[1][1] * v.y + r[1][2] * v.z,
+    return {r[0][0] * v.x + r[0][1] * v.y + r[0][2] * v.z,
+            r[1][0] * v.x + r[1][1] * v.y + r[1][2] * v.z,
             r[2][0] * v.x + r[2][1] * v.y + r[2][2] * v.z};
   }
 

@@ -18,10 +18,30 @@ struct Vec3T {
   constexpr T& operator[](std::size_t i) { return i == 0 ? x : (i == 1 ? y : z); }
 
   constexpr Vec3T operator-() const { return {-x, -y, -z}; }
-  constexpr Vec3T& operator+=(const Vec3T& o) { x += o.x; y += o.y; z += o.z; return *this; }
-  constexpr Vec3T& operator-=(const Vec3T& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
-  constexpr Vec3T& operator*=(T s) { x *= s; y *= s; z *= s; return *this; }
-  constexpr Vec3T& operator/=(T s) { x /= s; y /= s; z /= s; return *this; }
+  constexpr Vec3T& operator+=(const Vec3T& o) {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  constexpr Vec3T& operator-=(const Vec3T& o) {
+    x -= o.x;
+    y -= o.y;
+    z -= o.z;
+    return *this;
+  }
+  constexpr Vec3T& operator*=(T s) {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
+  constexpr Vec3T& operator/=(T s) {
+    x /= s;
+    y /= s;
+    z /= s;
+    return *this;
+  }
   friend constexpr bool operator==(const Vec3T&, const Vec3T&) = default;
 };
 
@@ -29,37 +49,61 @@ using Vec3 = Vec3T<double>;
 using Vec3f = Vec3T<float>;
 
 template <class T>
-constexpr Vec3T<T> operator+(Vec3T<T> a, const Vec3T<T>& b) { return a += b; }
+constexpr Vec3T<T> operator+(Vec3T<T> a, const Vec3T<T>& b) {
+  return a += b;
+}
 template <class T>
-constexpr Vec3T<T> operator-(Vec3T<T> a, const Vec3T<T>& b) { return a -= b; }
+constexpr Vec3T<T> operator-(Vec3T<T> a, const Vec3T<T>& b) {
+  return a -= b;
+}
 template <class T>
-constexpr Vec3T<T> operator*(Vec3T<T> a, T s) { return a *= s; }
+constexpr Vec3T<T> operator*(Vec3T<T> a, T s) {
+  return a *= s;
+}
 template <class T>
-constexpr Vec3T<T> operator*(T s, Vec3T<T> a) { return a *= s; }
+constexpr Vec3T<T> operator*(T s, Vec3T<T> a) {
+  return a *= s;
+}
 template <class T>
-constexpr Vec3T<T> operator/(Vec3T<T> a, T s) { return a /= s; }
+constexpr Vec3T<T> operator/(Vec3T<T> a, T s) {
+  return a /= s;
+}
 
 /// Component-wise product and quotient.
 template <class T>
-constexpr Vec3T<T> mul(const Vec3T<T>& a, const Vec3T<T>& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+constexpr Vec3T<T> mul(const Vec3T<T>& a, const Vec3T<T>& b) {
+  return {a.x * b.x, a.y * b.y, a.z * b.z};
+}
 template <class T>
-constexpr Vec3T<T> div(const Vec3T<T>& a, const Vec3T<T>& b) { return {a.x / b.x, a.y / b.y, a.z / b.z}; }
+constexpr Vec3T<T> div(const Vec3T<T>& a, const Vec3T<T>& b) {
+  return {a.x / b.x, a.y / b.y, a.z / b.z};
+}
 
 template <class T>
-constexpr T dot(const Vec3T<T>& a, const Vec3T<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr T dot(const Vec3T<T>& a, const Vec3T<T>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 template <class T>
 constexpr Vec3T<T> cross(const Vec3T<T>& a, const Vec3T<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <class T>
-constexpr T length_squared(const Vec3T<T>& a) { return dot(a, a); }
+constexpr T length_squared(const Vec3T<T>& a) {
+  return dot(a, a);
+}
 template <class T>
-inline T length(const Vec3T<T>& a) { return std::sqrt(dot(a, a)); }
+inline T length(const Vec3T<T>& a) {
+  return std::sqrt(dot(a, a));
+}
 /// The unit vector along a; a zero vector gives NaNs (callers validate first).
 template <class T>
-inline Vec3T<T> normalize(const Vec3T<T>& a) { return a / length(a); }
+inline Vec3T<T> normalize(const Vec3T<T>& a) {
+  return a / length(a);
+}
 template <class T>
-constexpr Vec3T<T> abs(const Vec3T<T>& a) { return {a.x < 0 ? -a.x : a.x, a.y < 0 ? -a.y : a.y, a.z < 0 ? -a.z : a.z}; }
+constexpr Vec3T<T> abs(const Vec3T<T>& a) {
+  return {a.x < 0 ? -a.x : a.x, a.y < 0 ? -a.y : a.y, a.z < 0 ? -a.z : a.z};
+}
 template <class T>
 constexpr Vec3T<T> min(const Vec3T<T>& a, const Vec3T<T>& b) {
   return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z};
@@ -69,12 +113,18 @@ constexpr Vec3T<T> max(const Vec3T<T>& a, const Vec3T<T>& b) {
   return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z};
 }
 template <class T>
-constexpr T max_component(const Vec3T<T>& a) { return a.x > a.y ? (a.x > a.z ? a.x : a.z) : (a.y > a.z ? a.y : a.z); }
+constexpr T max_component(const Vec3T<T>& a) {
+  return a.x > a.y ? (a.x > a.z ? a.x : a.z) : (a.y > a.z ? a.y : a.z);
+}
 /// Index (0, 1, 2) of the largest component.
 template <class T>
-constexpr int max_dimension(const Vec3T<T>& a) { return a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2); }
+constexpr int max_dimension(const Vec3T<T>& a) {
+  return a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+}
 template <class T>
-inline bool is_finite(const Vec3T<T>& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
+inline bool is_finite(const Vec3T<T>& a) {
+  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+}
 
 /// Two unit vectors (s, t) with (s, t, n) a right-handed orthonormal frame; n must be unit.
 /// Duff et al. 2017, "Building an Orthonormal Basis, Revisited".

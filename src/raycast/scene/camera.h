@@ -10,8 +10,8 @@ struct CameraDesc {
   Vec3 position{0, 0, 1};
   Vec3 look_at{0, 0, 0};
   Vec3 up{0, 1, 0};
-  double fov = 40;     // perspective: vertical field of view, degrees, in (0, 180)
-  double height = 2;   // orthographic: full view height in scene units
+  double fov = 40;    // perspective: vertical field of view, degrees, in (0, 180)
+  double height = 2;  // orthographic: full view height in scene units
 };
 
 struct ImageSettings {

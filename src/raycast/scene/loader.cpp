@@ -26,7 +26,8 @@ class Loader {
   Loader(SourceContext ctx, Scene& scene) : ctx_(std::move(ctx)), scene_(scene) {}
 
   void load(const YAML::Node& root) {
-    if (root.IsNull()) throw SceneError(ctx_.file, 0, 0, "the scene is empty (expected a mapping with `objects`)");
+    if (root.IsNull())
+      throw SceneError(ctx_.file, 0, 0, "the scene is empty (expected a mapping with `objects`)");
     Fields top(ctx_, root, "scene");
     scene_.materials.emplace_back();
     scene_.materials.back().name = "default";
@@ -38,7 +39,8 @@ class Loader {
     if (top.has("library")) read_library(top.required("library"));
     const YAML::Node objects = top.required("objects");
     top.finish();
-    if (!objects.IsSequence()) fail_at(ctx_, objects, "objects must be a list, got " + describe(objects));
+    if (!objects.IsSequence())
+      fail_at(ctx_, objects, "objects must be a list, got " + describe(objects));
     for (const YAML::Node& entry : objects) {
       read_object(entry, 0, scene_.entries, Placement{}, scene_.objects);
       ++scene_.entries;
@@ -78,22 +80,29 @@ class Loader {
     scene_.image.samples = f.integer("samples", scene_.image.samples, 1, 1 << 16);
     f.finish();
     if (static_cast<long long>(scene_.image.width) * scene_.image.height > kMaxImagePixels)
-      fail_at(ctx_, node, "image.width * image.height must be at most " +
-                              std::to_string(kMaxImagePixels) + " pixels, got " +
-                              std::to_string(scene_.image.width) + " x " +
-                              std::to_string(scene_.image.height));
+      fail_at(ctx_, node,
+              "image.width * image.height must be at most " + std::to_string(kMaxImagePixels) +
+                  " pixels, got " + std::to_string(scene_.image.width) + " x " +
+                  std::to_string(scene_.image.height));
   }
 
   void read_render(const YAML::Node& node) {
     Fields f(ctx_, node, "render");
     RenderSettings& r = scene_.render;
     const std::string integrator = f.string("integrator", "whitted");
-    if (integrator == "whitted") r.integrator = IntegratorType::kWhitted;
-    else if (integrator == "raycast") r.integrator = IntegratorType::kRaycast;
-    else if (integrator == "depth") r.integrator = IntegratorType::kDepth;
-    else if (integrator == "normal") r.integrator = IntegratorType::kNormal;
-    else if (integrator == "id") r.integrator = IntegratorType::kId;
-    else f.fail("integrator", "render.integrator must be whitted, raycast, depth, normal or id, got " + integrator);
+    if (integrator == "whitted")
+      r.integrator = IntegratorType::kWhitted;
+    else if (integrator == "raycast")
+      r.integrator = IntegratorType::kRaycast;
+    else if (integrator == "depth")
+      r.integrator = IntegratorType::kDepth;
+    else if (integrator == "normal")
+      r.integrator = IntegratorType::kNormal;
+    else if (integrator == "id")
+      r.integrator = IntegratorType::kId;
+    else
+      f.fail("integrator",
+             "render.integrator must be whitted, raycast, depth, normal or id, got " + integrator);
     r.max_depth = f.integer("max_depth", r.max_depth, 0, 1000);
     r.background = read_color(f, "background", r.background);
     r.ambient = read_color(f, "ambient", r.ambient);
@@ -118,7 +127,8 @@ class Loader {
     Fields f(ctx_, node, "material");
     Material m;
     m.name = name;
-    if (f.has("color") && f.has("texture")) f.fail("texture", "material has both color and texture");
+    if (f.has("color") && f.has("texture"))
+      f.fail("texture", "material has both color and texture");
     m.color = read_color(f, "color", m.color);
     if (f.has("texture")) {
       Fields t(ctx_, f.required("texture"), "texture");
@@ -157,7 +167,8 @@ class Loader {
     if (!node.IsMap()) fail_at(ctx_, node, "materials must be a mapping of names to materials");
     for (const auto& kv : node) {
       const std::string name = kv.first.as<std::string>();
-      if (named_materials_.count(name)) fail_at(ctx_, kv.first, "material '" + name + "' is defined twice");
+      if (named_materials_.count(name))
+        fail_at(ctx_, kv.first, "material '" + name + "' is defined twice");
       named_materials_[name] = static_cast<int>(scene_.materials.size());
       scene_.materials.push_back(read_material(kv.second, name));
     }
@@ -178,7 +189,8 @@ class Loader {
         if (type == "spot") {
           light.direction = normalize(f.direction("direction"));
           light.angle = f.number("angle", light.angle);
-          if (!(light.angle > 0 && light.angle < 180)) f.fail("angle", "light.angle must be in (0, 180)");
+          if (!(light.angle > 0 && light.angle < 180))
+            f.fail("angle", "light.angle must be in (0, 180)");
           light.falloff = f.non_negative("falloff", light.falloff);
         }
       } else if (type == "directional") {
@@ -208,7 +220,8 @@ class Loader {
   int read_material_ref(const YAML::Node& node) {
     if (node.IsScalar()) {
       const auto it = named_materials_.find(node.Scalar());
-      if (it == named_materials_.end()) fail_at(ctx_, node, "unknown material '" + node.Scalar() + "'");
+      if (it == named_materials_.end())
+        fail_at(ctx_, node, "unknown material '" + node.Scalar() + "'");
       return it->second;
     }
     scene_.materials.push_back(read_material(node, ""));
@@ -243,17 +256,22 @@ class Loader {
 
   // The one shape or compound key of an object mapping, and its node (for positions).
   std::pair<std::string, YAML::Node> object_key(const YAML::Node& node, int depth) {
-    if (depth > kMaxNesting) fail_at(ctx_, node, "objects are nested deeper than " + std::to_string(kMaxNesting));
-    if (!node.IsMap()) fail_at(ctx_, node, "an object must be a mapping with one shape key, got " + describe(node));
+    if (depth > kMaxNesting)
+      fail_at(ctx_, node, "objects are nested deeper than " + std::to_string(kMaxNesting));
+    if (!node.IsMap())
+      fail_at(ctx_, node, "an object must be a mapping with one shape key, got " + describe(node));
     std::string shape_key;
     YAML::Node key_node;
     for (const auto& kv : node) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "";
       if (key == "name" || key == "material" || key == "transform") continue;
       if (!shape_parsers().count(key) && !is_compound_key(key))
-        fail_at(ctx_, kv.first, "unknown key '" + describe(kv.first) + "' in object (expected a shape, " +
-                                    kCompoundKeys + " or " + kObjectKeys + ")");
-      if (!shape_key.empty()) fail_at(ctx_, kv.first, "an object has exactly one shape key; found " + shape_key + " and " + key);
+        fail_at(ctx_, kv.first,
+                "unknown key '" + describe(kv.first) + "' in object (expected a shape, " +
+                    kCompoundKeys + " or " + kObjectKeys + ")");
+      if (!shape_key.empty())
+        fail_at(ctx_, kv.first,
+                "an object has exactly one shape key; found " + shape_key + " and " + key);
       shape_key = key;
       key_node = kv.first;
     }
@@ -262,11 +280,13 @@ class Loader {
   }
 
   // One primitive shape, placed.
-  Object read_shape(const YAML::Node& node, const std::string& key, const Placement& here, int entry) {
+  Object read_shape(const YAML::Node& node, const std::string& key, const Placement& here,
+                    int entry) {
     // Library entries using each other twice at every level would grow exponentially: bound it.
     if (copying_ > 0 && ++expanded_ > kMaxExpandedObjects)
-      fail_at(ctx_, node, "library expansion makes more than " + std::to_string(kMaxExpandedObjects) +
-                              " objects (entries using each other repeatedly?)");
+      fail_at(ctx_, node,
+              "library expansion makes more than " + std::to_string(kMaxExpandedObjects) +
+                  " objects (entries using each other repeatedly?)");
     Object obj;
     obj.entry = entry;
     obj.material = here.material;
@@ -289,19 +309,22 @@ class Loader {
     if (cycle != expanding_.end()) {
       std::string path;
       for (auto k = cycle; k != expanding_.end(); ++k) path += *k + " -> ";
-      fail_at(ctx_, use, "library entry '" + use.Scalar() + "' uses itself (" + path + use.Scalar() + ")");
+      fail_at(ctx_, use,
+              "library entry '" + use.Scalar() + "' uses itself (" + path + use.Scalar() + ")");
     }
     return it->second;
   }
 
   // Reads one entry of `objects` (or a child of a group, or a library entry) and appends what it
   // makes to `out`: groups are flattened, each child keeping `entry`.
-  void read_object(const YAML::Node& node, int depth, int entry, const Placement& parent, std::vector<Object>& out) {
+  void read_object(const YAML::Node& node, int depth, int entry, const Placement& parent,
+                   std::vector<Object>& out) {
     const auto [key, key_node] = object_key(node, depth);
     const Placement here = place(node, parent);
     const YAML::Node body = node[key];
     if (key == "group") {
-      if (!body.IsSequence()) fail_at(ctx_, body, "group must be a list of objects, got " + describe(body));
+      if (!body.IsSequence())
+        fail_at(ctx_, body, "group must be a list of objects, got " + describe(body));
       for (const YAML::Node& child : body) read_object(child, depth + 1, entry, here, out);
     } else if (is_csg_key(key)) {
       CsgTree tree;
@@ -335,8 +358,8 @@ class Loader {
   }
 
   // Adds the operation `key` over the list `body` to the tree and returns its node code.
-  std::int32_t read_csg_operation(const YAML::Node& body, const std::string& key, int depth, CsgTree& tree,
-                                  const Placement& here) {
+  std::int32_t read_csg_operation(const YAML::Node& body, const std::string& key, int depth,
+                                  CsgTree& tree, const Placement& here) {
     if (!body.IsSequence() || body.size() == 0)
       fail_at(ctx_, body, key + " must be a non-empty list of solids, got " + describe(body));
     const std::size_t index = tree.nodes.size();
@@ -353,10 +376,12 @@ class Loader {
 
   // One operand of a CSG operation: a closed solid, a nested operation, a group (its union) or a
   // `use` (expanded in place). Transforms are relative to the CSG object.
-  std::int32_t read_csg_operand(const YAML::Node& node, int depth, CsgTree& tree, const Placement& parent) {
+  std::int32_t read_csg_operand(const YAML::Node& node, int depth, CsgTree& tree,
+                                const Placement& parent) {
     const auto [key, key_node] = object_key(node, depth);
     const Placement here = place(node, parent);
-    if (is_csg_key(key) || key == "group") return read_csg_operation(node[key], key, depth, tree, here);
+    if (is_csg_key(key) || key == "group")
+      return read_csg_operation(node[key], key, depth, tree, here);
     if (key == "use") {
       const YAML::Node& def = library_entry(node[key]);
       expanding_.push_back(node[key].Scalar());
@@ -367,7 +392,8 @@ class Loader {
       return code;
     }
     Object leaf = read_shape(node, key, here, -1);
-    if (!is_closed(leaf)) fail_at(ctx_, key_node, key + " cannot be a CSG operand: it is an open surface");
+    if (!is_closed(leaf))
+      fail_at(ctx_, key_node, key + " cannot be a CSG operand: it is an open surface");
     tree.leaves.push_back(std::move(leaf));
     return csg_leaf_code(tree.leaves.size() - 1);
   }
@@ -375,12 +401,14 @@ class Loader {
   // The top-level `library:` map: every entry is read (so its errors show even when unused) and
   // built once into a shared prototype.
   void read_library(const YAML::Node& node) {
-    if (!node.IsMap()) fail_at(ctx_, node, "library must be a mapping of names to objects, got " + describe(node));
+    if (!node.IsMap())
+      fail_at(ctx_, node, "library must be a mapping of names to objects, got " + describe(node));
     std::vector<std::string> order;  // file order, so that the first mistake is reported first
     for (const auto& kv : node) {
       if (!kv.first.IsScalar()) fail_at(ctx_, kv.first, "a library name must be text");
       const std::string name = kv.first.Scalar();
-      if (library_.count(name)) fail_at(ctx_, kv.first, "library entry '" + name + "' is defined twice");
+      if (library_.count(name))
+        fail_at(ctx_, kv.first, "library entry '" + name + "' is defined twice");
       library_[name] = kv.second;
       order.push_back(name);
     }
@@ -415,10 +443,11 @@ class Loader {
 // ([, {) count one level each; block collections one level per indentation step and per inline
 // `- ` item. Quoted scalars, block scalars (| and >) and comments are skipped.
 void check_nesting(const std::string& text, const std::string& name) {
-  const std::string too_deep = "the YAML is nested deeper than " + std::to_string(kMaxNesting) + " levels";
-  std::vector<std::size_t> indents;  // block indentation levels open at this line
-  int flow = 0;                      // open [ and { around the current character
-  char quote = 0;                    // the open quote character, or 0
+  const std::string too_deep =
+      "the YAML is nested deeper than " + std::to_string(kMaxNesting) + " levels";
+  std::vector<std::size_t> indents;               // block indentation levels open at this line
+  int flow = 0;                                   // open [ and { around the current character
+  char quote = 0;                                 // the open quote character, or 0
   std::size_t scalar_indent = std::string::npos;  // inside a block scalar: its parent's indent
   int line = 1;
   std::size_t i = 0;
@@ -454,22 +483,24 @@ void check_nesting(const std::string& text, const std::string& name) {
           throw SceneError(name, line, static_cast<int>(indent) + 1, too_deep);
       }
     }
-    char prev = '\n';  // previous non-blank character on this line ('\n' at its start)
+    char prev = '\n';     // previous non-blank character on this line ('\n' at its start)
     char last_token = 0;  // first character of the line's last token
     bool after_blank = true;
     for (; i < n && text[i] != '\n'; ++i) {
       const char c = text[i];
       if (quote) {
-        if (c == '\\' && quote == '"') ++i;
-        else if (c == quote) quote = 0;
+        if (c == '\\' && quote == '"')
+          ++i;
+        else if (c == quote)
+          quote = 0;
         continue;
       }
       if (c == '#' && after_blank) {
         while (i < n && text[i] != '\n') ++i;
         break;
       }
-      const bool token_start = flow > 0 || prev == '\n' ||
-                               (after_blank && (prev == ':' || prev == '-' || prev == '?'));
+      const bool token_start =
+          flow > 0 || prev == '\n' || (after_blank && (prev == ':' || prev == '-' || prev == '?'));
       if ((c == '"' || c == '\'') && token_start) {
         quote = c;
       } else if ((c == '[' || c == '{') && token_start) {
@@ -514,7 +545,8 @@ Scene load_scene_text(const std::string& text, const std::string& name, const st
 
 Scene load_scene_file(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw SceneError(path, 0, 0, "is a directory, not a scene file");
+  if (std::filesystem::is_directory(path, ec))
+    throw SceneError(path, 0, 0, "is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, 0, 0, "cannot open the scene file");
   std::stringstream ss;

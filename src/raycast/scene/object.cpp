@@ -49,8 +49,9 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit) {
     const auto& m = o.xf->matrix().m;
     Vec3 e = o.xf->point_error(p);
     for (int i = 0; i < 3; ++i)
-      e[i] += (1 + gamma(3)) * (std::abs(m[i][0]) * si.p_error.x + std::abs(m[i][1]) * si.p_error.y +
-                                std::abs(m[i][2]) * si.p_error.z);
+      e[i] +=
+          (1 + gamma(3)) * (std::abs(m[i][0]) * si.p_error.x + std::abs(m[i][1]) * si.p_error.y +
+                            std::abs(m[i][2]) * si.p_error.z);
     // A ray spawned from p goes back through the inverse transform, which rounds its origin
     // again (pbrt-v4 tracks this as the ray's origin error): widen the bound by that rounding,
     // carried to world space, so the offset origin stays outside after the round trip.
@@ -82,7 +83,8 @@ int material_of(const Object& o, const LocalHit& hit) {
 }
 
 const char* shape_name(const Object& o) {
-  return std::visit([](const auto& s) -> const char* { return std::decay_t<decltype(s)>::kName; }, o.shape);
+  return std::visit([](const auto& s) -> const char* { return std::decay_t<decltype(s)>::kName; },
+                    o.shape);
 }
 
 bool is_closed(const Object& o) {

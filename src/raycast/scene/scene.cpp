@@ -32,7 +32,8 @@ void Scene::build() {
   BvhBuildConfig config;
   config.max_leaf_size = 4;
   bvh_ = build_bvh(boxes, centres, config);
-  build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  build_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
@@ -60,8 +61,9 @@ bool Scene::occluded(const Ray& ray) const {
   if (!is_valid(ray)) return false;
   for (std::uint32_t index : unbounded_)
     if (raycast::occluded(objects[index], ray)) return true;
-  return traverse_any(bvh_, ray.o, ray.d, ray.tmin, ray.tmax,
-                      [&](std::uint32_t prim) { return raycast::occluded(objects[bounded_[prim]], ray); });
+  return traverse_any(bvh_, ray.o, ray.d, ray.tmin, ray.tmax, [&](std::uint32_t prim) {
+    return raycast::occluded(objects[bounded_[prim]], ray);
+  });
 }
 
 void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
@@ -83,7 +85,8 @@ void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
     }
   };
   for (std::uint32_t index : unbounded_) collect(index);
-  traverse_all(bvh_, ray.o, ray.d, ray.tmin, ray.tmax, [&](std::uint32_t prim) { collect(bounded_[prim]); });
+  traverse_all(bvh_, ray.o, ray.d, ray.tmin, ray.tmax,
+               [&](std::uint32_t prim) { collect(bounded_[prim]); });
   std::stable_sort(out.begin(), out.end(), [](const Crossing& a, const Crossing& b) {
     return a.t < b.t || (a.t == b.t && a.object < b.object);
   });

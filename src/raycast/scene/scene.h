@@ -41,7 +41,9 @@ struct Scene {
   /// Builds the top-level BVH; call after the objects are final and before querying.
   void build();
   double build_ms() const { return build_ms_; }
-  std::size_t accel_bytes() const { return bvh_.memory_bytes() + unbounded_.capacity() * sizeof(std::uint32_t); }
+  std::size_t accel_bytes() const {
+    return bvh_.memory_bytes() + unbounded_.capacity() * sizeof(std::uint32_t);
+  }
   const Aabb& bounds() const { return bounds_; }
   /// The bounds of the bounded objects only (used to frame a default camera).
   const Aabb& finite_bounds() const { return finite_bounds_; }
@@ -59,9 +61,9 @@ struct Scene {
   const Material& material_of(const SceneHit& hit) const;
 
  private:
-  Bvh bvh_;                              // over the bounded objects
-  std::vector<std::uint32_t> bounded_;   // bvh prim -> object index
-  std::vector<std::uint32_t> unbounded_; // objects tested on every ray (planes, ...)
+  Bvh bvh_;                               // over the bounded objects
+  std::vector<std::uint32_t> bounded_;    // bvh prim -> object index
+  std::vector<std::uint32_t> unbounded_;  // objects tested on every ray (planes, ...)
   Aabb bounds_, finite_bounds_;
   double build_ms_ = 0;
 };

@@ -10,7 +10,10 @@ class SceneError : public std::runtime_error {
  public:
   SceneError(std::string file, int line, int column, const std::string& message)
       : std::runtime_error(format(file, line, column, message)),
-        file_(std::move(file)), line_(line), column_(column), message_(message) {}
+        file_(std::move(file)),
+        line_(line),
+        column_(column),
+        message_(message) {}
 
   const std::string& file() const { return file_; }
   int line() const { return line_; }      // 1-based; 0 when unknown

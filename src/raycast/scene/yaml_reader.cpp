@@ -72,8 +72,10 @@ double read_number(const SourceContext& ctx, const YAML::Node& node, const std::
   return v;
 }
 
-std::vector<double> read_numbers(const SourceContext& ctx, const YAML::Node& node, const std::string& what) {
-  if (!node.IsSequence()) fail_at(ctx, node, what + " must be a list of numbers, got " + describe(node));
+std::vector<double> read_numbers(const SourceContext& ctx, const YAML::Node& node,
+                                 const std::string& what) {
+  if (!node.IsSequence())
+    fail_at(ctx, node, what + " must be a list of numbers, got " + describe(node));
   std::vector<double> v;
   v.reserve(node.size());
   for (std::size_t i = 0; i < node.size(); ++i)
@@ -88,8 +90,10 @@ Vec3 read_vec3(const SourceContext& ctx, const YAML::Node& node, const std::stri
   return {v[0], v[1], v[2]};
 }
 
-std::vector<Vec3> read_points(const SourceContext& ctx, const YAML::Node& node, const std::string& what) {
-  if (!node.IsSequence()) fail_at(ctx, node, what + " must be a list of [x, y, z] points, got " + describe(node));
+std::vector<Vec3> read_points(const SourceContext& ctx, const YAML::Node& node,
+                              const std::string& what) {
+  if (!node.IsSequence())
+    fail_at(ctx, node, what + " must be a list of [x, y, z] points, got " + describe(node));
   std::vector<Vec3> pts;
   pts.reserve(node.size());
   for (std::size_t i = 0; i < node.size(); ++i)
@@ -126,7 +130,9 @@ YAML::Node Fields::optional(const std::string& key) {
   return n;
 }
 
-double Fields::number(const std::string& key) { return read_number(ctx_, required(key), name(key)); }
+double Fields::number(const std::string& key) {
+  return read_number(ctx_, required(key), name(key));
+}
 double Fields::number(const std::string& key, double fallback) {
   const YAML::Node n = optional(key);
   return n.IsDefined() ? read_number(ctx_, n, name(key)) : fallback;
@@ -154,8 +160,9 @@ int Fields::integer(const std::string& key, int fallback, int lo, int hi) {
   const YAML::Node n = required(key);
   const double v = read_number(ctx_, n, name(key));
   if (v != std::floor(v) || v < lo || v > hi)
-    fail_at(ctx_, n, name(key) + " must be a whole number in [" + std::to_string(lo) + ", " +
-                         std::to_string(hi) + "], got " + n.Scalar());
+    fail_at(ctx_, n,
+            name(key) + " must be a whole number in [" + std::to_string(lo) + ", " +
+                std::to_string(hi) + "], got " + n.Scalar());
   return static_cast<int>(v);
 }
 
@@ -211,7 +218,8 @@ Transform read_transform(const SourceContext& ctx, const YAML::Node& node) {
     list.push_back(node);
     return read_transform(ctx, list);
   }
-  if (!node.IsSequence()) fail_at(ctx, node, "transform must be a list of steps, got " + describe(node));
+  if (!node.IsSequence())
+    fail_at(ctx, node, "transform must be a list of steps, got " + describe(node));
   Transform xf;
   for (const YAML::Node& step : node) {
     if (!step.IsMap() || step.size() != 1)
@@ -249,8 +257,9 @@ Transform read_transform(const SourceContext& ctx, const YAML::Node& node) {
       if (!made) fail_at(ctx, v, "matrix must be invertible with last row [0, 0, 0, 1]");
       t = *made;
     } else {
-      fail_at(ctx, step.begin()->first,
-              "unknown transform step '" + kind + "' (expected translate, scale, rotate or matrix)");
+      fail_at(
+          ctx, step.begin()->first,
+          "unknown transform step '" + kind + "' (expected translate, scale, rotate or matrix)");
     }
     xf = t * xf;  // applied first to last
   }

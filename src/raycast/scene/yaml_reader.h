@@ -20,8 +20,10 @@ struct SourceContext {
 };
 
 /// Throws SceneError at node's position (1-based line and column).
-[[noreturn]] void fail_at(const SourceContext& ctx, const YAML::Node& node, const std::string& message);
-[[noreturn]] void fail_at(const SourceContext& ctx, const YAML::Mark& mark, const std::string& message);
+[[noreturn]] void fail_at(const SourceContext& ctx, const YAML::Node& node,
+                          const std::string& message);
+[[noreturn]] void fail_at(const SourceContext& ctx, const YAML::Mark& mark,
+                          const std::string& message);
 
 /// A short rendering of a node's value for messages ("-1", "[1, 2]", "a mapping").
 std::string describe(const YAML::Node& node);
@@ -37,7 +39,7 @@ class Fields {
   YAML::Node required(const std::string& key);
   YAML::Node optional(const std::string& key);  // a null node when absent
 
-  double number(const std::string& key);                  // required
+  double number(const std::string& key);                   // required
   double number(const std::string& key, double fallback);  // optional
   double positive(const std::string& key);                 // required, > 0
   double positive(const std::string& key, double fallback);
@@ -71,9 +73,11 @@ double read_number(const SourceContext& ctx, const YAML::Node& node, const std::
 /// A sequence of exactly 3 finite numbers.
 Vec3 read_vec3(const SourceContext& ctx, const YAML::Node& node, const std::string& what);
 /// A sequence of numbers (any length, each finite).
-std::vector<double> read_numbers(const SourceContext& ctx, const YAML::Node& node, const std::string& what);
+std::vector<double> read_numbers(const SourceContext& ctx, const YAML::Node& node,
+                                 const std::string& what);
 /// A sequence of [x, y, z] points.
-std::vector<Vec3> read_points(const SourceContext& ctx, const YAML::Node& node, const std::string& what);
+std::vector<Vec3> read_points(const SourceContext& ctx, const YAML::Node& node,
+                              const std::string& what);
 
 /// A `transform:` list (translate, scale, rotate, matrix), composed first to last.
 Transform read_transform(const SourceContext& ctx, const YAML::Node& node);
