@@ -1,9 +1,9 @@
 // End-to-end tests through the raycast binary (RAYCAST_BINARY), on scenes and rays written to a
 // temporary folder.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <unistd.h>
+#include "../support/cli_runner.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,53 +18,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code = -1;
-  std::string out, err;
-};
-
-fs::path temp_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("raycast_cli_test_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
-
-// Removes this process's temporary folder once every test has run.
-class RemoveTempDir : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(temp_dir(), ec);
-  }
-};
-const auto* const kRemoveTempDir = ::testing::AddGlobalTestEnvironment(new RemoveTempDir);
-
-std::string write(const std::string& name, const std::string& content) {
-  const fs::path p = temp_dir() / name;
-  std::ofstream(p, std::ios::binary) << content;
-  return p.string();
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// Runs the binary with `args` (already shell-quoted where needed).
-Outcome run(const std::string& args) {
-  const fs::path dir = temp_dir();
-  const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
-  const std::string cmd =
-      std::string("'") + RAYCAST_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
-  const int status = std::system(cmd.c_str());
-  Outcome r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read(out);
-  r.err = read(err);
-  return r;
-}
+using raycast::test::Outcome;
+using raycast::test::read;
+using raycast::test::run;
+using raycast::test::write;
 
 std::vector<std::string> lines(const std::string& s) {
   std::vector<std::string> v;

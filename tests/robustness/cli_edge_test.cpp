@@ -2,8 +2,8 @@
 // and malformed ray files, oversized images, zero counts, bad meshes. Each must exit 0 or 2 with a
 // clear message; never crash (a signal) or hang.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
+
+#include "../support/cli_runner.h"
 
 #include <chrono>
 #include <cstdlib>
@@ -16,55 +16,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code = -1;  // -1: killed by a signal
-  std::string out, err;
-  double seconds = 0;
-};
-
-fs::path temp_dir() {
-  const fs::path dir =
-      fs::temp_directory_path() / ("raycast_robust_cli_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
-
-class RemoveTempDir : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(temp_dir(), ec);
-  }
-};
-const auto* const kRemoveTempDir = ::testing::AddGlobalTestEnvironment(new RemoveTempDir);
-
-std::string write(const std::string& name, const std::string& content) {
-  const fs::path p = temp_dir() / name;
-  std::ofstream(p, std::ios::binary) << content;
-  return p.string();
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-Outcome run(const std::string& args) {
-  const fs::path dir = temp_dir();
-  const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
-  const std::string cmd =
-      std::string("'") + RAYCAST_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
-  const auto start = std::chrono::steady_clock::now();
-  const int status = std::system(cmd.c_str());
-  Outcome r;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read(out);
-  r.err = read(err);
-  return r;
-}
+using raycast::test::Outcome;
+using raycast::test::read;
+using raycast::test::run;
+using raycast::test::temp_dir;
+using raycast::test::write;
 
 bool contains(const std::string& s, const std::string& part) {
   return s.find(part) != std::string::npos;
