@@ -62,6 +62,34 @@ TEST(Cli, NoCommandOrUnknownOption_ExitsTwo) {
   EXPECT_EQ(run("cast --any --all '" + scene + "' </dev/null").code, 2);
 }
 
+TEST(Cli, Version_PrintsVersionAndBuild) {
+  const Outcome r = run("--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out.rfind("raycast 0.", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("build"), std::string::npos) << r.out;
+}
+
+TEST(Cli, UnknownCommand_NamedWithTheNearestOne) {
+  const Outcome r = run("rendr");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown command 'rendr' (did you mean 'render'?)"), std::string::npos)
+      << r.err;
+  const Outcome far = run("frobnicate");
+  EXPECT_EQ(far.code, 2);
+  EXPECT_NE(far.err.find("unknown command 'frobnicate'; run"), std::string::npos) << far.err;
+}
+
+TEST(Cli, UnknownOption_NamedWithTheNearestOne) {
+  const Outcome r = run("render --widht 10");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("raycast render: unknown option '--widht' (did you mean '--width'?)"),
+            std::string::npos)
+      << r.err;
+  const Outcome extra = run("info a.yaml b.yaml");
+  EXPECT_EQ(extra.code, 2);
+  EXPECT_NE(extra.err.find("unexpected argument 'b.yaml'"), std::string::npos) << extra.err;
+}
+
 TEST(Cli, Cast_WritesOneRowPerRayInInputOrder) {
   const std::string scene = write("box.yaml", kBoxScene);
   const std::string rays = write("rays.txt",

@@ -33,11 +33,30 @@ std::string temp_file(const std::string& name, const std::string& content) {
 
 TEST(Loader, UnknownKey_NamedAtItsPosition) {
   expect_error("objects:\n  - sphere: {radius: 1, radus: 2}\n", 2, 25,
-               "unknown key 'radus' in sphere");
+               "unknown key 'radus' in sphere (did you mean 'radius'?)");
   expect_error("objects:\n  - cube: {radius: 1}\n", 2, 5,
                "unknown key 'cube' in object (expected a shape, group, union, intersection, "
                "difference, use or name, material, transform)");
-  expect_error("objects: []\ncamra: {}\n", 2, 1, "unknown key 'camra' in scene");
+  expect_error("objects: []\ncamra: {}\n", 2, 1,
+               "unknown key 'camra' in scene (did you mean 'camera'?)");
+  expect_error("objects: []\nzzzzzz: {}\n", 2, 1, "unknown key 'zzzzzz' in scene");
+}
+
+TEST(Loader, MisspeltRequiredKey_NamedWithTheKeyItResembles) {
+  expect_error(
+      "objectz:\n  - sphere: {radius: 1}\n", 1, 1,
+      "unknown key 'objectz' in scene (did you mean 'objects'?); scene.objects is required");
+  expect_error("objects:\n  - sphere: {radus: 1}\n", 2, 14,
+               "unknown key 'radus' in sphere (did you mean 'radius'?); sphere.radius is required");
+}
+
+TEST(Loader, DuplicateKey_IsAnErrorNamingBothPositions) {
+  expect_error("objects:\n  - sphere: {radius: 1, radius: 2}\n", 2, 25,
+               "key 'radius' is given twice in sphere (first at 2:14)");
+  expect_error("objects: []\nobjects:\n  - sphere: {radius: 1}\n", 2, 1,
+               "key 'objects' is given twice in scene (first at 1:1)");
+  expect_error("camera: {fov: 30, fov: 40}\nobjects: []\n", 1, 19,
+               "key 'fov' is given twice in camera (first at 1:10)");
 }
 
 TEST(Loader, WrongType_SaysWhatWasExpected) {
@@ -113,8 +132,17 @@ TEST(Loader, BasicShapeValues_AreValidatedWithPositions) {
                57, "parallelogram.v must be a non-zero vector");
 }
 
+TEST(Loader, SyntaxError_ReportsWhereTheUnclosedCollectionOpened) {
+  expect_error("objects:\n  - sphere: {radius: 1\n  - plane: {normal: [0, 1, 0]}\n", 2, 13,
+               "this '{' is never closed (end of map flow not found at 3:10)");
+  expect_error("objects: [\n  {sphere: {radius: 1}}\n", 1, 10,
+               "this '[' is never closed (end of sequence flow not found at 3:1)");
+  expect_error("objects: []\ncamera: {fov: 30}}\n", 2, 18, "illegal flow end");
+}
+
 TEST(Loader, SyntaxError_ReportsYamlPosition) {
-  expect_error("objects:\n  - sphere: {radius: 1\n", 3, 1, "end of map flow not found");
+  expect_error("objects:\n  - sphere: {radius: 1\n", 2, 13,
+               "this '{' is never closed (end of map flow not found at 3:1)");
 }
 
 TEST(Loader, EmptyFile_IsAnErrorWithoutPosition) {

@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sstream>
+
+#include "scene/did_you_mean.h"
 
 namespace raycast {
 
@@ -108,9 +111,24 @@ Fields::Fields(const SourceContext& ctx, const YAML::Node& map, std::string what
     return;
   }
   if (!map.IsMap()) fail_at(ctx, map, what_ + " must be a mapping, got " + describe(map));
+  // yaml-cpp keeps both entries of a repeated key and answers lookups with the first, so the
+  // user's second value would be lost without a word.
+  std::map<std::string, YAML::Mark> seen;
+  for (const auto& kv : map_) {
+    if (!kv.first.IsScalar()) continue;
+    const auto [it, fresh] = seen.emplace(kv.first.Scalar(), kv.first.Mark());
+    if (!fresh)
+      fail_at(ctx, kv.first,
+              "key '" + kv.first.Scalar() + "' is given twice in " + what_ + " (first at " +
+                  std::to_string(it->second.line + 1) + ":" +
+                  std::to_string(it->second.column + 1) + ")");
+  }
 }
 
-bool Fields::has(const std::string& key) const { return map_[key].IsDefined(); }
+bool Fields::has(const std::string& key) const {
+  asked_.insert(key);
+  return map_[key].IsDefined();
+}
 
 void Fields::fail(const std::string& key, const std::string& message) const {
   const YAML::Node n = map_[key];
@@ -118,13 +136,26 @@ void Fields::fail(const std::string& key, const std::string& message) const {
 }
 
 YAML::Node Fields::required(const std::string& key) {
+  asked_.insert(key);
   const YAML::Node n = map_[key];
-  if (!n.IsDefined()) fail_at(ctx_, map_, name(key) + " is required");
+  if (!n.IsDefined()) {
+    // A misspelling of the missing key is the likelier mistake: name it.
+    for (const auto& kv : map_) {
+      if (!kv.first.IsScalar() || read_.count(kv.first.Scalar()) || asked_.count(kv.first.Scalar()))
+        continue;
+      if (nearest_name(kv.first.Scalar(), {key}) == key)
+        fail_at(ctx_, kv.first,
+                "unknown key '" + kv.first.Scalar() + "' in " + what_ + " (did you mean '" + key +
+                    "'?); " + name(key) + " is required");
+    }
+    fail_at(ctx_, map_, name(key) + " is required");
+  }
   read_.insert(key);
   return n;
 }
 
 YAML::Node Fields::optional(const std::string& key) {
+  asked_.insert(key);
   const YAML::Node n = map_[key];
   if (n.IsDefined()) read_.insert(key);
   return n;
@@ -206,8 +237,10 @@ void Fields::finish() const {
   for (const auto& kv : map_) {
     const YAML::Node& k = kv.first;
     const std::string key = k.IsScalar() ? k.Scalar() : "";
-    if (!k.IsScalar() || !read_.count(key))
-      fail_at(ctx_, k, "unknown key '" + describe(k) + "' in " + what_);
+    if (!k.IsScalar() || !read_.count(key)) {
+      const std::vector<std::string> valid(asked_.begin(), asked_.end());
+      fail_at(ctx_, k, "unknown key '" + describe(k) + "' in " + what_ + did_you_mean(key, valid));
+    }
   }
 }
 

@@ -28,8 +28,9 @@ struct SourceContext {
 /// A short rendering of a node's value for messages ("-1", "[1, 2]", "a mapping").
 std::string describe(const YAML::Node& node);
 
-/// Reads a mapping's fields by name and, on finish(), rejects any key that was not read.
-/// `what` prefixes messages: "sphere" gives "sphere.radius must be > 0, got -1".
+/// Reads a mapping's fields by name and, on finish(), rejects any key that was not read, naming
+/// the nearest key that was asked for ("did you mean"). A key given twice is an error naming both
+/// positions. `what` prefixes messages: "sphere" gives "sphere.radius must be > 0, got -1".
 class Fields {
  public:
   Fields(const SourceContext& ctx, const YAML::Node& map, std::string what);
@@ -66,6 +67,7 @@ class Fields {
   YAML::Node map_;
   std::string what_;
   std::set<std::string> read_;
+  mutable std::set<std::string> asked_;  // every key looked up, present or not: the valid keys
 };
 
 /// A finite number; `what` names it in the error.
