@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config git
   libyaml-cpp-dev libcli11-dev libtbb-dev libpng-dev libopenexr-dev libassimp-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libembree-dev povray)
+  libgtest-dev libgmock-dev libbenchmark-dev libembree-dev povray
+  clang-14 libclang-rt-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do

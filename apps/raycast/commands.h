@@ -13,5 +13,6 @@ Action add_cast_command(CLI::App& app);
 Action add_info_command(CLI::App& app);
 Action add_render_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
+Action add_validate_command(CLI::App& app);
 
 }  // namespace raycast::cli

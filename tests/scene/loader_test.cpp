@@ -104,6 +104,24 @@ TEST(Loader, MissingField_IsRequired) {
   expect_error("camera: {}\n", 1, 1, "scene.objects is required");
 }
 
+TEST(Loader, MissingOrUnsupportedTexture_IsAnErrorAtTheFileField) {
+  const std::string text =
+      "materials:\n  m: {texture: {image: {file: %s}}}\nobjects:\n  - sphere: {radius: 1}\n";
+  char missing[256], exr[256];
+  std::snprintf(missing, sizeof missing, text.c_str(), "no_such_texture.png");
+  std::snprintf(exr, sizeof exr, text.c_str(), "t.exr");
+  for (const char* scene : {missing, exr}) {
+    try {
+      load_scene_text(scene, "s.yaml", "/nonexistent-dir");
+      ADD_FAILURE() << "no error for " << scene;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.line(), 2) << e.what();
+      EXPECT_EQ(e.column(), 31) << e.what();
+      EXPECT_EQ(e.message().rfind("texture image: /nonexistent-dir/", 0), 0u) << e.what();
+    }
+  }
+}
+
 TEST(Loader, UnknownMaterial_IsNamed) {
   expect_error("objects:\n  - sphere: {radius: 1}\n    material: glas\n", 3, 15,
                "unknown material 'glas'");

@@ -98,4 +98,18 @@ void save_image(const Image& image, const std::string& path) {
   }
 }
 
+std::shared_ptr<const ImageTexture> load_image_texture(const std::string& path) {
+  auto texture = std::make_shared<ImageTexture>();
+  const std::string ext = std::filesystem::path(path).extension().string();
+  std::string lower;
+  for (const char c : ext) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == ".png")
+    texture->image = load_png(path);
+  else if (lower == ".pfm")
+    texture->image = load_pfm(path);
+  else
+    throw ImageError(path + ": image textures must be .png or .pfm, got '" + ext + "'");
+  return texture;
+}
+
 }  // namespace raycast

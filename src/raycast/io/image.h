@@ -2,6 +2,7 @@
 // Images in linear light: float RGB, row-major from the top-left pixel, and the files they go to.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -68,6 +69,15 @@ Image load_pfm(const std::string& path);
 void save_exr(const Image& image, const std::string& path);
 /// Whether this build can write OpenEXR files.
 bool have_exr();
+
+/// An image texture in linear RGB (PNG files are decoded from sRGB).
+struct ImageTexture {
+  Image image;
+};
+
+/// Loads an image texture from a .png or .pfm file; throws ImageError (missing, unreadable,
+/// malformed, or another format).
+std::shared_ptr<const ImageTexture> load_image_texture(const std::string& path);
 
 /// The formats save_image knows, by lower-case extension.
 enum class ImageFormat { kPng, kPfm, kExr };

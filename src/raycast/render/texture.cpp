@@ -6,21 +6,6 @@
 
 namespace raycast {
 
-std::shared_ptr<const ImageTexture> load_image_texture(const std::string& path) {
-  auto texture = std::make_shared<ImageTexture>();
-  switch (image_format_for(path)) {
-    case ImageFormat::kPng:
-      texture->image = load_png(path);
-      break;
-    case ImageFormat::kPfm:
-      texture->image = load_pfm(path);
-      break;
-    case ImageFormat::kExr:
-      throw ImageError(path + ": image textures must be .png or .pfm");
-  }
-  return texture;
-}
-
 Color lookup(const ImageTexture& texture, double u, double v) {
   const Image& im = texture.image;
   if (im.width <= 0 || im.height <= 0) return {0, 0, 0};

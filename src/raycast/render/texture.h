@@ -9,14 +9,6 @@
 
 namespace raycast {
 
-/// An image texture in linear RGB (PNG files are decoded from sRGB).
-struct ImageTexture {
-  Image image;
-};
-
-/// Loads an image texture from a .png or .pfm file; throws ImageError.
-std::shared_ptr<const ImageTexture> load_image_texture(const std::string& path);
-
 /// The texture colour at (u, v): u to the right, v up (v = 0 is the image's bottom row), repeated
 /// outside [0, 1), bilinear between texel centres.
 Color lookup(const ImageTexture& texture, double u, double v);

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "io/image.h"
 #include "scene/csg_tree.h"
 #include "scene/prototype.h"
 #include "scene/shape_parsers.h"
@@ -32,7 +33,10 @@ class Loader {
     Fields top(ctx_, root, "scene");
     scene_.materials.emplace_back();
     scene_.materials.back().name = "default";
-    if (top.has("camera")) scene_.camera = read_camera(top.required("camera"));
+    if (top.has("camera")) {
+      scene_.camera = read_camera(top.required("camera"));
+      scene_.marks.camera = mark_of(top.required("camera"));
+    }
     if (top.has("image")) read_image(top.required("image"));
     if (top.has("render")) read_render(top.required("render"));
     if (top.has("materials")) read_materials(top.required("materials"));
@@ -43,12 +47,17 @@ class Loader {
     if (!objects.IsSequence())
       fail_at(ctx_, objects, "objects must be a list, got " + describe(objects));
     for (const YAML::Node& entry : objects) {
+      scene_.marks.entries.push_back(mark_of(entry));
       read_object(entry, 0, scene_.entries, Placement{}, scene_.objects);
       ++scene_.entries;
     }
   }
 
  private:
+  static SourceMark mark_of(const YAML::Node& node) {
+    return {node.Mark().line + 1, node.Mark().column + 1};
+  }
+
   CameraDesc read_camera(const YAML::Node& node) {
     Fields f(ctx_, node, "camera");
     CameraDesc c;
@@ -146,6 +155,12 @@ class Loader {
       } else if (t.has("image")) {
         Fields i(ctx_, t.required("image"), "image");
         m.image_file = resolve(i.string("file"));
+        // Read now, so that a missing or bad file is an error at its position in every command.
+        try {
+          m.image = load_image_texture(m.image_file);
+        } catch (const ImageError& e) {
+          fail_at(ctx_, i.required("file"), std::string("texture image: ") + e.what());
+        }
         i.finish();
       } else {
         fail_at(ctx_, t.node(), "texture must be checker or image");
@@ -208,6 +223,7 @@ class Loader {
       }
       f.finish();
       scene_.lights.push_back(light);
+      scene_.marks.lights.push_back(mark_of(l));
     }
   }
 

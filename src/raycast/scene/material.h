@@ -15,7 +15,7 @@ struct CheckerTexture {
   double scale = 1;  // cell size in object-space units, > 0
 };
 
-struct ImageTexture;  // defined in render/ (loaded on demand), through (u, v)
+struct ImageTexture;  // io/image.h: loaded with the scene, looked up through (u, v)
 
 struct Material {
   std::string name;

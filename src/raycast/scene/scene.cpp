@@ -73,9 +73,13 @@ void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
   auto collect = [&](std::uint32_t index) {
     spans.clear();
     raycast::spans(objects[index], ray, spans);
+    // An open surface's crossing is a zero-length span reported once; a closed solid's tangent
+    // touch is a zero-length span too, but its entry and exit are both reported, so that the
+    // crossings of a solid always alternate in / out.
+    const bool open = !is_closed(objects[index]);
     for (const Span& s : spans) {
-      const bool point = s.in.t == s.out.t && s.in.part == s.out.part && s.in.prim == s.out.prim &&
-                         s.in.leaf == s.out.leaf;
+      const bool point = open && s.in.t == s.out.t && s.in.part == s.out.part &&
+                         s.in.prim == s.out.prim && s.in.leaf == s.out.leaf;
       for (const LocalHit* end : {&s.in, &s.out}) {
         if (end->part == kNoSurface) continue;
         if (end->t >= ray.tmin && end->t <= ray.tmax)

@@ -11,6 +11,7 @@
 #include "scene/light.h"
 #include "scene/material.h"
 #include "scene/object.h"
+#include "scene/source_marks.h"
 
 namespace raycast {
 
@@ -37,6 +38,7 @@ struct Scene {
   RenderSettings render;
   std::string source;  // file the scene came from ("<demo>" for the built-in one)
   int entries = 0;     // number of top-level `objects` entries
+  SourceMarks marks;   // where the camera, lights and entries were written (loaded scenes)
 
   /// Builds the top-level BVH; call after the objects are final and before querying.
   void build();
