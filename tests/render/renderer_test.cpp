@@ -128,18 +128,16 @@ TEST(Render, IdColours_AreStableAndDistinct) {
   EXPECT_EQ(seen.size(), 100u);
 }
 
-TEST(Render, MissingImageTexture_IsASceneError) {
-  const Scene scene = load_scene_text(R"(
+TEST(Render, MissingImageTexture_IsASceneErrorAtLoad_NotAtRender) {
+  // Every file a scene names is read when it loads (so `info` and `cast` see the error too).
+  EXPECT_THROW(load_scene_text(R"(
 materials:
   t: {texture: {image: {file: no_such_texture.png}}}
 objects:
   - sphere: {radius: 1}
     material: t
-)");
-  RenderOptions options;
-  options.width = options.height = 4;
-  options.progress = false;
-  EXPECT_THROW(render(scene, options), SceneError);
+)"),
+               SceneError);
 }
 
 }  // namespace
