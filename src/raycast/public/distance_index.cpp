@@ -1,5 +1,6 @@
 #include "public/distance_index.h"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -15,6 +16,13 @@ namespace {
 // uniform scale. Rotations built from degrees are orthonormal only to rounding: columns may
 // differ from orthogonal, equal-length ones by a few ulps of the matrix entries.
 constexpr double kSimilarityTolerance = 64 * std::numeric_limits<double>::epsilon();
+
+// Operations on one coordinate's path through the closest-point computations (transforms in and
+// out, the triangle's dot products and barycentric combination).
+constexpr int kClosestPointOps = 32;
+// The event resolution of mesh spans in float ulps of the coordinates (mesh/mesh.cpp `tol`),
+// doubled to cover the origin's own float rounding.
+constexpr double kMeshEventUlps = 16;
 
 bool is_similarity(const raycast::Transform& xf) {
   const auto& m = xf.matrix().m;
@@ -91,9 +99,35 @@ DistanceIndex::Nearest DistanceIndex::nearest(const raycast::Vec3& p) const {
 }
 
 bool DistanceIndex::inside(const raycast::Vec3& p) const {
-  for (const Entry& e : entries_)
-    if (e.closed && e.box.contains(p) && raycast::contains(*e.object, p)) return true;
+  for (const Entry& e : entries_) {
+    if (!e.closed || !e.box.contains(p)) continue;
+    if (raycast::contains(*e.object, p) || on_surface(e, p)) return true;
+  }
   return false;
+}
+
+bool DistanceIndex::on_surface(const Entry& e, const raycast::Vec3& p) const {
+  // The solid is closed: its surface belongs to it. A point counts as on the surface when its
+  // computed distance is within the rounding error bound of the closest-point computation (a few
+  // dozen operations on coordinates of magnitude `scale`, Higham's gamma).
+  double scale = 0;
+  for (int a = 0; a < 3; ++a)
+    scale = std::max({scale, std::abs(p[a]), std::abs(e.box.lo[a]), std::abs(e.box.hi[a])});
+  const double bound = raycast::gamma(kClosestPointOps) * scale;
+  if (e.mesh) {
+    // Mesh spans merge crossings closer than 8 float ulps of the mesh's coordinates into one
+    // event (mesh/mesh.cpp): a point that near the surface has no parity, it is on the surface.
+    const double resolution = kMeshEventUlps * std::numeric_limits<float>::epsilon() * scale;
+    raycast::MeshDistance::Result r;
+    r.distance2 = resolution * resolution;
+    return e.mesh->closest(p, r) || r.distance2 == 0;
+  }
+  const raycast::Object& o = *e.object;
+  if (!std::isfinite(scale) || (o.xf && !is_similarity(*o.xf))) return false;
+  raycast::Vec3 q;
+  if (!shape_point(o.shape, o.xf ? o.xf->inverse_point(p) : p, q)) return false;
+  if (o.xf) q = o.xf->point(q);
+  return raycast::length(q - p) <= bound;
 }
 
 const DistanceIndex& Scene::Impl::distance_index() const {

@@ -35,6 +35,7 @@ class DistanceIndex {
     bool closed;
     std::unique_ptr<raycast::MeshDistance> mesh;  // meshes, placed in world space
   };
+  bool on_surface(const Entry& e, const raycast::Vec3& p) const;
   std::vector<Entry> entries_;
   std::string unsupported_;
 };
