@@ -2,6 +2,7 @@
 // for the batch queries. Every batch releases the GIL and runs on all cores.
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <filesystem>
 #include <limits>
 
@@ -275,6 +276,23 @@ PYBIND11_MODULE(raycast, m) {
     }
   });
 
+  m.def(
+      "_time_intersect",
+      [](const Scene& scene, const py::handle& rays) {
+        // The C++ batch path alone, on the caller's rays and preallocated outputs, for
+        // python/bench_python.py's overhead figure.
+        RayView v = ray_view(rays);
+        std::vector<double> t(v.rays.count), uv(2 * v.rays.count), n(3 * v.rays.count),
+            p(3 * v.rays.count);
+        std::vector<ObjectId> o(v.rays.count);
+        std::vector<std::int32_t> prim(v.rays.count);
+        py::gil_scoped_release release;
+        const auto start = std::chrono::steady_clock::now();
+        scene.intersect(v.rays, HitColumns{t.data(), o.data(), prim.data(), p.data(), n.data(),
+                                           uv.data()});
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      },
+      py::arg("scene"), py::arg("rays"));
   m.def("create_rays_pinhole", &create_rays_pinhole, py::arg("fov_deg"), py::arg("center"),
         py::arg("eye"), py::arg("up"), py::arg("width_px"), py::arg("height_px"),
         "Rays (height, width, 6) float32 of a pinhole camera at eye looking at center; "
