@@ -42,13 +42,19 @@ MeshDistance::MeshDistance(const Mesh& mesh, const std::optional<Transform>& xf)
 bool MeshDistance::closest(const Vec3& p, Result& best) const {
   if (bvh_.empty()) return false;
   bool improved = false;
-  // Depth-first, the nearer child first; a node farther than the best so far is skipped.
-  std::uint32_t stack[128];
+  // Depth-first, the nearer child first; a node farther than the best so far is skipped. Each
+  // stack entry carries its box distance, computed once when its parent is opened.
+  struct Entry {
+    std::uint32_t node;
+    double d2;
+  };
+  Entry stack[256];  // a tree is at most 96 levels deep (accel/bvh.cpp): 2 per level
   int top = 0;
-  stack[top++] = 0;
+  stack[top++] = {0, distance2(bvh_.nodes[0].box, p)};
   while (top > 0) {
-    const BvhNode& node = bvh_.nodes[stack[--top]];
-    if (distance2(node.box, p) > best.distance2) continue;
+    const Entry e = stack[--top];
+    if (e.d2 > best.distance2) continue;
+    const BvhNode& node = bvh_.nodes[e.node];
     if (node.is_leaf()) {
       for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
         const Tri& t = tris_[i];
@@ -63,13 +69,13 @@ bool MeshDistance::closest(const Vec3& p, Result& best) const {
     }
     const std::uint32_t a = node.first, b = node.first + 1;
     const double da = distance2(bvh_.nodes[a].box, p), db = distance2(bvh_.nodes[b].box, p);
-    if (top + 2 > 128) continue;  // deeper than any SAH build of 2^32 triangles goes
+    if (top + 2 > 256) continue;  // unreachable: see the stack's size
     if (da <= db) {
-      stack[top++] = b;
-      stack[top++] = a;
+      if (db <= best.distance2) stack[top++] = {b, db};
+      if (da <= best.distance2) stack[top++] = {a, da};
     } else {
-      stack[top++] = a;
-      stack[top++] = b;
+      if (da <= best.distance2) stack[top++] = {a, da};
+      if (db <= best.distance2) stack[top++] = {b, db};
     }
   }
   return improved;
