@@ -51,15 +51,21 @@ py::array_t<std::uint32_t> as_ids(const py::array_t<std::int32_t>& a) {
   return out;
 }
 
+std::int32_t* as_signed(py::array_t<std::uint32_t>& a) {
+  static_assert(sizeof(std::int32_t) == sizeof(std::uint32_t));
+  return reinterpret_cast<std::int32_t*>(a.mutable_data());
+}
+
 py::dict cast_rays(const Scene& scene, const py::handle& rays) {
   RayView v = ray_view(rays);
   auto t = make_array<double>(v.shape, {});
-  auto object = make_array<std::int32_t>(v.shape, {});
-  auto prim = make_array<std::int32_t>(v.shape, {});
+  // Ids go straight into Open3D's uint32 arrays: -1 (none) is INVALID_ID bit for bit.
+  auto object = make_array<std::uint32_t>(v.shape, {});
+  auto prim = make_array<std::uint32_t>(v.shape, {});
   auto uv = make_array<double>(v.shape, {2});
   auto normal = make_array<double>(v.shape, {3});
   auto point = make_array<double>(v.shape, {3});
-  HitColumns out{t.mutable_data(),     object.mutable_data(), prim.mutable_data(),
+  HitColumns out{t.mutable_data(),     as_signed(object),     as_signed(prim),
                  point.mutable_data(), normal.mutable_data(), uv.mutable_data()};
   {
     py::gil_scoped_release release;
@@ -67,8 +73,8 @@ py::dict cast_rays(const Scene& scene, const py::handle& rays) {
   }
   py::dict d;
   d["t_hit"] = t;
-  d["geometry_ids"] = as_ids(object);
-  d["primitive_ids"] = as_ids(prim);
+  d["geometry_ids"] = object;
+  d["primitive_ids"] = prim;
   d["primitive_uvs"] = uv;
   d["primitive_normals"] = normal;
   d["points"] = point;
@@ -288,8 +294,8 @@ PYBIND11_MODULE(raycast, m) {
         std::vector<std::int32_t> prim(v.rays.count);
         py::gil_scoped_release release;
         const auto start = std::chrono::steady_clock::now();
-        scene.intersect(v.rays, HitColumns{t.data(), o.data(), prim.data(), p.data(), n.data(),
-                                           uv.data()});
+        scene.intersect(v.rays,
+                        HitColumns{t.data(), o.data(), prim.data(), p.data(), n.data(), uv.data()});
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       },
       py::arg("scene"), py::arg("rays"));
