@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian package that raycast needs to build, test and benchmark (idempotent),
-# then configures and builds the given presets (default: release).
+# then configures and builds the given presets (default: release). The Python module is built
+# for Debian's /usr/bin/python3 (which sees Debian's numpy), whatever python3 is first on PATH.
 # Usage: scripts/setup.sh [preset ...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,6 +9,7 @@ cd "$(dirname "$0")/.."
 packages=(cmake g++ make pkg-config git
   libyaml-cpp-dev libcli11-dev libtbb-dev libpng-dev libopenexr-dev libassimp-dev
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev povray
+  pybind11-dev python3-dev python3-numpy python3-pytest
   clang-14 libclang-rt-14-dev)
 
 missing=()
@@ -26,6 +28,6 @@ presets=("$@")
 [ ${#presets[@]} -eq 0 ] && presets=(release)
 jobs=$(nproc)
 for preset in "${presets[@]}"; do
-  cmake --preset "$preset" >/dev/null
+  cmake --preset "$preset" -DPYTHON_EXECUTABLE=/usr/bin/python3 >/dev/null
   cmake --build --preset "$preset" -j "$jobs"
 done

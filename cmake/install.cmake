@@ -1,0 +1,65 @@
+# `cmake --install`: the static libraries, the public headers (include/raycast/ only), the CMake
+# package (find_package(raycast) -> raycast::raycast) and a pkg-config file. docs/library.md.
+
+# Every library target of the engine's layers (whatever layers exist), plus the public API.
+get_property(layer_targets DIRECTORY ${PROJECT_SOURCE_DIR}/src/raycast PROPERTY BUILDSYSTEM_TARGETS)
+set(raycast_install_targets raycast raycast_options raycast_public)
+set(raycast_pc_libs "-lraycast_public")
+foreach(t ${layer_targets})
+  get_target_property(type ${t} TYPE)
+  if(t MATCHES "^raycast_" AND (type STREQUAL "STATIC_LIBRARY" OR type STREQUAL "INTERFACE_LIBRARY"))
+    list(APPEND raycast_install_targets ${t})
+  endif()
+endforeach()
+# Link order for pkg-config: higher layers first.
+foreach(layer api render scene mesh csg volume io accel geometry math)
+  if(TARGET raycast_${layer})
+    get_target_property(type raycast_${layer} TYPE)
+    if(type STREQUAL "STATIC_LIBRARY")
+      string(APPEND raycast_pc_libs " -lraycast_${layer}")
+    endif()
+  endif()
+endforeach()
+
+install(TARGETS ${raycast_install_targets} EXPORT raycastTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/raycast DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${PROJECT_BINARY_DIR}/include/raycast/version.h
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/raycast)
+
+set(raycast_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/raycast)
+install(EXPORT raycastTargets NAMESPACE raycast:: DESTINATION ${raycast_cmake_dir})
+
+# The config finds what the static libraries link against.
+set(raycast_deps "find_dependency(yaml-cpp)\nfind_dependency(TBB)\nfind_dependency(PNG)\n")
+if(TARGET OpenEXR::OpenEXR)
+  string(APPEND raycast_deps "find_dependency(OpenEXR CONFIG)\n")
+endif()
+if(TARGET assimp::assimp)
+  string(APPEND raycast_deps "find_dependency(assimp CONFIG)\n")
+endif()
+if(TARGET embree)
+  string(APPEND raycast_deps "find_dependency(embree 3 CONFIG)\n")
+endif()
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/raycastConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/raycastConfig.cmake INSTALL_DESTINATION ${raycast_cmake_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/raycastConfig.cmake
+  ${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake DESTINATION ${raycast_cmake_dir})
+
+set(raycast_pc_requires "yaml-cpp tbb libpng")
+if(TARGET OpenEXR::OpenEXR)
+  string(APPEND raycast_pc_requires " OpenEXR")
+endif()
+if(TARGET assimp::assimp)
+  string(APPEND raycast_pc_requires " assimp")
+endif()
+set(raycast_pc_extra "")
+if(TARGET embree)
+  set(raycast_pc_extra "-lembree3")
+endif()
+configure_file(${PROJECT_SOURCE_DIR}/cmake/raycast.pc.in ${PROJECT_BINARY_DIR}/raycast.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/raycast.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
