@@ -18,6 +18,8 @@
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
+#include "accel/huge_pages.h"
+
 namespace raycast {
 
 namespace {
@@ -153,6 +155,7 @@ class Builder {
     // unused tail are never committed.
     nodes_.reset(static_cast<FNode*>(std::malloc((2 * n - 1) * sizeof(FNode))));
     if (!nodes_) throw std::bad_alloc();
+    advise_huge_pages(nodes_.get(), (2 * n - 1) * sizeof(FNode));
     next_node_ = 1;
     Box4 box, centres;
     bounds(0, static_cast<std::uint32_t>(n), box, centres);
@@ -160,8 +163,8 @@ class Builder {
     build(0, 0, static_cast<std::uint32_t>(n), 0, box, centres, tasks);
     tasks.wait();
     const std::uint32_t count = next_node_.load();
-    out.nodes.resize(count);
-    out.prims.resize(n);
+    resize_huge(out.nodes, count);
+    resize_huge(out.prims, n);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16384),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i) {
@@ -256,8 +259,8 @@ class Builder {
   // Bins refs[begin, end) into `bins`. Long ranges alternate between `bins` and `other` (merged
   // into `bins` at the end): consecutive references of a coherent mesh often fall into the same
   // bins, and one set would chain every update on the previous one through memory.
-  __attribute__((noinline)) void bin_range(Bins& bins, Bins& other, int nbins, const Binner& binner, std::uint32_t begin,
-                 std::uint32_t end) const {
+  __attribute__((noinline)) void bin_range(Bins& bins, Bins& other, int nbins, const Binner& binner,
+                                           std::uint32_t begin, std::uint32_t end) const {
     const Binner bn = binner;
     const BvhBuildRef* const refs = refs_.data();
     auto add = [&](Bins& into, const BvhBuildRef& ref) {
@@ -324,15 +327,15 @@ class Builder {
         bin_range(*acc, other, nbins, binner, r.begin(), r.end());
         return acc;
       };
-      Bins* total = tbb::parallel_reduce(
-          tbb::blocked_range<std::uint32_t>(begin, end, kChunk), static_cast<Bins*>(nullptr),
-          bin_chunk, [nbins](Bins* a, Bins* b) {
-            if (!a) return b;
-            if (!b) return a;
-            a->merge(*b, nbins);
-            delete b;
-            return a;
-          });
+      Bins* total =
+          tbb::parallel_reduce(tbb::blocked_range<std::uint32_t>(begin, end, kChunk),
+                               static_cast<Bins*>(nullptr), bin_chunk, [nbins](Bins* a, Bins* b) {
+                                 if (!a) return b;
+                                 if (!b) return a;
+                                 a->merge(*b, nbins);
+                                 delete b;
+                                 return a;
+                               });
       own.reset(total);
       bins_ptr = total;
     } else {
@@ -359,7 +362,8 @@ class Builder {
       for (int b = 0; b < nbins - 1; ++b) {
         acc.grow(bins.box[a][b]);
         acc_count += bins.count[a][b];
-        const float cost = acc.half_area() * static_cast<float>(blocks(acc_count)) + right_cost[b + 1];
+        const float cost =
+            acc.half_area() * static_cast<float>(blocks(acc_count)) + right_cost[b + 1];
         if (acc_count > 0 && acc_count < count && cost < best_cost) {
           best_cost = cost;
           best_axis = a;
@@ -391,8 +395,9 @@ class Builder {
 
   // Hoare partition of refs[begin, end) by bin; grows each side's centre box as it classifies.
   // Returns the number on the left.
-  __attribute__((noinline)) std::uint32_t partition_serial(const Binner& binner, int axis, int split_bin,
-                                 std::uint32_t begin, std::uint32_t end, Sides& sides) {
+  __attribute__((noinline)) std::uint32_t partition_serial(const Binner& binner, int axis,
+                                                           int split_bin, std::uint32_t begin,
+                                                           std::uint32_t end, Sides& sides) {
     const Binner bn = binner;  // a local copy: the swaps below cannot alias it
     BvhBuildRef* const refs = refs_.data();
     auto left = [&](F4 c) { return bn(c)[axis] < split_bin; };
@@ -463,19 +468,18 @@ class Builder {
     auto locate = [](const std::vector<std::uint64_t>& p, std::uint64_t k) {
       return static_cast<std::size_t>(std::upper_bound(p.begin(), p.end(), k) - p.begin() - 1);
     };
-    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, misplaced, kChunk),
-                      [&](const tbb::blocked_range<std::uint64_t>& r) {
-                        std::size_t ir = locate(pr, r.begin()), il = locate(pl, r.begin());
-                        std::uint32_t xr = wrong_right[ir].begin +
-                                           static_cast<std::uint32_t>(r.begin() - pr[ir]);
-                        std::uint32_t xl = wrong_left[il].begin +
-                                           static_cast<std::uint32_t>(r.begin() - pl[il]);
-                        for (std::uint64_t k = r.begin(); k < r.end(); ++k) {
-                          if (xr == wrong_right[ir].end) xr = wrong_right[++ir].begin;
-                          if (xl == wrong_left[il].end) xl = wrong_left[++il].begin;
-                          std::swap(refs_[xr++], refs_[xl++]);
-                        }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::uint64_t>(0, misplaced, kChunk),
+        [&](const tbb::blocked_range<std::uint64_t>& r) {
+          std::size_t ir = locate(pr, r.begin()), il = locate(pl, r.begin());
+          std::uint32_t xr = wrong_right[ir].begin + static_cast<std::uint32_t>(r.begin() - pr[ir]);
+          std::uint32_t xl = wrong_left[il].begin + static_cast<std::uint32_t>(r.begin() - pl[il]);
+          for (std::uint64_t k = r.begin(); k < r.end(); ++k) {
+            if (xr == wrong_right[ir].end) xr = wrong_right[++ir].begin;
+            if (xl == wrong_left[il].end) xl = wrong_left[++il].begin;
+            std::swap(refs_[xr++], refs_[xl++]);
+          }
+        });
   }
 
   // All centres coincide: split at the middle index (after ordering by index, so that the split
@@ -494,8 +498,8 @@ class Builder {
   // Splits refs[begin, end) at the median centre along the widest centre axis (ties broken by
   // index). Returns false for a node small enough to be a leaf. Only pathological inputs get
   // here, far below the parallel levels.
-  bool split_median(const Box4& centres, std::uint32_t begin, std::uint32_t end,
-                    std::uint32_t& mid, Sides& sides) {
+  bool split_median(const Box4& centres, std::uint32_t begin, std::uint32_t end, std::uint32_t& mid,
+                    Sides& sides) {
     const std::uint32_t count = end - begin;
     if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
     const F4 e = centres.hi - centres.lo;
@@ -538,7 +542,8 @@ Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres,
               const BvhBuildConfig& config) {
   if (centres.size() != boxes.size())
     throw std::invalid_argument("build_bvh: one centre per box expected");
-  std::vector<BvhBuildRef> refs(boxes.size());
+  std::vector<BvhBuildRef> refs;
+  resize_huge(refs, boxes.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, boxes.size(), 16384),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i < r.end(); ++i)
@@ -551,11 +556,20 @@ double sah_cost(const Bvh& bvh, const BvhBuildConfig& config) {
   if (bvh.empty()) return 0;
   const double root = bvh.nodes[0].box.half_area();
   const int block = std::max(config.leaf_block, 1);
+  // Summed in depth-first order, so that the figure does not depend on node numbering.
   double cost = 0;
-  for (const BvhNode& n : bvh.nodes) {
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const BvhNode& n = bvh.nodes[stack.back()];
+    stack.pop_back();
     const double area = n.box.half_area();
-    cost += n.is_leaf() ? config.primitive_cost * ((n.count + block - 1) / block) * area
-                        : config.traversal_cost * area;
+    if (n.is_leaf()) {
+      cost += config.primitive_cost * ((n.count + block - 1) / block) * area;
+    } else {
+      cost += config.traversal_cost * area;
+      stack.push_back(n.first + 1);
+      stack.push_back(n.first);
+    }
   }
   return root > 0 ? cost / root : cost;
 }

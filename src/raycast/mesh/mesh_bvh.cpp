@@ -8,6 +8,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "accel/huge_pages.h"
 #include "mesh/triangle.h"
 
 namespace raycast {
@@ -362,21 +363,21 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
   const std::size_t n = triangles.size();
   if (n == 0) return out;
   // Triangle boxes go straight into the builder's 32-byte references (exact: float vertices).
-  std::vector<BvhBuildRef> refs(n);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                        const Vec3f& a = positions[triangles[i][0]];
-                        const Vec3f& b = positions[triangles[i][1]];
-                        const Vec3f& c = positions[triangles[i][2]];
-                        refs[i] = {{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}),
-                                    std::min({a.z, b.z, c.z})},
-                                   static_cast<std::uint32_t>(i),
-                                   {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}),
-                                    std::max({a.z, b.z, c.z})},
-                                   0};
-                      }
-                    });
+  std::vector<BvhBuildRef> refs;
+  resize_huge(refs, n);
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+          const Vec3f& a = positions[triangles[i][0]];
+          const Vec3f& b = positions[triangles[i][1]];
+          const Vec3f& c = positions[triangles[i][2]];
+          refs[i] = {
+              {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})},
+              static_cast<std::uint32_t>(i),
+              {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})},
+              0};
+        }
+      });
   BvhBuildConfig bc;
   bc.bins = config.bins;
   bc.max_leaf_size = std::clamp(config.max_leaf_size, 1, 4 * kMaxGroupsPerLeaf);
