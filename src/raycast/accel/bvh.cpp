@@ -19,6 +19,7 @@
 #include <tbb/task_group.h>
 
 #include "accel/huge_pages.h"
+#include "accel/progress.h"
 
 namespace raycast {
 
@@ -140,7 +141,8 @@ double widen_hi(float x) { return x >= kBuildRefLimit ? kInfinity : x; }
 
 class Builder {
  public:
-  Builder(std::vector<BvhBuildRef>& refs, const BvhBuildConfig& c) : refs_(refs), config_(c) {
+  Builder(std::vector<BvhBuildRef>& refs, const BvhBuildConfig& c)
+      : refs_(refs), config_(c), progress_("building BVH", refs.size()) {
     config_.bins = std::clamp(config_.bins, 2, kMaxBins);
     config_.max_leaf_size = std::max(config_.max_leaf_size, 1);
     config_.leaf_block = std::max(config_.leaf_block, 1);
@@ -162,6 +164,7 @@ class Builder {
     tbb::task_group tasks;
     build(0, 0, static_cast<std::uint32_t>(n), 0, box, centres, tasks);
     tasks.wait();
+    progress_.finish();
     const std::uint32_t count = next_node_.load();
     resize_huge(out.nodes, count);
     resize_huge(out.prims, n);
@@ -210,6 +213,7 @@ class Builder {
       if (leaf) {
         node.first = begin;
         node.count = count;
+        progress_.advance(count);
         return;
       }
       const std::uint32_t first = next_node_.fetch_add(2);
@@ -519,6 +523,7 @@ class Builder {
   BvhBuildConfig config_;
   std::unique_ptr<FNode[], decltype(&std::free)> nodes_{nullptr, &std::free};
   std::atomic<std::uint32_t> next_node_{0};
+  StageProgress progress_;  // drawn for a million primitives or more, on a terminal
 };
 
 }  // namespace
