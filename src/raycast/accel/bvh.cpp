@@ -18,7 +18,7 @@
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
-#include "accel/huge_pages.h"
+#include "accel/build_memory.h"
 #include "accel/progress.h"
 
 namespace raycast {
@@ -141,7 +141,7 @@ double widen_hi(float x) { return x >= kBuildRefLimit ? kInfinity : x; }
 
 class Builder {
  public:
-  Builder(std::vector<BvhBuildRef>& refs, const BvhBuildConfig& c)
+  Builder(BvhBuildRefs& refs, const BvhBuildConfig& c)
       : refs_(refs), config_(c), progress_("building BVH", refs.size()) {
     config_.bins = std::clamp(config_.bins, 2, kMaxBins);
     config_.max_leaf_size = std::max(config_.max_leaf_size, 1);
@@ -166,8 +166,8 @@ class Builder {
     tasks.wait();
     progress_.finish();
     const std::uint32_t count = next_node_.load();
-    resize_huge(out.nodes, count);
-    resize_huge(out.prims, n);
+    out.nodes.resize(count);  // uninitialised: written in parallel below
+    out.prims.resize(n);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16384),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i) {
@@ -519,7 +519,7 @@ class Builder {
     return true;
   }
 
-  std::vector<BvhBuildRef>& refs_;
+  BvhBuildRefs& refs_;
   BvhBuildConfig config_;
   std::unique_ptr<FNode[], decltype(&std::free)> nodes_{nullptr, &std::free};
   std::atomic<std::uint32_t> next_node_{0};
@@ -539,7 +539,7 @@ BvhBuildRef make_build_ref(const Aabb& box, std::uint32_t index) {
   return r;
 }
 
-Bvh build_bvh_from_refs(std::vector<BvhBuildRef> refs, const BvhBuildConfig& config) {
+Bvh build_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config) {
   return Builder(refs, config).run();
 }
 
@@ -547,8 +547,7 @@ Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres,
               const BvhBuildConfig& config) {
   if (centres.size() != boxes.size())
     throw std::invalid_argument("build_bvh: one centre per box expected");
-  std::vector<BvhBuildRef> refs;
-  resize_huge(refs, boxes.size());
+  BvhBuildRefs refs(boxes.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, boxes.size(), 16384),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i < r.end(); ++i)

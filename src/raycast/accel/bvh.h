@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "accel/build_memory.h"
 #include "geometry/aabb.h"
 
 namespace raycast {
@@ -32,8 +33,8 @@ struct BvhNode {
 };
 
 struct Bvh {
-  std::vector<BvhNode> nodes;        // nodes[0] is the root (absent when there are no primitives)
-  std::vector<std::uint32_t> prims;  // permutation of primitive indices, grouped by leaf
+  BuildVector<BvhNode> nodes;        // nodes[0] is the root (absent when there are no primitives)
+  BuildVector<std::uint32_t> prims;  // permutation of primitive indices, grouped by leaf
 
   bool empty() const { return nodes.empty(); }
   std::size_t memory_bytes() const {
@@ -52,6 +53,9 @@ struct alignas(16) BvhBuildRef {
 };
 static_assert(sizeof(BvhBuildRef) == 32);
 
+/// The builder's input: resize(n) leaves the references uninitialised for a parallel fill.
+using BvhBuildRefs = BuildVector<BvhBuildRef>;
+
 inline constexpr float kBuildRefLimit = 0x1p125f;
 
 /// The reference of a finite box (rounded outwards to float, clamped to +-kBuildRefLimit).
@@ -62,7 +66,7 @@ BvhBuildRef make_build_ref(const Aabb& box, std::uint32_t index);
 /// place). Parallel with oneTBB at every level (binning and partitioning of large nodes, subtrees
 /// as tasks); the tree and the permutation do not depend on the number of threads, only node
 /// numbering may.
-Bvh build_bvh_from_refs(std::vector<BvhBuildRef> refs, const BvhBuildConfig& config = {});
+Bvh build_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config = {});
 
 /// The same over double boxes (finite, not empty): primitive i has box boxes[i]. `centres` must
 /// be the boxes' centres; the builder bins the centres of the float boxes it derives, so it only

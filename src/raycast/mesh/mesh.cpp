@@ -14,7 +14,7 @@
 #include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
 
-#include "accel/huge_pages.h"
+#include "accel/build_memory.h"
 #include "accel/progress.h"
 
 namespace raycast {
@@ -240,7 +240,7 @@ std::shared_ptr<const Mesh> make_mesh(std::vector<Vec3f> positions,
     }
     const std::size_t total = kept[blocks];
     m.dropped = nt - total;
-    resize_huge(m.source, total);
+    m.source.resize(total);  // uninitialised: written in parallel below
     if (m.dropped == 0) {
       m.triangles = std::move(triangles);
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, kBlock),

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <vector>
 
+#include "accel/build_memory.h"
 #include "geometry/shape.h"
 #include "mesh/mesh_bvh.h"
 
@@ -19,7 +20,7 @@ namespace raycast {
 struct Mesh {
   std::vector<Vec3f> positions;
   std::vector<std::array<std::uint32_t, 3>> triangles;  // kept triangles
-  std::vector<std::uint32_t> source;                    // kept triangle -> input triangle index
+  BuildVector<std::uint32_t> source;                    // kept triangle -> input triangle index
   std::vector<Vec3f> normals;  // unit vertex normals (smooth meshes), else empty
   std::size_t dropped = 0;     // degenerate input triangles dropped
   Aabb box;                    // bounds of the kept triangles (empty when none)

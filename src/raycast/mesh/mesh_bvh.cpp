@@ -8,7 +8,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "accel/huge_pages.h"
 #include "mesh/triangle.h"
 
 namespace raycast {
@@ -363,8 +362,7 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
   const std::size_t n = triangles.size();
   if (n == 0) return out;
   // Triangle boxes go straight into the builder's 32-byte references (exact: float vertices).
-  std::vector<BvhBuildRef> refs;
-  resize_huge(refs, n);
+  BvhBuildRefs refs(n);  // uninitialised: filled in parallel below
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
