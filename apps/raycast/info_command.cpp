@@ -27,7 +27,7 @@ void print_meshes(const Scene& scene) {
       ++meshes;
       triangles += m->mesh->triangle_count();
       dropped += m->mesh->dropped;
-      closed += m->mesh->closed;
+      closed += m->mesh->closed();
       bvh += m->mesh->bvh_bytes();
       total += m->mesh->memory_bytes();
       build_ms += m->mesh->build_ms;

@@ -2,7 +2,11 @@
 // mesh layer uses (leaf blocks, parallel binning on large nodes, small-node bins).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cfloat>
 #include <random>
+
+#include <tbb/global_control.h>
 
 #include "accel/bvh.h"
 #include "accel/bvh_traverse.h"
@@ -71,8 +75,52 @@ TEST(BvhBuild, RandomBoxes_EveryPrimOnceAndBoxesNest) {
   }
 }
 
-TEST(BvhBuild, SameResultWhateverTheParallelism) {
+// The leaves' contents in traversal order (node numbering may differ with task order).
+std::vector<std::uint32_t> leaves_in_order(const Bvh& bvh) {
+  std::vector<std::uint32_t> out, stack{0};
+  while (!stack.empty()) {
+    const BvhNode& n = bvh.nodes[stack.back()];
+    stack.pop_back();
+    if (n.is_leaf()) {
+      out.insert(out.end(), bvh.prims.begin() + n.first, bvh.prims.begin() + n.first + n.count);
+      out.push_back(~0u);
+    } else {
+      stack.push_back(n.first + 1);
+      stack.push_back(n.first);
+    }
+  }
+  return out;
+}
+
+Bvh build_with_threads(const Input& in, const BvhBuildConfig& c, int threads) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  return build_bvh(in.boxes, in.centres, c);
+}
+
+TEST(BvhBuild, OneTwoAndFourThreads_SameTree) {
   std::mt19937 rng(42);
+  for (bool clustered : {false, true}) {
+    const Input in = random_boxes(rng, 100000, clustered);
+    BvhBuildConfig c;
+    c.parallel_binning_threshold = 4096;  // parallel binning and partition over several chunks
+    c.parallel_threshold = 512;
+    c.leaf_block = 4;
+    const Bvh one = build_with_threads(in, c, 1);
+    check_structure(one, in, c.max_leaf_size);
+    const std::vector<std::uint32_t> expected = leaves_in_order(one);
+    for (int threads : {2, 4}) {
+      const Bvh b = build_with_threads(in, c, threads);
+      EXPECT_EQ(leaves_in_order(b), expected) << threads << " threads";
+      EXPECT_EQ(b.nodes.size(), one.nodes.size());
+      EXPECT_EQ(sah_cost(b, c), sah_cost(one, c));
+    }
+  }
+}
+
+// The thresholds choose how nodes are binned and partitioned (serially or in chunks), which may
+// order primitives differently inside a leaf, but never which primitives a leaf gets.
+TEST(BvhBuild, SerialOrParallelPartition_SameLeaves) {
+  std::mt19937 rng(43);
   const Input in = random_boxes(rng, 40000, false);
   BvhBuildConfig serial;
   serial.parallel_binning_threshold = ~std::size_t(0);
@@ -80,25 +128,17 @@ TEST(BvhBuild, SameResultWhateverTheParallelism) {
   BvhBuildConfig parallel;
   parallel.parallel_binning_threshold = 1024;
   parallel.parallel_threshold = 1024;
-  const Bvh a = build_bvh(in.boxes, in.centres, serial);
-  const Bvh b = build_bvh(in.boxes, in.centres, parallel);
-  // Node numbering may differ with task order; the leaves' contents in traversal order may not.
-  auto leaves = [](const Bvh& bvh) {
-    std::vector<std::uint32_t> out, stack{0};
-    while (!stack.empty()) {
-      const BvhNode& n = bvh.nodes[stack.back()];
-      stack.pop_back();
-      if (n.is_leaf()) {
-        out.insert(out.end(), bvh.prims.begin() + n.first, bvh.prims.begin() + n.first + n.count);
-        out.push_back(~0u);
-      } else {
-        stack.push_back(n.first + 1);
-        stack.push_back(n.first);
-      }
+  auto sorted_leaves = [](const Bvh& bvh) {
+    std::vector<std::uint32_t> out = leaves_in_order(bvh);
+    for (auto b = out.begin(); b != out.end();) {
+      const auto e = std::find(b, out.end(), ~0u);
+      std::sort(b, e);
+      b = e + 1;
     }
     return out;
   };
-  EXPECT_EQ(leaves(a), leaves(b));
+  EXPECT_EQ(sorted_leaves(build_bvh(in.boxes, in.centres, serial)),
+            sorted_leaves(build_bvh(in.boxes, in.centres, parallel)));
 }
 
 TEST(BvhBuild, NearestTraversal_MatchesBruteForceOverBoxes) {
@@ -127,6 +167,54 @@ TEST(BvhBuild, Empty_HasNoNodes) {
   const Bvh bvh = build_bvh({}, {});
   EXPECT_TRUE(bvh.empty());
   EXPECT_TRUE(bvh.prims.empty());
+}
+
+TEST(BvhBuild, HugeAndTinyCoordinates_EveryPrimOnceAndBoxesHoldThem) {
+  // Boxes beyond float range (clamped in the build references: node boxes reach infinity) mixed
+  // with ordinary and denormal-sized ones.
+  Input in;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 3000; ++i) {
+    const double scale = i % 3 == 0 ? 1e300 : (i % 3 == 1 ? 1e-300 : 1.0);
+    const Vec3 c{u(rng) * scale, u(rng) * scale, u(rng) * scale};
+    const Vec3 e{0.1 * scale, 0.2 * scale, 0.05 * scale};
+    in.boxes.push_back({c - e, c + e});
+    in.centres.push_back(c);
+  }
+  in.boxes.push_back({{-DBL_MAX, -1, -1}, {DBL_MAX, 1, 1}});
+  in.centres.push_back({0, 0, 0});
+  BvhBuildConfig c;
+  c.max_leaf_size = 4;
+  check_structure(build_bvh(in.boxes, in.centres, c), in, 4);
+}
+
+TEST(BvhBuild, BuildRef_RoundsOutwardsToTheNearestFloats) {
+  const BvhBuildRef r = make_build_ref({{0.1, -0.1, 1}, {0.3, 1e-50, 2}}, 7);
+  EXPECT_EQ(r.index, 7u);
+  EXPECT_EQ(r.lo[0], std::nextafter(0.1f, 0.0f));  // 0.1f is above 0.1
+  EXPECT_EQ(r.lo[1], -0.1f);                       // -0.1f is below -0.1
+  EXPECT_EQ(r.lo[2], 1.0f);
+  EXPECT_EQ(r.hi[0], 0.3f);  // 0.3f is above 0.3
+  EXPECT_EQ(r.hi[1], std::nextafter(0.0f, 1.0f));
+  EXPECT_EQ(r.hi[2], 2.0f);
+  const BvhBuildRef big = make_build_ref({{-1e300, 0, 0}, {1e300, 0, 0}}, 0);
+  EXPECT_EQ(big.lo[0], -kBuildRefLimit);
+  EXPECT_EQ(big.hi[0], kBuildRefLimit);
+}
+
+TEST(BvhBuild, SahCost_TwoSeparateBoxes) {
+  // Root [0,10]x[0,1]x[0,1] (half area 21) over two leaves of half area 3 each.
+  const Input in{{{{0, 0, 0}, {1, 1, 1}}, {{9, 0, 0}, {10, 1, 1}}},
+                 {{0.5, 0.5, 0.5}, {9.5, 0.5, 0.5}}};
+  BvhBuildConfig c;
+  c.max_leaf_size = 1;
+  const Bvh bvh = build_bvh(in.boxes, in.centres, c);
+  ASSERT_EQ(bvh.nodes.size(), 3u);
+  EXPECT_DOUBLE_EQ(sah_cost(bvh, c), 1 + 2 * 3.0 / 21);
+  c.traversal_cost = 2;
+  EXPECT_DOUBLE_EQ(sah_cost(bvh, c), 2 + 2 * 3.0 / 21);
+  EXPECT_EQ(sah_cost(Bvh{}, c), 0);
 }
 
 }  // namespace

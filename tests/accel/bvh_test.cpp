@@ -47,7 +47,7 @@ Ray random_ray(std::mt19937_64& rng, double spread) {
 // Checks the tree's invariants; returns its depth (a root-only tree has depth 1).
 int check_structure(const Bvh& bvh, const Prims& p, int max_leaf) {
   EXPECT_EQ(bvh.prims.size(), p.boxes.size());
-  std::vector<std::uint32_t> sorted = bvh.prims;
+  std::vector<std::uint32_t> sorted(bvh.prims.begin(), bvh.prims.end());
   std::sort(sorted.begin(), sorted.end());
   for (std::size_t i = 0; i < sorted.size(); ++i) EXPECT_EQ(sorted[i], i) << "not a permutation";
   if (bvh.empty()) return 0;

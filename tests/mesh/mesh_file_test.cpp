@@ -162,7 +162,7 @@ TEST_F(MeshFiles, ClosedObjCube_IsClosedAndSmoothGetsNormals) {
         "f 4 1 5\nf 4 5 8\n");
   const Scene s = load_file("cube.obj", true);
   const Mesh& m = mesh_of(s);
-  EXPECT_TRUE(m.closed);
+  EXPECT_TRUE(m.closed());
   EXPECT_EQ(m.normals.size(), m.positions.size());
 }
 

@@ -4,6 +4,12 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <new>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -12,80 +18,202 @@
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
+#include "accel/build_memory.h"
+#include "accel/progress.h"
+
 namespace raycast {
 
 namespace {
 
-constexpr int kMaxBins = 64;
+// Four float lanes as a GCC/Clang vector (SSE on x86-64, NEON on Arm); lane 3 is ignored.
+using F4 = float __attribute__((vector_size(16)));
+using I4 = std::int32_t __attribute__((vector_size(16)));
+
+constexpr int kMaxBins = 32;
 // Below this depth splits follow the SAH; deeper nodes split at the object median, which adds at
 // most log2(2^32) = 32 levels, so trees stay shallower than the traversal stacks (bvh_traverse.h).
 constexpr std::uint32_t kMaxSahDepth = 64;
+// Large nodes partition in chunks of this many references (a fixed size, so that the result does
+// not depend on the number of threads).
+constexpr std::uint32_t kChunk = 16384;
 
-struct Bin {
-  Aabb box;
-  std::uint32_t count = 0;
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// Lane 3 of the low corner holds the index's bits, a denormal float for small indices:
+// arithmetic on it would take the slow denormal path, so it is cleared on load.
+inline F4 load_lo(const BvhBuildRef& r) {
+  I4 v;
+  std::memcpy(&v, r.lo, 16);
+  v &= I4{-1, -1, -1, 0};
+  F4 f;
+  std::memcpy(&f, &v, 16);
+  return f;
+}
+inline F4 load_hi(const BvhBuildRef& r) {
+  F4 v;
+  std::memcpy(&v, r.hi, 16);
+  return v;
+}
+inline F4 vmin(F4 a, F4 b) { return a < b ? a : b; }
+inline F4 vmax(F4 a, F4 b) { return a > b ? a : b; }
+inline F4 splat(float x) { return F4{x, x, x, x}; }
+
+// A box in float lanes (x, y, z, unused), empty by default.
+struct Box4 {
+  F4 lo = splat(kInf);
+  F4 hi = splat(-kInf);
+  void grow(F4 l, F4 h) {
+    lo = vmin(lo, l);
+    hi = vmax(hi, h);
+  }
+  void grow(const Box4& b) { grow(b.lo, b.hi); }
+  void grow_point(F4 p) { grow(p, p); }
+  // Half the surface area; 0 when empty.
+  float half_area() const {
+    const F4 e = hi - lo;
+    if (!(e[0] >= 0 && e[1] >= 0 && e[2] >= 0)) return 0;
+    return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+  }
 };
 
-// A primitive's box and centre, moved together with its index by the partition so that every
-// pass over a node reads memory in order (gathering boxes through the permutation made the upper
-// levels of the build wait on cache misses).
-struct PrimRef {
-  Aabb box;
-  Vec3 centre;
+// A reference's centre, doubled (lo + hi: exact for the clamped range, no rounding of a halving).
+inline F4 centre2(const BvhBuildRef& r) { return load_lo(r) + load_hi(r); }
+
+// The build's node: a float box and the same first/count as BvhNode (32 bytes).
+struct FNode {
+  float lo[3];
+  std::uint32_t first;
+  float hi[3];
+  std::uint32_t count;
 };
+
+struct Bins {
+  Box4 box[3][kMaxBins];
+  std::uint32_t count[3][kMaxBins];
+  void reset(int bins) {
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < bins; ++b) {
+        box[a][b] = Box4{};
+        count[a][b] = 0;
+      }
+  }
+  void merge(const Bins& o, int bins) {
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < bins; ++b) {
+        box[a][b].grow(o.box[a][b]);
+        count[a][b] += o.count[a][b];
+      }
+  }
+};
+
+// Maps doubled centres to bins: (c - lo) * scale, clamped to [0, bins - 1] (NaN to 0), truncated.
+// The same arithmetic classifies references for binning and for the partition, so that both agree.
+struct Binner {
+  F4 lo;
+  F4 scale;  // 0 on an axis whose centres all coincide
+  F4 top;    // bins - 1
+  I4 operator()(F4 c) const {
+    F4 b = (c - lo) * scale;
+    b = b > 0 ? b : splat(0);  // NaN compares false: bin 0
+    b = b < top ? b : top;
+    return __builtin_convertvector(b, I4);
+  }
+};
+
+float round_down(double x) {
+  if (!(x > -kBuildRefLimit)) return -kBuildRefLimit;
+  if (x >= kBuildRefLimit) return kBuildRefLimit;
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) > x) f = std::nextafter(f, -kInf);
+  return f;
+}
+
+float round_up(double x) {
+  if (!(x < kBuildRefLimit)) return kBuildRefLimit;
+  if (x <= -kBuildRefLimit) return -kBuildRefLimit;
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, kInf);
+  return f;
+}
+
+double widen_lo(float x) { return x <= -kBuildRefLimit ? -kInfinity : x; }
+double widen_hi(float x) { return x >= kBuildRefLimit ? kInfinity : x; }
 
 class Builder {
  public:
-  Builder(std::span<const Aabb> boxes, std::span<const Vec3> centres, const BvhBuildConfig& c,
-          Bvh& out)
-      : boxes_(boxes), centres_(centres), config_(c), out_(out) {
+  Builder(BvhBuildRefs& refs, const BvhBuildConfig& c)
+      : refs_(refs), config_(c), progress_("building BVH", refs.size()) {
     config_.bins = std::clamp(config_.bins, 2, kMaxBins);
     config_.max_leaf_size = std::max(config_.max_leaf_size, 1);
     config_.leaf_block = std::max(config_.leaf_block, 1);
   }
 
-  void run() {
-    const std::size_t n = boxes_.size();
-    out_.prims.resize(n);
-    for (std::size_t i = 0; i < n; ++i) out_.prims[i] = static_cast<std::uint32_t>(i);
-    if (n == 0) return;
-    refs_.resize(n);
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-      refs_[i] = {boxes_[i], centres_[i]};
-    });
-    out_.nodes.resize(2 * n - 1);
+  Bvh run() {
+    Bvh out;
+    const std::size_t n = refs_.size();
+    if (n == 0) return out;
+    if (n >= 0x7FFFFFFFu) throw std::length_error("BVH build: too many primitives");
+    // Up to 2n - 1 nodes; the buffer is not touched beyond the nodes made, so the pages of the
+    // unused tail are never committed.
+    nodes_.reset(static_cast<FNode*>(std::malloc((2 * n - 1) * sizeof(FNode))));
+    if (!nodes_) throw std::bad_alloc();
+    advise_huge_pages(nodes_.get(), (2 * n - 1) * sizeof(FNode));
     next_node_ = 1;
+    Box4 box, centres;
+    bounds(0, static_cast<std::uint32_t>(n), box, centres);
     tbb::task_group tasks;
-    Aabb box, centre_box;
-    node_bounds(0, static_cast<std::uint32_t>(n), box, centre_box);
-    build(0, 0, static_cast<std::uint32_t>(n), 0, box, centre_box, tasks);
+    build(0, 0, static_cast<std::uint32_t>(n), 0, box, centres, tasks);
     tasks.wait();
-    out_.nodes.resize(next_node_.load());
+    progress_.finish();
+    const std::uint32_t count = next_node_.load();
+    out.nodes.resize(count);  // uninitialised: written in parallel below
+    out.prims.resize(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16384),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                          const FNode& f = nodes_[i];
+                          BvhNode& b = out.nodes[i];
+                          b.box.lo = {widen_lo(f.lo[0]), widen_lo(f.lo[1]), widen_lo(f.lo[2])};
+                          b.box.hi = {widen_hi(f.hi[0]), widen_hi(f.hi[1]), widen_hi(f.hi[2])};
+                          b.first = f.first;
+                          b.count = f.count;
+                        }
+                      });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i)
+                          out.prims[i] = refs_[i].index;
+                      });
+    return out;
   }
 
  private:
-  // The boxes of a split's two sides, known from the bins and the partition pass, so that
-  // children need no pass of their own to find their bounds.
   struct Sides {
-    Aabb box[2], centre_box[2];
+    Box4 box[2], centres[2];
   };
 
-  // Builds node_index over prims[begin, end), whose box and centre box are given.
+  bool big(std::uint32_t count) const { return count >= config_.parallel_binning_threshold; }
+
+  // Builds node_index over refs[begin, end), whose box and doubled-centre box are given.
   void build(std::uint32_t node_index, std::uint32_t begin, std::uint32_t end, std::uint32_t depth,
-             Aabb box, Aabb centre_box, tbb::task_group& tasks) {
+             Box4 box, Box4 centres, tbb::task_group& tasks) {
     // Iterative on the right child, recursive (or a task) on the left, to bound the stack depth.
     for (;;) {
-      BvhNode& node = out_.nodes[node_index];
-      node.box = box;
+      FNode& node = nodes_[node_index];
+      for (int a = 0; a < 3; ++a) {
+        node.lo[a] = box.lo[a];
+        node.hi[a] = box.hi[a];
+      }
       const std::uint32_t count = end - begin;
       std::uint32_t mid = 0;
       Sides sides;
       const bool leaf = count <= static_cast<std::uint32_t>(config_.min_leaf_size) ||
-                        (depth < kMaxSahDepth ? !split(box, centre_box, begin, end, mid, sides)
-                                              : !split_median(centre_box, begin, end, mid, sides));
+                        (depth < kMaxSahDepth ? !split(box, centres, begin, end, mid, sides)
+                                              : !split_median(centres, begin, end, mid, sides));
       if (leaf) {
         node.first = begin;
         node.count = count;
+        progress_.advance(count);
         return;
       }
       const std::uint32_t first = next_node_.fetch_add(2);
@@ -93,53 +221,33 @@ class Builder {
       node.count = 0;
       if (mid - begin >= config_.parallel_threshold) {
         tasks.run([this, first, begin, mid, depth, sides, &tasks] {
-          build(first, begin, mid, depth + 1, sides.box[0], sides.centre_box[0], tasks);
+          build(first, begin, mid, depth + 1, sides.box[0], sides.centres[0], tasks);
         });
       } else {
-        build(first, begin, mid, depth + 1, sides.box[0], sides.centre_box[0], tasks);
+        build(first, begin, mid, depth + 1, sides.box[0], sides.centres[0], tasks);
       }
       ++depth;
       node_index = first + 1;
       begin = mid;
       box = sides.box[1];
-      centre_box = sides.centre_box[1];
+      centres = sides.centres[1];
     }
   }
 
-  using BinSet = std::array<std::array<Bin, kMaxBins>, 3>;
-
-  // Bins prims[begin, end) on all three axes in one pass.
-  void bin_range(BinSet& bins, int nbins, const Aabb& centre_box, const Vec3& scale,
-                 std::uint32_t begin, std::uint32_t end) const {
-    for (std::uint32_t i = begin; i < end; ++i) {
-      const PrimRef& ref = refs_[i];
-      const Vec3& c = ref.centre;
-      for (int axis = 0; axis < 3; ++axis) {
-        if (!(scale[axis] > 0)) continue;
-        Bin& b = bins[axis][bin_of(c[axis], centre_box.lo[axis], scale[axis], nbins)];
-        b.box.grow(ref.box);
-        ++b.count;
-      }
-    }
-  }
-
-  double blocks(std::uint32_t count) const {
-    return static_cast<double>((count + config_.leaf_block - 1) / config_.leaf_block);
-  }
-
-  // The box of prims[begin, end) and the box of their centres (in parallel for large ranges).
-  void node_bounds(std::uint32_t begin, std::uint32_t end, Aabb& box, Aabb& centre_box) const {
-    using Pair = std::pair<Aabb, Aabb>;
+  // The box and the doubled-centre box of refs[begin, end) (in parallel for large ranges).
+  void bounds(std::uint32_t begin, std::uint32_t end, Box4& box, Box4& centres) const {
+    using Pair = std::pair<Box4, Box4>;
     auto grow = [this](const tbb::blocked_range<std::uint32_t>& r, Pair acc) {
       for (std::uint32_t i = r.begin(); i < r.end(); ++i) {
-        acc.first.grow(refs_[i].box);
-        acc.second.grow(refs_[i].centre);
+        const F4 lo = load_lo(refs_[i]), hi = load_hi(refs_[i]);
+        acc.first.grow(lo, hi);
+        acc.second.grow_point(lo + hi);
       }
       return acc;
     };
     Pair result;
-    if (end - begin >= config_.parallel_binning_threshold) {
-      result = tbb::parallel_reduce(tbb::blocked_range<std::uint32_t>(begin, end, 8192), Pair{},
+    if (big(end - begin)) {
+      result = tbb::parallel_reduce(tbb::blocked_range<std::uint32_t>(begin, end, kChunk), Pair{},
                                     grow, [](Pair a, const Pair& b) {
                                       a.first.grow(b.first);
                                       a.second.grow(b.second);
@@ -149,156 +257,325 @@ class Builder {
       result = grow(tbb::blocked_range<std::uint32_t>(begin, end), Pair{});
     }
     box = result.first;
-    centre_box = result.second;
+    centres = result.second;
   }
 
-  // Chooses a split by binned SAH and partitions prims[begin, end). Returns false for a leaf.
-  bool split(const Aabb& box, const Aabb& centre_box, std::uint32_t begin, std::uint32_t end,
+  // Bins refs[begin, end) into `bins`. Long ranges alternate between `bins` and `other` (merged
+  // into `bins` at the end): consecutive references of a coherent mesh often fall into the same
+  // bins, and one set would chain every update on the previous one through memory.
+  __attribute__((noinline)) void bin_range(Bins& bins, Bins& other, int nbins, const Binner& binner,
+                                           std::uint32_t begin, std::uint32_t end) const {
+    const Binner bn = binner;
+    const BvhBuildRef* const refs = refs_.data();
+    auto add = [&](Bins& into, const BvhBuildRef& ref) {
+      const F4 lo = load_lo(ref), hi = load_hi(ref);
+      const I4 b = bn(lo + hi);
+      for (int a = 0; a < 3; ++a) {
+        into.box[a][b[a]].grow(lo, hi);
+        ++into.count[a][b[a]];
+      }
+    };
+    if (end - begin < 256) {
+      for (std::uint32_t i = begin; i < end; ++i) add(bins, refs[i]);
+      return;
+    }
+    other.reset(nbins);
+    std::uint32_t i = begin;
+    for (; i + 1 < end; i += 2) {
+      __builtin_prefetch(refs + i + 16);
+      add(bins, refs[i]);
+      add(other, refs[i + 1]);
+    }
+    if (i < end) add(bins, refs[i]);
+    bins.merge(other, nbins);
+  }
+
+  std::uint32_t blocks(std::uint32_t count) const {
+    return (count + config_.leaf_block - 1) / config_.leaf_block;
+  }
+
+  // Chooses a split by binned SAH and partitions refs[begin, end). Returns false for a leaf.
+  bool split(const Box4& box, const Box4& centres, std::uint32_t begin, std::uint32_t end,
              std::uint32_t& mid, Sides& sides) {
     const std::uint32_t count = end - begin;
     // Small nodes bin into fewer bins (never fewer than 4): the same splits for a fraction of the
     // fixed cost of resetting and sweeping the bins, which dominates below a few dozen primitives.
-    const int bins =
+    const int nbins =
         static_cast<int>(std::min<std::uint32_t>(config_.bins, std::max<std::uint32_t>(4, count)));
-    double best_cost = kInfinity;
-    int best_axis = -1, best_bin = 0;
-    const Vec3 extent = centre_box.extent();
-    Vec3 scale;
-    for (int axis = 0; axis < 3; ++axis) {
-      scale[axis] = extent[axis] > 0 ? bins / extent[axis] : 0;
-      if (!std::isfinite(scale[axis])) scale[axis] = 0;  // a denormal extent: treat as flat
+    Binner binner;
+    binner.lo = centres.lo;
+    binner.top = splat(static_cast<float>(nbins - 1));
+    const F4 extent = centres.hi - centres.lo;
+    bool any_axis = false;
+    for (int a = 0; a < 3; ++a) {
+      float s = extent[a] > 0 ? static_cast<float>(nbins) / extent[a] : 0;
+      if (!std::isfinite(s)) s = 0;  // a denormal extent: treat the axis as flat
+      binner.scale[a] = s;
+      any_axis |= s > 0;
     }
-    // Per-thread scratch bins, reset only as far as used (zeroing all kMaxBins cost more than the
-    // binning itself on small nodes).
-    static thread_local BinSet scratch;
-    BinSet& bin = scratch;
-    for (auto& axis_bins : bin)
-      for (int b = 0; b < bins; ++b) axis_bins[b] = Bin{};
-    if (count >= config_.parallel_binning_threshold) {
-      bin = tbb::parallel_reduce(
-          tbb::blocked_range<std::uint32_t>(begin, end, 8192), BinSet{},
-          [&](const tbb::blocked_range<std::uint32_t>& r, BinSet acc) {
-            bin_range(acc, bins, centre_box, scale, r.begin(), r.end());
-            return acc;
-          },
-          [bins](BinSet a, const BinSet& b) {
-            for (int axis = 0; axis < 3; ++axis)
-              for (int i = 0; i < bins; ++i) {
-                a[axis][i].box.grow(b[axis][i].box);
-                a[axis][i].count += b[axis][i].count;
-              }
-            return a;
-          });
+    binner.scale[3] = 0;
+    if (!any_axis) return split_coincident(begin, end, mid, sides);
+    // Small nodes bin into per-thread scratch bins. Large ones get their own: a thread waiting
+    // in the parallel binning may run another node's build, which would reuse the scratch.
+    static thread_local Bins scratch;
+    std::unique_ptr<Bins> own;
+    Bins* bins_ptr = &scratch;
+    if (big(count)) {
+      // The bins are unions and sums, so the result does not depend on how the range is divided.
+      auto bin_chunk = [&](const tbb::blocked_range<std::uint32_t>& r, Bins* acc) {
+        if (!acc) {
+          acc = new Bins;
+          acc->reset(nbins);
+        }
+        Bins other;
+        bin_range(*acc, other, nbins, binner, r.begin(), r.end());
+        return acc;
+      };
+      Bins* total =
+          tbb::parallel_reduce(tbb::blocked_range<std::uint32_t>(begin, end, kChunk),
+                               static_cast<Bins*>(nullptr), bin_chunk, [nbins](Bins* a, Bins* b) {
+                                 if (!a) return b;
+                                 if (!b) return a;
+                                 a->merge(*b, nbins);
+                                 delete b;
+                                 return a;
+                               });
+      own.reset(total);
+      bins_ptr = total;
     } else {
-      bin_range(bin, bins, centre_box, scale, begin, end);
+      static thread_local Bins other;
+      scratch.reset(nbins);
+      bin_range(scratch, other, nbins, binner, begin, end);
     }
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!(scale[axis] > 0)) continue;
-      // Sweep from the right, then from the left, to cost every split plane.
-      std::array<double, kMaxBins> right_cost;  // entries 1 .. bins-1 are set below
-      Aabb acc;
+    const Bins& bins = *bins_ptr;
+    // Sweep each axis from the right, then from the left, to cost every plane between bins.
+    float best_cost = kInf;
+    int best_axis = -1, best_bin = 0;
+    for (int a = 0; a < 3; ++a) {
+      if (!(binner.scale[a] > 0)) continue;
+      std::array<float, kMaxBins> right_cost;  // entries 1 .. nbins-1 are set below
+      Box4 acc;
       std::uint32_t acc_count = 0;
-      for (int b = bins - 1; b > 0; --b) {
-        acc.grow(bin[axis][b].box);
-        acc_count += bin[axis][b].count;
-        right_cost[b] = acc.half_area() * blocks(acc_count);
+      for (int b = nbins - 1; b > 0; --b) {
+        acc.grow(bins.box[a][b]);
+        acc_count += bins.count[a][b];
+        right_cost[b] = acc.half_area() * static_cast<float>(blocks(acc_count));
       }
-      acc = Aabb{};
+      acc = Box4{};
       acc_count = 0;
-      for (int b = 0; b < bins - 1; ++b) {
-        acc.grow(bin[axis][b].box);
-        acc_count += bin[axis][b].count;
-        const double cost = acc.half_area() * blocks(acc_count) + right_cost[b + 1];
+      for (int b = 0; b < nbins - 1; ++b) {
+        acc.grow(bins.box[a][b]);
+        acc_count += bins.count[a][b];
+        const float cost =
+            acc.half_area() * static_cast<float>(blocks(acc_count)) + right_cost[b + 1];
         if (acc_count > 0 && acc_count < count && cost < best_cost) {
           best_cost = cost;
-          best_axis = axis;
+          best_axis = a;
           best_bin = b + 1;
         }
       }
     }
+    if (best_axis < 0) {
+      // Every plane leaves one side empty or costs infinity (boxes at the clamp limit).
+      if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
+      return split_median(centres, begin, end, mid, sides);
+    }
     const double leaf_cost = blocks(count) * config_.primitive_cost;
     const double area = box.half_area();
-    if (best_axis >= 0) {
-      const double split_cost =
-          config_.traversal_cost + config_.primitive_cost * best_cost / (area > 0 ? area : 1);
-      if (split_cost >= leaf_cost && count <= static_cast<std::uint32_t>(config_.max_leaf_size))
-        return false;
-      const double s = scale[best_axis];
-      const double lo = centre_box.lo[best_axis];
-      for (int b = 0; b < bins; ++b) sides.box[b < best_bin ? 0 : 1].grow(bin[best_axis][b].box);
-      // Hoare partition that grows each side's centre box as it classifies each primitive once.
-      auto left = [&](const Vec3& c) { return bin_of(c[best_axis], lo, s, bins) < best_bin; };
-      std::uint32_t i = begin, j = end;
-      for (;;) {
-        while (i < j && left(refs_[i].centre)) sides.centre_box[0].grow(refs_[i++].centre);
-        while (i < j && !left(refs_[j - 1].centre)) sides.centre_box[1].grow(refs_[--j].centre);
-        if (i >= j) break;
-        sides.centre_box[1].grow(refs_[i].centre);
-        sides.centre_box[0].grow(refs_[j - 1].centre);
-        --j;
-        std::swap(out_.prims[i], out_.prims[j]);
-        std::swap(refs_[i], refs_[j]);
+    const double split_cost =
+        config_.traversal_cost + config_.primitive_cost * best_cost / (area > 0 ? area : 1);
+    if (split_cost >= leaf_cost && count <= static_cast<std::uint32_t>(config_.max_leaf_size))
+      return false;
+    for (int b = 0; b < nbins; ++b) sides.box[b < best_bin ? 0 : 1].grow(bins.box[best_axis][b]);
+    std::uint32_t left_count = 0;
+    for (int b = 0; b < best_bin; ++b) left_count += bins.count[best_axis][b];
+    if (big(count))
+      partition_parallel(binner, best_axis, best_bin, begin, end, sides);
+    else
+      partition_serial(binner, best_axis, best_bin, begin, end, sides);
+    mid = begin + left_count;
+    return true;
+  }
+
+  // Hoare partition of refs[begin, end) by bin; grows each side's centre box as it classifies.
+  // Returns the number on the left.
+  __attribute__((noinline)) std::uint32_t partition_serial(const Binner& binner, int axis,
+                                                           int split_bin, std::uint32_t begin,
+                                                           std::uint32_t end, Sides& sides) {
+    const Binner bn = binner;  // a local copy: the swaps below cannot alias it
+    BvhBuildRef* const refs = refs_.data();
+    auto left = [&](F4 c) { return bn(c)[axis] < split_bin; };
+    std::uint32_t i = begin, j = end;
+    Box4 cl = sides.centres[0], cr = sides.centres[1];
+    for (;;) {
+      F4 c;
+      while (i < j && left(c = centre2(refs[i]))) {
+        __builtin_prefetch(refs + i + 16);
+        cl.grow_point(c);
         ++i;
       }
-      mid = i;
-      return true;
+      while (i < j && !left(c = centre2(refs[j - 1]))) {
+        __builtin_prefetch(refs + j - 16);
+        cr.grow_point(c);
+        --j;
+      }
+      if (i >= j) break;
+      cr.grow_point(centre2(refs[i]));
+      cl.grow_point(centre2(refs[j - 1]));
+      --j;
+      std::swap(refs[i], refs[j]);
+      ++i;
     }
-    // All centres coincide: split by index when the node is too big for a leaf.
-    if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
-    mid = begin + count / 2;
-    node_bounds(begin, mid, sides.box[0], sides.centre_box[0]);
-    node_bounds(mid, end, sides.box[1], sides.centre_box[1]);
-    return true;
+    sides.centres[0] = cl;
+    sides.centres[1] = cr;
+    return i - begin;
   }
 
-  // Splits prims[begin, end) at the median centre along the widest centre axis (by index when
-  // all centres coincide), moving the primitive records with their indices. Returns false for a
-  // node small enough to be a leaf. Only pathological inputs get this deep, so it may allocate.
-  bool split_median(const Aabb& centre_box, std::uint32_t begin, std::uint32_t end,
-                    std::uint32_t& mid, Sides& sides) {
+  // The same in parallel: fixed-size chunks partition themselves, then the references on the
+  // wrong side of the split point are swapped pairwise (k-th misplaced right with k-th misplaced
+  // left). Both steps depend only on the chunking, never on the threads.
+  void partition_parallel(const Binner& binner, int axis, int split_bin, std::uint32_t begin,
+                          std::uint32_t end, Sides& sides) {
+    const std::uint32_t chunks = (end - begin + kChunk - 1) / kChunk;
+    std::vector<std::uint32_t> lefts(chunks);
+    std::vector<Sides> chunk_sides(chunks);
+    tbb::parallel_for(std::uint32_t(0), chunks, [&](std::uint32_t c) {
+      const std::uint32_t b = begin + c * kChunk, e = std::min(end, b + kChunk);
+      lefts[c] = partition_serial(binner, axis, split_bin, b, e, chunk_sides[c]);
+    });
+    std::uint32_t total_left = 0;
+    for (std::uint32_t c = 0; c < chunks; ++c) {
+      total_left += lefts[c];
+      sides.centres[0].grow(chunk_sides[c].centres[0]);
+      sides.centres[1].grow(chunk_sides[c].centres[1]);
+    }
+    const std::uint32_t mid = begin + total_left;
+    // Misplaced ranges in order: rights in [begin, mid), lefts in [mid, end).
+    struct Range {
+      std::uint32_t begin, end;
+    };
+    std::vector<Range> wrong_right, wrong_left;
+    for (std::uint32_t c = 0; c < chunks; ++c) {
+      const std::uint32_t b = begin + c * kChunk, e = std::min(end, b + kChunk), m = b + lefts[c];
+      if (m < std::min(e, mid)) wrong_right.push_back({m, std::min(e, mid)});
+      if (m > std::max(b, mid)) wrong_left.push_back({std::max(b, mid), m});
+    }
+    // Prefix sums of the ranges' lengths, to find the k-th misplaced reference of each kind.
+    auto prefix = [](const std::vector<Range>& ranges) {
+      std::vector<std::uint64_t> p(ranges.size() + 1, 0);
+      for (std::size_t i = 0; i < ranges.size(); ++i)
+        p[i + 1] = p[i] + (ranges[i].end - ranges[i].begin);
+      return p;
+    };
+    const std::vector<std::uint64_t> pr = prefix(wrong_right), pl = prefix(wrong_left);
+    const std::uint64_t misplaced = pr.back();  // equals pl.back()
+    auto locate = [](const std::vector<std::uint64_t>& p, std::uint64_t k) {
+      return static_cast<std::size_t>(std::upper_bound(p.begin(), p.end(), k) - p.begin() - 1);
+    };
+    tbb::parallel_for(
+        tbb::blocked_range<std::uint64_t>(0, misplaced, kChunk),
+        [&](const tbb::blocked_range<std::uint64_t>& r) {
+          std::size_t ir = locate(pr, r.begin()), il = locate(pl, r.begin());
+          std::uint32_t xr = wrong_right[ir].begin + static_cast<std::uint32_t>(r.begin() - pr[ir]);
+          std::uint32_t xl = wrong_left[il].begin + static_cast<std::uint32_t>(r.begin() - pl[il]);
+          for (std::uint64_t k = r.begin(); k < r.end(); ++k) {
+            if (xr == wrong_right[ir].end) xr = wrong_right[++ir].begin;
+            if (xl == wrong_left[il].end) xl = wrong_left[++il].begin;
+            std::swap(refs_[xr++], refs_[xl++]);
+          }
+        });
+  }
+
+  // All centres coincide: split at the middle index (after ordering by index, so that the split
+  // does not depend on how earlier partitions ordered the range) when too big for a leaf.
+  bool split_coincident(std::uint32_t begin, std::uint32_t end, std::uint32_t& mid, Sides& sides) {
     const std::uint32_t count = end - begin;
     if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
-    const int axis = max_dimension(centre_box.extent());
     mid = begin + count / 2;
-    std::vector<std::uint32_t> order(count);
-    for (std::uint32_t k = 0; k < count; ++k) order[k] = begin + k;
-    std::nth_element(order.begin(), order.begin() + (mid - begin), order.end(),
-                     [&](std::uint32_t a, std::uint32_t b) {
-                       return refs_[a].centre[axis] < refs_[b].centre[axis];
-                     });
-    std::vector<PrimRef> refs(count);
-    std::vector<std::uint32_t> prims(count);
-    for (std::uint32_t k = 0; k < count; ++k) {
-      refs[k] = refs_[order[k]];
-      prims[k] = out_.prims[order[k]];
-    }
-    std::copy(refs.begin(), refs.end(), refs_.begin() + begin);
-    std::copy(prims.begin(), prims.end(), out_.prims.begin() + begin);
-    node_bounds(begin, mid, sides.box[0], sides.centre_box[0]);
-    node_bounds(mid, end, sides.box[1], sides.centre_box[1]);
+    std::nth_element(refs_.begin() + begin, refs_.begin() + mid, refs_.begin() + end,
+                     [](const BvhBuildRef& a, const BvhBuildRef& b) { return a.index < b.index; });
+    bounds(begin, mid, sides.box[0], sides.centres[0]);
+    bounds(mid, end, sides.box[1], sides.centres[1]);
     return true;
   }
 
-  static int bin_of(double c, double lo, double scale, int bins) {
-    const int b = static_cast<int>((c - lo) * scale);
-    return std::clamp(b, 0, bins - 1);
+  // Splits refs[begin, end) at the median centre along the widest centre axis (ties broken by
+  // index). Returns false for a node small enough to be a leaf. Only pathological inputs get
+  // here, far below the parallel levels.
+  bool split_median(const Box4& centres, std::uint32_t begin, std::uint32_t end, std::uint32_t& mid,
+                    Sides& sides) {
+    const std::uint32_t count = end - begin;
+    if (count <= static_cast<std::uint32_t>(config_.max_leaf_size)) return false;
+    const F4 e = centres.hi - centres.lo;
+    const int axis = e[0] >= e[1] && e[0] >= e[2] ? 0 : (e[1] >= e[2] ? 1 : 2);
+    mid = begin + count / 2;
+    std::nth_element(refs_.begin() + begin, refs_.begin() + mid, refs_.begin() + end,
+                     [axis](const BvhBuildRef& a, const BvhBuildRef& b) {
+                       const float ca = a.lo[axis] + a.hi[axis], cb = b.lo[axis] + b.hi[axis];
+                       return ca < cb || (ca == cb && a.index < b.index);
+                     });
+    bounds(begin, mid, sides.box[0], sides.centres[0]);
+    bounds(mid, end, sides.box[1], sides.centres[1]);
+    return true;
   }
 
-  std::span<const Aabb> boxes_;
-  std::span<const Vec3> centres_;
-  std::vector<PrimRef> refs_;  // refs_[i] belongs to out_.prims[i]
+  BvhBuildRefs& refs_;
   BvhBuildConfig config_;
-  Bvh& out_;
+  std::unique_ptr<FNode[], decltype(&std::free)> nodes_{nullptr, &std::free};
   std::atomic<std::uint32_t> next_node_{0};
+  StageProgress progress_;  // drawn for a million primitives or more, on a terminal
 };
 
 }  // namespace
 
+BvhBuildRef make_build_ref(const Aabb& box, std::uint32_t index) {
+  BvhBuildRef r;
+  for (int a = 0; a < 3; ++a) {
+    r.lo[a] = round_down(box.lo[a]);
+    r.hi[a] = round_up(box.hi[a]);
+  }
+  r.index = index;
+  r.unused = 0;
+  return r;
+}
+
+Bvh build_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config) {
+  return Builder(refs, config).run();
+}
+
 Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres,
               const BvhBuildConfig& config) {
-  Bvh bvh;
-  Builder(boxes, centres, config, bvh).run();
-  return bvh;
+  if (centres.size() != boxes.size())
+    throw std::invalid_argument("build_bvh: one centre per box expected");
+  BvhBuildRefs refs(boxes.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, boxes.size(), 16384),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i)
+                        refs[i] = make_build_ref(boxes[i], static_cast<std::uint32_t>(i));
+                    });
+  return build_bvh_from_refs(std::move(refs), config);
+}
+
+double sah_cost(const Bvh& bvh, const BvhBuildConfig& config) {
+  if (bvh.empty()) return 0;
+  const double root = bvh.nodes[0].box.half_area();
+  const int block = std::max(config.leaf_block, 1);
+  // Summed in depth-first order, so that the figure does not depend on node numbering.
+  double cost = 0;
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const BvhNode& n = bvh.nodes[stack.back()];
+    stack.pop_back();
+    const double area = n.box.half_area();
+    if (n.is_leaf()) {
+      cost += config.primitive_cost * ((n.count + block - 1) / block) * area;
+    } else {
+      cost += config.traversal_cost * area;
+      stack.push_back(n.first + 1);
+      stack.push_back(n.first);
+    }
+  }
+  return root > 0 ? cost / root : cost;
 }
 
 }  // namespace raycast

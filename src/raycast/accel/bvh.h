@@ -1,23 +1,25 @@
 #pragma once
-// A bounding volume hierarchy that knows no primitives: boxes and centres in, nodes and a
-// permutation out; traversal calls back at the leaves (see bvh_traverse.h).
+// A bounding volume hierarchy that knows no primitives: boxes in, nodes and a permutation out;
+// traversal calls back at the leaves (see bvh_traverse.h). The builder and its measurements are
+// described in docs/performance-mesh.md ("Build").
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "accel/build_memory.h"
 #include "geometry/aabb.h"
 
 namespace raycast {
 
 struct BvhBuildConfig {
-  int bins = 16;              // SAH bins per axis (Wald 2007)
+  int bins = 16;              // SAH bins per axis (Wald 2007), 2 to 32
   int max_leaf_size = 8;      // a leaf never holds more, whatever the SAH says
   int min_leaf_size = 1;      // below this a node is always a leaf
   double traversal_cost = 1;  // cost of visiting a node, relative to one primitive test
   double primitive_cost = 1;
   int leaf_block = 1;  // leaves are tested in blocks of this many primitives: the SAH
                        // charges ceil(count / leaf_block) blocks (4 for SIMD triangle groups)
-  std::size_t parallel_binning_threshold = 65536;  // nodes this large bin in parallel
+  std::size_t parallel_binning_threshold = 65536;  // nodes this large bin and partition in parallel
   std::size_t parallel_threshold = 4096;           // subtrees this large build as separate tasks
 };
 
@@ -31,8 +33,8 @@ struct BvhNode {
 };
 
 struct Bvh {
-  std::vector<BvhNode> nodes;        // nodes[0] is the root (absent when there are no primitives)
-  std::vector<std::uint32_t> prims;  // permutation of primitive indices, grouped by leaf
+  BuildVector<BvhNode> nodes;        // nodes[0] is the root (absent when there are no primitives)
+  BuildVector<std::uint32_t> prims;  // permutation of primitive indices, grouped by leaf
 
   bool empty() const { return nodes.empty(); }
   std::size_t memory_bytes() const {
@@ -40,10 +42,41 @@ struct Bvh {
   }
 };
 
-/// Binned SAH build (Wald 2007) over primitives given by their boxes and centres (same length,
-/// all finite). Large subtrees build in parallel with oneTBB; the result does not depend on the
-/// thread count.
+/// A primitive as the builder sees it (32 bytes): its box in float, rounded outwards, and its
+/// index. Coordinates beyond +-kBuildRefLimit are clamped to it; node boxes that reach the limit
+/// come out infinite on that side, so that every node box holds its primitives' double boxes.
+struct alignas(16) BvhBuildRef {
+  float lo[3];
+  std::uint32_t index;
+  float hi[3];
+  std::uint32_t unused;
+};
+static_assert(sizeof(BvhBuildRef) == 32);
+
+/// The builder's input: resize(n) leaves the references uninitialised for a parallel fill.
+using BvhBuildRefs = BuildVector<BvhBuildRef>;
+
+inline constexpr float kBuildRefLimit = 0x1p125f;
+
+/// The reference of a finite box (rounded outwards to float, clamped to +-kBuildRefLimit).
+BvhBuildRef make_build_ref(const Aabb& box, std::uint32_t index);
+
+/// Binned SAH build (Wald 2007) over primitive references (boxes not empty; the indices need not
+/// be distinct, they are copied to Bvh::prims). Consumes `refs` (the build partitions them in
+/// place). Parallel with oneTBB at every level (binning and partitioning of large nodes, subtrees
+/// as tasks); the tree and the permutation do not depend on the number of threads, only node
+/// numbering may.
+Bvh build_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config = {});
+
+/// The same over double boxes (finite, not empty): primitive i has box boxes[i]. `centres` must
+/// be the boxes' centres; the builder bins the centres of the float boxes it derives, so it only
+/// checks the length (kept so that callers which have centres at hand need not change).
 Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres,
               const BvhBuildConfig& config = {});
+
+/// The SAH cost of a tree (MacDonald and Booth 1990), with the config's costs and leaf blocks:
+/// the sum over inner nodes of traversal_cost * area and over leaves of primitive_cost *
+/// blocks * area, areas relative to the root's. 0 for an empty tree. For comparing builds.
+double sah_cost(const Bvh& bvh, const BvhBuildConfig& config = {});
 
 }  // namespace raycast

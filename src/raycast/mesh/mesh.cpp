@@ -9,7 +9,13 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
+
+#include "accel/build_memory.h"
+#include "accel/progress.h"
 
 namespace raycast {
 
@@ -49,6 +55,23 @@ double signed_volume(const Mesh& m) {
 }
 
 }  // namespace
+
+void Mesh::find_closed() const {
+  std::call_once(closed_once_, [this] {
+    closed_ = is_closed_mesh(positions, triangles);
+    if (closed_ && signed_volume(*this) < 0) orientation_ = -1;
+  });
+}
+
+bool Mesh::closed() const {
+  find_closed();
+  return closed_;
+}
+
+double Mesh::orientation() const {
+  find_closed();
+  return orientation_;
+}
 
 std::size_t Mesh::memory_bytes() const {
   return positions.capacity() * sizeof(Vec3f) + triangles.capacity() * sizeof(triangles[0]) +
@@ -118,59 +141,131 @@ bool is_closed_mesh(const std::vector<Vec3f>& positions,
   return true;
 }
 
+namespace {
+
+// Rows per block of the parallel passes of make_mesh (fixed, so results never depend on threads).
+constexpr std::size_t kBlock = 65536;
+
+// The smallest i in [0, n) with bad(i), or n: in parallel, the same answer as a serial scan.
+template <class Bad>
+std::size_t first_bad(std::size_t n, Bad bad) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, n, kBlock), n,
+      [&](const tbb::blocked_range<std::size_t>& r, std::size_t found) {
+        for (std::size_t i = r.begin(); i < r.end() && i < found; ++i)
+          if (bad(i)) return i;
+        return found;
+      },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
+}
+
+}  // namespace
+
 std::shared_ptr<const Mesh> make_mesh(std::vector<Vec3f> positions,
                                       std::vector<std::array<std::uint32_t, 3>> triangles,
                                       std::vector<Vec3f> normals, const MeshOptions& options) {
-  for (std::size_t i = 0; i < positions.size(); ++i)
-    if (!is_finite(positions[i]))
+  const std::size_t nv = positions.size(), nt = triangles.size();
+  StageProgress stage("checking triangles", nt);
+  {
+    if (const std::size_t i =
+            first_bad(nv, [&](std::size_t k) { return !is_finite(positions[k]); });
+        i < nv)
       throw std::invalid_argument("vertex " + std::to_string(i) + " is not finite");
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-    for (std::uint32_t k : triangles[i])
-      if (k >= positions.size())
-        throw std::invalid_argument("triangle " + std::to_string(i) + " has vertex index " +
-                                    std::to_string(k) + " out of range (" +
-                                    std::to_string(positions.size()) + " vertices)");
-  if (!normals.empty()) {
-    if (normals.size() != positions.size())
-      throw std::invalid_argument("normals must be one per vertex (" +
-                                  std::to_string(normals.size()) + " for " +
-                                  std::to_string(positions.size()) + " vertices)");
-    for (std::size_t i = 0; i < normals.size(); ++i) {
-      const Vec3 n(normals[i]);
-      if (!is_finite(n) || !(length_squared(n) > 0))
+    if (const std::size_t i = first_bad(nt,
+                                        [&](std::size_t k) {
+                                          const auto& t = triangles[k];
+                                          return t[0] >= nv || t[1] >= nv || t[2] >= nv;
+                                        });
+        i < nt) {
+      std::uint32_t bad = 0;
+      for (std::uint32_t k : triangles[i])
+        if (k >= nv) {
+          bad = k;
+          break;
+        }
+      throw std::invalid_argument("triangle " + std::to_string(i) + " has vertex index " +
+                                  std::to_string(bad) + " out of range (" + std::to_string(nv) +
+                                  " vertices)");
+    }
+    if (!normals.empty()) {
+      if (normals.size() != nv)
+        throw std::invalid_argument("normals must be one per vertex (" +
+                                    std::to_string(normals.size()) + " for " + std::to_string(nv) +
+                                    " vertices)");
+      if (const std::size_t i = first_bad(normals.size(),
+                                          [&](std::size_t k) {
+                                            const Vec3 n(normals[k]);
+                                            return !is_finite(n) || !(length_squared(n) > 0);
+                                          });
+          i < normals.size())
         throw std::invalid_argument("normal " + std::to_string(i) + " is zero or not finite");
-      normals[i] = Vec3f(normalize(n));
+      tbb::parallel_for(std::size_t(0), normals.size(),
+                        [&](std::size_t k) { normals[k] = Vec3f(normalize(Vec3(normals[k]))); });
     }
   }
   auto mesh = std::make_shared<Mesh>();
   Mesh& m = *mesh;
   m.positions = std::move(positions);
-  // Drop degenerate triangles: repeated indices or zero area (exactly, from the float vertices).
-  m.triangles.reserve(triangles.size());
-  m.source.reserve(triangles.size());
-  for (std::size_t i = 0; i < triangles.size(); ++i) {
-    const auto& t = triangles[i];
-    const Vec3 v0(m.positions[t[0]]);
-    const bool degenerate =
-        t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
-        length_squared(cross(Vec3(m.positions[t[1]]) - v0, Vec3(m.positions[t[2]]) - v0)) == 0;
-    if (degenerate) {
-      ++m.dropped;
-      continue;
+  {
+    // Drop degenerate triangles: repeated indices or zero area (exactly, from the float
+    // vertices). One parallel pass flags them, counts the kept ones per block and bounds them;
+    // a second scatters the kept ones when any was dropped.
+    const std::size_t blocks = (nt + kBlock - 1) / kBlock;
+    std::vector<std::uint8_t> keep(nt);
+    std::vector<std::size_t> kept(blocks + 1, 0);
+    std::vector<Aabb> box(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+      const std::size_t e = std::min(nt, (b + 1) * kBlock);
+      std::size_t count = 0;
+      Aabb bb;
+      for (std::size_t i = b * kBlock; i < e; ++i) {
+        const auto& t = triangles[i];
+        const Vec3 v0(m.positions[t[0]]), v1(m.positions[t[1]]), v2(m.positions[t[2]]);
+        const bool degenerate = t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+                                length_squared(cross(v1 - v0, v2 - v0)) == 0;
+        keep[i] = !degenerate;
+        if (degenerate) continue;
+        ++count;
+        bb.grow(v0);
+        bb.grow(v1);
+        bb.grow(v2);
+      }
+      kept[b + 1] = count;
+      box[b] = bb;
+      stage.advance(e - b * kBlock);
+    });
+    for (std::size_t b = 0; b < blocks; ++b) {
+      kept[b + 1] += kept[b];
+      m.box.grow(box[b]);
     }
-    m.triangles.push_back(t);
-    m.source.push_back(static_cast<std::uint32_t>(i));
+    const std::size_t total = kept[blocks];
+    m.dropped = nt - total;
+    m.source.resize(total);  // uninitialised: written in parallel below
+    if (m.dropped == 0) {
+      m.triangles = std::move(triangles);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, kBlock),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i < r.end(); ++i)
+                            m.source[i] = static_cast<std::uint32_t>(i);
+                        });
+    } else {
+      resize_huge(m.triangles, total);
+      tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+        const std::size_t e = std::min(nt, (b + 1) * kBlock);
+        std::size_t out = kept[b];
+        for (std::size_t i = b * kBlock; i < e; ++i) {
+          if (!keep[i]) continue;
+          m.triangles[out] = triangles[i];
+          m.source[out++] = static_cast<std::uint32_t>(i);
+        }
+      });
+      triangles = {};
+    }
   }
-  triangles = {};
-  m.triangles.shrink_to_fit();
-  m.source.shrink_to_fit();
-  for (const auto& t : m.triangles)
-    for (std::uint32_t k : t) m.box.grow(Vec3(m.positions[k]));
+  stage.finish();
   if (options.smooth)
     m.normals =
         normals.empty() ? angle_weighted_normals(m.positions, m.triangles) : std::move(normals);
-  m.closed = is_closed_mesh(m.positions, m.triangles);
-  if (m.closed && signed_volume(m) < 0) m.orientation = -1;
   const auto start = std::chrono::steady_clock::now();
   m.bvh = build_mesh_bvh(m.positions, m.triangles, options.bvh);
   m.build_ms =
@@ -252,7 +347,7 @@ void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
   };
   std::vector<Crossing> xs;
   xs.reserve(hits.size());
-  const double orientation = m.orientation;
+  const double orientation = m.orientation();
   for (const MeshBvhHit& h : hits) {
     const double t = refine_hit(m, h, ray, scale);
     const double facing = dot(ray.d, face_normal_unnormalised(m, h.triangle)) * orientation;
@@ -266,7 +361,7 @@ void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
   // crossings closer than the float resolution of the mesh's coordinates are one event.
   const double coord = std::max(max_component(abs(m.box.lo)), max_component(abs(m.box.hi)));
   const double tol = 8 * std::numeric_limits<float>::epsilon() * coord / length(ray.d);
-  if (!m.closed) {
+  if (!m.closed()) {
     // An open mesh: each event is a zero-length span (same-direction duplicates merged).
     std::vector<Crossing> merged;
     for (const Crossing& c : xs) {
@@ -347,7 +442,7 @@ SurfaceInfo surface(const MeshShape& s, const Ray& ray, const LocalHit& hit) {
 }
 
 bool contains(const MeshShape& s, const Vec3& p) {
-  if (!s.mesh->closed) return false;
+  if (!s.mesh->closed()) return false;
   SpanList out;
   spans(s, Ray{p, kContainsDirection}, out);
   for (const Span& sp : out)
@@ -355,6 +450,6 @@ bool contains(const MeshShape& s, const Vec3& p) {
   return false;
 }
 
-bool is_closed(const MeshShape& s) { return s.mesh->closed; }
+bool is_closed(const MeshShape& s) { return s.mesh->closed(); }
 
 }  // namespace raycast

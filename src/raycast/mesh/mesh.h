@@ -4,8 +4,10 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
+#include "accel/build_memory.h"
 #include "geometry/shape.h"
 #include "mesh/mesh_bvh.h"
 
@@ -18,20 +20,32 @@ namespace raycast {
 struct Mesh {
   std::vector<Vec3f> positions;
   std::vector<std::array<std::uint32_t, 3>> triangles;  // kept triangles
-  std::vector<std::uint32_t> source;                    // kept triangle -> input triangle index
+  BuildVector<std::uint32_t> source;                    // kept triangle -> input triangle index
   std::vector<Vec3f> normals;  // unit vertex normals (smooth meshes), else empty
   std::size_t dropped = 0;     // degenerate input triangles dropped
-  bool closed = false;         // every edge shared by exactly two triangles (positions welded)
-  double orientation = 1;      // -1 for a closed mesh whose normals point inwards (negative volume)
   Aabb box;                    // bounds of the kept triangles (empty when none)
   MeshBvh bvh;
   double build_ms = 0;  // BVH build time
+
+  /// Whether every edge (by welded position) is shared by exactly two triangles. Found on first
+  /// use (a sort of all edges, seconds for tens of millions of triangles), so that meshes never
+  /// used as solids (CSG operands, span queries) never pay for it; thread-safe.
+  bool closed() const;
+  /// -1 for a closed mesh whose normals point inwards (negative volume), else 1; found with
+  /// closed().
+  double orientation() const;
 
   std::size_t triangle_count() const { return triangles.size(); }
   /// Bytes of the acceleration structure (nodes and precomputed leaf triangles).
   std::size_t bvh_bytes() const { return bvh.memory_bytes(); }
   /// Bytes of everything the mesh holds (storage and BVH).
   std::size_t memory_bytes() const;
+
+ private:
+  void find_closed() const;
+  mutable std::once_flag closed_once_;
+  mutable bool closed_ = false;
+  mutable double orientation_ = 1;
 };
 
 /// Options of make_mesh.

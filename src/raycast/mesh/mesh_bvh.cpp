@@ -361,25 +361,27 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
   MeshBvh out;
   const std::size_t n = triangles.size();
   if (n == 0) return out;
-  std::vector<Aabb> boxes(n);
-  std::vector<Vec3> centres(n);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                        Aabb b;
-                        for (int k = 0; k < 3; ++k) b.grow(Vec3(positions[triangles[i][k]]));
-                        boxes[i] = b;
-                        centres[i] = b.centre();
-                      }
-                    });
+  // Triangle boxes go straight into the builder's 32-byte references (exact: float vertices).
+  BvhBuildRefs refs(n);  // uninitialised: filled in parallel below
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+          const Vec3f& a = positions[triangles[i][0]];
+          const Vec3f& b = positions[triangles[i][1]];
+          const Vec3f& c = positions[triangles[i][2]];
+          refs[i] = {
+              {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})},
+              static_cast<std::uint32_t>(i),
+              {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})},
+              0};
+        }
+      });
   BvhBuildConfig bc;
   bc.bins = config.bins;
   bc.max_leaf_size = std::clamp(config.max_leaf_size, 1, 4 * kMaxGroupsPerLeaf);
   bc.leaf_block = std::max(config.leaf_block, 1);
   bc.traversal_cost = config.traversal_cost;
-  const Bvh binary = build_bvh(boxes, centres, bc);
-  boxes = {};
-  centres = {};
+  const Bvh binary = build_bvh_from_refs(std::move(refs), bc);
   Collapser(binary, positions, triangles, out).run();
   return out;
 }

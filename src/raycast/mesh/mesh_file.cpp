@@ -1,8 +1,12 @@
 #include "mesh/mesh_file.h"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +15,12 @@
 #include <filesystem>
 #include <memory>
 #include <sstream>
+#include <string_view>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "accel/progress.h"
 
 #ifdef RAYCAST_HAVE_ASSIMP
 #include <assimp/postprocess.h>
@@ -27,50 +37,49 @@ std::string lower(std::string s) {
   return s;
 }
 
-// A progress bar on stderr for large files when stderr is a terminal.
-class Progress {
+// A read-only memory map of a whole file (empty files map to nothing).
+class MappedFile {
  public:
-  Progress(const std::string& what, std::uint64_t total)
-      : what_(what), total_(total), on_(total >= (64u << 20) && isatty(2)) {}
-  ~Progress() {
-    if (on_) std::fprintf(stderr, "\r%s: done%30s\n", what_.c_str(), "");
+  explicit MappedFile(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw MeshFileError("cannot open the mesh file");
+    struct stat st;
+    if (::fstat(fd, &st) != 0) {
+      ::close(fd);
+      throw MeshFileError("cannot read the mesh file");
+    }
+    size_ = static_cast<std::size_t>(st.st_size);
+    if (size_ > 0) {
+      void* p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+      if (p == MAP_FAILED) {
+        ::close(fd);
+        throw MeshFileError("cannot map the mesh file");
+      }
+      data_ = static_cast<const char*>(p);
+      ::madvise(p, size_, MADV_SEQUENTIAL);
+    }
+    ::close(fd);
   }
-  void update(std::uint64_t done) {
-    if (!on_ || total_ == 0) return;
-    const int pct = static_cast<int>(100 * done / total_);
-    if (pct == last_) return;
-    last_ = pct;
-    const int bars = pct / 4;
-    std::fprintf(stderr, "\r%s: [%.*s%*s] %3d%%", what_.c_str(), bars,
-                 "=========================", 25 - bars, "", pct);
-    std::fflush(stderr);
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  ~MappedFile() {
+    if (data_) ::munmap(const_cast<char*>(data_), size_);
+  }
+  const char* data() const { return data_; }
+  std::size_t size() const { return size_; }
+  // Drops the pages of [p, p + bytes) from the process (they stay in the page cache): a part
+  // already decoded need not count towards the peak memory.
+  void release(const char* p, std::size_t bytes) const {
+    const std::uintptr_t page = 4096;
+    const auto b = (reinterpret_cast<std::uintptr_t>(p) + page - 1) & ~(page - 1);
+    const auto e = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(page - 1);
+    if (e > b) ::madvise(reinterpret_cast<void*>(b), e - b, MADV_DONTNEED);
   }
 
  private:
-  std::string what_;
-  std::uint64_t total_;
-  bool on_;
-  int last_ = -1;
+  const char* data_ = nullptr;
+  std::size_t size_ = 0;
 };
-
-std::vector<char> read_all(const std::string& path) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), std::fclose);
-  if (!f) throw MeshFileError("cannot open the mesh file");
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw MeshFileError("cannot read the mesh file");
-  std::vector<char> data(size);
-  Progress progress("loading " + std::filesystem::path(path).filename().string(), size);
-  std::size_t done = 0;
-  while (done < size) {
-    const std::size_t chunk = std::min<std::size_t>(size - done, 16u << 20);
-    const std::size_t got = std::fread(data.data() + done, 1, chunk, f.get());
-    if (got == 0) throw MeshFileError("cannot read the mesh file");
-    done += got;
-    progress.update(done);
-  }
-  return data;
-}
 
 // ---- Binary little-endian PLY (our own reader) --------------------------------------------------
 
@@ -160,33 +169,105 @@ struct PlyElement {
   std::vector<PlyProperty> props;
 };
 
-// Reads binary little-endian PLY files of the common shape (vertex element with x, y, z and
-// optional nx, ny, nz; face element with one index list). Returns false, having read nothing,
-// for any other PLY so that assimp gets it.
-bool read_binary_ply(const std::string& path, MeshFileData& out) {
-  {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) throw MeshFileError("cannot open the mesh file");
-    char magic[64] = {};
-    const std::size_t got = std::fread(magic, 1, sizeof magic - 1, f);
-    std::fclose(f);
-    if (got < 4 || std::strncmp(magic, "ply", 3) != 0)
-      throw MeshFileError("not a PLY file (no 'ply' magic)");
-    if (!std::strstr(magic, "binary_little_endian")) return false;
+// A vertex index as stored: negative or huge values become an out-of-range index, reported by
+// make_mesh.
+std::uint32_t ply_index(const char* p, PlyType t) {
+  const double v = ply_read(p, t);
+  return v >= 0 && v < 4294967295.0 ? static_cast<std::uint32_t>(v) : 0xFFFFFFFFu;
+}
+
+// Rows decoded between two progress updates (and between two releases of decoded pages).
+constexpr std::uint64_t kSlab = 1u << 20;
+
+// Decodes rows [0, count) with `row(i)` in parallel, slab by slab, advancing the progress bar by
+// each slab's bytes and releasing the decoded pages of the map.
+template <class Row>
+void decode_rows(std::uint64_t count, std::uint64_t stride, const char* base,
+                 const MappedFile& file, StageProgress& progress, Row row) {
+  for (std::uint64_t s = 0; s < count; s += kSlab) {
+    const std::uint64_t e = std::min(count, s + kSlab);
+    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(s, e, 16384),
+                      [&](const tbb::blocked_range<std::uint64_t>& r) {
+                        for (std::uint64_t i = r.begin(); i < r.end(); ++i) row(i);
+                      });
+    file.release(base + s * stride, (e - s) * stride);
+    progress.advance((e - s) * stride);
   }
-  const std::vector<char> data = read_all(path);
-  const char* end_header = nullptr;
-  for (std::size_t i = 0; i + 10 <= data.size(); ++i)
-    if (std::memcmp(data.data() + i, "end_header", 10) == 0) {
-      end_header = data.data() + i;
-      break;
-    }
-  if (!end_header) throw MeshFileError("truncated PLY header (no end_header)");
-  const char* body = static_cast<const char*>(
-      std::memchr(end_header, '\n', data.data() + data.size() - end_header));
-  if (!body) throw MeshFileError("truncated PLY header");
-  ++body;
-  std::istringstream header(std::string(data.data(), end_header));
+}
+
+// The fast path for faces: one index list whose rows all hold 3 indices, so that every row has
+// the same size and rows decode in parallel. Checks every row's count; returns false (having
+// moved nothing) when a row is not a triangle or the data ends early, for the general path.
+bool read_triangle_rows(const PlyElement& e, const char*& p, const char* end,
+                        const MappedFile& file, StageProgress& progress,
+                        std::vector<std::array<std::uint32_t, 3>>& out) {
+  if (e.props.size() != 1) return false;
+  const PlyProperty& q = e.props[0];
+  if (q.count_type == PlyType::kNone || (q.name != "vertex_indices" && q.name != "vertex_index"))
+    return false;
+  const std::uint64_t cs = ply_size(q.count_type), is = ply_size(q.type);
+  const std::uint64_t stride = cs + 3 * is;
+  if (static_cast<std::uint64_t>(end - p) / stride < e.count) return false;
+  const char* const rows = p;
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  tris.resize(e.count);
+  std::atomic<bool> ok{true};
+  for (std::uint64_t s = 0; s < e.count && ok; s += kSlab) {
+    const std::uint64_t se = std::min<std::uint64_t>(e.count, s + kSlab);
+    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(s, se, 16384),
+                      [&](const tbb::blocked_range<std::uint64_t>& r) {
+                        bool good = true;
+                        for (std::uint64_t i = r.begin(); i < r.end(); ++i) {
+                          const char* row = rows + i * stride;
+                          good &= ply_read(row, q.count_type) == 3;
+                          for (int k = 0; k < 3; ++k) {
+                            const char* v = row + cs + k * is;
+                            if (q.type == PlyType::kI32) {
+                              std::int32_t x;
+                              std::memcpy(&x, v, 4);
+                              tris[i][k] = x < 0 ? 0xFFFFFFFFu : static_cast<std::uint32_t>(x);
+                            } else if (q.type == PlyType::kU32) {
+                              std::memcpy(&tris[i][k], v, 4);
+                            } else {
+                              tris[i][k] = ply_index(v, q.type);
+                            }
+                          }
+                        }
+                        if (!good) ok = false;
+                      });
+    progress.advance((se - s) * stride);
+  }
+  if (!ok) return false;
+  file.release(rows, e.count * stride);
+  out = std::move(tris);
+  p += e.count * stride;
+  return true;
+}
+
+// Reads binary little-endian PLY files of the common shape (vertex element with x, y, z and
+// optional nx, ny, nz; face element with one index list) in one pass over a memory map. Returns
+// false, having read nothing, for any other PLY so that assimp gets it. Vertices are decoded in
+// parallel; faces too when every row is a triangle with the same layout (the usual case),
+// else by a serial pass that fans polygons.
+bool read_binary_ply(const std::string& path, MeshFileData& out) {
+  const MappedFile file(path);
+  const char* const data = file.data();
+  const std::size_t size = file.size();
+  if (size < 4 || std::strncmp(data, "ply", 3) != 0)
+    throw MeshFileError("not a PLY file (no 'ply' magic)");
+  // The header is text; a header longer than this is not one we read.
+  const std::size_t header_limit = std::min<std::size_t>(size, 1u << 20);
+  const std::string_view head(data, header_limit);
+  const std::size_t format = head.find("\nformat ");
+  if (format == std::string_view::npos ||
+      head.substr(format, 64).find("binary_little_endian") == std::string_view::npos)
+    return false;
+  const std::size_t end_header = head.find("end_header");
+  if (end_header == std::string_view::npos)
+    throw MeshFileError("truncated PLY header (no end_header)");
+  const std::size_t newline = head.find('\n', end_header);
+  if (newline == std::string_view::npos) throw MeshFileError("truncated PLY header");
+  std::istringstream header(std::string(data, end_header));
   std::vector<PlyElement> elements;
   std::string line;
   while (std::getline(header, line)) {
@@ -217,16 +298,19 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
       elements.back().props.push_back(p);
     }
   }
+  const char* const body = data + newline + 1;
   const char* p = body;
-  const char* const end = data.data() + data.size();
+  const char* const end = data + size;
   auto need = [&](std::uint64_t bytes) {
     if (static_cast<std::uint64_t>(end - p) < bytes)
       throw MeshFileError("truncated PLY file (data ends early)");
   };
+  StageProgress progress("reading " + std::filesystem::path(path).filename().string(),
+                         static_cast<std::uint64_t>(end - p), 64u << 20);
   bool have_vertices = false;
   for (const PlyElement& e : elements) {
-    // Every row takes at least one byte: a count beyond the bytes left is a truncated file (and
-    // keeps the size arithmetic below from overflowing).
+    // Every row takes at least one byte: a count beyond the bytes left is a truncated file, found
+    // before anything is allocated (and it keeps the size arithmetic below from overflowing).
     if (e.count > static_cast<std::uint64_t>(end - p))
       throw MeshFileError("truncated PLY file (element " + e.name +
                           " has more rows than the file has bytes)");
@@ -249,19 +333,39 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
         throw MeshFileError("PLY vertices have no x, y, z");
       const bool normals = off[3] >= 0 && off[4] >= 0 && off[5] >= 0;
       need(e.count * stride);
+      // Three consecutive floats (the usual layout) are copied; anything else converts per value.
+      auto packed = [&](int k) {
+        return type[k] == PlyType::kF32 && type[k + 1] == PlyType::kF32 &&
+               type[k + 2] == PlyType::kF32 && off[k + 1] == off[k] + 4 && off[k + 2] == off[k] + 8;
+      };
+      const bool fast_xyz = packed(0), fast_n = normals && packed(3);
       out.soup.positions.resize(e.count);
       if (normals) out.normals.resize(e.count);
-      for (std::uint64_t i = 0; i < e.count; ++i, p += stride) {
-        out.soup.positions[i] =
-            Vec3f(Vec3{ply_read(p + off[0], type[0]), ply_read(p + off[1], type[1]),
-                       ply_read(p + off[2], type[2])});
-        if (normals)
-          out.normals[i] = Vec3f(Vec3{ply_read(p + off[3], type[3]), ply_read(p + off[4], type[4]),
-                                      ply_read(p + off[5], type[5])});
-      }
+      const char* const rows = p;
+      decode_rows(e.count, stride, rows, file, progress, [&](std::uint64_t i) {
+        const char* r = rows + i * stride;
+        if (fast_xyz)
+          std::memcpy(&out.soup.positions[i], r + off[0], 12);
+        else
+          out.soup.positions[i] =
+              Vec3f(Vec3{ply_read(r + off[0], type[0]), ply_read(r + off[1], type[1]),
+                         ply_read(r + off[2], type[2])});
+        if (fast_n)
+          std::memcpy(&out.normals[i], r + off[3], 12);
+        else if (normals)
+          out.normals[i] = Vec3f(Vec3{ply_read(r + off[3], type[3]), ply_read(r + off[4], type[4]),
+                                      ply_read(r + off[5], type[5])});
+      });
+      p += e.count * stride;
       have_vertices = true;
     } else if (e.name == "face") {
-      out.soup.triangles.reserve(e.count);
+      if (read_triangle_rows(e, p, end, file, progress, out.soup.triangles)) continue;
+      // Smallest row: the fixed properties and every list's count.
+      std::uint64_t min_row = 0;
+      for (const PlyProperty& q : e.props)
+        min_row += ply_size(q.count_type != PlyType::kNone ? q.count_type : q.type);
+      out.soup.triangles.reserve(
+          std::min<std::uint64_t>(e.count, (end - p) / std::max<std::uint64_t>(min_row, 1)));
       for (std::uint64_t i = 0; i < e.count; ++i) {
         for (const PlyProperty& q : e.props) {
           if (q.count_type == PlyType::kNone) {
@@ -282,10 +386,7 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
           }
           std::uint32_t first = 0, prev = 0;
           for (std::uint32_t k = 0; k < count; ++k, p += ply_size(q.type)) {
-            const double v = ply_read(p, q.type);
-            // Negative or huge indices become out-of-range indices, reported by make_mesh.
-            const std::uint32_t idx =
-                v >= 0 && v < 4294967295.0 ? static_cast<std::uint32_t>(v) : 0xFFFFFFFFu;
+            const std::uint32_t idx = ply_index(p, q.type);
             if (k == 0)
               first = idx;
             else if (k >= 2)
@@ -293,6 +394,7 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
             prev = idx;
           }
         }
+        if ((i & (kSlab - 1)) == 0) progress.set(static_cast<std::uint64_t>(p - body));
       }
     } else {
       // Skip another element; it must have fixed-size rows to be skippable.

@@ -121,7 +121,7 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
     // A closed mesh wound inside out reports its winding's (inward) normals; in CSG every
     // surface's normal points out of the solid, so its hits start flipped.
     const auto* mesh = std::get_if<MeshShape>(&leaf.shape);
-    tree.leaf_flipped.push_back(mesh && mesh->mesh->orientation < 0);
+    tree.leaf_flipped.push_back(mesh && mesh->mesh->orientation() < 0);
   }
   for (std::size_t k = tree.nodes.size(); k-- > 0;) {
     CsgNode& node = tree.nodes[k];
