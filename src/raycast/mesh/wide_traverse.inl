@@ -146,19 +146,18 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
   return m;
 }
 
-// Starts loading every hit child (node or first leaf group) at once, so that the memory latency
-// of siblings overlaps instead of adding up.
+// Starts loading every hit child (a node's four cache lines, or all of a leaf's groups) at once,
+// so that the memory latency of siblings overlaps instead of adding up.
 inline void prefetch_children(const MeshBvh& bvh, const WideNode& node, int mask) {
   while (mask) {
     const std::uint32_t ref = node.child[__builtin_ctz(mask)];
     mask &= mask - 1;
-    const char* c = (ref & kLeafBit)
-                        ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
-                        : reinterpret_cast<const char*>(&bvh.nodes[ref]);
-    __builtin_prefetch(c);
-    __builtin_prefetch(c + 64);
-    __builtin_prefetch(c + 128);
-    if (!(ref & kLeafBit)) __builtin_prefetch(c + 192);
+    const bool leaf = ref & kLeafBit;
+    const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
+                         : reinterpret_cast<const char*>(&bvh.nodes[ref]);
+    const int bytes =
+        leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup)) : 224;
+    for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
   }
 }
 
@@ -205,8 +204,8 @@ enum class Query { kNearest, kAny, kAll };
 // nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
 // first hit (kAny), or every hit appended to `out` (kAll).
 template <Query Q>
-bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit,
-              std::vector<MeshBvhHit>* out, TraversalEntry* stack) {
+bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+              TraversalEntry* stack) {
   if (bvh.empty()) return false;
   const RayData p = prepare(ray);
   float tmax_s = ray.tmax;
@@ -246,9 +245,12 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit,
           const int l = __builtin_ctz(m);
           m &= m - 1;
           const std::uint32_t g = gi + (l >> 2);
-          const MeshBvhHit h{res.t[l],          res.v[l] / res.det[l],
-                             res.w[l] / res.det[l], bvh.groups[g].id[l & 3],
-                             g,                 static_cast<std::uint32_t>(l & 3)};
+          const MeshBvhHit h{res.t[l],
+                             res.v[l] / res.det[l],
+                             res.w[l] / res.det[l],
+                             bvh.groups[g].id[l & 3],
+                             g,
+                             static_cast<std::uint32_t>(l & 3)};
           if constexpr (Q == Query::kNearest) {
             if (res.t[l] <= tmax_s) {
               tmax_s = res.t[l];
