@@ -40,7 +40,8 @@ void append_mesh_hit(std::vector<MeshBvhHit>& out, const MeshBvhHit& hit);
 /// group when kernels test two groups per pass.
 extern const TriangleGroup kEmptyTriangleGroup;
 
-// Defined by the per-ISA translation units (nullptr-free only where compiled).
+// The tables, defined by mesh/wide_kernels_<isa>.cpp (the SIMD ones on x86-64 only). Use
+// mesh_kernels(isa), which also checks that the CPU can run them.
 extern const MeshKernels kMeshKernelsScalar;
 #if defined(__x86_64__)
 extern const MeshKernels kMeshKernelsSse4;
