@@ -2,6 +2,9 @@
 #include <map>
 #include <string>
 
+#include <thread>
+
+#include "accel/isa.h"
 #include "commands.h"
 #include "scene/loader.h"
 
@@ -39,13 +42,32 @@ void print_meshes(const Scene& scene) {
               bvh, triangles ? double(bvh) / triangles : 0.0, build_ms, total);
 }
 
+// The machine as the engine sees it: the SIMD path of the kernels and why, and the threads.
+void print_system() {
+  std::printf("isa: %s (%s)\n", isa_name(active_isa()), active_isa_reason());
+  std::printf("isa supported:");
+  for (Isa isa : kAllIsas)
+    if (isa_supported(isa)) std::printf(" %s", isa_name(isa));
+  std::printf("\nhardware threads: %u\n", std::thread::hardware_concurrency());
+}
+
 }  // namespace
 
 Action add_info_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("info", "Print what a scene holds: objects, bounds, acceleration");
   auto scene_path = std::make_shared<std::string>();
-  cmd->add_option("SCENE", *scene_path, "Scene file (YAML or JSON)")->required();
-  return [scene_path] {
+  auto system = std::make_shared<bool>(false);
+  cmd->add_option("SCENE", *scene_path, "Scene file (YAML or JSON)");
+  cmd->add_flag("--system", *system,
+                "Print the SIMD path in use (RAYCAST_ISA=scalar|sse4|avx2|avx512 forces one) and "
+                "the hardware threads");
+  return [scene_path, system] {
+    if (*system) print_system();
+    if (scene_path->empty()) {
+      if (*system) return 0;
+      std::fprintf(stderr, "raycast info: give a SCENE, or --system\n");
+      return 2;
+    }
     const Scene scene = load_scene_file(*scene_path);
     std::map<std::string, int> by_type;
     for (const Object& o : scene.objects) ++by_type[shape_name(o)];

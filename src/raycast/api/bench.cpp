@@ -1,5 +1,7 @@
 #include "api/bench.h"
 
+#include "accel/isa.h"
+
 #include <sys/resource.h>
 #include <algorithm>
 #include <chrono>
@@ -339,12 +341,12 @@ std::string format_bench(const BenchResult& r, bool json) {
                   "\"hits\": %llu, "
                   "\"threads\": %d, \"raycast_build_ms\": %.3f, \"raycast_mrays\": %.4f, "
                   "\"raycast_bytes_per_tri\": %.2f, \"raycast_total_bytes_per_tri\": %.2f, "
-                  "\"raycast_mrays_cpu\": %.4f",
+                  "\"raycast_mrays_cpu\": %.4f, \"isa\": \"%s\"",
                   json_escape(r.what).c_str(), r.ray_kind.c_str(),
                   static_cast<unsigned long long>(r.triangles),
                   static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
                   r.threads, r.raycast_build_ms, r.raycast_mrays, r.raycast_bytes_per_tri,
-                  r.raycast_total_bytes_per_tri, r.raycast_mrays_cpu);
+                  r.raycast_total_bytes_per_tri, r.raycast_mrays_cpu, isa_name(active_isa()));
     out = buf;
     if (r.embree) {
       std::snprintf(
@@ -364,11 +366,12 @@ std::string format_bench(const BenchResult& r, bool json) {
   }
   std::snprintf(
       buf, sizeof buf,
-      "mesh: %s (%llu triangles)\nrays: %s, %llu rays (%llu hit), %d threads\n"
+      "mesh: %s (%llu triangles)\nrays: %s, %llu rays (%llu hit), %d threads, isa %s\n"
       "raycast: build %.1f ms, %.3f Mrays/s, %.1f bytes/triangle (BVH; %.1f with mesh storage)\n",
       r.what.c_str(), static_cast<unsigned long long>(r.triangles), r.ray_kind.c_str(),
       static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits), r.threads,
-      r.raycast_build_ms, r.raycast_mrays, r.raycast_bytes_per_tri, r.raycast_total_bytes_per_tri);
+      isa_name(active_isa()), r.raycast_build_ms, r.raycast_mrays, r.raycast_bytes_per_tri,
+      r.raycast_total_bytes_per_tri);
   out = buf;
   if (r.embree) {
     std::snprintf(

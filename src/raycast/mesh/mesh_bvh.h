@@ -1,7 +1,8 @@
 #pragma once
-// The per-mesh acceleration structure: a 4-wide BVH in float, built by collapsing the generic
+// The per-mesh acceleration structure: an 8-wide BVH in float, built by collapsing the generic
 // binary SAH tree of accel/bvh.h, with leaves of precomputed triangle groups (4 triangles in SoA
-// form, so that one SSE pass tests them all). Traversal is ordered, nearest child first.
+// form; the AVX2 and AVX-512 kernels test two groups per pass). Traversal is ordered, nearest child
+// first, by kernels compiled per instruction set and picked at run time (mesh/wide_kernels.h).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -13,17 +14,20 @@
 
 namespace raycast {
 
-/// A node with up to 4 children, 128 bytes (two cache lines): the six box planes of the four
-/// children as SoA float lanes (96 bytes), then the four child references (16 bytes) and 16 bytes
-/// of padding to keep nodes cache-line aligned. A child reference is an inner node's index, or
-/// (bit 31 set) a leaf: bits 0-28 the first triangle group, bits 29-30 the group count minus 1.
+inline constexpr int kNodeWidth = 8;
+
+/// A node with up to 8 children, 256 bytes (four cache lines): the six box planes of the eight
+/// children as SoA float lanes (192 bytes), then the eight child references (32 bytes) and 32
+/// bytes of padding to keep nodes cache-line aligned. A child reference is an inner node's index,
+/// or (bit 31 set) a leaf: bits 0-28 the first triangle group, bits 29-30 the group count minus 1.
 /// An unused slot has an empty box (lo = +inf, hi = -inf), which no ray enters, and reference 0.
 struct alignas(64) WideNode {
-  float lo_x[4], hi_x[4], lo_y[4], hi_y[4], lo_z[4], hi_z[4];
-  std::uint32_t child[4];
-  std::uint32_t pad[4];
+  float lo_x[kNodeWidth], hi_x[kNodeWidth], lo_y[kNodeWidth], hi_y[kNodeWidth], lo_z[kNodeWidth],
+      hi_z[kNodeWidth];
+  std::uint32_t child[kNodeWidth];
+  std::uint32_t pad[kNodeWidth];
 };
-static_assert(sizeof(WideNode) == 128);
+static_assert(sizeof(WideNode) == 256);
 
 inline constexpr std::uint32_t kLeafBit = 0x80000000u;
 inline constexpr int kMaxGroupsPerLeaf = 4;
@@ -51,7 +55,7 @@ struct MeshBvh {
   std::vector<WideNode> nodes;        // nodes[0] is the root when there is any triangle
   std::vector<TriangleGroup> groups;  // leaf data, permuted to leaf order
   std::uint32_t root = 0;             // a child reference: node 0, or a single leaf
-  int depth = 0;                      // deepest node level (for the traversal stack)
+  int depth = 0;                      // deepest node level (the root is level 1)
   bool empty() const { return groups.empty(); }
   std::size_t memory_bytes() const {
     return nodes.size() * sizeof(WideNode) + groups.size() * sizeof(TriangleGroup);
@@ -91,6 +95,14 @@ inline Vec3f hit_vertex(const MeshBvh& bvh, const MeshBvhHit& h, int k) {
   return {g.v[k][0][h.lane], g.v[k][1][h.lane], g.v[k][2][h.lane]};
 }
 
+/// Entries a traversal stack needs for `bvh`: each level below the root pushes at most
+/// kNodeWidth - 1 entries.
+inline std::size_t traversal_stack_size(const MeshBvh& bvh) {
+  return static_cast<std::size_t>(bvh.depth) * (kNodeWidth - 1) + 2;
+}
+
+/// The queries below run the kernels of active_isa() (accel/isa.h); mesh/wide_kernels.h gives
+/// those of any ISA.
 /// Nearest hit with tmin <= t <= tmax (watertight test, float); false on a miss.
 bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit);
 /// Whether any triangle is hit with tmin <= t <= tmax; stops at the first found.

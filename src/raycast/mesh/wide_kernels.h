@@ -1,0 +1,52 @@
+#pragma once
+// The mesh traversal kernels of each instruction set, as a table of function pointers: one
+// traversal template (mesh/wide_traverse.inl) compiled once per ISA (mesh/wide_kernels_*.cpp)
+// and picked at run time (accel/isa.h; docs/architecture.md "ISA dispatch").
+#include <cstdint>
+#include <vector>
+
+#include "accel/isa.h"
+#include "mesh/mesh_bvh.h"
+
+namespace raycast {
+
+/// One traversal stack entry: a child reference and the distance at which the ray enters it.
+struct TraversalEntry {
+  std::uint32_t ref;
+  float tnear;
+};
+
+/// The three queries of one ISA. `stack` has room for traversal_stack_size(bvh) entries. The
+/// results are bit for bit the same on every ISA (same float operations in the same order, no
+/// fused multiply-add): only the order of `every`'s hits may differ.
+struct MeshKernels {
+  Isa isa;
+  bool (*closest)(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit, TraversalEntry* stack);
+  bool (*any)(const MeshBvh& bvh, const MeshRay& ray, TraversalEntry* stack);
+  void (*every)(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
+                TraversalEntry* stack);
+};
+
+/// The kernels of `isa`, or nullptr when this build or this CPU lacks it (isa_supported).
+const MeshKernels* mesh_kernels(Isa isa);
+
+/// The kernels of active_isa().
+const MeshKernels& active_mesh_kernels();
+
+/// Appends to a hit list (out of line, so that ISA-specific code never instantiates vector code).
+void append_mesh_hit(std::vector<MeshBvhHit>& out, const MeshBvhHit& hit);
+
+/// A group of four triangles that no ray hits (NaN vertices): the partner of a leaf's odd last
+/// group when kernels test two groups per pass.
+extern const TriangleGroup kEmptyTriangleGroup;
+
+// The tables, defined by mesh/wide_kernels_<isa>.cpp (the SIMD ones on x86-64 only). Use
+// mesh_kernels(isa), which also checks that the CPU can run them.
+extern const MeshKernels kMeshKernelsScalar;
+#if defined(__x86_64__)
+extern const MeshKernels kMeshKernelsSse4;
+extern const MeshKernels kMeshKernelsAvx2;
+extern const MeshKernels kMeshKernelsAvx512;
+#endif
+
+}  // namespace raycast

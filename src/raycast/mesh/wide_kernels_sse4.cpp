@@ -1,0 +1,58 @@
+// The SSE4.2 mesh kernels: eight lanes as two 4-wide registers.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/triangle.h"
+#include "mesh/wide_kernels.h"
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+
+// Everything below (and nothing in the headers above) is compiled for SSE4.2.
+#pragma GCC push_options
+#pragma GCC target("sse4.2,popcnt")
+
+namespace raycast::kernels_sse4 {
+
+struct V8 {
+  __m128 a, b;
+};
+struct M8 {
+  __m128 a, b;
+};
+
+inline V8 load8(const float* p) { return {_mm_load_ps(p), _mm_load_ps(p + 4)}; }
+inline V8 load44(const float* a, const float* b) { return {_mm_load_ps(a), _mm_load_ps(b)}; }
+inline V8 splat(float x) { return {_mm_set1_ps(x), _mm_set1_ps(x)}; }
+inline void store8(float* p, V8 v) { _mm_store_ps(p, v.a), _mm_store_ps(p + 4, v.b); }
+inline V8 operator+(V8 x, V8 y) { return {_mm_add_ps(x.a, y.a), _mm_add_ps(x.b, y.b)}; }
+inline V8 operator-(V8 x, V8 y) { return {_mm_sub_ps(x.a, y.a), _mm_sub_ps(x.b, y.b)}; }
+inline V8 operator*(V8 x, V8 y) { return {_mm_mul_ps(x.a, y.a), _mm_mul_ps(x.b, y.b)}; }
+inline V8 operator/(V8 x, V8 y) { return {_mm_div_ps(x.a, y.a), _mm_div_ps(x.b, y.b)}; }
+inline V8 vmin(V8 x, V8 y) { return {_mm_min_ps(x.a, y.a), _mm_min_ps(x.b, y.b)}; }
+inline V8 vmax(V8 x, V8 y) { return {_mm_max_ps(x.a, y.a), _mm_max_ps(x.b, y.b)}; }
+inline M8 cmp_le(V8 x, V8 y) { return {_mm_cmple_ps(x.a, y.a), _mm_cmple_ps(x.b, y.b)}; }
+inline M8 cmp_ge(V8 x, V8 y) { return {_mm_cmpge_ps(x.a, y.a), _mm_cmpge_ps(x.b, y.b)}; }
+inline M8 cmp_eq(V8 x, V8 y) { return {_mm_cmpeq_ps(x.a, y.a), _mm_cmpeq_ps(x.b, y.b)}; }
+inline M8 cmp_ne(V8 x, V8 y) { return {_mm_cmpneq_ps(x.a, y.a), _mm_cmpneq_ps(x.b, y.b)}; }
+inline M8 mand(M8 x, M8 y) { return {_mm_and_ps(x.a, y.a), _mm_and_ps(x.b, y.b)}; }
+inline M8 mor(M8 x, M8 y) { return {_mm_or_ps(x.a, y.a), _mm_or_ps(x.b, y.b)}; }
+inline int bits(M8 m) { return _mm_movemask_ps(m.a) | _mm_movemask_ps(m.b) << 4; }
+inline V8 select(M8 m, V8 x, V8 y) {
+  return {_mm_blendv_ps(y.a, x.a, m.a), _mm_blendv_ps(y.b, x.b, m.b)};
+}
+
+}  // namespace raycast::kernels_sse4
+
+#define RAYCAST_KERNEL_NS kernels_sse4
+#include "mesh/wide_traverse.inl"
+#undef RAYCAST_KERNEL_NS
+
+#pragma GCC pop_options
+
+namespace raycast {
+const MeshKernels kMeshKernelsSse4 = {Isa::kSse4, kernels_sse4::closest, kernels_sse4::any,
+                                      kernels_sse4::every};
+}  // namespace raycast
+#endif

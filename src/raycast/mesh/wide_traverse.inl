@@ -1,0 +1,293 @@
+// The mesh traversal, written once and compiled once per instruction set (no include guard, no
+// includes: a mesh/wide_kernels_<isa>.cpp file includes it after its headers, inside its own
+// `#pragma GCC target` region, having defined RAYCAST_KERNEL_NS and, in that namespace, the lane
+// type V8 (8 floats) and its mask type M8 with:
+//   load8(p) (32-byte aligned), load44(a, b) (two 16-byte aligned halves), splat(x), store8(p, v),
+//   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
+//   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
+//   (lane i -> bit i), select(m, a, b) (a where m).
+// Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
+// with an add, so every ISA returns the same hits bit for bit (the tests compare them).
+
+namespace raycast::RAYCAST_KERNEL_NS {
+
+// Relative widening of a slab exit so that the float box test is conservative (pbrt-v4 6.8.2:
+// 1 + 2 gamma(3) in float arithmetic).
+constexpr float kSlabWiden = 1.0f + 2.0f * (3 * 0x1p-24f) / (1 - 3 * 0x1p-24f);
+// The same margin for negative distances (multiplying by it moves them towards +infinity).
+constexpr float kSlabNarrow = 2.0f - kSlabWiden;
+// Direction components smaller than this are replaced by it (with their sign) when computing
+// 1 / d, so that the box test never multiplies 0 by infinity (the ray is first scaled so that
+// its largest component is in [1, 2)).
+constexpr float kMinDirection = 0x1p-64f;
+
+// Per-ray constants of the box and triangle tests.
+struct RayData {
+  V8 o[3];          // origin, broadcast
+  V8 inv[3];        // 1 / d, broadcast
+  int near_off[3];  // float offset of the near plane array of each axis in a WideNode
+  int far_off[3];
+  // Watertight test (Woop, Benthin and Wald 2013): permutation and shear.
+  int kx, ky, kz;
+  V8 sx, sy, sz;
+  V8 okx, oky, okz;
+  V8 tmin;
+};
+
+inline RayData prepare(const MeshRay& r) {
+  RayData p;
+  const float* o = &r.o.x;
+  const float* d = &r.d.x;
+  for (int a = 0; a < 3; ++a) {
+    p.o[a] = splat(o[a]);
+    float da = d[a];
+    if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
+    const float inv = 1.0f / da;
+    p.inv[a] = splat(inv);
+    // WideNode floats: lo_x 0, hi_x 8, lo_y 16, hi_y 24, lo_z 32, hi_z 40.
+    p.near_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? 0 : kNodeWidth);
+    p.far_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? kNodeWidth : 0);
+  }
+  const WatertightRay w = make_watertight_ray(r.o, r.d);
+  p.kx = w.kx;
+  p.ky = w.ky;
+  p.kz = w.kz;
+  p.sx = splat(w.sx);
+  p.sy = splat(w.sy);
+  p.sz = splat(w.sz);
+  p.okx = splat(o[w.kx]);
+  p.oky = splat(o[w.ky]);
+  p.okz = splat(o[w.kz]);
+  p.tmin = splat(r.tmin);
+  return p;
+}
+
+// Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
+inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnear) {
+  const float* f = n.lo_x;
+  const V8 nx = (load8(f + p.near_off[0]) - p.o[0]) * p.inv[0];
+  const V8 ny = (load8(f + p.near_off[1]) - p.o[1]) * p.inv[1];
+  const V8 nz = (load8(f + p.near_off[2]) - p.o[2]) * p.inv[2];
+  const V8 fx = (load8(f + p.far_off[0]) - p.o[0]) * p.inv[0];
+  const V8 fy = (load8(f + p.far_off[1]) - p.o[1]) * p.inv[1];
+  const V8 fz = (load8(f + p.far_off[2]) - p.o[2]) * p.inv[2];
+  tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
+  // Widen the far distance away from the near one: scale it up when it is positive, down when it
+  // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
+  // negative far distance up would shrink the interval and cull flat boxes (a mesh's
+  // axis-aligned face) behind the origin.
+  const V8 far = vmin(vmin(fx, fy), fz);
+  const V8 widen = select(cmp_ge(far, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
+  const V8 tfar = vmin(far * widen, tmax);
+  return bits(cmp_le(tnear, tfar));
+}
+
+// Lane results of a two-group triangle test: t, and the edge functions v, w and det = u + v + w.
+struct PairResult {
+  alignas(32) float t[8];
+  alignas(32) float v[8];
+  alignas(32) float w[8];
+  alignas(32) float det[8];
+};
+
+// Watertight test of two groups' eight triangles (lanes 0-3 from g0, 4-7 from g1): the hit mask
+// (tmin <= t <= tmax) and, when it is not empty, the lane results.
+inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
+                          V8 tmax, PairResult& res) {
+  // Shear and scale the vertices into ray space (per vertex, so shared vertices agree exactly).
+  const V8 a_kz = load44(g0.v[0][p.kz], g1.v[0][p.kz]) - p.okz;
+  const V8 b_kz = load44(g0.v[1][p.kz], g1.v[1][p.kz]) - p.okz;
+  const V8 c_kz = load44(g0.v[2][p.kz], g1.v[2][p.kz]) - p.okz;
+  const V8 ax = (load44(g0.v[0][p.kx], g1.v[0][p.kx]) - p.okx) - p.sx * a_kz;
+  const V8 ay = (load44(g0.v[0][p.ky], g1.v[0][p.ky]) - p.oky) - p.sy * a_kz;
+  const V8 bx = (load44(g0.v[1][p.kx], g1.v[1][p.kx]) - p.okx) - p.sx * b_kz;
+  const V8 by = (load44(g0.v[1][p.ky], g1.v[1][p.ky]) - p.oky) - p.sy * b_kz;
+  const V8 cx = (load44(g0.v[2][p.kx], g1.v[2][p.kx]) - p.okx) - p.sx * c_kz;
+  const V8 cy = (load44(g0.v[2][p.ky], g1.v[2][p.ky]) - p.oky) - p.sy * c_kz;
+  V8 u = cx * by - cy * bx;
+  V8 v = ax * cy - ay * cx;
+  V8 w = bx * ay - by * ax;
+  const V8 zero = splat(0.0f);
+  const int zero_mask = bits(mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero)));
+  if (zero_mask) {
+    // An edge function exactly 0 in float: recompute that lane's three in double (the paper's
+    // fallback), so the sign of a ray exactly through an edge or vertex is exact.
+    alignas(32) float f[6][8], uu[8], vv[8], ww[8];
+    store8(f[0], ax), store8(f[1], ay), store8(f[2], bx);
+    store8(f[3], by), store8(f[4], cx), store8(f[5], cy);
+    store8(uu, u), store8(vv, v), store8(ww, w);
+    for (int l = 0; l < 8; ++l) {
+      if (!(zero_mask >> l & 1)) continue;
+      const double dax = f[0][l], day = f[1][l], dbx = f[2][l], dby = f[3][l], dcx = f[4][l],
+                   dcy = f[5][l];
+      uu[l] = static_cast<float>(dcx * dby - dcy * dbx);
+      vv[l] = static_cast<float>(dax * dcy - day * dcx);
+      ww[l] = static_cast<float>(dbx * day - dby * dax);
+    }
+    u = load8(uu);
+    v = load8(vv);
+    w = load8(ww);
+  }
+  const auto pos = mand(mand(cmp_ge(u, zero), cmp_ge(v, zero)), cmp_ge(w, zero));
+  const auto neg = mand(mand(cmp_le(u, zero), cmp_le(v, zero)), cmp_le(w, zero));
+  const V8 det = (u + v) + w;
+  const auto same_sign = mand(mor(pos, neg), cmp_ne(det, zero));
+  if (!bits(same_sign)) return 0;
+  const V8 az = p.sz * a_kz, bz = p.sz * b_kz, cz = p.sz * c_kz;
+  const V8 ts = (u * az + v * bz) + w * cz;
+  const V8 t = ts / det;
+  const int m = bits(mand(same_sign, mand(cmp_ge(t, p.tmin), cmp_le(t, tmax))));
+  if (m) {
+    store8(res.t, t);
+    store8(res.v, v);
+    store8(res.w, w);
+    store8(res.det, det);
+  }
+  return m;
+}
+
+// Starts loading every hit child (a node's four cache lines, or all of a leaf's groups) at once,
+// so that the memory latency of siblings overlaps instead of adding up.
+inline void prefetch_children(const MeshBvh& bvh, const WideNode& node, int mask) {
+  while (mask) {
+    const std::uint32_t ref = node.child[__builtin_ctz(mask)];
+    mask &= mask - 1;
+    const bool leaf = ref & kLeafBit;
+    const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
+                         : reinterpret_cast<const char*>(&bvh.nodes[ref]);
+    const int bytes =
+        leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup)) : 224;
+    for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
+  }
+}
+
+// Ordered descent: pushes the hit children except the nearest (farthest first, so that they pop
+// nearest first) with their entry distances, and returns the nearest.
+inline std::uint32_t order_children(const WideNode& node, int mask, V8 tn, TraversalEntry* stack,
+                                    int& top) {
+  const int first = __builtin_ctz(mask);
+  mask &= mask - 1;
+  if (!mask) return node.child[first];  // one child hit: no ordering, no push
+  alignas(32) float tnear[8];
+  store8(tnear, tn);
+  const int second = __builtin_ctz(mask);
+  mask &= mask - 1;
+  if (!mask) {  // two: push the farther
+    const bool swap = tnear[second] < tnear[first];
+    const int near = swap ? second : first, far = swap ? first : second;
+    stack[top++] = {node.child[far], tnear[far]};
+    return node.child[near];
+  }
+  mask |= (1 << first) | (1 << second);
+  // Insertion sort, farthest first, straight onto the stack.
+  const int base = top;
+  while (mask) {
+    const int i = __builtin_ctz(mask);
+    mask &= mask - 1;
+    const TraversalEntry e{node.child[i], tnear[i]};
+    int j = top++;
+    while (j > base && stack[j - 1].tnear < e.tnear) {
+      stack[j] = stack[j - 1];
+      --j;
+    }
+    stack[j] = e;
+  }
+  return stack[--top].ref;
+}
+
+inline std::uint32_t leaf_first(std::uint32_t ref) { return ref & 0x1FFFFFFFu; }
+inline std::uint32_t leaf_groups(std::uint32_t ref) { return ((ref >> 29) & 3u) + 1; }
+
+enum class Query { kNearest, kAny, kAll };
+
+// The one traversal of the three queries (the shape of madmann91/bvh's intersect<IsAnyHit>):
+// nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
+// first hit (kAny), or every hit appended to `out` (kAll).
+template <Query Q>
+bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+              TraversalEntry* stack) {
+  if (bvh.empty()) return false;
+  const RayData p = prepare(ray);
+  float tmax_s = ray.tmax;
+  V8 tmax = splat(tmax_s);
+  int top = 0;
+  bool found = false;
+  PairResult res;
+  std::uint32_t ref = bvh.root;
+  for (;;) {
+    if (!(ref & kLeafBit)) {
+      const WideNode& node = bvh.nodes[ref];
+      V8 tn;
+      int mask = intersect_node(node, p, tmax, tn);
+      if (mask) {
+        prefetch_children(bvh, node, mask);
+        if constexpr (Q == Query::kNearest) {
+          ref = order_children(node, mask, tn, stack, top);
+        } else {
+          const int first = __builtin_ctz(mask);
+          mask &= mask - 1;
+          while (mask) {
+            stack[top++] = {node.child[__builtin_ctz(mask)], 0.0f};
+            mask &= mask - 1;
+          }
+          ref = node.child[first];
+        }
+        continue;
+      }
+    } else {
+      const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
+      for (std::uint32_t gi = first; gi < end; gi += 2) {
+        const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
+        int m = intersect_pair(bvh.groups[gi], g1, p, tmax, res);
+        if (!m) continue;
+        if constexpr (Q == Query::kAny) return true;
+        while (m) {
+          const int l = __builtin_ctz(m);
+          m &= m - 1;
+          const std::uint32_t g = gi + (l >> 2);
+          const MeshBvhHit h{res.t[l],
+                             res.v[l] / res.det[l],
+                             res.w[l] / res.det[l],
+                             bvh.groups[g].id[l & 3],
+                             g,
+                             static_cast<std::uint32_t>(l & 3)};
+          if constexpr (Q == Query::kNearest) {
+            if (res.t[l] <= tmax_s) {
+              tmax_s = res.t[l];
+              *hit = h;
+              found = true;
+            }
+          } else {
+            append_mesh_hit(*out, h);
+            found = true;
+          }
+        }
+        if constexpr (Q == Query::kNearest) tmax = splat(tmax_s);
+      }
+    }
+    // Pop, skipping entries whose entry point lies past the current nearest hit.
+    for (;;) {
+      if (top == 0) return found;
+      const TraversalEntry& e = stack[--top];
+      if (Q != Query::kNearest || e.tnear <= tmax_s) {
+        ref = e.ref;
+        break;
+      }
+    }
+  }
+}
+
+bool closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit, TraversalEntry* stack) {
+  return traverse<Query::kNearest>(bvh, ray, &hit, nullptr, stack);
+}
+
+bool any(const MeshBvh& bvh, const MeshRay& ray, TraversalEntry* stack) {
+  return traverse<Query::kAny>(bvh, ray, nullptr, nullptr, stack);
+}
+
+void every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
+           TraversalEntry* stack) {
+  traverse<Query::kAll>(bvh, ray, nullptr, &out, stack);
+}
+
+}  // namespace raycast::RAYCAST_KERNEL_NS
