@@ -41,6 +41,13 @@ Integrator::Integrator(const Scene& scene, Channel channel)
   for (const Material& m : scene.materials) any_transmissive_ |= m.transmission > 0;
 }
 
+SurfaceNeeds Integrator::needs(const SceneHit& hit) const {
+  const int m = material_of(scene_.objects[hit.object], hit.local);
+  const std::size_t index = m >= 0 ? std::size_t(m) : 0;
+  return index < textures_.size() && textures_[index] ? SurfaceNeeds::kAll
+                                                      : SurfaceNeeds::kGeometry;
+}
+
 Color Integrator::li(const Ray& ray, SampleState& state) const {
   if (channel_ == Channel::kWhitted) return whitted(ray, 0, state);
   ++state.rays;
@@ -50,7 +57,7 @@ Color Integrator::li(const Ray& ray, SampleState& state) const {
     if (channel_ == Channel::kDepth) return {kInfinity, kInfinity, kInfinity};
     return {0, 0, 0};
   }
-  const SurfaceInfo si = scene_.surface(ray, hit);
+  const SurfaceInfo si = scene_.surface(ray, hit, needs(hit));
   switch (channel_) {
     case Channel::kRaycast: {
       const double facing = std::abs(dot(si.shading_n, normalize(ray.d)));
@@ -76,7 +83,7 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state) const {
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
-  const SurfaceInfo si = scene_.surface(ray, hit);
+  const SurfaceInfo si = scene_.surface(ray, hit, needs(hit));
   const Material& m = scene_.material_of(hit);
   const Color c = albedo(scene_, textures_, ray, hit, si);
   const Vec3 wi = normalize(ray.d);
@@ -199,7 +206,7 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
     if (!scene_.intersect(segment, hit)) return through;
     const Material& m = scene_.material_of(hit);
     if (!(m.transmission > 0)) return {0, 0, 0};
-    const SurfaceInfo si = scene_.surface(segment, hit);
+    const SurfaceInfo si = scene_.surface(segment, hit, needs(hit));
     if (std::find(counted.begin(), counted.begin() + n_counted, hit.object) ==
         counted.begin() + n_counted) {
       counted[n_counted++] = hit.object;

@@ -44,6 +44,8 @@ class Integrator {
   Color shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
  private:
+  /// (u, v) only for a material with an image texture.
+  SurfaceNeeds needs(const SceneHit& hit) const;
   Color direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, const Material& m,
                const Color& c, SampleState& state) const;
   Color light_term(const Vec3& n, const Vec3& v, const Vec3& l, const Color& e, const Material& m,

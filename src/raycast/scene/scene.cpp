@@ -92,8 +92,8 @@ void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
   });
 }
 
-SurfaceInfo Scene::surface(const Ray& ray, const SceneHit& hit) const {
-  return raycast::surface(objects[hit.object], ray, hit.local);
+SurfaceInfo Scene::surface(const Ray& ray, const SceneHit& hit, SurfaceNeeds needs) const {
+  return raycast::surface(objects[hit.object], ray, hit.local, needs);
 }
 
 const Material& Scene::material_of(const SceneHit& hit) const {

@@ -57,7 +57,8 @@ struct Scene {
   /// Every crossing of a final solid's (or open surface's) boundary within [tmin, tmax], sorted.
   void intersect_all(const Ray& ray, std::vector<Crossing>& out) const;
   /// The full surface record of a hit found with this ray.
-  SurfaceInfo surface(const Ray& ray, const SceneHit& hit) const;
+  SurfaceInfo surface(const Ray& ray, const SceneHit& hit,
+                      SurfaceNeeds needs = SurfaceNeeds::kAll) const;
   const Material& material_of(const SceneHit& hit) const;
 
  private:
