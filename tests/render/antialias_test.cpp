@@ -35,7 +35,9 @@ double rmse(const Image& a, const Image& b) {
 
 TEST(ColourDistance, SumOfClampedChannelDifferences) {
   EXPECT_EQ(colour_distance({0, 0, 0}, {0, 0, 0}), 0);
-  EXPECT_EQ(colour_distance({1, 0, 0}, {0, 0.5, 0.25}), 1.75);
+  EXPECT_EQ(colour_distance({1, 0, 0}, {0, 0.5, 0.25}),
+            1 + linear_to_srgb8(0.5f) / 255.0 + linear_to_srgb8(0.25f) / 255.0);
+  EXPECT_EQ(colour_distance({0.2, 0.2, 0.2}, {0.2, 0.2, 0.2}), 0);
   EXPECT_EQ(colour_distance({3, -1, 0.5}, {1, 0, 0.5}), 0);  // clamped to [0, 1] first
   EXPECT_EQ(colour_distance({0, 0, 0}, {2, 2, 2}), 3);
 }

@@ -22,6 +22,18 @@ struct Counters {
 
 double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 
+/// The displayed value of a linear colour: its 8-bit sRGB codes / 255 (io/image.h).
+Color display(const Color& c) {
+  return Color{double(linear_to_srgb8(float(c.x))), double(linear_to_srgb8(float(c.y))),
+               double(linear_to_srgb8(float(c.z)))} /
+         255.0;
+}
+
+double display_distance(const Color& a, const Color& b) {
+  const Color d = a - b;
+  return std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+}
+
 /// Runs body(y, counters) for every row y in [0, rows) in parallel, then calls row_done.
 template <class Body>
 void for_rows(int rows, tbb::enumerable_thread_specific<Counters>& counters,
@@ -38,14 +50,14 @@ void for_rows(int rows, tbb::enumerable_thread_specific<Counters>& counters,
 /// Whether pixel (x, y) of the first-pass values differs from one of its four neighbours by more
 /// than the threshold (POV-Ray's method 1 compares each pixel with its left and upper neighbours
 /// and refines both: the same set of pixels).
-bool differs(const std::vector<Color>& first, int width, int height, int x, int y,
+bool differs(const std::vector<Color>& shown, int width, int height, int x, int y,
              double threshold) {
-  const Color& c = first[std::size_t(y) * width + x];
+  const Color& c = shown[std::size_t(y) * width + x];
   const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
   for (int k = 0; k < 4; ++k) {
     const int nx = x + dx[k], ny = y + dy[k];
     if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-    if (colour_distance(c, first[std::size_t(ny) * width + nx]) > threshold) return true;
+    if (display_distance(c, shown[std::size_t(ny) * width + nx]) > threshold) return true;
   }
   return false;
 }
@@ -71,9 +83,10 @@ std::vector<Color> centre_pass(int width, int height, unsigned seed, const Raste
 Color subdivide(double x0, double y0, double size, const Color c[4], int level,
                 const AntialiasSettings& aa, const RasterSampler& sample, SampleState& state,
                 std::uint64_t& samples) {
+  const Color shown[4] = {display(c[0]), display(c[1]), display(c[2]), display(c[3])};
   double spread = 0;
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) spread = std::max(spread, colour_distance(c[i], c[j]));
+    for (int j = i + 1; j < 4; ++j) spread = std::max(spread, display_distance(shown[i], shown[j]));
   if (level >= aa.depth || !(spread > aa.threshold)) return 0.25 * (c[0] + c[1] + c[2] + c[3]);
   const double h = 0.5 * size;
   // The five new points: the edges' midpoints (top, left, right, bottom) and the centre.
@@ -92,8 +105,7 @@ Color subdivide(double x0, double y0, double size, const Color c[4], int level,
 }  // namespace
 
 double colour_distance(const Color& a, const Color& b) {
-  return std::abs(clamp01(a.x) - clamp01(b.x)) + std::abs(clamp01(a.y) - clamp01(b.y)) +
-         std::abs(clamp01(a.z) - clamp01(b.z));
+  return display_distance(display(a), display(b));
 }
 
 void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
@@ -113,11 +125,13 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       // Method 1: a pixel that differs from a neighbour gets depth x depth stratified, jittered
       // samples in place of its centre sample.
       const std::vector<Color> first = centre_pass(width, height, seed, sample, counters, row_done);
+      std::vector<Color> shown(first.size());
+      std::transform(first.begin(), first.end(), shown.begin(), display);
       const int n = aa.depth;
       for_rows(height, counters, row_done, [&](int y, Counters& c) {
         for (int x = 0; x < width; ++x) {
           Color value = first[std::size_t(y) * width + x];
-          if (n > 1 && differs(first, width, height, x, y, aa.threshold)) {
+          if (n > 1 && differs(shown, width, height, x, y, aa.threshold)) {
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0};
             for (int k = 0; k < n * n; ++k) {
@@ -168,12 +182,14 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       // jittered) until the standard error of its mean is at most threshold / 4 in every
       // channel (after at least two rounds) or it has depth x depth samples (rounded up to 4).
       const std::vector<Color> first = centre_pass(width, height, seed, sample, counters, row_done);
+      std::vector<Color> shown(first.size());
+      std::transform(first.begin(), first.end(), shown.begin(), display);
       const int most = std::max(8, (aa.depth * aa.depth + 3) / 4 * 4);
       const double target = aa.threshold / 4;
       for_rows(height, counters, row_done, [&](int y, Counters& c) {
         for (int x = 0; x < width; ++x) {
           Color value = first[std::size_t(y) * width + x];
-          if (differs(first, width, height, x, y, aa.threshold)) {
+          if (differs(shown, width, height, x, y, aa.threshold)) {
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0}, sum1{0, 0, 0}, sum2{0, 0, 0};  // values; clamped; squared
             int n = 0;

@@ -17,7 +17,9 @@ namespace raycast {
 using RasterSampler = std::function<Color(double x, double y, SampleState& state)>;
 
 /// The colour distance of the refinement tests: the sum over the three channels of the absolute
-/// difference of the two colours, each clamped to [0, 1] first (linear values).
+/// difference of the two colours as displayed, each linear channel turned into its 8-bit sRGB
+/// code / 255 (clamped to [0, 1]; io/image.h linear_to_srgb8), so that thresholds act on what
+/// the image shows.
 double colour_distance(const Color& a, const Color& b);
 
 struct AdaptiveStats {
