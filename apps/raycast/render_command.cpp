@@ -113,16 +113,17 @@ Action add_render_command(CLI::App& app) {
   auto* spp = cmd->add_option("--spp", opt->spp,
                               "Samples per pixel (overrides the scene, and turns off its adaptive "
                               "antialiasing)");
-  cmd->add_option("--antialias", opt->antialias,
-                  "Adaptive antialiasing: none, or METHOD[,THRESHOLD[,DEPTH]] with METHOD 1 "
-                  "(neighbour), 2 (subdivide) or variance (overrides the scene and --spp)");
+  auto* antialias =
+      cmd->add_option("--antialias", opt->antialias,
+                      "Adaptive antialiasing: none, or METHOD[,THRESHOLD[,DEPTH]] with METHOD 1 "
+                      "(neighbour), 2 (subdivide) or variance (overrides the scene and --spp)");
   auto* threads = cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
   cmd->add_option("--integrator", opt->integrator,
                   "whitted, raycast, depth, normal or id (overrides the scene)");
   cmd->add_option("--aov", opt->aovs,
                   "Comma-separated extra outputs written beside the image as OUT.<name>.pfm: "
                   "depth, normal, id, albedo");
-  return [opt, width, height, spp, threads] {
+  return [opt, width, height, spp, threads, antialias] {
     // Validate everything before the (possibly long) render.
     constexpr int kMaxSize = kMaxImageSide;  // also the --spp limit, like image.samples
     const std::tuple<const char*, CLI::Option*, int, int> limits[] = {
@@ -139,7 +140,7 @@ Action add_render_command(CLI::App& app) {
     options.height = opt->height;
     options.spp = opt->spp;
     options.threads = opt->threads;
-    if (!opt->antialias.empty()) {
+    if (antialias->count() > 0) {
       AntialiasSettings aa;
       std::string error;
       if (!parse_antialias(opt->antialias, aa, error)) return usage_error(error);
