@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -21,13 +22,52 @@ namespace raycast::cli {
 namespace {
 
 struct Options {
-  std::string scene, output = "out.png", integrator, aovs;
+  std::string scene, output = "out.png", integrator, aovs, antialias;
   int width = 0, height = 0, spp = 0, threads = 0;
 };
 
 int usage_error(const std::string& message) {
   std::fprintf(stderr, "raycast render: %s\n", message.c_str());
   return 2;
+}
+
+/// `--antialias none` or `METHOD[,THRESHOLD[,DEPTH]]` (METHOD 1, 2, neighbour, subdivide or
+/// variance; defaults as render.antialias). Returns false with a message for anything else.
+bool parse_antialias(const std::string& text, AntialiasSettings& aa, std::string& error) {
+  std::vector<std::string> parts;
+  std::stringstream list(text);
+  for (std::string part; std::getline(list, part, ',');) parts.push_back(part);
+  error =
+      "--antialias must be none or METHOD[,THRESHOLD[,DEPTH]] with METHOD 1, 2, neighbour, "
+      "subdivide or variance, THRESHOLD >= 0 and DEPTH in [1, 16]; got '" +
+      text + "'";
+  if (parts.empty() || parts.size() > 3) return false;
+  const std::string& m = parts[0];
+  if (m == "none" && parts.size() == 1) {
+    aa.method = AntialiasMethod::kNone;
+    return true;
+  }
+  if (m == "1" || m == "neighbour")
+    aa.method = AntialiasMethod::kNeighbour;
+  else if (m == "2" || m == "subdivide")
+    aa.method = AntialiasMethod::kSubdivide;
+  else if (m == "variance")
+    aa.method = AntialiasMethod::kVariance;
+  else
+    return false;
+  if (parts.size() > 1) {
+    char* end = nullptr;
+    aa.threshold = std::strtod(parts[1].c_str(), &end);
+    if (parts[1].empty() || *end != 0 || !std::isfinite(aa.threshold) || aa.threshold < 0)
+      return false;
+  }
+  if (parts.size() > 2) {
+    char* end = nullptr;
+    const long depth = std::strtol(parts[2].c_str(), &end, 10);
+    if (parts[2].empty() || *end != 0 || depth < 1 || depth > 16) return false;
+    aa.depth = int(depth);
+  }
+  return true;
 }
 
 /// Depth in an 8-bit file: distances divided by twice the median finite distance and clamped
@@ -70,14 +110,20 @@ Action add_render_command(CLI::App& app) {
       cmd->add_option("--width", opt->width, "Image width in pixels (overrides the scene)");
   auto* height =
       cmd->add_option("--height", opt->height, "Image height in pixels (overrides the scene)");
-  auto* spp = cmd->add_option("--spp", opt->spp, "Samples per pixel (overrides the scene)");
+  auto* spp = cmd->add_option("--spp", opt->spp,
+                              "Samples per pixel (overrides the scene, and turns off its adaptive "
+                              "antialiasing)");
+  auto* antialias =
+      cmd->add_option("--antialias", opt->antialias,
+                      "Adaptive antialiasing: none, or METHOD[,THRESHOLD[,DEPTH]] with METHOD 1 "
+                      "(neighbour), 2 (subdivide) or variance (overrides the scene and --spp)");
   auto* threads = cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
   cmd->add_option("--integrator", opt->integrator,
                   "whitted, raycast, depth, normal or id (overrides the scene)");
   cmd->add_option("--aov", opt->aovs,
                   "Comma-separated extra outputs written beside the image as OUT.<name>.pfm: "
                   "depth, normal, id, albedo");
-  return [opt, width, height, spp, threads] {
+  return [opt, width, height, spp, threads, antialias] {
     // Validate everything before the (possibly long) render.
     constexpr int kMaxSize = kMaxImageSide;  // also the --spp limit, like image.samples
     const std::tuple<const char*, CLI::Option*, int, int> limits[] = {
@@ -94,6 +140,12 @@ Action add_render_command(CLI::App& app) {
     options.height = opt->height;
     options.spp = opt->spp;
     options.threads = opt->threads;
+    if (antialias->count() > 0) {
+      AntialiasSettings aa;
+      std::string error;
+      if (!parse_antialias(opt->antialias, aa, error)) return usage_error(error);
+      options.antialias = aa;
+    }
     if (!opt->integrator.empty()) {
       static const std::map<std::string, IntegratorType> kIntegrators = {
           {"whitted", IntegratorType::kWhitted},

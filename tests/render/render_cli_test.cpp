@@ -77,6 +77,16 @@ TEST_F(RenderCli, DepthPng_IsScaledForViewing) {
   EXPECT_LT(floor, 0.95f);
 }
 
+TEST_F(RenderCli, Antialias_EveryMethodRunsAndBadSpecsExitWithTwo) {
+  for (const std::string spec : {"1", "2,0.2", "variance,0.1,4", "neighbour,0,2", "none"})
+    EXPECT_EQ(run("render -o " + path("aa.png") + " --width 12 --height 9 --antialias " + spec), 0)
+        << spec;
+  for (const std::string spec :
+       {"3", "1,-0.1", "1,0.3,0", "1,0.3,17", "1,x", "1,0.3,3,4", "none,1", "1,nan", "''"})
+    EXPECT_EQ(run("render -o " + path("aa.png") + " --width 12 --height 9 --antialias " + spec), 2)
+        << spec;
+}
+
 TEST_F(RenderCli, BadValues_ExitWithTwo) {
   const std::string out = " -o " + path("bad.png");
   EXPECT_EQ(run("render" + out + " --width 0"), 2);

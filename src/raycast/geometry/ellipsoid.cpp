@@ -58,10 +58,13 @@ void spans(const Ellipsoid& e, const Ray& ray, SpanList& out) {
   out.add(LocalHit{t0, -1, 0, 0, 0}, LocalHit{t1, -1, 1, 0, 0});
 }
 
-SurfaceInfo surface(const Ellipsoid& e, const Ray& ray, const LocalHit& hit) {
+namespace {
+
+// The record without (u, v); q is the hit point on the unit sphere (reprojected).
+SurfaceInfo geometry_at(const Ellipsoid& e, const Ray& ray, const LocalHit& hit, Vec3& q) {
   SurfaceInfo si;
   // The point on the unit sphere, reprojected (pbrt-v4 6.8.5), then scaled back.
-  Vec3 q = mul(ray.o - e.center, e.inv_radii) + hit.t * mul(ray.d, e.inv_radii);
+  q = mul(ray.o - e.center, e.inv_radii) + hit.t * mul(ray.d, e.inv_radii);
   q /= length(q);
   const Vec3 p = mul(q, e.radii);
   si.p = p + e.center;
@@ -69,6 +72,19 @@ SurfaceInfo surface(const Ellipsoid& e, const Ray& ray, const LocalHit& hit) {
   // The gradient of the implicit function: (x/a^2, y/b^2, z/c^2) = q / radii.
   si.n = normalize(mul(q, e.inv_radii));
   si.shading_n = si.n;
+  return si;
+}
+
+}  // namespace
+
+SurfaceInfo surface_geometry(const Ellipsoid& e, const Ray& ray, const LocalHit& hit) {
+  Vec3 q;
+  return geometry_at(e, ray, hit, q);
+}
+
+SurfaceInfo surface(const Ellipsoid& e, const Ray& ray, const LocalHit& hit) {
+  Vec3 q;
+  SurfaceInfo si = geometry_at(e, ray, hit, q);
   double phi = std::atan2(q.y, q.x);
   if (phi < 0) phi += 2 * std::numbers::pi;
   si.u = phi / (2 * std::numbers::pi);

@@ -108,14 +108,31 @@ void spans(const Sphere& s, const Ray& ray, SpanList& out) {
   if (t1 != t0 && on_kept_part(s, o + t1 * ray.d)) out.add(h1, h1);
 }
 
-SurfaceInfo surface(const Sphere& s, const Ray& ray, const LocalHit& hit) {
+namespace {
+
+// The hit point relative to the centre, reprojected onto the surface, and its record without
+// (u, v); the remaining error is gamma(5) |p| (pbrt-v4 6.8.5).
+SurfaceInfo geometry_at(const Sphere& s, const Ray& ray, const LocalHit& hit, Vec3& p) {
   SurfaceInfo si;
-  Vec3 p = ray.o - s.center + hit.t * ray.d;
-  // Reproject onto the surface; the remaining error is gamma(5) |p| (pbrt-v4 6.8.5).
+  p = ray.o - s.center + hit.t * ray.d;
   p *= s.radius / length(p);
-  si.p_error = gamma(5) * abs(p);
+  si.p_error = gamma(5) * abs(p) + gamma(1) * abs(s.center);
   si.n = p / s.radius;
   si.shading_n = si.n;
+  si.p = p + s.center;
+  return si;
+}
+
+}  // namespace
+
+SurfaceInfo surface_geometry(const Sphere& s, const Ray& ray, const LocalHit& hit) {
+  Vec3 p;
+  return geometry_at(s, ray, hit, p);
+}
+
+SurfaceInfo surface(const Sphere& s, const Ray& ray, const LocalHit& hit) {
+  Vec3 p;
+  SurfaceInfo si = geometry_at(s, ray, hit, p);
   si.u = phi_of(p) / s.phi_max;
   const double theta = std::acos(std::clamp(p.z / s.radius, -1.0, 1.0));
   // acos(-1) is pi and acos(1) is 0 exactly: whole spheres skip those two calls.
@@ -124,8 +141,6 @@ SurfaceInfo surface(const Sphere& s, const Ray& ray, const LocalHit& hit) {
   const double theta_lo = z_lo == -1 ? std::numbers::pi : std::acos(z_lo);
   const double theta_hi = z_hi == 1 ? 0.0 : std::acos(z_hi);
   si.v = (theta_lo - theta) / (theta_lo - theta_hi);
-  si.p = p + s.center;
-  si.p_error += gamma(1) * abs(s.center);
   return si;
 }
 

@@ -114,7 +114,7 @@ void spans(const Torus& s, const Ray& ray, SpanList& out) {
   }
 }
 
-SurfaceInfo surface(const Torus& s, const Ray& ray, const LocalHit& hit) {
+SurfaceInfo surface_geometry(const Torus& s, const Ray& ray, const LocalHit& hit) {
   SurfaceInfo si;
   Vec3 p = ray.at(hit.t);
   const double R2 = s.major_radius * s.major_radius;
@@ -135,6 +135,12 @@ SurfaceInfo surface(const Torus& s, const Ray& ray, const LocalHit& hit) {
   // The remaining error of p is a few ulps of the torus's size.
   const double size = s.major_radius + s.minor_radius;
   si.p_error = gamma(16) * (abs(p) + Vec3{size, size, size});
+  return si;
+}
+
+SurfaceInfo surface(const Torus& s, const Ray& ray, const LocalHit& hit) {
+  SurfaceInfo si = surface_geometry(s, ray, hit);
+  const Vec3& p = si.p;
   const double rho = std::sqrt(p.x * p.x + p.y * p.y);
   si.u = angle_0_2pi(p.y, p.x) / kTwoPi;
   si.v = angle_0_2pi(p.z, rho - s.major_radius) / kTwoPi;

@@ -23,6 +23,8 @@ bool intersect(const Torus& s, const Ray& ray, LocalHit& hit);
 bool occluded(const Torus& s, const Ray& ray);
 void spans(const Torus& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Torus& s, const Ray& ray, const LocalHit& hit);
+/// surface() without (u, v) (left 0): no atan2 (scene/object.h, SurfaceNeeds).
+SurfaceInfo surface_geometry(const Torus& s, const Ray& ray, const LocalHit& hit);
 bool contains(const Torus& s, const Vec3& p);
 inline bool is_closed(const Torus&) { return true; }
 

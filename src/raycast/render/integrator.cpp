@@ -7,6 +7,7 @@
 
 #include "geometry/spawn.h"
 #include "render/optics.h"
+#include "render/terminator.h"
 
 namespace raycast {
 
@@ -41,6 +42,13 @@ Integrator::Integrator(const Scene& scene, Channel channel)
   for (const Material& m : scene.materials) any_transmissive_ |= m.transmission > 0;
 }
 
+SurfaceNeeds Integrator::needs(const SceneHit& hit) const {
+  const int m = material_of(scene_.objects[hit.object], hit.local);
+  const std::size_t index = m >= 0 ? std::size_t(m) : 0;
+  return index < textures_.size() && textures_[index] ? SurfaceNeeds::kAll
+                                                      : SurfaceNeeds::kGeometry;
+}
+
 Color Integrator::li(const Ray& ray, SampleState& state) const {
   if (channel_ == Channel::kWhitted) return whitted(ray, 0, state);
   ++state.rays;
@@ -50,7 +58,7 @@ Color Integrator::li(const Ray& ray, SampleState& state) const {
     if (channel_ == Channel::kDepth) return {kInfinity, kInfinity, kInfinity};
     return {0, 0, 0};
   }
-  const SurfaceInfo si = scene_.surface(ray, hit);
+  const SurfaceInfo si = scene_.surface(ray, hit, needs(hit));
   switch (channel_) {
     case Channel::kRaycast: {
       const double facing = std::abs(dot(si.shading_n, normalize(ray.d)));
@@ -76,14 +84,16 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state) const {
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
-  const SurfaceInfo si = scene_.surface(ray, hit);
+  const SurfaceInfo si = scene_.surface(ray, hit, needs(hit));
   const Material& m = scene_.material_of(hit);
   const Color c = albedo(scene_, textures_, ray, hit, si);
   const Vec3 wi = normalize(ray.d);
   const bool outside = dot(wi, si.n) < 0;
   const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer
   const Vec3 v = -wi;
-  Color result = m.ambient * mul(scene_.render.ambient, c) + direct(si, n, v, m, c, state);
+  // Shadow rays leaving on the shading normal's side of a smooth mesh start from Hanika's point.
+  const SurfaceInfo lit = terminator_origin(scene_.objects[hit.object], hit.local, si);
+  Color result = m.ambient * mul(scene_.render.ambient, c) + direct(si, lit, n, v, m, c, state);
   if (depth >= scene_.render.max_depth) return result;
 
   // Split between the mirror and the refracted ray (fixed weights, or exact Fresnel).
@@ -120,14 +130,16 @@ Color Integrator::light_term(const Vec3& n, const Vec3& v, const Vec3& l, const 
   return mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
 }
 
-Color Integrator::direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, const Material& m,
-                         const Color& c, SampleState& state) const {
+Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n,
+                         const Vec3& v, const Material& m, const Color& c,
+                         SampleState& state) const {
   Color sum{0, 0, 0};
   if (m.diffuse <= 0 && m.specular <= 0) return sum;
   // One light direction l towards `target` (a point, or a direction when at infinity).
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
     if (!(dot(n, l) > 0) || max_component(e) <= 0) return;
-    const Color visibility = shadow(offset_ray_origin(si, l), target, at_infinity, state);
+    const SurfaceInfo& from = dot(l, si.shading_n) > 0 ? lit : si;
+    const Color visibility = shadow(offset_ray_origin(from, l), target, at_infinity, state);
     if (max_component(visibility) <= 0) return;
     sum += mul(visibility, light_term(n, v, l, e, m, c));
   };
@@ -187,28 +199,55 @@ Color Integrator::direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, co
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
                          SampleState& state) const {
+  const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
+  ++state.rays;
+  if (!any_transmissive_) return scene_.occluded(segment) ? Color{0, 0, 0} : Color{1, 1, 1};
+  // One pass over the objects on the segment (docs/rendering.md "Shadow rays"): each object is
+  // asked on its own whether the segment crosses it (an any-hit query, or for a composite
+  // object with materials per part, a walk of its own crossings); the first opaque crossing
+  // ends the pass, each transmissive object crossed multiplies by its filter once.
   Color through{1, 1, 1};
-  Vec3 o = from;
-  std::array<std::int32_t, kMaxShadowCrossings> counted;
-  int n_counted = 0;
-  for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
-    const Ray segment{o, to_infinity ? to : to - o, 0, to_infinity ? kInfinity : 1};
-    ++state.rays;
-    if (!any_transmissive_) return scene_.occluded(segment) ? Color{0, 0, 0} : through;
-    SceneHit hit;
-    if (!scene_.intersect(segment, hit)) return through;
-    const Material& m = scene_.material_of(hit);
-    if (!(m.transmission > 0)) return {0, 0, 0};
-    const SurfaceInfo si = scene_.surface(segment, hit);
-    if (std::find(counted.begin(), counted.begin() + n_counted, hit.object) ==
-        counted.begin() + n_counted) {
-      counted[n_counted++] = hit.object;
-      through = mul(through, m.transmission * albedo(scene_, textures_, segment, hit, si));
-      if (max_component(through) <= 0) return {0, 0, 0};
+  const bool blocked = scene_.any_object(
+      segment, [&](std::uint32_t index) { return !filter(index, segment, through); });
+  return blocked ? Color{0, 0, 0} : through;
+}
+
+bool Integrator::filter(std::uint32_t index, const Ray& segment, Color& through) const {
+  const Object& object = scene_.objects[index];
+  const bool composite = std::holds_alternative<CsgShape>(object.shape) ||
+                         std::holds_alternative<InstanceShape>(object.shape);
+  if (!composite) {
+    const Material& m = scene_.materials[object.material >= 0 ? object.material : 0];
+    const bool textured =
+        m.has_checker || (std::size_t(std::max(object.material, 0)) < textures_.size() &&
+                          textures_[std::size_t(std::max(object.material, 0))]);
+    if (!(m.transmission > 0) || !textured) {
+      if (!occluded(object, segment)) return true;
+      if (!(m.transmission > 0)) return false;
+      through = mul(through, m.transmission * m.color);
+      return max_component(through) > 0;
     }
-    o = offset_ray_origin(si, segment.d);
   }
-  return {0, 0, 0};
+  // The object's crossings in order: the first opaque one blocks; the first transmissive one
+  // gives the filter colour (its albedo at that crossing).
+  Ray r = segment;
+  bool counted = false;
+  for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
+    LocalHit h;
+    if (!intersect(object, r, h)) return true;
+    const SceneHit hit{h, std::int32_t(index)};
+    const Material& m = scene_.material_of(hit);
+    if (!(m.transmission > 0)) return false;
+    if (!counted) {
+      const SurfaceInfo si = scene_.surface(segment, hit, needs(hit));
+      through = mul(through, m.transmission * albedo(scene_, textures_, segment, hit, si));
+      if (!(max_component(through) > 0)) return false;
+      counted = true;
+    }
+    if (!composite) return true;  // one material: the rest of its crossings change nothing
+    r.tmin = interval_detail::up(h.t);
+  }
+  return false;
 }
 
 }  // namespace raycast

@@ -44,8 +44,16 @@ class Integrator {
   Color shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
  private:
-  Color direct(const SurfaceInfo& si, const Vec3& n, const Vec3& v, const Material& m,
-               const Color& c, SampleState& state) const;
+  /// The shadow segment's passage through object `index`: false when an opaque part of it
+  /// crosses the segment; else true, with `through` multiplied by the object's filter when the
+  /// segment crosses it (once per object).
+  bool filter(std::uint32_t index, const Ray& segment, Color& through) const;
+  /// (u, v) only for a material with an image texture.
+  SurfaceNeeds needs(const SceneHit& hit) const;
+  /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
+  /// (render/terminator.h), the others from si.
+  Color direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
+               const Material& m, const Color& c, SampleState& state) const;
   Color light_term(const Vec3& n, const Vec3& v, const Vec3& l, const Color& e, const Material& m,
                    const Color& c) const;
 

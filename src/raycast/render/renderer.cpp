@@ -4,6 +4,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -13,6 +14,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "render/antialias.h"
 #include "render/camera.h"
 #include "render/integrator.h"
 
@@ -51,6 +53,13 @@ Channel channel_for(const Scene& scene, const RenderOptions& options) {
 }
 
 /// A one-line bar on stderr, redrawn when the percentage changes; silent unless enabled.
+/// CPU seconds used so far by the whole process (every thread).
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 class Progress {
  public:
   Progress(bool enabled, std::size_t total) : enabled_(enabled), total_(total) {}
@@ -121,7 +130,41 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   const int tiles_y = (height + kTileSize - 1) / kTileSize;
   Progress progress(options.progress && isatty(STDERR_FILENO), std::size_t(tiles_x) * tiles_y);
 
+  const AntialiasSettings aa = options.antialias ? *options.antialias
+                               : options.spp > 0 ? AntialiasSettings{}
+                                                 : scene.render.antialias;
+  if (aa.method != AntialiasMethod::kNone) {
+    Progress rows(options.progress && isatty(STDERR_FILENO), 2 * std::size_t(height));
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = process_cpu_seconds();
+    AdaptiveStats adaptive;
+    render_adaptive(
+        aa, seed,
+        [&](double x, double y, SampleState& state) {
+          return integrator.li(camera.ray(x, y), state);
+        },
+        image, adaptive, [&] { rows.advance(); });
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu_seconds = process_cpu_seconds() - cpu_start;
+    rows.finish();
+    if (stats) {
+      stats->width = width;
+      stats->height = height;
+      stats->spp = 0;
+      stats->antialias = aa.method;
+      stats->samples = adaptive.samples;
+      stats->threads =
+          int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+      stats->seconds = seconds;
+      stats->cpu_seconds = cpu_seconds;
+      stats->rays = adaptive.rays;
+    }
+    return image;
+  }
+
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = process_cpu_seconds();
   tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
                     [&](const auto& range) {
                       std::uint64_t& counter = rays.local();
@@ -150,6 +193,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
                     });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu_seconds = process_cpu_seconds() - cpu_start;
   progress.finish();
 
   if (stats) {
@@ -159,6 +203,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     stats->threads =
         int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
     stats->seconds = seconds;
+    stats->cpu_seconds = cpu_seconds;
+    stats->samples = std::uint64_t(width) * height * spp;
     stats->rays = rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
   }
   return image;
@@ -166,8 +212,20 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
 
 std::string format_summary(const RenderStats& s) {
   char line[256];
-  std::snprintf(line, sizeof line, "%dx%d, %d spp, %d threads: %.3f s, %llu rays, %.2f Mrays/s",
-                s.width, s.height, s.spp, s.threads, s.seconds,
+  if (s.antialias != AntialiasMethod::kNone) {
+    static const char* const kNames[] = {"none", "method 1", "method 2", "variance"};
+    const double per_pixel =
+        s.width > 0 && s.height > 0 ? double(s.samples) / (double(s.width) * s.height) : 0;
+    std::snprintf(line, sizeof line,
+                  "%dx%d, adaptive %s (%.2f spp), %d threads: %.3f s (cpu %.3f s), %llu rays, "
+                  "%.2f Mrays/s",
+                  s.width, s.height, kNames[int(s.antialias)], per_pixel, s.threads, s.seconds,
+                  s.cpu_seconds, static_cast<unsigned long long>(s.rays), s.mrays_per_second());
+    return line;
+  }
+  std::snprintf(line, sizeof line,
+                "%dx%d, %d spp, %d threads: %.3f s (cpu %.3f s), %llu rays, %.2f Mrays/s", s.width,
+                s.height, s.spp, s.threads, s.seconds, s.cpu_seconds,
                 static_cast<unsigned long long>(s.rays), s.mrays_per_second());
   return line;
 }

@@ -22,14 +22,19 @@ struct RenderOptions {
   std::optional<IntegratorType> integrator;  // overrides render.integrator
   std::optional<Aov> aov;                    // render this output variable instead
   int threads = 0;                           // > 0 caps the worker threads (tbb::global_control)
-  bool progress = true;                      // a progress bar on stderr, only when it is a terminal
+  /// Overrides render.antialias. Without it, spp > 0 renders fixed samples (no adaptive pass).
+  std::optional<AntialiasSettings> antialias;
+  bool progress = true;  // a progress bar on stderr, only when it is a terminal
 };
 
 struct RenderStats {
-  int width = 0, height = 0, spp = 0;
-  int threads = 0;         // the parallelism allowed while rendering
-  double seconds = 0;      // wall time of the pixel loop
-  std::uint64_t rays = 0;  // every scene query: primary, secondary and shadow rays
+  int width = 0, height = 0, spp = 0;  // spp: the fixed count (0 with adaptive antialiasing)
+  AntialiasMethod antialias = AntialiasMethod::kNone;
+  std::uint64_t samples = 0;  // camera samples traced
+  int threads = 0;            // the parallelism allowed while rendering
+  double seconds = 0;         // wall time of the pixel loop
+  double cpu_seconds = 0;     // CPU time of the whole process (all threads) during the pixel loop
+  std::uint64_t rays = 0;     // every scene query: primary, secondary and shadow rays
   double mrays_per_second() const { return seconds > 0 ? double(rays) / seconds * 1e-6 : 0; }
 };
 
@@ -37,7 +42,8 @@ struct RenderStats {
 /// texture cannot be loaded and std::invalid_argument for a non-positive override.
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr);
 
-/// The one summary line: "800x600, 4 spp, 2 threads: 1.23 s, 9876543 rays, 8.03 Mrays/s".
+/// The one summary line: "800x600, 4 spp, 2 threads: 1.23 s (cpu 2.40 s), 9876543 rays,
+/// 8.03 Mrays/s".
 std::string format_summary(const RenderStats& stats);
 
 /// The pixel position of sample k of n inside a pixel, in [0, 1)^2: the pixel is cut into an

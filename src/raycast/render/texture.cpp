@@ -1,6 +1,7 @@
 #include "render/texture.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "scene/scene_error.h"
 
@@ -30,7 +31,10 @@ Color checker(const CheckerTexture& texture, const Vec3& p) {
   const double s = texture.scale;
   const double sum = std::floor(p.x / s) + std::floor(p.y / s) + std::floor(p.z / s);
   if (!std::isfinite(sum)) return texture.c0;
-  return std::fmod(std::abs(sum), 2.0) == 0 ? texture.c0 : texture.c1;
+  // sum is a whole number: its parity without fmod (every double from 2^53 up is even).
+  const double a = std::abs(sum);
+  if (a >= 0x1p53) return texture.c0;
+  return (static_cast<std::int64_t>(a) & 1) == 0 ? texture.c0 : texture.c1;
 }
 
 std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scene) {

@@ -27,12 +27,24 @@ inline constexpr int kMaxImageSide = 1 << 16;
 
 enum class IntegratorType { kWhitted, kRaycast, kDepth, kNormal, kId };
 
+/// Adaptive antialiasing (docs/rendering.md "Adaptive antialiasing"): none (the image's fixed
+/// `samples`), POV-Ray's method 1 (neighbour-threshold supersampling), method 2 (recursive
+/// subdivision of the pixel from its corners) or a variance-driven sampler.
+enum class AntialiasMethod { kNone, kNeighbour, kSubdivide, kVariance };
+
+struct AntialiasSettings {
+  AntialiasMethod method = AntialiasMethod::kNone;
+  double threshold = 0.3;  // colour distance (sum of |channel difference|) that triggers refining
+  int depth = 3;           // method 1 and variance: depth x depth samples at most; method 2: levels
+};
+
 struct RenderSettings {
   IntegratorType integrator = IntegratorType::kWhitted;
   int max_depth = 5;
   Vec3 background{0, 0, 0};
   Vec3 ambient{0, 0, 0};
   unsigned seed = 0;
+  AntialiasSettings antialias;
 };
 
 }  // namespace raycast

@@ -117,6 +117,29 @@ class Loader {
     r.background = read_color(f, "background", r.background);
     r.ambient = read_color(f, "ambient", r.ambient);
     r.seed = static_cast<unsigned>(f.integer("seed", 0, 0, 2147483647));
+    if (f.has("antialias")) read_antialias(f.required("antialias"), r.antialias);
+    f.finish();
+  }
+
+  // render.antialias: {method, threshold, depth} (docs/scene-format.md).
+  void read_antialias(const YAML::Node& node, AntialiasSettings& aa) {
+    Fields f(ctx_, node, "render.antialias");
+    const std::string method = f.string("method");
+    if (method == "none")
+      aa.method = AntialiasMethod::kNone;
+    else if (method == "1" || method == "neighbour")
+      aa.method = AntialiasMethod::kNeighbour;
+    else if (method == "2" || method == "subdivide")
+      aa.method = AntialiasMethod::kSubdivide;
+    else if (method == "variance")
+      aa.method = AntialiasMethod::kVariance;
+    else
+      f.fail("method",
+             "render.antialias.method must be none, 1 (neighbour), 2 (subdivide) or "
+             "variance, got " +
+                 method);
+    aa.threshold = f.non_negative("threshold", aa.threshold);
+    aa.depth = f.integer("depth", aa.depth, 1, 16);
     f.finish();
   }
 

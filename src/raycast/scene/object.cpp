@@ -39,9 +39,16 @@ void spans(const Object& o, const Ray& ray, SpanList& out) {
   std::visit([&](const auto& s) { spans(s, r, out); }, o.shape);
 }
 
-SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit) {
+SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, SurfaceNeeds needs) {
   const Ray r = to_object_space(o, ray);
-  SurfaceInfo si = std::visit([&](const auto& s) { return surface(s, r, hit); }, o.shape);
+  SurfaceInfo si = std::visit(
+      [&](const auto& s) {
+        if constexpr (requires { surface_geometry(s, r, hit); }) {
+          if (needs == SurfaceNeeds::kGeometry) return surface_geometry(s, r, hit);
+        }
+        return surface(s, r, hit);
+      },
+      o.shape);
   if (o.xf) {
     const Vec3 p = si.p;
     si.p = o.xf->point(p);

@@ -47,7 +47,12 @@ Aabb bounds(const Object& o);
 bool intersect(const Object& o, const Ray& ray, LocalHit& hit);
 bool occluded(const Object& o, const Ray& ray);
 void spans(const Object& o, const Ray& ray, SpanList& out);
-SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit);
+/// What a caller of surface() needs: everything, or the geometry only (p, its error, the
+/// normals; u and v may be left 0), which spares shapes with a `surface_geometry` function their
+/// atan2/acos parameterisation (the Whitted integrator asks for (u, v) only for image textures).
+enum class SurfaceNeeds { kAll, kGeometry };
+SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit,
+                    SurfaceNeeds needs = SurfaceNeeds::kAll);
 bool contains(const Object& o, const Vec3& p);
 bool is_closed(const Object& o);
 /// The material index for a hit on o: the CSG leaf's or prototype object's own when it has one,

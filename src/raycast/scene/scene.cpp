@@ -66,6 +66,14 @@ bool Scene::occluded(const Ray& ray) const {
   });
 }
 
+bool Scene::any_object(const Ray& ray, const std::function<bool(std::uint32_t)>& visit) const {
+  if (!is_valid(ray)) return false;
+  for (std::uint32_t index : unbounded_)
+    if (visit(index)) return true;
+  return traverse_any(bvh_, ray.o, ray.d, ray.tmin, ray.tmax,
+                      [&](std::uint32_t prim) { return visit(bounded_[prim]); });
+}
+
 void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
   out.clear();
   if (!is_valid(ray)) return;
@@ -96,8 +104,8 @@ void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
   });
 }
 
-SurfaceInfo Scene::surface(const Ray& ray, const SceneHit& hit) const {
-  return raycast::surface(objects[hit.object], ray, hit.local);
+SurfaceInfo Scene::surface(const Ray& ray, const SceneHit& hit, SurfaceNeeds needs) const {
+  return raycast::surface(objects[hit.object], ray, hit.local, needs);
 }
 
 const Material& Scene::material_of(const SceneHit& hit) const {

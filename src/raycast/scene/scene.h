@@ -2,6 +2,7 @@
 // The loaded scene: objects, materials, lights, camera and settings, plus the top-level BVH.
 // Build once, then query from any number of threads.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,8 +59,14 @@ struct Scene {
   bool occluded(const Ray& ray) const;
   /// Every crossing of a final solid's (or open surface's) boundary within [tmin, tmax], sorted.
   void intersect_all(const Ray& ray, std::vector<Crossing>& out) const;
+  /// Calls visit(index) (index into objects) for every object the ray's [tmin, tmax] segment may
+  /// cross: every unbounded object, then those whose bounds the BVH finds on the segment, in a
+  /// fixed order for a given ray. Stops as soon as visit returns true, and returns whether it did.
+  /// Nothing is visited for a ray that is not is_valid.
+  bool any_object(const Ray& ray, const std::function<bool(std::uint32_t)>& visit) const;
   /// The full surface record of a hit found with this ray.
-  SurfaceInfo surface(const Ray& ray, const SceneHit& hit) const;
+  SurfaceInfo surface(const Ray& ray, const SceneHit& hit,
+                      SurfaceNeeds needs = SurfaceNeeds::kAll) const;
   const Material& material_of(const SceneHit& hit) const;
 
  private:

@@ -1,0 +1,232 @@
+#include "render/antialias.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace raycast {
+
+namespace {
+
+/// Refinement samples use their own stream per pixel, apart from the first pass's.
+constexpr unsigned kRefineSalt = 0x5bd1e995u;
+
+struct Counters {
+  std::uint64_t rays = 0, samples = 0;
+};
+
+double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
+
+/// The displayed value of a linear colour: its 8-bit sRGB codes / 255 (io/image.h).
+Color display(const Color& c) {
+  return Color{double(linear_to_srgb8(float(c.x))), double(linear_to_srgb8(float(c.y))),
+               double(linear_to_srgb8(float(c.z)))} /
+         255.0;
+}
+
+double display_distance(const Color& a, const Color& b) {
+  const Color d = a - b;
+  return std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+}
+
+/// Runs body(y, counters) for every row y in [0, rows) in parallel, then calls row_done.
+template <class Body>
+void for_rows(int rows, tbb::enumerable_thread_specific<Counters>& counters,
+              const std::function<void()>& row_done, const Body& body) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, rows), [&](const tbb::blocked_range<int>& range) {
+    Counters& c = counters.local();
+    for (int y = range.begin(); y != range.end(); ++y) {
+      body(y, c);
+      if (row_done) row_done();
+    }
+  });
+}
+
+/// Whether pixel (x, y) of the first-pass values differs from one of its four neighbours by more
+/// than the threshold (POV-Ray's method 1 compares each pixel with its left and upper neighbours
+/// and refines both: the same set of pixels).
+bool differs(const std::vector<Color>& shown, int width, int height, int x, int y,
+             double threshold) {
+  const Color& c = shown[std::size_t(y) * width + x];
+  const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
+  for (int k = 0; k < 4; ++k) {
+    const int nx = x + dx[k], ny = y + dy[k];
+    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+    if (display_distance(c, shown[std::size_t(ny) * width + nx]) > threshold) return true;
+  }
+  return false;
+}
+
+/// The first pass of methods 1 and variance: one sample through every pixel's centre.
+std::vector<Color> centre_pass(int width, int height, unsigned seed, const RasterSampler& sample,
+                               tbb::enumerable_thread_specific<Counters>& counters,
+                               const std::function<void()>& row_done) {
+  std::vector<Color> first(std::size_t(width) * height);
+  for_rows(height, counters, row_done, [&](int y, Counters& c) {
+    for (int x = 0; x < width; ++x) {
+      SampleState state{Rng::for_pixel(x, y, seed), 0};
+      first[std::size_t(y) * width + x] = sample(x + 0.5, y + 0.5, state);
+      c.rays += state.rays;
+      ++c.samples;
+    }
+  });
+  return first;
+}
+
+/// Method 2's recursion over the square [x0, x0 + size] x [y0, y0 + size] with corner values
+/// c[0..3] (top-left, top-right, bottom-left, bottom-right).
+Color subdivide(double x0, double y0, double size, const Color c[4], int level,
+                const AntialiasSettings& aa, const RasterSampler& sample, SampleState& state,
+                std::uint64_t& samples) {
+  const Color shown[4] = {display(c[0]), display(c[1]), display(c[2]), display(c[3])};
+  double spread = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) spread = std::max(spread, display_distance(shown[i], shown[j]));
+  if (level >= aa.depth || !(spread > aa.threshold)) return 0.25 * (c[0] + c[1] + c[2] + c[3]);
+  const double h = 0.5 * size;
+  // The five new points: the edges' midpoints (top, left, right, bottom) and the centre.
+  const Color top = sample(x0 + h, y0, state), left = sample(x0, y0 + h, state);
+  const Color mid = sample(x0 + h, y0 + h, state), right = sample(x0 + size, y0 + h, state);
+  const Color bottom = sample(x0 + h, y0 + size, state);
+  samples += 5;
+  const Color q0[4] = {c[0], top, left, mid}, q1[4] = {top, c[1], mid, right};
+  const Color q2[4] = {left, mid, c[2], bottom}, q3[4] = {mid, right, bottom, c[3]};
+  return 0.25 * (subdivide(x0, y0, h, q0, level + 1, aa, sample, state, samples) +
+                 subdivide(x0 + h, y0, h, q1, level + 1, aa, sample, state, samples) +
+                 subdivide(x0, y0 + h, h, q2, level + 1, aa, sample, state, samples) +
+                 subdivide(x0 + h, y0 + h, h, q3, level + 1, aa, sample, state, samples));
+}
+
+}  // namespace
+
+double colour_distance(const Color& a, const Color& b) {
+  return display_distance(display(a), display(b));
+}
+
+void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
+                     Image& image, AdaptiveStats& stats, const std::function<void()>& row_done) {
+  if (!(aa.threshold >= 0) || !std::isfinite(aa.threshold))
+    throw std::invalid_argument("antialias threshold must be finite and >= 0");
+  if (aa.depth < 1 || aa.depth > 16)
+    throw std::invalid_argument("antialias depth must be in [1, 16]");
+  const int width = image.width, height = image.height;
+  tbb::enumerable_thread_specific<Counters> counters;
+
+  switch (aa.method) {
+    case AntialiasMethod::kNone:
+      throw std::invalid_argument("render_adaptive: no adaptive method");
+
+    case AntialiasMethod::kNeighbour: {
+      // Method 1: a pixel that differs from a neighbour gets depth x depth stratified, jittered
+      // samples in place of its centre sample.
+      const std::vector<Color> first = centre_pass(width, height, seed, sample, counters, row_done);
+      std::vector<Color> shown(first.size());
+      std::transform(first.begin(), first.end(), shown.begin(), display);
+      const int n = aa.depth;
+      for_rows(height, counters, row_done, [&](int y, Counters& c) {
+        for (int x = 0; x < width; ++x) {
+          Color value = first[std::size_t(y) * width + x];
+          if (n > 1 && differs(shown, width, height, x, y, aa.threshold)) {
+            SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
+            Color sum{0, 0, 0};
+            for (int k = 0; k < n * n; ++k) {
+              const double jx = state.rng.uniform(), jy = state.rng.uniform();
+              sum += sample(x + ((k % n) + jx) / n, y + ((k / n) + jy) / n, state);
+            }
+            value = sum / double(n * n);
+            c.rays += state.rays;
+            c.samples += std::uint64_t(n) * n;
+          }
+          image.set(x, y, Vec3f(value));
+        }
+      });
+      break;
+    }
+
+    case AntialiasMethod::kSubdivide: {
+      // Method 2: values at the pixel corners (shared by neighbouring pixels), each pixel
+      // subdivided into four while its corners differ, up to depth levels.
+      const int cw = width + 1;
+      std::vector<Color> corners(std::size_t(cw) * (height + 1));
+      for_rows(height + 1, counters, nullptr, [&](int y, Counters& c) {
+        for (int x = 0; x < cw; ++x) {
+          SampleState state{Rng::for_pixel(x, y, seed), 0};
+          corners[std::size_t(y) * cw + x] = sample(x, y, state);
+          c.rays += state.rays;
+          ++c.samples;
+        }
+        if (row_done && y < height) row_done();
+      });
+      for_rows(height, counters, row_done, [&](int y, Counters& c) {
+        for (int x = 0; x < width; ++x) {
+          const Color corner[4] = {
+              corners[std::size_t(y) * cw + x], corners[std::size_t(y) * cw + x + 1],
+              corners[std::size_t(y + 1) * cw + x], corners[std::size_t(y + 1) * cw + x + 1]};
+          SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
+          std::uint64_t samples = 0;
+          image.set(x, y, Vec3f(subdivide(x, y, 1, corner, 0, aa, sample, state, samples)));
+          c.rays += state.rays;
+          c.samples += samples;
+        }
+      });
+      break;
+    }
+
+    case AntialiasMethod::kVariance: {
+      // A pixel that differs from a neighbour takes rounds of four samples (2 x 2 strata,
+      // jittered) until the standard error of its mean is at most threshold / 4 in every
+      // channel (after at least two rounds) or it has depth x depth samples (rounded up to 4).
+      const std::vector<Color> first = centre_pass(width, height, seed, sample, counters, row_done);
+      std::vector<Color> shown(first.size());
+      std::transform(first.begin(), first.end(), shown.begin(), display);
+      const int most = std::max(8, (aa.depth * aa.depth + 3) / 4 * 4);
+      const double target = aa.threshold / 4;
+      for_rows(height, counters, row_done, [&](int y, Counters& c) {
+        for (int x = 0; x < width; ++x) {
+          Color value = first[std::size_t(y) * width + x];
+          if (differs(shown, width, height, x, y, aa.threshold)) {
+            SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
+            Color sum{0, 0, 0}, sum1{0, 0, 0}, sum2{0, 0, 0};  // values; clamped; squared
+            int n = 0;
+            while (n < most) {
+              for (int k = 0; k < 4; ++k) {
+                const double jx = state.rng.uniform(), jy = state.rng.uniform();
+                const Color v = sample(x + ((k % 2) + jx) / 2, y + ((k / 2) + jy) / 2, state);
+                sum += v;
+                const Color w{clamp01(v.x), clamp01(v.y), clamp01(v.z)};
+                sum1 += w;
+                sum2 += mul(w, w);
+              }
+              n += 4;
+              if (n < 8) continue;
+              // Unbiased variance of the clamped values per channel; the mean's standard error.
+              double worst = 0;
+              for (int i = 0; i < 3; ++i) {
+                const double mean = sum1[i] / n;
+                const double var = std::max(0.0, (sum2[i] - n * mean * mean) / (n - 1));
+                worst = std::max(worst, var / n);
+              }
+              if (worst <= target * target) break;
+            }
+            value = sum / double(n);
+            c.rays += state.rays;
+            c.samples += std::uint64_t(n);
+          }
+          image.set(x, y, Vec3f(value));
+        }
+      });
+      break;
+    }
+  }
+  for (const Counters& c : counters) {
+    stats.rays += c.rays;
+    stats.samples += c.samples;
+  }
+}
+
+}  // namespace raycast

@@ -1,0 +1,37 @@
+#pragma once
+// Adaptive antialiasing (docs/rendering.md "Adaptive antialiasing"): POV-Ray's method 1
+// (neighbour-threshold supersampling) and method 2 (recursive subdivision from the pixel's
+// corners), and a variance-driven sampler. Every decision depends only on values traced with
+// per-pixel seeded generators, so the image is the same for any thread count.
+#include <cstdint>
+#include <functional>
+
+#include "io/image.h"
+#include "render/integrator.h"
+#include "scene/camera.h"
+
+namespace raycast {
+
+/// The value seen through raster position (x, y) (pixel (i, j) covers [i, i+1] x [j, j+1]),
+/// tracing with the sample's random numbers and counting its rays in `state`.
+using RasterSampler = std::function<Color(double x, double y, SampleState& state)>;
+
+/// The colour distance of the refinement tests: the sum over the three channels of the absolute
+/// difference of the two colours as displayed, each linear channel turned into its 8-bit sRGB
+/// code / 255 (clamped to [0, 1]; io/image.h linear_to_srgb8), so that thresholds act on what
+/// the image shows.
+double colour_distance(const Color& a, const Color& b);
+
+struct AdaptiveStats {
+  std::uint64_t rays = 0;     // every scene query, as SampleState counts them
+  std::uint64_t samples = 0;  // camera samples traced
+};
+
+/// Renders every pixel of `image` (its size) with `aa.method` (not kNone), `seed` the scene's.
+/// `row_done` is called once per image row of each of the two passes (for progress reports).
+/// Throws std::invalid_argument for a threshold that is negative or not finite or a depth
+/// outside [1, 16].
+void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
+                     Image& image, AdaptiveStats& stats, const std::function<void()>& row_done);
+
+}  // namespace raycast

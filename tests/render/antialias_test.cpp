@@ -1,0 +1,164 @@
+#include "render/antialias.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "render/renderer.h"
+#include "scene/demo_scene.h"
+#include "scene/loader.h"
+#include "scene/scene_error.h"
+
+namespace raycast {
+namespace {
+
+RenderOptions small(AntialiasMethod method, double threshold, int depth, int threads) {
+  RenderOptions options;
+  options.width = 40;
+  options.height = 30;
+  options.progress = false;
+  options.threads = threads;
+  options.antialias = AntialiasSettings{method, threshold, depth};
+  return options;
+}
+
+double rmse(const Image& a, const Image& b) {
+  double sum = 0;
+  for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+    const double d =
+        std::clamp(double(a.rgb[i]), 0.0, 1.0) - std::clamp(double(b.rgb[i]), 0.0, 1.0);
+    sum += d * d;
+  }
+  return std::sqrt(sum / double(a.rgb.size()));
+}
+
+TEST(ColourDistance, SumOfClampedChannelDifferences) {
+  EXPECT_EQ(colour_distance({0, 0, 0}, {0, 0, 0}), 0);
+  EXPECT_EQ(colour_distance({1, 0, 0}, {0, 0.5, 0.25}),
+            1 + linear_to_srgb8(0.5f) / 255.0 + linear_to_srgb8(0.25f) / 255.0);
+  EXPECT_EQ(colour_distance({0.2, 0.2, 0.2}, {0.2, 0.2, 0.2}), 0);
+  EXPECT_EQ(colour_distance({3, -1, 0.5}, {1, 0, 0.5}), 0);  // clamped to [0, 1] first
+  EXPECT_EQ(colour_distance({0, 0, 0}, {2, 2, 2}), 3);
+}
+
+TEST(Antialias, EveryMethod_OneAndTwoThreadsGiveIdenticalImages) {
+  const Scene scene = load_demo_scene();
+  for (auto method :
+       {AntialiasMethod::kNeighbour, AntialiasMethod::kSubdivide, AntialiasMethod::kVariance}) {
+    RenderStats one, two;
+    const Image a = render(scene, small(method, 0.1, 3, 1), &one);
+    const Image b = render(scene, small(method, 0.1, 3, 2), &two);
+    EXPECT_EQ(a.rgb, b.rgb) << int(method);
+    EXPECT_EQ(one.rays, two.rays) << int(method);
+    EXPECT_EQ(one.samples, two.samples) << int(method);
+    EXPECT_EQ(one.antialias, method);
+  }
+}
+
+TEST(Antialias, ThresholdAboveEveryDistance_NoRefinement) {
+  // Distances are at most 3, so nothing is refined: method 1 and variance trace the centre
+  // samples only and equal a 1-sample render; method 2 traces the (w+1) x (h+1) corners.
+  const Scene scene = load_demo_scene();
+  RenderOptions fixed = small(AntialiasMethod::kNone, 0, 1, 1);
+  fixed.antialias.reset();
+  fixed.spp = 1;
+  const Image one_spp = render(scene, fixed);
+  for (auto method : {AntialiasMethod::kNeighbour, AntialiasMethod::kVariance}) {
+    RenderStats stats;
+    const Image image = render(scene, small(method, 3.5, 4, 1), &stats);
+    EXPECT_EQ(image.rgb, one_spp.rgb) << int(method);
+    EXPECT_EQ(stats.samples, 40u * 30u) << int(method);
+  }
+  RenderStats stats;
+  render(scene, small(AntialiasMethod::kSubdivide, 3.5, 4, 1), &stats);
+  EXPECT_EQ(stats.samples, 41u * 31u);
+}
+
+TEST(Antialias, FlatImage_ExactBackgroundEverywhere) {
+  const Scene scene = load_scene_text(R"(
+render: {background: [0.25, 0.5, 0.75]}
+objects:
+  - sphere: {center: [0, 0, -1000], radius: 1}
+camera: {position: [0, 0, 0], look_at: [0, 0, 1]}
+)");
+  for (auto method :
+       {AntialiasMethod::kNeighbour, AntialiasMethod::kSubdivide, AntialiasMethod::kVariance}) {
+    const Image image = render(scene, small(method, 0, 3, 2));
+    for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+      ASSERT_EQ(image.rgb[i], 0.25f);
+      ASSERT_EQ(image.rgb[i + 1], 0.5f);
+      ASSERT_EQ(image.rgb[i + 2], 0.75f);
+    }
+  }
+}
+
+TEST(Antialias, EdgesRefined_CloserToTheReferenceThanOneSample) {
+  // The demo's edges: every adaptive method lands nearer a 64-sample render than 1 sample does,
+  // refining only some pixels (fewer samples than refining every one).
+  const Scene scene = load_demo_scene();
+  RenderOptions fixed = small(AntialiasMethod::kNone, 0, 1, 2);
+  fixed.antialias.reset();
+  fixed.spp = 64;
+  const Image reference = render(scene, fixed);
+  fixed.spp = 1;
+  const double one_spp = rmse(render(scene, fixed), reference);
+  for (auto method :
+       {AntialiasMethod::kNeighbour, AntialiasMethod::kSubdivide, AntialiasMethod::kVariance}) {
+    RenderStats stats;
+    const double error = rmse(render(scene, small(method, 0.1, 3, 2), &stats), reference);
+    EXPECT_LT(error, 0.8 * one_spp) << int(method);
+    // Method 2 at depth 3 may trace up to 105 points in a pixel (duplicates on shared edges).
+    const unsigned most = method == AntialiasMethod::kSubdivide ? 105u : 9u;
+    EXPECT_LT(stats.samples, 40u * 30u * most) << int(method);
+    EXPECT_GT(stats.samples, 41u * 31u) << int(method);
+  }
+}
+
+TEST(Antialias, Loader_ReadsSettingsAndRejectsBadOnes) {
+  const Scene scene = load_scene_text(R"(
+render: {antialias: {method: 2, threshold: 0.1, depth: 4}}
+objects: [{sphere: {radius: 1}}]
+)");
+  EXPECT_EQ(scene.render.antialias.method, AntialiasMethod::kSubdivide);
+  EXPECT_EQ(scene.render.antialias.threshold, 0.1);
+  EXPECT_EQ(scene.render.antialias.depth, 4);
+  const Scene named = load_scene_text(
+      "render: {antialias: {method: variance}}\nobjects: [{sphere: {radius: 1}}]\n");
+  EXPECT_EQ(named.render.antialias.method, AntialiasMethod::kVariance);
+  EXPECT_EQ(named.render.antialias.threshold, 0.3);  // defaults as POV-Ray's +A0.3 +R3
+  EXPECT_EQ(named.render.antialias.depth, 3);
+  for (const std::string bad :
+       {"{method: 3}", "{method: 1, threshold: -1}", "{method: 1, depth: 0}",
+        "{method: 1, depth: 17}", "{threshold: 0.3}", "{method: 1, extra: 2}",
+        "{method: 1, threshold: .nan}"}) {
+    EXPECT_THROW(load_scene_text("render: {antialias: " + bad + "}\nobjects: []\n"), SceneError)
+        << bad;
+  }
+}
+
+TEST(Antialias, SppOverride_TurnsTheScenesAdaptiveSamplingOff) {
+  Scene scene = load_demo_scene();
+  scene.render.antialias = {AntialiasMethod::kNeighbour, 0.0, 3};
+  RenderOptions options;
+  options.width = 20;
+  options.height = 15;
+  options.progress = false;
+  RenderStats adaptive, fixed;
+  render(scene, options, &adaptive);
+  EXPECT_EQ(adaptive.antialias, AntialiasMethod::kNeighbour);
+  options.spp = 2;
+  render(scene, options, &fixed);
+  EXPECT_EQ(fixed.antialias, AntialiasMethod::kNone);
+  EXPECT_EQ(fixed.samples, 20u * 15u * 2u);
+}
+
+TEST(Antialias, BadSettings_Throw) {
+  const Scene scene = load_demo_scene();
+  EXPECT_THROW(render(scene, small(AntialiasMethod::kNeighbour, -1, 3, 1)), std::invalid_argument);
+  EXPECT_THROW(render(scene, small(AntialiasMethod::kNeighbour, NAN, 3, 1)), std::invalid_argument);
+  EXPECT_THROW(render(scene, small(AntialiasMethod::kSubdivide, 0.3, 0, 1)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace raycast
