@@ -82,9 +82,9 @@ ScalarGrid splat_layout(const std::vector<Vec3>& particles, const SplatParams& p
 }
 
 ScalarGrid splat_particles(const std::vector<Vec3>& particles, const SplatParams& p) {
-  ScalarGrid g = splat_layout(particles, p);
   for (const Vec3& q : particles)
     if (!is_finite(q)) throw std::invalid_argument("a particle position is not finite");
+  ScalarGrid g = splat_layout(particles, p);
   const double h = p.h, support = 2 * h;
   const double mass =
       p.rest_density * (p.particle_volume ? *p.particle_volume : std::pow(h / 1.3, 3));
