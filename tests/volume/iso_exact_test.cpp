@@ -68,7 +68,8 @@ ScalarGrid one_cell() {
   g.v.resize(8);
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) g.v[g.index(i, j, k)] = (i + j + k == 1 || i + j + k == 2) ? 1 : 0;
+      for (int i = 0; i < 2; ++i)
+        g.v[g.index(i, j, k)] = (i + j + k == 1 || i + j + k == 2) ? 1 : 0;
   return g;
 }
 
