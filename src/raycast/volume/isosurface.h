@@ -14,7 +14,7 @@ namespace raycast {
 
 /// Cells per macro-cell per axis: a macro-cell whose node range excludes iso is crossed in one
 /// step.
-inline constexpr int kMacroCell = 8;
+inline constexpr int kMacroCell = 4;
 
 /// The shared, immutable data of an iso-surface: the grid, the level and the macro-grid ranges.
 struct IsoData {
