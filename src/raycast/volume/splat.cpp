@@ -85,7 +85,7 @@ ScalarGrid splat_particles(const std::vector<Vec3>& particles, const SplatParams
   for (const Vec3& q : particles)
     if (!is_finite(q)) throw std::invalid_argument("a particle position is not finite");
   ScalarGrid g = splat_layout(particles, p);
-  const double h = p.h, support = 2 * h;
+  const double h = p.h, support = 2 * h, support2 = support * support;
   const double mass =
       p.rest_density * (p.particle_volume ? *p.particle_volume : std::pow(h / 1.3, 3));
   const int nx = g.n[0], ny = g.n[1], nz = g.n[2];
@@ -137,10 +137,12 @@ ScalarGrid splat_particles(const std::vector<Vec3>& particles, const SplatParams
             for (int j = y0; j <= y1; ++j) {
               const double dy = g.lo.y + j * g.cell.y - x.y;
               double* row = &acc[(std::size_t(k - k0) * ny + j) * nx];
+              const double yz2 = dy * dy + dz * dz;
+              if (yz2 >= support2) continue;
               for (int ii = x0; ii <= x1; ++ii) {
                 const double dx = g.lo.x + ii * g.cell.x - x.x;
-                const double r2 = dx * dx + dy * dy + dz * dz;
-                if (r2 >= support * support) continue;
+                const double r2 = dx * dx + yz2;
+                if (r2 >= support2) continue;
                 row[ii] += mass * cubic_spline_kernel(std::sqrt(r2), h);
               }
             }
