@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "io/image.h"
 #include "render/renderer.h"
+#include "render_frames.h"
 #include "scene/demo_scene.h"
 #include "scene/loader.h"
 
@@ -22,7 +23,7 @@ namespace raycast::cli {
 namespace {
 
 struct Options {
-  std::string scene, output = "out.png", integrator, aovs, antialias;
+  std::string scene, output = "out.png", integrator, aovs, antialias, frames;
   int width = 0, height = 0, spp = 0, threads = 0;
 };
 
@@ -123,6 +124,8 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("--aov", opt->aovs,
                   "Comma-separated extra outputs written beside the image as OUT.<name>.pfm: "
                   "depth, normal, id, albedo");
+  cmd->add_option("--frames", opt->frames,
+                  "Render frames A-B: {frame} / {frame:04d} in the scene's data paths and in -o");
   return [opt, width, height, spp, threads, antialias] {
     // Validate everything before the (possibly long) render.
     constexpr int kMaxSize = kMaxImageSide;  // also the --spp limit, like image.samples
@@ -188,6 +191,7 @@ Action add_render_command(CLI::App& app) {
       return usage_error("--width * --height must be at most " + std::to_string(kMaxImagePixels) +
                          " pixels, got " + std::to_string(opt->width) + " x " +
                          std::to_string(opt->height));
+    if (!opt->frames.empty()) return render_frames(opt->scene, opt->output, opt->frames, options);
     const Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
     const long long pixels =
         static_cast<long long>(opt->width > 0 ? opt->width : scene.image.width) *

@@ -54,6 +54,8 @@ const std::map<std::string, std::string>& examples() {
       {"revolution",
        "{profile: [[0, 0], [0.7, 0], [0.7, 0.1], [0.1, 0.3], [0.1, 1.2], [0.8, 1.6]], curve: "
        "linear}"},
+      {"isosurface", "{grid: '" + std::string(RAYCAST_SOURCE_DIR) +
+                         "/tests/volume/data/gaussians.raw', iso: 0.5}"},
   };
   return m;
 }

@@ -479,10 +479,11 @@ class Loader {
 
 }  // namespace
 
-Scene load_scene_text(const std::string& text, const std::string& name, const std::string& dir) {
+Scene load_scene_text(const std::string& text, const std::string& name, const std::string& dir,
+                      int frame) {
   Scene scene;
   scene.source = name;
-  SourceContext ctx{name, dir};
+  SourceContext ctx{name, dir, frame};
   const YAML::Node root = parse_yaml(text, name, kMaxNesting);
   try {
     Loader(ctx, scene).load(root);
@@ -494,7 +495,7 @@ Scene load_scene_text(const std::string& text, const std::string& name, const st
   return scene;
 }
 
-Scene load_scene_file(const std::string& path) {
+Scene load_scene_file(const std::string& path, int frame) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw SceneError(path, 0, 0, "is a directory, not a scene file");
@@ -504,7 +505,7 @@ Scene load_scene_file(const std::string& path) {
   ss << in.rdbuf();
   if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
   const std::string dir = std::filesystem::path(path).parent_path().string();
-  return load_scene_text(ss.str(), path, dir.empty() ? "." : dir);
+  return load_scene_text(ss.str(), path, dir.empty() ? "." : dir, frame);
 }
 
 }  // namespace raycast

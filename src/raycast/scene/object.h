@@ -24,6 +24,7 @@
 #include "mesh/mesh.h"
 #include "scene/csg_shape.h"
 #include "scene/instance.h"
+#include "volume/isosurface.h"
 
 namespace raycast {
 
@@ -32,7 +33,7 @@ namespace raycast {
 using ShapeVariant =
     std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder,
                  Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, Revolution, MeshShape,
-                 CsgShape, InstanceShape>;
+                 CsgShape, InstanceShape, Isosurface>;
 
 struct Object {
   ShapeVariant shape;

@@ -32,5 +32,6 @@ ShapeVariant parse_algebraic(Fields& f);
 ShapeVariant parse_implicit(Fields& f);
 ShapeVariant parse_mesh(Fields& f);
 ShapeVariant parse_revolution(Fields& f);
+ShapeVariant parse_isosurface(Fields& f);
 
 }  // namespace raycast

@@ -22,6 +22,7 @@ const std::map<std::string, ShapeParser>& shape_parsers() {
       {"implicit", parse_implicit},
       {"mesh", parse_mesh},
       {"revolution", parse_revolution},
+      {"isosurface", parse_isosurface},
   };
   return table;
 }
