@@ -25,12 +25,8 @@ for t in "${targets[@]}"; do
   [ "$name" = loader ] && cp scenes/*.yaml "$corpus"/
   max_len=4096
   [ "$name" = formula ] && max_len=512
-  leaks=1
-  # assimp 5.2 (Debian's, behind the OBJ, STL and ASCII PLY readers) leaks inside itself on
-  # malformed files; our own readers are covered for leaks by the loader target and the ASan tests.
-  [ "$name" = mesh ] && leaks=0
   echo "fuzz: $t for ${seconds}s"
-  if ! ASAN_OPTIONS="detect_leaks=$leaks:abort_on_error=1" \
+  if ! ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" \
        UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
        build/fuzz/fuzz/"$t" "$corpus" -seed=1 -max_total_time="$seconds" \
          -timeout=10 -rss_limit_mb=4096 -max_len="$max_len" -print_final_stats=1 \

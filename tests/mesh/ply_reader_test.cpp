@@ -204,5 +204,34 @@ TEST_F(PlyReader, BadHeaders_Refused) {
   expect_error("", "magic");
 }
 
+// Found by mesh_fuzz: assimp 5.2 never returned on an ASCII PLY whose header has no end_header
+// line (here `element face 1 0` swallowed it); every header is now read line by line first.
+TEST_F(PlyReader, HeaderWithoutEndHeaderOrWithStrayTokens_RefusedBeforeAnyReader) {
+  expect_error(
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+      "float z\nelement face 1 0\n3 0 1 2\n",
+      "end_header");
+  expect_error(
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nelement face 1 0\nend_header\n",
+      "line 5: expected 'element NAME COUNT'");
+  expect_error("ply\nformat ascii 1.0\nelemnt vertex 3\nend_header\n", "unknown keyword 'elemnt'");
+  expect_error("ply\nformat binary_middle_endian 1.0\nend_header\n", "unknown format");
+}
+
+// The PLY format ends the header at an `end_header` line, not at those letters anywhere: a
+// comment that mentions end_header is still a comment.
+TEST_F(PlyReader, EndHeaderInsideAComment_IsNotTheEndOfTheHeader) {
+  std::string s =
+      "ply\nformat binary_little_endian 1.0\ncomment written before end_header was known\n"
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  for (int i = 0; i < 9; ++i) put(s, (i == 3 || i == 7) ? 1.0f : 0.0f);
+  put(s, std::uint8_t(3));
+  for (std::int32_t i : {0, 1, 2}) put(s, i);
+  const MeshFileData m = load_mesh_file(write("comment.ply", s));
+  EXPECT_EQ(m.soup.positions.size(), 3u);
+  EXPECT_EQ(m.soup.triangles.size(), 1u);
+}
+
 }  // namespace
 }  // namespace raycast

@@ -244,6 +244,89 @@ bool read_triangle_rows(const PlyElement& e, const char*& p, const char* end,
   return true;
 }
 
+// A PLY header, read line by line as the format defines it: "ply", then format, comment,
+// obj_info, element and property lines, up to an "end_header" line.
+struct PlyHeader {
+  std::string format;  // ascii, binary_little_endian or binary_big_endian
+  std::vector<PlyElement> elements;
+  bool types_known = true;  // every property type is one PLY defines
+  std::size_t bytes = 0;    // the header's length, through the newline after end_header
+};
+
+// Throws MeshFileError for a malformed header (naming the line), so that no reader, ours or
+// assimp's, ever sees one: assimp 5.2 loops forever on a header without end_header.
+PlyHeader parse_ply_header(std::string_view file) {
+  constexpr std::size_t kMaxHeader = std::size_t{1} << 20;  // far beyond any real header
+  const std::string_view head = file.substr(0, std::min(file.size(), kMaxHeader));
+  if (head.substr(0, 3) != "ply") throw MeshFileError("not a PLY file (no 'ply' magic line)");
+  PlyHeader h;
+  std::size_t pos = 0;
+  for (int line_no = 1;; ++line_no) {
+    const std::size_t eol = head.find('\n', pos);
+    if (eol == std::string_view::npos)
+      throw MeshFileError(file.size() > kMaxHeader ? "PLY header longer than 1 MiB"
+                                                   : "truncated PLY header (no end_header line)");
+    std::string line(head.substr(pos, eol - pos));
+    pos = eol + 1;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream ls(line);
+    std::string word;
+    ls >> word;
+    auto bad = [&](const std::string& why) {
+      return MeshFileError("malformed PLY header, line " + std::to_string(line_no) + ": " + why);
+    };
+    if (line_no == 1) {
+      if (line != "ply") throw MeshFileError("not a PLY file (no 'ply' magic line)");
+      continue;
+    }
+    std::string extra;
+    if (word == "end_header") {
+      if (ls >> extra) throw bad("text after end_header");
+      if (h.format.empty()) throw bad("no format line before end_header");
+      h.bytes = pos;
+      return h;
+    }
+    if (word == "comment" || word == "obj_info") continue;
+    if (word == "format") {
+      std::string version;
+      ls >> h.format >> version;
+      if (h.format != "ascii" && h.format != "binary_little_endian" &&
+          h.format != "binary_big_endian")
+        throw bad("unknown format '" + h.format + "'");
+      if (version.empty() || (ls >> extra)) throw bad("expected 'format TYPE VERSION'");
+    } else if (word == "element") {
+      PlyElement e;
+      std::string count;
+      ls >> e.name >> count;
+      if (e.name.empty() || count.empty() || (ls >> extra) ||
+          count.find_first_not_of("0123456789") != std::string::npos || count.size() > 19)
+        throw bad("expected 'element NAME COUNT'");
+      e.count = std::stoull(count);
+      h.elements.push_back(e);
+    } else if (word == "property") {
+      if (h.elements.empty()) throw bad("a property before any element");
+      PlyProperty p;
+      std::string type;
+      ls >> type;
+      if (type == "list") {
+        std::string ct, it;
+        ls >> ct >> it >> p.name;
+        p.count_type = ply_type(ct);
+        p.type = ply_type(it);
+        if (p.count_type == PlyType::kNone || p.type == PlyType::kNone) h.types_known = false;
+      } else {
+        p.type = ply_type(type);
+        ls >> p.name;
+        if (p.type == PlyType::kNone) h.types_known = false;
+      }
+      if (p.name.empty() || (ls >> extra)) throw bad("expected 'property TYPE NAME'");
+      h.elements.back().props.push_back(p);
+    } else {
+      throw bad("unknown keyword '" + word + "'");
+    }
+  }
+}
+
 // Reads binary little-endian PLY files of the common shape (vertex element with x, y, z and
 // optional nx, ny, nz; face element with one index list) in one pass over a memory map. Returns
 // false, having read nothing, for any other PLY so that assimp gets it. Vertices are decoded in
@@ -253,52 +336,10 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
   const MappedFile file(path);
   const char* const data = file.data();
   const std::size_t size = file.size();
-  if (size < 4 || std::strncmp(data, "ply", 3) != 0)
-    throw MeshFileError("not a PLY file (no 'ply' magic)");
-  // The header is text; a header longer than this is not one we read.
-  const std::size_t header_limit = std::min<std::size_t>(size, 1u << 20);
-  const std::string_view head(data, header_limit);
-  const std::size_t format = head.find("\nformat ");
-  if (format == std::string_view::npos ||
-      head.substr(format, 64).find("binary_little_endian") == std::string_view::npos)
-    return false;
-  const std::size_t end_header = head.find("end_header");
-  if (end_header == std::string_view::npos)
-    throw MeshFileError("truncated PLY header (no end_header)");
-  const std::size_t newline = head.find('\n', end_header);
-  if (newline == std::string_view::npos) throw MeshFileError("truncated PLY header");
-  std::istringstream header(std::string(data, end_header));
-  std::vector<PlyElement> elements;
-  std::string line;
-  while (std::getline(header, line)) {
-    std::istringstream ls(line);
-    std::string word;
-    ls >> word;
-    if (word == "element") {
-      PlyElement e;
-      ls >> e.name >> e.count;
-      if (!ls) throw MeshFileError("malformed PLY element line: " + line);
-      elements.push_back(e);
-    } else if (word == "property") {
-      if (elements.empty()) throw MeshFileError("PLY property before any element");
-      PlyProperty p;
-      std::string type;
-      ls >> type;
-      if (type == "list") {
-        std::string ct, it;
-        ls >> ct >> it >> p.name;
-        p.count_type = ply_type(ct);
-        p.type = ply_type(it);
-        if (p.count_type == PlyType::kNone || p.type == PlyType::kNone) return false;
-      } else {
-        p.type = ply_type(type);
-        ls >> p.name;
-        if (p.type == PlyType::kNone) return false;
-      }
-      elements.back().props.push_back(p);
-    }
-  }
-  const char* const body = data + newline + 1;
+  const PlyHeader header = parse_ply_header(std::string_view(data, size));
+  if (header.format != "binary_little_endian" || !header.types_known) return false;
+  const std::vector<PlyElement>& elements = header.elements;
+  const char* const body = data + header.bytes;
   const char* p = body;
   const char* const end = data + size;
   auto need = [&](std::uint64_t bytes) {
