@@ -1,4 +1,4 @@
-// `raycast render [SCENE] [-o out.png] ...` (SPEC.md "Command line"): renders a scene, or the
+// `raycast render [SCENE] [-o out.png] ...` (docs/cli.md): renders a scene, or the
 // built-in demo, to an image whose format follows the extension; AOVs go beside it.
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
     camera_rays.py SCENE.yaml WIDTH HEIGHT > rays.bin
 
-The camera follows SPEC.md: vertical fov in degrees, position, look_at, up."""
+The camera follows docs/rendering.md: vertical fov in degrees, position, look_at, up."""
 import math
 import struct
 import sys

@@ -13,7 +13,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The seed's parametrisation, with SPEC's v: r = radius - v (radius - inner), phi = u phi_max.
+// The disk's parametrisation of docs/shapes-basic.md: r = radius - v (radius - inner), phi = u
+// phi_max.
 Vec3 point_from_uv(double radius, double inner, double height, double phi_max, double u, double v) {
   const double r = radius - v * (radius - inner);
   const double phi = u * phi_max;

@@ -31,7 +31,7 @@ TEST(Demo, Loads_WithTheDocumentedContents) {
   EXPECT_EQ(scene.objects.size(), 3u);
   EXPECT_EQ(scene.lights.size(), 1u);
   ASSERT_TRUE(scene.camera.has_value());
-  // The floor lies inside a checker cell, never on a cell boundary (SPEC.md note).
+  // The floor lies inside a checker cell, never on a cell boundary (docs/rendering.md).
   const Plane& floor = std::get<Plane>(scene.objects[0].shape);
   const Material& m = scene.materials[scene.objects[0].material];
   ASSERT_TRUE(m.has_checker);

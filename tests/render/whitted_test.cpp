@@ -1,4 +1,4 @@
-// The Whitted integrator against SPEC.md "Shading (whitted)", on hand-computed scenes.
+// The Whitted integrator against docs/rendering.md "Shading", on hand-computed scenes.
 #include <gtest/gtest.h>
 
 #include <cmath>

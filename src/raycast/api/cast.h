@@ -1,5 +1,5 @@
 #pragma once
-// `raycast cast`: rays in, answers out, in input order (SPEC.md "Command line").
+// `raycast cast`: rays in, answers out, in input order (docs/cli.md).
 #include <iosfwd>
 #include <string>
 

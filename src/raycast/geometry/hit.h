@@ -28,10 +28,10 @@ inline constexpr std::int32_t kNoSurface = -1;
 
 /// The full surface record at a hit, in the space of the ray that produced it.
 struct SurfaceInfo {
-  Vec3 p;          // the hit point
-  Vec3 n;          // unit geometric normal, out of the solid (see SPEC: open surfaces' sides)
+  Vec3 p;  // the hit point
+  Vec3 n;  // unit geometric normal, out of the solid (docs/scene-format.md: open surfaces' sides)
   Vec3 shading_n;  // unit shading normal (interpolated for smooth meshes), same side as n
-  double u = 0;    // surface parameters as SPEC.md defines them per shape
+  double u = 0;    // surface parameters as docs/scene-format.md defines them per shape
   double v = 0;
   Vec3 p_error;  // absolute error bound on p per component, for offsetting secondary rays
 };

@@ -12,7 +12,7 @@ namespace raycast {
 /// The ten coefficients A..J of f, in that order.
 using QuadricCoefficients = std::array<double, 10>;
 
-/// The canonical quadrics of SPEC.md's table (parameters a, b, c > 0).
+/// The canonical quadrics of docs/scene-format.md's table (parameters a, b, c > 0).
 enum class QuadricKind { kEllipsoid, kParaboloid, kHyperboloid1, kHyperboloid2, kCone, kCylinder };
 
 /// The solid f(p) < 0 (inside), within `box` when one is given; with `open` only the curved
@@ -39,7 +39,7 @@ QuadricCoefficients quadric_from_matrix(const Mat4& q);
 /// Relative tolerance on |Q_ij - Q_ji| for a matrix to count as symmetric (user-typed decimals).
 inline constexpr double kQuadricSymmetryTolerance = 1e-9;
 
-/// The coefficients of a canonical kind (see SPEC.md); a, b, c must be > 0 and finite.
+/// The coefficients of a canonical kind (docs/shapes-quadrics.md); a, b, c must be > 0 and finite.
 QuadricCoefficients quadric_of_kind(QuadricKind kind, double a, double b, double c);
 
 /// f(p) and its gradient.

@@ -1,6 +1,6 @@
 #pragma once
-// Primary rays (SPEC.md "Cameras"): a pinhole perspective camera with a vertical field of view, or
-// an orthographic one whose `height` is the full view height in scene units.
+// Primary rays (docs/rendering.md "Camera"): a pinhole perspective camera with a vertical field of
+// view, or an orthographic one whose `height` is the full view height in scene units.
 #include "geometry/ray.h"
 #include "scene/camera.h"
 

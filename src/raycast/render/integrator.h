@@ -1,5 +1,5 @@
 #pragma once
-// Radiance along one ray: the Whitted integrator (SPEC.md "Shading (whitted)") and the simple
+// Radiance along one ray: the Whitted integrator (docs/rendering.md "Shading") and the simple
 // diagnostic integrators (raycast, depth, normal, id) and the albedo AOV.
 #include <cstdint>
 #include <memory>

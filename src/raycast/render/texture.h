@@ -1,6 +1,6 @@
 #pragma once
 // Surface colours: the material's colour, a checkerboard in object space, or an image through
-// (u, v) (SPEC.md "Materials").
+// (u, v) (docs/scene-format.md "Materials").
 #include <memory>
 #include <vector>
 

@@ -6,7 +6,7 @@ namespace raycast {
 enum class LightType { kPoint, kDirectional, kSpot, kSphere };
 enum class Attenuation { kNone, kInverseSquare };
 
-/// A light; which fields matter depends on `type` (SPEC.md "Materials, lights, cameras").
+/// A light; which fields matter depends on `type` (docs/scene-format.md "Lights").
 struct Light {
   LightType type = LightType::kPoint;
   Color color{1, 1, 1};

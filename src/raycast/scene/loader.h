@@ -1,5 +1,5 @@
 #pragma once
-// Scene files (SPEC.md "Scene file"): YAML, JSON accepted. Every mistake is a SceneError naming
+// Scene files (docs/scene-format.md): YAML, JSON accepted. Every mistake is a SceneError naming
 // file:line:column and what was expected.
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Surface appearance for the Whitted integrator (SPEC.md "Shading").
+// Surface appearance for the Whitted integrator (docs/rendering.md "Shading").
 #include <memory>
 #include <string>
 

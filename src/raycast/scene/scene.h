@@ -78,7 +78,7 @@ struct Scene {
 };
 
 /// The camera to use: the scene's, or one with fov 40 looking along -z at the centre of the
-/// scene's bounds from where its bounding sphere just fits (SPEC.md defaults).
+/// scene's bounds from where its bounding sphere just fits (docs/rendering.md "Camera").
 CameraDesc camera_or_default(const Scene& scene);
 
 }  // namespace raycast

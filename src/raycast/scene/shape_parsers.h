@@ -1,5 +1,6 @@
 #pragma once
-// One parser per shape key of SPEC.md's table; each reads its fields and validates them.
+// One parser per shape key of docs/scene-format.md's table; each reads its fields and validates
+// them.
 #include <map>
 #include <string>
 
