@@ -57,10 +57,7 @@ struct Formula {
 
 /// sin(a) and cos(a) together, for every type run() takes (over Interval and Dual<Interval>, one
 /// sin_cos of the value's ends).
-inline void sin_cos(double a, double* s, double* c) {
-  *s = std::sin(a);
-  *c = std::cos(a);
-}
+inline void sin_cos(double a, double* s, double* c) { interval_detail::sincos(a, s, c); }
 template <class T, int N>
 void sin_cos(const Dual<T, N>& a, Dual<T, N>* s, Dual<T, N>* c) {
   T sv, cv;

@@ -64,6 +64,20 @@ inline Interval widen(double lo, double hi) {
   if (l <= h && h - l < std::numeric_limits<double>::infinity()) return {l, h};
   return widen(lo, hi, 1);
 }
+// sin x and cos x from one libm call where the library has sincos (glibc), which costs about
+// as much as one of them. Declared under another name bound to the same symbol: GCC knows
+// ::sincos as a builtin and splits it back into sin and cos calls when it inlines the caller.
+#if defined(__GLIBC__)
+extern "C" void raycast_libm_sincos(double x, double* s, double* c) __asm__("sincos");
+#endif
+inline void sincos(double x, double* s, double* c) {
+#if defined(__GLIBC__)
+  raycast_libm_sincos(x, s, c);
+#else
+  *s = std::sin(x);
+  *c = std::cos(x);
+#endif
+}
 // 0 * inf is 0 for interval bounds.
 inline double mul0(double a, double b) { return (a == 0 || b == 0) ? 0.0 : a * b; }
 // Whether some c + k period lies in [lo, hi] (conservatively: a little slack says yes).
@@ -125,8 +139,9 @@ inline void sin_cos(const Interval& a, Interval* sin_a, Interval* cos_a) {
     if (cos_a) *cos_a = {-1, 1};
     return;
   }
-  const double s0 = std::sin(a.lo), c0 = std::cos(a.lo);
-  const double s1 = std::sin(a.hi), c1 = std::cos(a.hi);
+  double s0, c0, s1, c1;
+  interval_detail::sincos(a.lo, &s0, &c0);
+  interval_detail::sincos(a.hi, &s1, &c1);
   auto clamp = [](const Interval& r) {
     return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
   };
