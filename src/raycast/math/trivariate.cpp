@@ -115,12 +115,10 @@ class Expander {
   const Expression& e_;
 };
 
-// pw[n] = x^n for n = 0..degree by repeated multiplication (the same products, in the same order,
-// as multiplying x n times, so every term's value is unchanged by the table).
-template <class T>
-void power_table(T x, int degree, T* pw) {
-  pw[0] = 1;
-  for (int n = 1; n <= degree; ++n) pw[n] = pw[n - 1] * x;
+double ipow(double x, int n) {
+  double r = 1;
+  for (int i = 0; i < n; ++i) r *= x;
+  return r;
 }
 
 }  // namespace
@@ -140,50 +138,42 @@ Trivariate expand_polynomial(std::string_view text) {
 }
 
 double evaluate(const Trivariate& f, const Vec3& p) {
-  double px[kStride], py[kStride], pz[kStride];
-  power_table(p.x, f.degree, px);
-  power_table(p.y, f.degree, py);
-  power_table(p.z, f.degree, pz);
   double s = 0;
-  for (const auto& t : f.terms) s += t.c * px[t.i] * py[t.j] * pz[t.k];
+  for (const auto& t : f.terms) s += t.c * ipow(p.x, t.i) * ipow(p.y, t.j) * ipow(p.z, t.k);
   return s;
 }
 
 Vec3 gradient(const Trivariate& f, const Vec3& p) {
-  double px[kStride], py[kStride], pz[kStride];
-  power_table(p.x, f.degree, px);
-  power_table(p.y, f.degree, py);
-  power_table(p.z, f.degree, pz);
   Vec3 g;
   for (const auto& t : f.terms) {
-    if (t.i > 0) g.x += t.c * t.i * px[t.i - 1] * py[t.j] * pz[t.k];
-    if (t.j > 0) g.y += t.c * t.j * px[t.i] * py[t.j - 1] * pz[t.k];
-    if (t.k > 0) g.z += t.c * t.k * px[t.i] * py[t.j] * pz[t.k - 1];
+    if (t.i > 0) g.x += t.c * t.i * ipow(p.x, t.i - 1) * ipow(p.y, t.j) * ipow(p.z, t.k);
+    if (t.j > 0) g.y += t.c * t.j * ipow(p.x, t.i) * ipow(p.y, t.j - 1) * ipow(p.z, t.k);
+    if (t.k > 0) g.z += t.c * t.k * ipow(p.x, t.i) * ipow(p.y, t.j) * ipow(p.z, t.k - 1);
   }
   return g;
 }
 
+namespace {
+long double ipow_ld(long double x, int n) {
+  long double r = 1;
+  for (int i = 0; i < n; ++i) r *= x;
+  return r;
+}
+}  // namespace
+
 long double evaluate_extended(const Trivariate& f, long double x, long double y, long double z) {
-  long double px[kStride], py[kStride], pz[kStride];
-  power_table(x, f.degree, px);
-  power_table(y, f.degree, py);
-  power_table(z, f.degree, pz);
   long double s = 0;
-  for (const auto& t : f.terms) s += t.c * px[t.i] * py[t.j] * pz[t.k];
+  for (const auto& t : f.terms) s += t.c * ipow_ld(x, t.i) * ipow_ld(y, t.j) * ipow_ld(z, t.k);
   return s;
 }
 
 void gradient_extended(const Trivariate& f, long double x, long double y, long double z,
                        long double g[3]) {
-  long double px[kStride], py[kStride], pz[kStride];
-  power_table(x, f.degree, px);
-  power_table(y, f.degree, py);
-  power_table(z, f.degree, pz);
   g[0] = g[1] = g[2] = 0;
   for (const auto& t : f.terms) {
-    if (t.i > 0) g[0] += t.c * t.i * px[t.i - 1] * py[t.j] * pz[t.k];
-    if (t.j > 0) g[1] += t.c * t.j * px[t.i] * py[t.j - 1] * pz[t.k];
-    if (t.k > 0) g[2] += t.c * t.k * px[t.i] * py[t.j] * pz[t.k - 1];
+    if (t.i > 0) g[0] += t.c * t.i * ipow_ld(x, t.i - 1) * ipow_ld(y, t.j) * ipow_ld(z, t.k);
+    if (t.j > 0) g[1] += t.c * t.j * ipow_ld(x, t.i) * ipow_ld(y, t.j - 1) * ipow_ld(z, t.k);
+    if (t.k > 0) g[2] += t.c * t.k * ipow_ld(x, t.i) * ipow_ld(y, t.j) * ipow_ld(z, t.k - 1);
   }
 }
 
