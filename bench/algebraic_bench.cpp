@@ -75,6 +75,23 @@ const Implicit& seed_implicit() {
       "(2 - cos(x)) * cos(z) + (y + sin(x)) * sin(z) + cos(x + z)", Aabb{{-4, -4, -4}, {4, 4, 4}});
   return s;
 }
+const Algebraic& degree8() {
+  static const Algebraic s = make_algebraic(
+      "((x^2 + y^2 + z^2 + 0.84)^2 - 4*(x^2 + y^2)) * "
+      "(((x-1)^2 + y^2 + z^2 + 0.84)^2 - 4*((x-1)^2 + z^2))",
+      Aabb{{-1.5, -1.5, -1.5}, {2.5, 1.5, 1.5}});
+  return s;
+}
+const Implicit& gyroid() {
+  static const Implicit s =
+      make_implicit("sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)", Aabb{{-4, -4, -4}, {4, 4, 4}});
+  return s;
+}
+const Implicit& heart_implicit() {
+  static const Implicit s = make_implicit("(x^2 + 9/4*y^2 + z^2 - 1)^3 - x^2*z^3 - 9/80*y^2*z^3",
+                                          Aabb{{-1.5, -1, -1.5}, {1.5, 1, 1.5}});
+  return s;
+}
 const Implicit& sphere_implicit() {
   static const Implicit s =
       make_implicit("x^2 + y^2 + z^2 - 1", Aabb{{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}});
@@ -110,9 +127,12 @@ const Revolution& goblet() {
 RAYCAST_SHAPE_BENCH(Torus, torus);
 RAYCAST_SHAPE_BENCH(AlgebraicTorus, torus_algebraic);
 RAYCAST_SHAPE_BENCH(AlgebraicHeart, heart);
+RAYCAST_SHAPE_BENCH(AlgebraicDegree8, degree8);
 RAYCAST_SHAPE_BENCH(AlgebraicDegree12, degree12);
 RAYCAST_SHAPE_BENCH(ImplicitSphere, sphere_implicit);
 RAYCAST_SHAPE_BENCH(ImplicitSeed, seed_implicit);
+RAYCAST_SHAPE_BENCH(ImplicitGyroid, gyroid);
+RAYCAST_SHAPE_BENCH(ImplicitHeart, heart_implicit);
 RAYCAST_SHAPE_BENCH(RevolutionLinear, goblet);
 RAYCAST_SHAPE_BENCH(RevolutionBSpline, vase);
 

@@ -43,9 +43,13 @@ DualI f_over(const Implicit& s, const Ray& ray, double a, double b) {
 
 bool negative(double v) { return v < 0; }
 
-// The root in [a, b] where f changes sign (fa = f(a)).
-double refine(const Implicit& s, const Ray& ray, double a, double b, double fa) {
-  double x = 0.5 * (a + b);
+// The root in [a, b] where f changes sign (fa = f(a), fb = f(b)): Newton's method kept inside
+// the bracket, starting at the secant point, bisection when a step leaves the bracket. Stops when
+// a Newton step is within 4 ulps of t (checked before the bracket test: once f is down to its
+// rounding noise, the step from the bracket's end would otherwise leave it and bisect on).
+double refine(const Implicit& s, const Ray& ray, double a, double b, double fa, double fb) {
+  double x = a - fa * (b - a) / (fb - fa);
+  if (!(x > a && x < b)) x = 0.5 * (a + b);
   for (int i = 0; i < kMaxRefineSteps; ++i) {
     const DualT f = f_along(s, ray, x);
     if (f.v == 0) return x;
@@ -58,8 +62,8 @@ double refine(const Implicit& s, const Ray& ray, double a, double b, double fa) 
     const double mid = 0.5 * (a + b);
     if (!(mid > a && mid < b)) return x;
     double next = x - f.v / f.d[0];
+    if (std::abs(next - x) <= 4 * kMachineEpsilon * std::abs(x)) return std::clamp(next, a, b);
     if (!(next > a && next < b)) next = mid;
-    if (std::abs(next - x) <= 4 * kMachineEpsilon * std::abs(x)) return next;
     x = next;
   }
   return x;
@@ -94,7 +98,7 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool fir
       } else if (std::isnan(fa) || std::isnan(fb) || negative(fa) == negative(fb)) {
         continue;
       } else {
-        t = refine(s, ray, p.a, p.b, fa);
+        t = refine(s, ray, p.a, p.b, fa, fb);
       }
       if (count == 0 || t > roots[count - 1]) roots[count++] = t;
       if (first_only) break;

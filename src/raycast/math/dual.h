@@ -101,6 +101,19 @@ Dual<T, N> cos(const Dual<T, N>& a) {
   using std::sin;
   return dual_detail::chain(a, cos(a.v), -sin(a.v));
 }
+// Over intervals, sin and cos of the value come from one sin_cos call.
+template <int N>
+Dual<Interval, N> sin(const Dual<Interval, N>& a) {
+  Interval s, c;
+  sin_cos(a.v, &s, &c);
+  return dual_detail::chain(a, s, c);
+}
+template <int N>
+Dual<Interval, N> cos(const Dual<Interval, N>& a) {
+  Interval s, c;
+  sin_cos(a.v, &s, &c);
+  return dual_detail::chain(a, c, -s);
+}
 template <class T, int N>
 Dual<T, N> tan(const Dual<T, N>& a) {
   using std::tan;

@@ -44,6 +44,17 @@ class Compiler {
       case ExprOp::kZ:
         push({Opcode::kZ, 0, 0}, depth);
         return;
+      case ExprOp::kSin:
+      case ExprOp::kCos: {
+        const ExprOp arg = e_.nodes[n.a].op;
+        if (arg == ExprOp::kX || arg == ExprOp::kY || arg == ExprOp::kZ) {
+          const int v = arg == ExprOp::kX ? 0 : (arg == ExprOp::kY ? 1 : 2);
+          f_.trig_vars |= 1u << v;
+          push({n.op == ExprOp::kSin ? Opcode::kSinVar : Opcode::kCosVar, v, 0}, depth);
+          return;
+        }
+        break;
+      }
       case ExprOp::kPow:
         if (is_constant(e_, n.b)) {
           const double p = constant(n.b);

@@ -1,6 +1,7 @@
 #pragma once
 // Formulas in x, y, z compiled to a small stack bytecode, run over double, Interval and Dual.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,8 @@ enum class Opcode : std::uint8_t {
   kAbs,
   kMin,
   kMax,
+  kSinVar,  // sin of variable n (0, 1, 2 = x, y, z), computed once per run with its cosine
+  kCosVar,  // cos of variable n
 };
 
 struct Instruction {
@@ -43,11 +46,29 @@ struct Instruction {
   double value = 0;  // kConst's value
 };
 
-/// A compiled formula: postfix code over a stack; constant subtrees are folded.
+/// A compiled formula: postfix code over a stack; constant subtrees are folded. sin and cos of
+/// a bare variable read a table filled once per run (bit v of trig_vars: variable v needs it), so
+/// a formula with both sin(x) and cos(x), like the gyroid, pays for one sin_cos of x.
 struct Formula {
   std::vector<Instruction> code;
   int stack_size = 0;
+  unsigned trig_vars = 0;
 };
+
+/// sin(a) and cos(a) together, for every type run() takes (over Interval and Dual<Interval>, one
+/// sin_cos of the value's ends).
+inline void sin_cos(double a, double* s, double* c) { interval_detail::sincos(a, s, c); }
+template <class T, int N>
+void sin_cos(const Dual<T, N>& a, Dual<T, N>* s, Dual<T, N>* c) {
+  T sv, cv;
+  sin_cos(a.v, &sv, &cv);
+  s->v = sv;
+  c->v = cv;
+  for (int i = 0; i < N; ++i) {
+    s->d[i] = cv * a.d[i];
+    c->d[i] = -sv * a.d[i];
+  }
+}
 
 /// Parses and compiles formula text (grammar: parse_expression). `^` and pow with a constant
 /// whole exponent become exact repeated products; other exponents mean exp(b log a), a > 0.
@@ -69,6 +90,12 @@ T run(const Formula& f, const T& x, const T& y, const T& z) {
   using std::sqrt;
   using std::tan;
   std::array<T, kMaxFormulaStack> s;
+  T sin_var[3], cos_var[3];
+  if (f.trig_vars) {
+    const T* vars[3] = {&x, &y, &z};
+    for (int v = 0; v < 3; ++v)
+      if (f.trig_vars & (1u << v)) sin_cos(*vars[v], &sin_var[v], &cos_var[v]);
+  }
   int top = -1;
   for (const Instruction& in : f.code) {
     switch (in.op) {
@@ -138,6 +165,12 @@ T run(const Formula& f, const T& x, const T& y, const T& z) {
         break;
       case Opcode::kAbs:
         s[top] = abs(s[top]);
+        break;
+      case Opcode::kSinVar:
+        s[++top] = sin_var[in.n];
+        break;
+      case Opcode::kCosVar:
+        s[++top] = cos_var[in.n];
         break;
     }
   }

@@ -50,9 +50,33 @@ inline double up(double x, int ulps = 1) {
   return std::bit_cast<double>(n - magnitude);  // through zero to the positive side
 }
 inline double down(double x, int ulps = 1) { return -up(-x, ulps); }
-inline Interval widen(double lo, double hi, int ulps = 1) {
+inline Interval widen(double lo, double hi, int ulps) {
   if (std::isnan(lo) || std::isnan(hi)) return Interval::entire();
   return {down(lo, ulps), up(hi, ulps)};
+}
+// [lo, hi] widened by at least one ulp each side, without branches on the common path: for a
+// double x with 2^e <= |x| < 2^(e+1), |x| 2^-52 >= 2^(e-52) = ulp(x) (2^-1074 covers zero and
+// subnormals), so x -+ (|x| 2^-52 + 2^-1074) rounds (monotonely) to at or beyond x's neighbour.
+// Infinite or NaN ends take the exact ulp-stepping path above.
+inline Interval widen(double lo, double hi) {
+  constexpr double kRel = 0x1p-52, kAbs = 0x1p-1074;
+  const double l = lo - (std::abs(lo) * kRel + kAbs), h = hi + (std::abs(hi) * kRel + kAbs);
+  if (l <= h && h - l < std::numeric_limits<double>::infinity()) return {l, h};
+  return widen(lo, hi, 1);
+}
+// sin x and cos x from one libm call where the library has sincos (glibc), which costs about
+// as much as one of them. Declared under another name bound to the same symbol: GCC knows
+// ::sincos as a builtin and splits it back into sin and cos calls when it inlines the caller.
+#if defined(__GLIBC__)
+extern "C" void raycast_libm_sincos(double x, double* s, double* c) __asm__("sincos");
+#endif
+inline void sincos(double x, double* s, double* c) {
+#if defined(__GLIBC__)
+  raycast_libm_sincos(x, s, c);
+#else
+  *s = std::sin(x);
+  *c = std::cos(x);
+#endif
 }
 // 0 * inf is 0 for interval bounds.
 inline double mul0(double a, double b) { return (a == 0 || b == 0) ? 0.0 : a * b; }
@@ -101,29 +125,48 @@ inline Interval log(const Interval& a) {
   const double lo = a.lo <= 0 ? -std::numeric_limits<double>::infinity() : std::log(a.lo);
   return interval_detail::widen(lo, std::log(a.hi), kLibmUlps);
 }
-inline Interval cos(const Interval& a) {
+/// sin(a) and cos(a) together, from one sincos of each end (either output may be null).
+inline void sin_cos(const Interval& a, Interval* sin_a, Interval* cos_a) {
   using interval_detail::hits_phase;
-  if (a.is_empty()) return a;
+  if (a.is_empty()) {
+    if (sin_a) *sin_a = a;
+    if (cos_a) *cos_a = a;
+    return;
+  }
   constexpr double kTwoPi = 2 * std::numbers::pi;
-  if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) return {-1, 1};
-  const double c0 = std::cos(a.lo), c1 = std::cos(a.hi);
-  double lo = std::min(c0, c1), hi = std::max(c0, c1);
-  if (hits_phase(a.lo, a.hi, 0, kTwoPi)) hi = 1;
-  if (hits_phase(a.lo, a.hi, std::numbers::pi, kTwoPi)) lo = -1;
-  const Interval r = interval_detail::widen(lo, hi, kLibmUlps);
-  return {std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
+  if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) {
+    if (sin_a) *sin_a = {-1, 1};
+    if (cos_a) *cos_a = {-1, 1};
+    return;
+  }
+  double s0, c0, s1, c1;
+  interval_detail::sincos(a.lo, &s0, &c0);
+  interval_detail::sincos(a.hi, &s1, &c1);
+  auto clamp = [](const Interval& r) {
+    return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
+  };
+  if (sin_a) {
+    double lo = std::min(s0, s1), hi = std::max(s0, s1);
+    if (hits_phase(a.lo, a.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
+    if (hits_phase(a.lo, a.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
+    *sin_a = clamp(interval_detail::widen(lo, hi, kLibmUlps));
+  }
+  if (cos_a) {
+    double lo = std::min(c0, c1), hi = std::max(c0, c1);
+    if (hits_phase(a.lo, a.hi, 0, kTwoPi)) hi = 1;
+    if (hits_phase(a.lo, a.hi, std::numbers::pi, kTwoPi)) lo = -1;
+    *cos_a = clamp(interval_detail::widen(lo, hi, kLibmUlps));
+  }
+}
+inline Interval cos(const Interval& a) {
+  Interval c;
+  sin_cos(a, nullptr, &c);
+  return c;
 }
 inline Interval sin(const Interval& a) {
-  using interval_detail::hits_phase;
-  if (a.is_empty()) return a;
-  constexpr double kTwoPi = 2 * std::numbers::pi;
-  if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) return {-1, 1};
-  const double s0 = std::sin(a.lo), s1 = std::sin(a.hi);
-  double lo = std::min(s0, s1), hi = std::max(s0, s1);
-  if (hits_phase(a.lo, a.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
-  if (hits_phase(a.lo, a.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
-  const Interval r = interval_detail::widen(lo, hi, kLibmUlps);
-  return {std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
+  Interval s;
+  sin_cos(a, &s, nullptr);
+  return s;
 }
 inline Interval tan(const Interval& a) {
   if (a.is_empty()) return a;
