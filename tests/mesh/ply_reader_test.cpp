@@ -210,7 +210,10 @@ TEST_F(PlyReader, HeaderWithoutEndHeaderOrWithStrayTokens_RefusedBeforeAnyReader
   expect_error(
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
       "float z\nelement face 1 0\n3 0 1 2\n",
-      "end_header");
+      "line 7: expected 'element NAME COUNT'");
+  expect_error("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n0 0 0\n1 0 0\n",
+               "line 5: unknown keyword '0'");
+  expect_error("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x", "no end_header line");
   expect_error(
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nelement face 1 0\nend_header\n",
       "line 5: expected 'element NAME COUNT'");

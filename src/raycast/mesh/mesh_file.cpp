@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -299,9 +300,11 @@ PlyHeader parse_ply_header(std::string_view file) {
       std::string count;
       ls >> e.name >> count;
       if (e.name.empty() || count.empty() || (ls >> extra) ||
-          count.find_first_not_of("0123456789") != std::string::npos || count.size() > 19)
+          count.find_first_not_of("0123456789") != std::string::npos || count.size() > 20)
         throw bad("expected 'element NAME COUNT'");
-      e.count = std::stoull(count);
+      errno = 0;
+      e.count = std::strtoull(count.c_str(), nullptr, 10);
+      if (errno == ERANGE) throw bad("element count " + count + " is too large");
       h.elements.push_back(e);
     } else if (word == "property") {
       if (h.elements.empty()) throw bad("a property before any element");
