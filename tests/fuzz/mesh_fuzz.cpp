@@ -18,10 +18,9 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
+  constexpr std::string_view kOurs = "format binary_little_endian ";
   const std::size_t format = text.find("format ");
-  if (format == std::string_view::npos ||
-      text.substr(format, 28) != "format binary_little_endian")
-    return 0;
+  if (format == std::string_view::npos || text.substr(format, kOurs.size()) != kOurs) return 0;
   const std::string path = "/tmp/raycast_mesh_fuzz_" + std::to_string(getpid()) + ".ply";
   {
     std::ofstream out(path, std::ios::binary);

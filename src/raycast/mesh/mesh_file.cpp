@@ -332,15 +332,17 @@ PlyHeader parse_ply_header(std::string_view file) {
 
 // Reads binary little-endian PLY files of the common shape (vertex element with x, y, z and
 // optional nx, ny, nz; face element with one index list) in one pass over a memory map. Returns
-// false, having read nothing, for any other PLY so that assimp gets it. Vertices are decoded in
-// parallel; faces too when every row is a triangle with the same layout (the usual case),
-// else by a serial pass that fans polygons.
+// false, having read nothing, for ASCII and big-endian PLY (assimp reads those). Vertices are
+// decoded in parallel; faces too when every row is a triangle with the same layout (the usual
+// case), else by a serial pass that fans polygons.
 bool read_binary_ply(const std::string& path, MeshFileData& out) {
   const MappedFile file(path);
   const char* const data = file.data();
   const std::size_t size = file.size();
   const PlyHeader header = parse_ply_header(std::string_view(data, size));
-  if (header.format != "binary_little_endian" || !header.types_known) return false;
+  if (header.format != "binary_little_endian") return false;
+  // Binary little-endian PLY is ours alone: assimp 5.2 aborts the process on some malformed ones.
+  if (!header.types_known) throw MeshFileError("PLY property of an unknown type");
   const std::vector<PlyElement>& elements = header.elements;
   const char* const body = data + header.bytes;
   const char* p = body;
@@ -361,7 +363,7 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
     const bool any_list = std::any_of(e.props.begin(), e.props.end(),
                                       [](const auto& q) { return q.count_type != PlyType::kNone; });
     if (e.name == "vertex") {
-      if (any_list) return false;
+      if (any_list) throw MeshFileError("PLY vertex element with a list property (not supported)");
       int stride = 0, off[6] = {-1, -1, -1, -1, -1, -1};
       PlyType type[6] = {};
       const char* names[6] = {"x", "y", "z", "nx", "ny", "nz"};
@@ -442,7 +444,8 @@ bool read_binary_ply(const std::string& path, MeshFileData& out) {
       }
     } else {
       // Skip another element; it must have fixed-size rows to be skippable.
-      if (any_list) return false;
+      if (any_list)
+        throw MeshFileError("PLY element '" + e.name + "' with a list property (not supported)");
       std::uint64_t stride = 0;
       for (const PlyProperty& q : e.props) stride += ply_size(q.type);
       need(e.count * stride);
