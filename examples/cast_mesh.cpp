@@ -17,7 +17,8 @@ int main() {
   std::vector<double> rays;
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x)
-      rays.insert(rays.end(), {-1.2 + 2.4 * (x + 0.5) / n, -1.2 + 2.4 * (y + 0.5) / n, -5, 0, 0, 1});
+      rays.insert(rays.end(),
+                  {-1.2 + 2.4 * (x + 0.5) / n, -1.2 + 2.4 * (y + 0.5) / n, -5, 0, 0, 1});
   std::vector<double> t(n * n);
   std::vector<std::int32_t> triangle(n * n);
   raycast::HitColumns out;

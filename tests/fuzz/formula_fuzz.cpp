@@ -34,9 +34,10 @@ std::string quoted(const std::uint8_t* data, std::size_t size) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1 || size > 512) return 0;
   const bool algebraic = data[0] & 1;
-  const std::string text =
-      std::string("objects:\n  - ") + (algebraic ? "algebraic: {equation: " : "implicit: {function: ") +
-      quoted(data + 1, size - 1) + ", bounds: {min: [-2, -2, -2], max: [2, 2, 2]}}\n";
+  const std::string text = std::string("objects:\n  - ") +
+                           (algebraic ? "algebraic: {equation: " : "implicit: {function: ") +
+                           quoted(data + 1, size - 1) +
+                           ", bounds: {min: [-2, -2, -2], max: [2, 2, 2]}}\n";
   raycast::Scene scene;
   try {
     scene = raycast::load_scene_text(text, "fuzz.yaml");
