@@ -107,3 +107,18 @@ TEST(CliConventions, NoLights_WarnsUnderWhitted) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliConventions, BenchOnAScene_WithoutMeshes_ReportsNoPerTriangleFigures) {
+  const std::string scene = write("bench.yaml", kLitSphere);
+  const Outcome text = run("bench '" + scene + "' --repeat 1 --threads 1");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_TRUE(contains(text.out, "scene: ")) << text.out;
+  EXPECT_FALSE(contains(text.out, "bytes/triangle")) << text.out;
+  const Outcome json = run("bench '" + scene + "' --repeat 1 --threads 1 --json");
+  ASSERT_EQ(json.code, 0) << json.err;
+  EXPECT_TRUE(contains(json.out, "\"raycast_bytes_per_tri\": null")) << json.out;
+}
+
+}  // namespace
