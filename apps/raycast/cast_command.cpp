@@ -4,6 +4,8 @@
 
 #include "api/cast.h"
 #include "commands.h"
+#include "distributed/distributed.h"
+#include "distributed/launch.h"
 #include "scene/loader.h"
 #include "scene/scene_error.h"
 
@@ -13,7 +15,7 @@ Action add_cast_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("cast", "Answer ray queries on a scene: nearest hit, --any or --all");
   struct Options {
-    std::string scene, rays;
+    std::string scene, rays, output;
     bool any = false, all = false, binary = false;
   };
   auto opt = std::make_shared<Options>();
@@ -23,22 +25,31 @@ Action add_cast_command(CLI::App& app) {
   auto* all = cmd->add_flag("--all", opt->all, "Write every surface crossing along the ray");
   any->excludes(all);
   cmd->add_flag("--binary", opt->binary, "Read 8 and write 11 little-endian float64 per ray");
+  cmd->add_option("-o,--output", opt->output, "Answer file (default: standard output)");
   return [opt] {
-    const Scene scene = load_scene_file(opt->scene);
     CastOptions c;
     c.mode = opt->any ? CastMode::kAny : (opt->all ? CastMode::kAll : CastMode::kNearest);
     c.binary = opt->binary;
+    if (distributed::active())  // under mpirun: a slice of the rays per rank (docs/distributed.md)
+      return distributed::cast(opt->scene, opt->rays, opt->output, c);
+    const Scene scene = load_scene_file(opt->scene);
+    std::ofstream file;
+    if (!opt->output.empty()) {
+      file.open(opt->output, std::ios::binary | std::ios::trunc);
+      if (!file) throw SceneError(opt->output, 0, 0, "cannot open the output file");
+    }
+    std::ostream& out = opt->output.empty() ? std::cout : file;
     std::ios::sync_with_stdio(false);
     if (opt->rays.empty()) {
       c.source = "<stdin>";
-      run_cast(scene, std::cin, std::cout, c);
+      run_cast(scene, std::cin, out, c);
     } else {
       std::ifstream in(opt->rays, std::ios::binary);
       if (!in) throw SceneError(opt->rays, 0, 0, "cannot open the ray file");
       c.source = opt->rays;
-      run_cast(scene, in, std::cout, c);
+      run_cast(scene, in, out, c);
     }
-    return std::cout.good() ? 0 : 1;
+    return out.good() ? 0 : 1;
   };
 }
 
