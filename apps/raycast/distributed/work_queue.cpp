@@ -110,40 +110,45 @@ bool schedule(const MpiSession& session, const WorkQueue& queue) {
   int remote = session.size() - 1;  // ranks not yet told to stop
   LocalWorker local(queue, next, stop);
   std::vector<char> buffer;
-  for (;;) {
-    bool idle = true;
-    for (const auto& o : local.take()) {
-      outcome(o.item, 0, o.ok, o.body);
-      idle = false;
+  try {
+    for (;;) {
+      bool idle = true;
+      for (const auto& o : local.take()) {
+        outcome(o.item, 0, o.ok, o.body);
+        idle = false;
+      }
+      if (remote == 0 && !local.running()) {
+        for (const auto& o : local.take()) outcome(o.item, 0, o.ok, o.body);
+        break;
+      }
+      int flag = 0;
+      MPI_Status status;
+      if (remote > 0) MPI_Iprobe(MPI_ANY_SOURCE, kTagReport, MPI_COMM_WORLD, &flag, &status);
+      if (flag) {
+        idle = false;
+        int bytes = 0;
+        MPI_Get_count(&status, MPI_CHAR, &bytes);
+        buffer.resize(std::size_t(bytes));
+        MPI_Recv(buffer.data(), bytes, MPI_CHAR, status.MPI_SOURCE, kTagReport, MPI_COMM_WORLD,
+                 MPI_STATUS_IGNORE);
+        std::int32_t kind = kReady, item = kStop;
+        std::memcpy(&kind, buffer.data(), 4);
+        std::memcpy(&item, buffer.data() + 4, 4);
+        if (kind != kReady)
+          outcome(item, status.MPI_SOURCE, kind == kDone,
+                  std::string(buffer.data() + 8, buffer.size() - 8));
+        std::int32_t order = stop ? kStop : next++;
+        if (order >= queue.count) order = kStop;
+        if (order == kStop) --remote;
+        MPI_Send(&order, 1, MPI_INT32_T, status.MPI_SOURCE, kTagOrder, MPI_COMM_WORLD);
+      }
+      // OpenMPI's blocking receive spins on the CPU; sleeping between probes leaves rank 0's core
+      // to its render thread, for at most this delay per request.
+      if (idle) std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
-    if (remote == 0 && !local.running()) {
-      for (const auto& o : local.take()) outcome(o.item, 0, o.ok, o.body);
-      break;
-    }
-    int flag = 0;
-    MPI_Status status;
-    if (remote > 0) MPI_Iprobe(MPI_ANY_SOURCE, kTagReport, MPI_COMM_WORLD, &flag, &status);
-    if (flag) {
-      idle = false;
-      int bytes = 0;
-      MPI_Get_count(&status, MPI_CHAR, &bytes);
-      buffer.resize(std::size_t(bytes));
-      MPI_Recv(buffer.data(), bytes, MPI_CHAR, status.MPI_SOURCE, kTagReport, MPI_COMM_WORLD,
-               MPI_STATUS_IGNORE);
-      std::int32_t kind = kReady, item = kStop;
-      std::memcpy(&kind, buffer.data(), 4);
-      std::memcpy(&item, buffer.data() + 4, 4);
-      if (kind != kReady)
-        outcome(item, status.MPI_SOURCE, kind == kDone,
-                std::string(buffer.data() + 8, buffer.size() - 8));
-      std::int32_t order = stop ? kStop : next++;
-      if (order >= queue.count) order = kStop;
-      if (order == kStop) --remote;
-      MPI_Send(&order, 1, MPI_INT32_T, status.MPI_SOURCE, kTagOrder, MPI_COMM_WORLD);
-    }
-    // OpenMPI's blocking receive spins on the CPU; sleeping between probes leaves rank 0's core
-    // to its render thread, for at most this delay per request.
-    if (idle) std::this_thread::sleep_for(std::chrono::microseconds(200));
+  } catch (...) {
+    stop = true;  // the local thread ends after its current item; the caller aborts the job
+    throw;
   }
   return all_ok;
 }
