@@ -7,8 +7,11 @@
 #   mpirun -np RANKS                   OpenMPI binds each rank to one core (np <= 2): 1 thread each
 # Prints the best wall and CPU (user + system, every process of the job: mpirun included) times,
 # the wall-clock speed-up over the baseline, and the CPU-time ratio to the baseline (the cost of
-# distribution: MPI start-up, messages, each rank loading the scene). Checks that the outputs of
-# the three runs are identical byte for byte.
+# distribution: MPI start-up, messages, each rank loading the scene), also without the CPU time
+# of an empty job (mpirun around an 8x8 render: the fixed start-up cost). Checks that the outputs
+# of the three runs are identical byte for byte. On a loaded machine the CPU times are the figure
+# to read: the wall times then depend on the share of the cores the OS gives each process (ranks
+# that mpirun binds to a core fare differently from unbound threads).
 #   bench/distributed_speedup.sh [tiles|frames|both]
 # Environment: RANKS (default 2), REPEATS (default 3), RAYCAST (default build/release/raycast),
 # MPIRUN (default mpirun), SCENE (default scenes/demo.yaml), TILES_ARGS / FRAMES_ARGS (override the
@@ -45,6 +48,14 @@ best() {  # best "wall cpu" of a file of such lines (each column separately)
   awk 'NR == 1 || $1 < w { w = $1 } NR == 1 || $2 < c { c = $2 } END { printf "%.3f %.3f\n", w, c }' "$1"
 }
 
+# The fixed cost of a job: mpirun, MPI_Init and MPI_Finalize on every rank, around an 8 x 8 render.
+: >"$tmp/empty.t"
+for ((i = 1; i <= repeats; ++i)); do
+  seconds "${launcher[@]}" "$raycast" render -o "$tmp/empty.png" --width 8 --height 8 >>"$tmp/empty.t"
+done
+read -r we ce < <(best "$tmp/empty.t")
+echo "empty job (mpirun -np $ranks, an 8x8 render): wall $we s, cpu $ce s (best of $repeats)"
+
 run_case() {  # name, output file name (with {frame} for frames), render options...
   local name=$1 out=$2
   shift 2
@@ -67,9 +78,11 @@ run_case() {  # name, output file name (with {frame} for frames), render options
   echo "$name: $scene ${args[*]} (best of $repeats, $(nproc) cores, load average $(cut -d' ' -f1 /proc/loadavg))"
   printf '  %-28s wall %8.3f s  cpu %8.3f s\n' "1 process, 1 thread" "$w1" "$c1" \
     "1 process, $(nproc) threads" "$wn" "$cn" "mpirun -np $ranks" "$wm" "$cm"
-  awk -v w1="$w1" -v c1="$c1" -v wn="$wn" -v wm="$wm" -v cm="$cm" -v r="$ranks" 'BEGIN {
-    printf "  speed-up of %d ranks: %.2f over 1 thread, %.2f over 1 process with all threads; cpu ratio %.3f\n",
-      r, w1 / wm, wn / wm, cm / c1 }'
+  awk -v w1="$w1" -v c1="$c1" -v wn="$wn" -v wm="$wm" -v cm="$cm" -v ce="$ce" -v r="$ranks" 'BEGIN {
+    printf "  wall speed-up of %d ranks: %.2f over 1 thread, %.2f over 1 process with all threads\n",
+      r, w1 / wm, wn / wm
+    printf "  cpu ratio %d ranks / 1 thread: %.3f (%.3f without the empty job'"'"'s cpu)\n",
+      r, cm / c1, (cm - ce) / c1 }'
   rm -f "$tmp"/one1_* "$tmp"/oneN_* "$tmp"/mpi_*
 }
 

@@ -1,13 +1,13 @@
 #include "distributed/mpi_session.h"
 
-#include <mpi.h>
-
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <map>
 #include <new>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace raycast::cli::distributed {
@@ -39,7 +39,9 @@ MpiSession::~MpiSession() { MPI_Finalize(); }
 
 bool MpiSession::agree(const std::string& error, const std::string& command) const {
   int mine = error.empty() ? 0 : 1, failures = 0;
-  MPI_Allreduce(&mine, &failures, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Request request;
+  MPI_Iallreduce(&mine, &failures, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD, &request);
+  wait_idle(request);
   if (failures == 0) return true;
   // Gather every rank's message at rank 0 (lengths, then the bytes).
   int length = int(error.size());
@@ -76,6 +78,20 @@ void MpiSession::abort(const std::string& command, const std::string& message) c
   std::fflush(stderr);
   MPI_Abort(MPI_COMM_WORLD, 2);
   std::_Exit(2);  // MPI_Abort does not return; in case an implementation does
+}
+
+void wait_idle(MPI_Request& request) {
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  }
+}
+
+void barrier_idle() {
+  MPI_Request request;
+  MPI_Ibarrier(MPI_COMM_WORLD, &request);
+  wait_idle(request);
 }
 
 int run_distributed(const std::string& command, const std::function<int(MpiSession&)>& body) {

@@ -2,6 +2,8 @@
 // One MPI job seen from one rank: MPI initialised for the lifetime of the object (funneled: only
 // the thread that created it calls MPI), the rank and size, and the collective error protocol
 // that keeps a failing rank from leaving the others waiting.
+#include <mpi.h>
+
 #include <functional>
 #include <string>
 
@@ -29,6 +31,14 @@ class MpiSession {
  private:
   int rank_ = 0, size_ = 1;
 };
+
+/// Waits for a non-blocking MPI request without spinning. OpenMPI's blocking calls poll at 100%
+/// CPU while they wait (for the next order, for a slower rank at the end of the job), which takes
+/// the core from a renderer sharing it; testing every 100 microseconds costs next to nothing.
+void wait_idle(MPI_Request& request);
+
+/// Collective: returns once every rank has called it, waiting as wait_idle does.
+void barrier_idle();
 
 /// Runs body on this rank inside an MPI session; an exception that escapes it is reported with
 /// the rank and aborts the whole job (exit code 2), so that no other rank waits forever.

@@ -128,15 +128,19 @@ int cast(const std::string& scene_path, const std::string& rays, const std::stri
     long long total = records * record_out;
     if (record_out == 0) {
       long long mine = static_cast<long long>(variable.size()), offset = 0;
-      MPI_Exscan(&mine, &offset, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+      MPI_Request requests[2];
+      MPI_Iexscan(&mine, &offset, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD, &requests[0]);
+      MPI_Iallreduce(&mine, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD, &requests[1]);
+      wait_idle(requests[0]);
+      wait_idle(requests[1]);
       if (rank == 0) offset = 0;  // MPI_Exscan leaves rank 0's result undefined
-      MPI_Allreduce(&mine, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
       try {
         if (error.empty()) write_at(out, offset, variable, output);
       } catch (const std::exception& e) {
         error = e.what();
       }
     }
+    barrier_idle();                 // the collective file calls below then wait for nobody
     MPI_File_set_size(out, total);  // collective: cuts what an older, longer file had beyond
     MPI_File_close(&in);
     MPI_File_close(&out);

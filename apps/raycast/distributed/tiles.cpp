@@ -24,9 +24,17 @@ namespace raycast::cli::distributed {
 
 namespace {
 
-/// Tiles as large as this keep the messages few (a 1920x1080 image has 510) and still give each
-/// rank many, so that dynamic hand-out evens out the cost of busy and empty parts of the image.
-constexpr int kTileSide = 64;
+/// Tiles of 64 pixels keep the messages few (a 1920x1080 image has 510) and still give each rank
+/// many, so that dynamic hand-out evens out busy and empty parts of the image; smaller ones (down
+/// to 16) when the image has fewer than 8 tiles per rank. The pixels do not depend on the size.
+int tile_side(int width, int height, int ranks) {
+  int side = 64;
+  auto tiles = [&](int s) {
+    return static_cast<long long>((width + s - 1) / s) * ((height + s - 1) / s);
+  };
+  while (side > 16 && tiles(side) < 8LL * ranks) side /= 2;
+  return side;
+}
 
 const char* const kCommand = "raycast render";
 
@@ -52,15 +60,16 @@ bool render_pass(const MpiSession& session, const Scene& scene, RenderOptions op
                  std::vector<int>& tiles_per_rank) {
   const int width = options.width > 0 ? options.width : scene.image.width;
   const int height = options.height > 0 ? options.height : scene.image.height;
-  const int tiles_x = (width + kTileSide - 1) / kTileSide;
-  const int tiles_y = (height + kTileSide - 1) / kTileSide;
+  const int side = tile_side(width, height, session.size());
+  const int tiles_x = (width + side - 1) / side;
+  const int tiles_y = (height + side - 1) / side;
   options.width = width;
   options.height = height;
   options.progress = false;  // rank 0 reports for the whole job
   auto rect = [&](int item) {
     const int tx = item % tiles_x, ty = item / tiles_x;
-    return PixelRect{tx * kTileSide, ty * kTileSide, std::min(width, (tx + 1) * kTileSide),
-                     std::min(height, (ty + 1) * kTileSide)};
+    return PixelRect{tx * side, ty * side, std::min(width, (tx + 1) * side),
+                     std::min(height, (ty + 1) * side)};
   };
   if (session.rank() == 0) image = Image(width, height);
   const bool tty = isatty(STDERR_FILENO);

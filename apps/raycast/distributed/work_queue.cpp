@@ -48,9 +48,13 @@ bool attempt(const WorkQueue& queue, int item, std::string& out) {
 void worker(const WorkQueue& queue) {
   std::vector<char> message = report(kReady, kStop, "");
   for (;;) {
-    MPI_Send(message.data(), int(message.size()), MPI_CHAR, 0, kTagReport, MPI_COMM_WORLD);
     std::int32_t item = kStop;
-    MPI_Recv(&item, 1, MPI_INT32_T, 0, kTagOrder, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    MPI_Request requests[2];
+    MPI_Irecv(&item, 1, MPI_INT32_T, 0, kTagOrder, MPI_COMM_WORLD, &requests[0]);
+    MPI_Isend(message.data(), int(message.size()), MPI_CHAR, 0, kTagReport, MPI_COMM_WORLD,
+              &requests[1]);
+    wait_idle(requests[1]);
+    wait_idle(requests[0]);
     if (item == kStop) return;
     std::string out;
     const bool ok = attempt(queue, item, out);
@@ -161,7 +165,9 @@ bool run_work_queue(const MpiSession& session, const WorkQueue& queue) {
     ok = schedule(session, queue) ? 1 : 0;
   else
     worker(queue);
-  MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  MPI_Request request;
+  MPI_Ibcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
+  wait_idle(request);  // the ranks done first do not spin while the others finish
   return ok == 1;
 }
 
