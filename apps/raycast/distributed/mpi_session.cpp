@@ -1,5 +1,6 @@
 #include "distributed/mpi_session.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -80,11 +81,17 @@ void MpiSession::abort(const std::string& command, const std::string& message) c
   std::_Exit(2);  // MPI_Abort does not return; in case an implementation does
 }
 
+void IdleBackoff::pause() {
+  std::this_thread::sleep_for(std::chrono::microseconds(delay_));
+  delay_ = std::min(2 * delay_, kLongest);
+}
+
 void wait_idle(MPI_Request& request) {
+  IdleBackoff backoff;
   for (int done = 0;;) {
     MPI_Test(&request, &done, MPI_STATUS_IGNORE);
     if (done) return;
-    std::this_thread::sleep_for(std::chrono::microseconds(100));
+    backoff.pause();
   }
 }
 

@@ -32,9 +32,22 @@ class MpiSession {
   int rank_ = 0, size_ = 1;
 };
 
+/// Sleeps between polls of something that has not happened yet: 50 microseconds at first, twice as
+/// long each time up to 2 ms, so that a quick answer is seen quickly and a long wait (a frame
+/// that takes a minute) costs a few hundred wake-ups a second, not thousands.
+class IdleBackoff {
+ public:
+  void pause();
+  void reset() { delay_ = kShortest; }
+
+ private:
+  static constexpr long kShortest = 50, kLongest = 2000;  // microseconds
+  long delay_ = kShortest;
+};
+
 /// Waits for a non-blocking MPI request without spinning. OpenMPI's blocking calls poll at 100%
 /// CPU while they wait (for the next order, for a slower rank at the end of the job), which takes
-/// the core from a renderer sharing it; testing every 100 microseconds costs next to nothing.
+/// the core from a renderer sharing it.
 void wait_idle(MPI_Request& request);
 
 /// Collective: returns once every rank has called it, waiting as wait_idle does.

@@ -3,7 +3,6 @@
 #include <mpi.h>
 
 #include <atomic>
-#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <exception>
@@ -114,6 +113,7 @@ bool schedule(const MpiSession& session, const WorkQueue& queue) {
   int remote = session.size() - 1;  // ranks not yet told to stop
   LocalWorker local(queue, next, stop);
   std::vector<char> buffer;
+  IdleBackoff backoff;
   try {
     for (;;) {
       bool idle = true;
@@ -147,8 +147,11 @@ bool schedule(const MpiSession& session, const WorkQueue& queue) {
         MPI_Send(&order, 1, MPI_INT32_T, status.MPI_SOURCE, kTagOrder, MPI_COMM_WORLD);
       }
       // OpenMPI's blocking receive spins on the CPU; sleeping between probes leaves rank 0's core
-      // to its render thread, for at most this delay per request.
-      if (idle) std::this_thread::sleep_for(std::chrono::microseconds(200));
+      // to its render thread.
+      if (idle)
+        backoff.pause();
+      else
+        backoff.reset();
     }
   } catch (...) {
     stop = true;  // the local thread ends after its current item; the caller aborts the job
