@@ -68,6 +68,10 @@ run_case() {  # name, output file name (with {frame} for frames), render options
     seconds "$raycast" render "$scene" "${args[@]}" -o "$tmp/oneN_$out" >>"$tmp/oneN.t"
     seconds "${launcher[@]}" "$raycast" render "$scene" "${args[@]}" -o "$tmp/mpi_$out" >>"$tmp/mpi.t"
   done
+  # The last run was mpirun's: how the work was shared (rank 0's summary and per-frame lines).
+  local shares
+  shares=$(grep -o 'tiles per rank [0-9 +]*' "$tmp/log" ||
+    grep -o ', rank [0-9]*)' "$tmp/log" | sort | uniq -c | awk '{ printf "%srank %s: %d", (NR > 1 ? ", " : "frames per rank: "), $4, $1 }' | tr -d ')' || true)
   for f in "$tmp"/one1_*; do
     cmp -s "$f" "${f/one1_/oneN_}" && cmp -s "$f" "${f/one1_/mpi_}" ||
       { echo "$name: outputs differ: $f" >&2; exit 1; }
@@ -83,6 +87,7 @@ run_case() {  # name, output file name (with {frame} for frames), render options
       r, w1 / wm, wn / wm
     printf "  cpu ratio %d ranks / 1 thread: %.3f (%.3f without the empty job'"'"'s cpu)\n",
       r, cm / c1, (cm - ce) / c1 }'
+  echo "  last mpirun: $shares"
   rm -f "$tmp"/one1_* "$tmp"/oneN_* "$tmp"/mpi_*
 }
 
