@@ -27,11 +27,14 @@ std::string quote(const std::string& s) { return "'" + s + "'"; }
 /// core count, as root where CI runs as root. ASan: leak checking is off in the MPI processes,
 /// because OpenMPI 4.1 itself leaks in MPI_Init/MPI_Finalize (docs/distributed.md, "Testing").
 Outcome mpirun(const std::string& tail) {
-  std::string launcher = "timeout -k 5 " + std::to_string(kTimeout) + " " + quote(kMpiexec) +
-                         " --oversubscribe" + (geteuid() == 0 ? " --allow-run-as-root" : "");
+  const std::string launcher = "timeout -k 5 " + std::to_string(kTimeout) + " " + quote(kMpiexec) +
+                               " --oversubscribe" + (geteuid() == 0 ? " --allow-run-as-root" : "");
   const char* asan = std::getenv("ASAN_OPTIONS");
-  const std::string env = std::string("ASAN_OPTIONS=") + (asan ? asan : "") + ":detect_leaks=0 ";
-  // run() prefixes the raycast binary: run `env ... mpirun ... raycast ARGS` through sh -c.
+  // Containers often forbid the cross-memory attach that OpenMPI's shared-memory transport uses
+  // for large messages; plain copies work everywhere.
+  const std::string env = std::string("ASAN_OPTIONS=") + (asan ? asan : "") +
+                          ":detect_leaks=0 OMPI_MCA_btl_vader_single_copy_mechanism=none ";
+  // Not run(), which starts the raycast binary itself: `VAR=... timeout ... mpirun ...` here.
   const fs::path dir = temp_dir();
   const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
   const std::string cmd = env + launcher + " " + tail + " >" + quote(out) + " 2>" + quote(err);
