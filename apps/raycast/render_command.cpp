@@ -12,10 +12,13 @@
 #include <vector>
 
 #include "commands.h"
+#include "distributed/distributed.h"
+#include "distributed/launch.h"
 #include "io/image.h"
 #include "output_file.h"
 #include "render/renderer.h"
 #include "render_frames.h"
+#include "render_output.h"
 #include "scene/demo_scene.h"
 #include "scene/loader.h"
 
@@ -76,35 +79,6 @@ bool parse_antialias(const std::string& text, AntialiasSettings& aa, std::string
     aa.depth = int(depth);
   }
   return true;
-}
-
-/// Depth in an 8-bit file: distances divided by twice the median finite distance and clamped
-/// (robust against a ground plane running to the horizon), misses white.
-void normalize_depth(Image& image) {
-  std::vector<float> finite;
-  for (std::size_t i = 0; i < image.rgb.size(); i += 3)
-    if (std::isfinite(image.rgb[i])) finite.push_back(image.rgb[i]);
-  float scale = 0;
-  if (!finite.empty()) {
-    auto middle = finite.begin() + std::ptrdiff_t(finite.size() / 2);
-    std::nth_element(finite.begin(), middle, finite.end());
-    scale = 2 * *middle;
-  }
-  for (float& d : image.rgb)
-    d = std::isfinite(d) ? (scale > 0 ? std::min(1.f, d / scale) : 0.f) : 1.f;
-}
-
-/// "out.png" + "depth" -> "out.depth.pfm" (next to the output).
-std::string aov_path(const std::string& output, const std::string& aov) {
-  std::filesystem::path p(output);
-  p.replace_extension();
-  return p.string() + "." + aov + ".pfm";
-}
-
-void save(Image image, const std::string& path, bool depth) {
-  if (depth && (is_stdout(path) || image_format_for(path) == ImageFormat::kPng))
-    normalize_depth(image);
-  write_output_image(image, path);
 }
 
 }  // namespace
@@ -213,6 +187,8 @@ Action add_render_command(CLI::App& app) {
     if (!opt->frames.empty()) return render_frames(opt->scene, opt->output, opt->frames, options);
     if (const std::string problem = output_problem(opt->output); !problem.empty())
       return output_error(problem);
+    if (distributed::active())  // under mpirun: tiles over the ranks (docs/distributed.md)
+      return distributed::render_image(opt->scene, opt->output, options, aovs);
     const Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
     const IntegratorType integrator = options.integrator.value_or(scene.render.integrator);
     if (scene.lights.empty() && integrator == IntegratorType::kWhitted)
@@ -229,7 +205,7 @@ Action add_render_command(CLI::App& app) {
     const Image image = render(scene, options, &stats);
     const bool depth = integrator == IntegratorType::kDepth;
     try {
-      save(image, opt->output, depth);
+      save_render(image, opt->output, depth);
       for (const auto& [name, aov] : aovs) {
         RenderOptions aov_options = options;
         aov_options.aov = aov;
