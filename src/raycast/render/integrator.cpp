@@ -80,7 +80,7 @@ Color Integrator::li(const Ray& ray, SampleState& state) const {
   return {0, 0, 0};
 }
 
-Color Integrator::whitted(const Ray& ray, int depth, SampleState& state) const {
+Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double weight) const {
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
@@ -112,12 +112,17 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state) const {
       w_refract = 0;
     }
   }
-  if (w_reflect > 0) {
+  // Like POV-Ray's adc_bailout: a ray whose contribution to the pixel (the product of the
+  // weights along its path) is below the cut-off is not traced (w > 0 keeps bailout 0 exact).
+  const double cutoff = scene_.render.bailout;
+  if (w_reflect > 0 && weight * w_reflect >= cutoff) {
     const Vec3 m_dir = reflect(wi, n);
-    result += w_reflect * whitted({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state);
+    result += w_reflect *
+              whitted({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
   }
-  if (w_refract > 0)
-    result += w_refract * whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state);
+  if (w_refract > 0 && weight * w_refract >= cutoff)
+    result += w_refract *
+              whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
   return result;
 }
 

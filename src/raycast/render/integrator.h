@@ -34,8 +34,10 @@ class Integrator {
   /// The value seen along a primary ray (unit direction for `depth` to be a distance).
   Color li(const Ray& ray, SampleState& state) const;
 
-  /// Whitted radiance along a ray `depth` secondary bounces deep (primary rays: 0).
-  Color whitted(const Ray& ray, int depth, SampleState& state) const;
+  /// Whitted radiance along a ray `depth` secondary bounces deep (primary rays: 0) whose
+  /// radiance reaches the pixel multiplied by `weight` (primary rays: 1); its reflected and
+  /// refracted rays are traced only when their weight is at least render.bailout.
+  Color whitted(const Ray& ray, int depth, SampleState& state, double weight = 1) const;
 
   /// The fraction of light that reaches `from` (a surface point, already offset) from `to` along
   /// the straight segment between them: 0 when an opaque object blocks it, else the product of

@@ -114,6 +114,7 @@ class Loader {
       f.fail("integrator",
              "render.integrator must be whitted, raycast, depth, normal or id, got " + integrator);
     r.max_depth = f.integer("max_depth", r.max_depth, 0, 1000);
+    r.bailout = f.non_negative("bailout", r.bailout);
     r.background = read_color(f, "background", r.background);
     r.ambient = read_color(f, "ambient", r.ambient);
     r.seed = static_cast<unsigned>(f.integer("seed", 0, 0, 2147483647));
