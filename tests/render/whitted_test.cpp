@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "render/integrator.h"
 #include "render/renderer.h"
@@ -220,6 +221,46 @@ objects:
     const Vec3 got = Integrator(scene, Channel::kWhitted).whitted(down, 0, state);
     expect_color(got, max_depth == 0 ? Vec3{0, 0, 0} : Vec3{0.5, 0.5, 0.5}, 0);
     EXPECT_EQ(state.rays, max_depth == 0 ? 1u : 2u);
+  }
+}
+
+TEST(Whitted, Bailout_StopsRaysWhoseWeightFallsBelowIt) {
+  // Two facing half mirrors (reflection 0.5, nothing else): the k-th secondary ray of a vertical
+  // ray between them has weight 0.5^k and is traced only when 0.5^k >= bailout.
+  const std::string base = R"(
+materials:
+  half: {color: [1, 1, 1], ambient: 0, diffuse: 0, reflection: 0.5}
+objects:
+  - {plane: {normal: [0, 1, 0], point: [0, 0, 0]}, material: half}
+  - {plane: {normal: [0, -1, 0], point: [0, 1, 0]}, material: half}
+)";
+  const Ray down{{0, 0.5, 0}, {0, -1, 0}};
+  // bailout -> secondary rays traced (of max_depth 20): 0 traces all; 1/255 stops at 0.5^8 =
+  // 1/256; 0.25 = 0.5^2 exactly keeps the second; above 0.5 none.
+  const std::pair<std::string, std::uint64_t> cases[] = {
+      {"0", 20}, {"0.00392156862745098", 7}, {"0.25", 2}, {"0.6", 0}};
+  for (const auto& [bailout, secondary] : cases) {
+    const Scene scene =
+        load_scene_text("render: {max_depth: 20, bailout: " + bailout + "}\n" + base);
+    SampleState state{Rng(1), 0};
+    expect_color(Integrator(scene, Channel::kWhitted).whitted(down, 0, state), {0, 0, 0}, 0);
+    EXPECT_EQ(state.rays, 1 + secondary) << "bailout " << bailout;
+  }
+  // The default is 1/255, and a cut ray contributes nothing: one half mirror under a white sky.
+  EXPECT_EQ(load_scene_text(base).render.bailout, 1.0 / 255);
+  const std::string floor = R"(
+materials:
+  half: {color: [1, 1, 1], ambient: 0, diffuse: 0, reflection: 0.5}
+objects:
+  - {plane: {normal: [0, 1, 0], point: [0, 0, 0]}, material: half}
+)";
+  for (const char* bailout : {"0.5", "0.6"}) {
+    const Scene scene = load_scene_text(std::string("render: {background: [1, 1, 1], bailout: ") +
+                                        bailout + "}\n" + floor);
+    SampleState state{Rng(1), 0};
+    const double want = std::string(bailout) == "0.5" ? 0.5 : 0;
+    expect_color(Integrator(scene, Channel::kWhitted).whitted(down, 0, state), {want, want, want},
+                 0);
   }
 }
 
