@@ -42,11 +42,14 @@ Integrator::Integrator(const Scene& scene, Channel channel)
   for (const Material& m : scene.materials) any_transmissive_ |= m.transmission > 0;
 }
 
-SurfaceNeeds Integrator::needs(const SceneHit& hit) const {
+std::size_t Integrator::material_index(const SceneHit& hit) const {
   const int m = material_of(scene_.objects[hit.object], hit.local);
-  const std::size_t index = m >= 0 ? std::size_t(m) : 0;
-  return index < textures_.size() && textures_[index] ? SurfaceNeeds::kAll
-                                                      : SurfaceNeeds::kGeometry;
+  return m >= 0 ? std::size_t(m) : 0;
+}
+
+SurfaceNeeds Integrator::needs(std::size_t material) const {
+  return material < textures_.size() && textures_[material] ? SurfaceNeeds::kAll
+                                                            : SurfaceNeeds::kGeometry;
 }
 
 Color Integrator::li(const Ray& ray, SampleState& state) const {
@@ -84,9 +87,11 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
-  const SurfaceInfo si = scene_.surface(ray, hit, needs(hit));
-  const Material& m = scene_.material_of(hit);
-  const Color c = albedo(scene_, textures_, ray, hit, si);
+  // The material is resolved once per hit (CSG and instances search their parts for it).
+  const std::size_t mi = material_index(hit);
+  const SurfaceInfo si = scene_.surface(ray, hit, needs(mi));
+  const Material& m = scene_.materials[mi];
+  const Color c = albedo(scene_, textures_, ray, hit, si, mi);
   const Vec3 wi = normalize(ray.d);
   const bool outside = dot(wi, si.n) < 0;
   const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer

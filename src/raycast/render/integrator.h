@@ -51,7 +51,10 @@ class Integrator {
   /// segment crosses it (once per object).
   bool filter(std::uint32_t index, const Ray& segment, Color& through) const;
   /// (u, v) only for a material with an image texture.
-  SurfaceNeeds needs(const SceneHit& hit) const;
+  SurfaceNeeds needs(const SceneHit& hit) const { return needs(material_index(hit)); }
+  SurfaceNeeds needs(std::size_t material) const;
+  /// The index in scene.materials of the part hit (as Scene::material_of).
+  std::size_t material_index(const SceneHit& hit) const;
   /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
   /// (render/terminator.h), the others from si.
   Color direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
