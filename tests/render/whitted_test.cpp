@@ -264,6 +264,37 @@ objects:
   }
 }
 
+TEST(Whitted, ZeroLightTerm_CastsNoShadowRay) {
+  // A floor seen along (1, -1, 0) from (0, 1, 0), hit at (1, 0, 0). Without a diffuse part the
+  // light term is the highlight only, 0 when the mirrored light direction faces away from the
+  // viewer: then no shadow ray is cast (the pixel is the same either way). A light at (-3, 2, 0)
+  // gives l ~ (-2, 1, 0), r ~ (2, 1, 0), r.v < 0; one at (3, 2, 0) gives r.v > 0.
+  const Ray ray{{0, 1, 0}, {1, -1, 0}};
+  for (const char* diffuse : {"0", "0.5"}) {
+    for (const char* light : {"[-3, 2, 0]", "[3, 2, 0]"}) {
+      const Scene scene = load_scene_text(std::string(R"(
+render: {max_depth: 0}
+materials:
+  m: {color: [1, 1, 1], ambient: 0, specular: 0.5, shininess: 10, diffuse: )") +
+                                          diffuse + R"(}
+lights:
+  - {type: point, position: )" + light + R"(, color: [1, 1, 1]}
+objects:
+  - {plane: {normal: [0, 1, 0], point: [0, 0, 0]}, material: m}
+)");
+      SampleState state{Rng(1), 0};
+      const Vec3 got = Integrator(scene, Channel::kWhitted).whitted(ray, 0, state);
+      const bool dark = std::string(diffuse) == "0" && std::string(light) == "[-3, 2, 0]";
+      EXPECT_EQ(state.rays, dark ? 1u : 2u) << diffuse << " " << light;
+      if (dark) {
+        expect_color(got, {0, 0, 0}, 0);
+      } else {
+        EXPECT_GT(got.x, 0) << diffuse << " " << light;
+      }
+    }
+  }
+}
+
 TEST(Whitted, CheckerOnTransformedObject_IsEvaluatedInObjectSpace) {
   // The plane's object-space point sits in the middle of a cell; the transform moves it by half
   // a cell in x, so a world-space checker would change colour at world x = 0 and an object-space

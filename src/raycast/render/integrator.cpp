@@ -148,10 +148,14 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
   // One light direction l towards `target` (a point, or a direction when at infinity).
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
     if (!(dot(n, l) > 0) || max_component(e) <= 0) return;
+    // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
+    // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
+    const Color term = light_term(n, v, l, e, m, c);
+    if (!(max_component(term) > 0)) return;
     const SurfaceInfo& from = dot(l, si.shading_n) > 0 ? lit : si;
     const Color visibility = shadow(offset_ray_origin(from, l), target, at_infinity, state);
     if (max_component(visibility) <= 0) return;
-    sum += mul(visibility, light_term(n, v, l, e, m, c));
+    sum += mul(visibility, term);
   };
   for (const Light& light : scene_.lights) {
     const Color emitted = light.emitted();
