@@ -9,6 +9,7 @@
 #include "render/integrator.h"
 #include "render/renderer.h"
 #include "scene/loader.h"
+#include "scene/scene_error.h"
 
 namespace raycast {
 namespace {
@@ -246,8 +247,13 @@ objects:
     expect_color(Integrator(scene, Channel::kWhitted).whitted(down, 0, state), {0, 0, 0}, 0);
     EXPECT_EQ(state.rays, 1 + secondary) << "bailout " << bailout;
   }
-  // The default is 1/255, and a cut ray contributes nothing: one half mirror under a white sky.
+  // The default is 1/255; a negative or non-numeric cut-off is a scene error.
   EXPECT_EQ(load_scene_text(base).render.bailout, 1.0 / 255);
+  for (const char* bad : {"-0.1", ".nan", "a lot"})
+    EXPECT_THROW(load_scene_text(std::string("render: {bailout: ") + bad + "}\n" + base),
+                 SceneError)
+        << bad;
+  // A cut ray contributes nothing: one half mirror under a white sky.
   const std::string floor = R"(
 materials:
   half: {color: [1, 1, 1], ambient: 0, diffuse: 0, reflection: 0.5}
