@@ -154,7 +154,8 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
 
     case AntialiasMethod::kNeighbour: {
       // Method 1: a pixel that differs from a neighbour gets depth x depth stratified, jittered
-      // samples in place of its centre sample.
+      // samples in place of its centre sample; with depth odd the middle stratum keeps the
+      // centre sample (it lies in that stratum), so depth^2 - 1 new samples.
       const FirstPass first = centre_pass(x0, y0, width, height, full_width, full_height, seed,
                                           sample, counters, row_done);
       const int n = aa.depth;
@@ -165,13 +166,15 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
           if (n > 1 && differs(first, x, y, aa.threshold)) {
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0};
+            const int middle = n % 2 ? n * n / 2 : -1;
             for (int k = 0; k < n * n; ++k) {
               const double jx = state.rng.uniform(), jy = state.rng.uniform();
-              sum += sample(x + ((k % n) + jx) / n, y + ((k / n) + jy) / n, state);
+              sum += k == middle ? value
+                                 : sample(x + ((k % n) + jx) / n, y + ((k / n) + jy) / n, state);
             }
             value = sum / double(n * n);
             c.rays += state.rays;
-            c.samples += std::uint64_t(n) * n;
+            c.samples += std::uint64_t(n) * n - (middle >= 0);
           }
           image.set(x - x0, row, Vec3f(value));
         }

@@ -93,6 +93,7 @@ RenderSettings read_render(const SourceContext& ctx, const YAML::Node& node) {
     f.fail("integrator",
            "render.integrator must be whitted, raycast, depth, normal or id, got " + integrator);
   r.max_depth = f.integer("max_depth", r.max_depth, 0, 1000);
+  r.bailout = f.non_negative("bailout", r.bailout);
   r.background = read_color(f, "background", r.background);
   r.ambient = read_color(f, "ambient", r.ambient);
   r.seed = static_cast<unsigned>(f.integer("seed", 0, 0, 2147483647));
