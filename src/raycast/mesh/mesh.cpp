@@ -267,7 +267,7 @@ std::shared_ptr<const Mesh> make_mesh(std::vector<Vec3f> positions,
     m.normals =
         normals.empty() ? angle_weighted_normals(m.positions, m.triangles) : std::move(normals);
   const auto start = std::chrono::steady_clock::now();
-  m.bvh = build_mesh_bvh(m.positions, m.triangles, options.bvh);
+  m.bvh = build_mesh_bvh(m.positions, m.triangles, options.bvh, m.source);
   m.build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return mesh;
@@ -321,8 +321,8 @@ bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
   if (!intersect_closest(m.bvh, r, h)) return false;
   double t = refine_hit(m, h, ray, scale);
   t = std::clamp(t, ray.tmin, ray.tmax);
-  hit = LocalHit{t, static_cast<std::int32_t>(m.source[h.triangle]),
-                 static_cast<std::int32_t>(h.triangle), h.b1, h.b2};
+  hit = LocalHit{t, static_cast<std::int32_t>(h.source), static_cast<std::int32_t>(h.triangle),
+                 h.b1, h.b2};
   return true;
 }
 
@@ -351,7 +351,7 @@ void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
   for (const MeshBvhHit& h : hits) {
     const double t = refine_hit(m, h, ray, scale);
     const double facing = dot(ray.d, face_normal_unnormalised(m, h.triangle)) * orientation;
-    xs.push_back({LocalHit{t, static_cast<std::int32_t>(m.source[h.triangle]),
+    xs.push_back({LocalHit{t, static_cast<std::int32_t>(h.source),
                            static_cast<std::int32_t>(h.triangle), h.b1, h.b2},
                   facing < 0});
   }

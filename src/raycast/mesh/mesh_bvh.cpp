@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <tbb/parallel_for.h>
 
@@ -20,8 +21,9 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 class Collapser {
  public:
   Collapser(const Bvh& bin, std::span<const Vec3f> positions,
-            std::span<const std::array<std::uint32_t, 3>> triangles, MeshBvh& out)
-      : bin_(bin), positions_(positions), triangles_(triangles), out_(out) {}
+            std::span<const std::array<std::uint32_t, 3>> triangles,
+            std::span<const std::uint32_t> source, MeshBvh& out)
+      : bin_(bin), positions_(positions), triangles_(triangles), source_(source), out_(out) {}
 
   void run() {
     // Leaf groups: one prefix sum over the binary leaves (in node order) gives each its groups.
@@ -62,6 +64,7 @@ class Collapser {
           for (auto& vertex : g.v)
             for (auto& axis : vertex) axis[lane] = kNaN;
           g.id[lane] = kNoTriangle;
+          g.source[lane] = kNoTriangle;
           continue;
         }
         const std::uint32_t tri = bin_.prims[n.first + i];
@@ -72,6 +75,7 @@ class Collapser {
           g.v[vtx][2][lane] = p.z;
         }
         g.id[lane] = tri;
+        g.source[lane] = source_.empty() ? tri : source_[tri];
       }
     }
   }
@@ -126,6 +130,7 @@ class Collapser {
   const Bvh& bin_;
   std::span<const Vec3f> positions_;
   std::span<const std::array<std::uint32_t, 3>> triangles_;
+  std::span<const std::uint32_t> source_;
   MeshBvh& out_;
   std::vector<std::uint32_t> leaf_group_;
 };
@@ -134,8 +139,10 @@ class Collapser {
 
 MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
                        std::span<const std::array<std::uint32_t, 3>> triangles,
-                       const MeshBvhConfig& config) {
+                       const MeshBvhConfig& config, std::span<const std::uint32_t> source) {
   MeshBvh out;
+  if (!source.empty() && source.size() != triangles.size())
+    throw std::invalid_argument("build_mesh_bvh: one source index per triangle expected");
   const std::size_t n = triangles.size();
   if (n == 0) return out;
   // Triangle boxes go straight into the builder's 32-byte references (exact: float vertices).
@@ -159,7 +166,7 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
   bc.leaf_block = std::max(config.leaf_block, 1);
   bc.traversal_cost = config.traversal_cost;
   const Bvh binary = build_bvh_from_refs(std::move(refs), bc);
-  Collapser(binary, positions, triangles, out).run();
+  Collapser(binary, positions, triangles, source, out).run();
   return out;
 }
 
@@ -199,6 +206,7 @@ const TriangleGroup kEmptyTriangleGroup = [] {
     for (auto& axis : vertex)
       for (float& f : axis) f = kNaN;
   for (auto& id : g.id) id = kNoTriangle;
+  for (auto& s : g.source) s = kNoTriangle;
   return g;
 }();
 

@@ -32,15 +32,18 @@ static_assert(sizeof(WideNode) == 256);
 inline constexpr std::uint32_t kLeafBit = 0x80000000u;
 inline constexpr int kMaxGroupsPerLeaf = 4;
 
-/// Four triangles in SoA form (160 bytes): v[vertex][axis][lane], then the triangle index of each
-/// lane. A lane past the end of a leaf's triangles has NaN vertices (never hit) and id kNoTriangle.
+/// Four triangles in SoA form (176 bytes): v[vertex][axis][lane], then the triangle index of each
+/// lane and its caller-given source index (the mesh's input index: carried here so that a hit
+/// needs no second, cache-missing lookup). A lane past the end of a leaf's triangles has NaN
+/// vertices (never hit) and id and source kNoTriangle.
 /// The vertices (not edges) are stored so that the watertight test sees shared vertices bit for
 /// bit.
 struct alignas(16) TriangleGroup {
   float v[3][3][4];
   std::uint32_t id[4];
+  std::uint32_t source[4];
 };
-static_assert(sizeof(TriangleGroup) == 160);
+static_assert(sizeof(TriangleGroup) == 176);
 
 inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
 
@@ -63,11 +66,12 @@ struct MeshBvh {
 };
 
 /// Builds the BVH over triangles (vertex index triples into positions; all finite). Triangle ids
-/// in the leaves are indices into `triangles`. Parallel (oneTBB); the result does not depend on
-/// the thread count.
+/// in the leaves are indices into `triangles`; hits also report source[id] (the id itself when
+/// `source` is empty). Parallel (oneTBB); the result does not depend on the thread count.
 MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
                        std::span<const std::array<std::uint32_t, 3>> triangles,
-                       const MeshBvhConfig& config = {});
+                       const MeshBvhConfig& config = {},
+                       std::span<const std::uint32_t> source = {});
 
 /// A ray prepared for float traversal: origin and direction in float (the caller scales d by a
 /// power of two so that it is representable), [tmin, tmax] in units of that d.
@@ -85,6 +89,7 @@ struct MeshBvhHit {
   float b1 = 0;
   float b2 = 0;
   std::uint32_t triangle = kNoTriangle;
+  std::uint32_t source = kNoTriangle;  // source[triangle] of the build
   std::uint32_t group = 0;  // where the triangle's vertices sit in MeshBvh::groups (cache-warm)
   std::uint32_t lane = 0;
 };

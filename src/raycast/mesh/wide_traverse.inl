@@ -249,6 +249,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
                              res.v[l] / res.det[l],
                              res.w[l] / res.det[l],
                              bvh.groups[g].id[l & 3],
+                             bvh.groups[g].source[l & 3],
                              g,
                              static_cast<std::uint32_t>(l & 3)};
           if constexpr (Q == Query::kNearest) {
