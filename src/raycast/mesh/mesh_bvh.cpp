@@ -65,9 +65,15 @@ void quantise_axis(const float* lo, const float* hi, int n, float& origin, std::
   exponent = static_cast<std::int8_t>(e);
 }
 
+double half_area(const BvhFloatNode& n) {
+  const double x = double(n.hi[0]) - n.lo[0], y = double(n.hi[1]) - n.lo[1],
+               z = double(n.hi[2]) - n.lo[2];
+  return x * y + y * z + z * x;
+}
+
 class Collapser {
  public:
-  Collapser(const Bvh& bin, std::span<const Vec3f> positions,
+  Collapser(const FloatBvh& bin, std::span<const Vec3f> positions,
             std::span<const std::array<std::uint32_t, 3>> triangles,
             std::span<const std::uint32_t> source, MeshBvh& out)
       : bin_(bin), positions_(positions), triangles_(triangles), source_(source), out_(out) {}
@@ -77,7 +83,7 @@ class Collapser {
     leaf_group_.assign(bin_.nodes.size(), 0);
     std::uint32_t groups = 0;
     for (std::size_t i = 0; i < bin_.nodes.size(); ++i) {
-      const BvhNode& n = bin_.nodes[i];
+      const BvhFloatNode& n = bin_.nodes[i];
       if (!n.is_leaf()) continue;
       leaf_group_[i] = groups;
       groups += (n.count + 3) / 4;
@@ -97,12 +103,12 @@ class Collapser {
 
  private:
   std::uint32_t leaf_ref(std::uint32_t node) const {
-    const BvhNode& n = bin_.nodes[node];
+    const BvhFloatNode& n = bin_.nodes[node];
     const std::uint32_t count = (n.count + 3) / 4;
     return kLeafBit | ((count - 1) << 29) | leaf_group_[node];
   }
 
-  void fill_leaf(const BvhNode& n, std::uint32_t first_group) {
+  void fill_leaf(const BvhFloatNode& n, std::uint32_t first_group) {
     for (std::uint32_t k = 0; k < (n.count + 3) / 4; ++k) {
       TriangleGroup& g = out_.groups[first_group + k];
       for (int lane = 0; lane < 4; ++lane) {
@@ -139,9 +145,9 @@ class Collapser {
       int best = -1;
       double best_area = -1;
       for (int i = 0; i < n; ++i) {
-        const BvhNode& c = bin_.nodes[kids[i]];
-        if (!c.is_leaf() && c.box.half_area() > best_area) {
-          best_area = c.box.half_area();
+        const BvhFloatNode& c = bin_.nodes[kids[i]];
+        if (!c.is_leaf() && half_area(c) > best_area) {
+          best_area = half_area(c);
           best = i;
         }
       }
@@ -154,19 +160,18 @@ class Collapser {
     out_.nodes.emplace_back();
     std::uint32_t refs[kNodeWidth] = {};
     for (int i = 0; i < n; ++i) {
-      const BvhNode& c = bin_.nodes[kids[i]];
+      const BvhFloatNode& c = bin_.nodes[kids[i]];
       refs[i] = c.is_leaf() ? leaf_ref(kids[i]) : collapse(kids[i], depth + 1);
     }
     WideNode& w = out_.nodes[index];
     float lo[3][kNodeWidth], hi[3][kNodeWidth];
     for (int i = 0; i < n; ++i) {
-      // Binary node boxes are unions of float vertex coordinates, so these conversions are exact;
-      // a side the builder left infinite (coordinates beyond its clamp) becomes the largest float,
-      // which still holds every finite vertex.
-      const Aabb& b = bin_.nodes[kids[i]].box;
+      // Binary node boxes are unions of float vertex coordinates; a side at the builder's clamp
+      // (coordinates beyond it) becomes the largest float, which still holds every finite vertex.
+      const BvhFloatNode& b = bin_.nodes[kids[i]];
       for (int a = 0; a < 3; ++a) {
-        lo[a][i] = static_cast<float>(std::max(b.lo[a], -double(kMaxFloat)));
-        hi[a][i] = static_cast<float>(std::min(b.hi[a], double(kMaxFloat)));
+        lo[a][i] = b.lo[a] <= -kBuildRefLimit ? -kMaxFloat : b.lo[a];
+        hi[a][i] = b.hi[a] >= kBuildRefLimit ? kMaxFloat : b.hi[a];
       }
     }
     for (int a = 0; a < 3; ++a)
@@ -179,7 +184,7 @@ class Collapser {
     return index;
   }
 
-  const Bvh& bin_;
+  const FloatBvh& bin_;
   std::span<const Vec3f> positions_;
   std::span<const std::array<std::uint32_t, 3>> triangles_;
   std::span<const std::uint32_t> source_;
@@ -217,7 +222,7 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
   bc.max_leaf_size = std::clamp(config.max_leaf_size, 1, 4 * kMaxGroupsPerLeaf);
   bc.leaf_block = std::max(config.leaf_block, 1);
   bc.traversal_cost = config.traversal_cost;
-  const Bvh binary = build_bvh_from_refs(std::move(refs), bc);
+  const FloatBvh binary = build_float_bvh_from_refs(std::move(refs), bc);
   Collapser(binary, positions, triangles, source, out).run();
   return out;
 }

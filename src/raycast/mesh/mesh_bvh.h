@@ -73,8 +73,9 @@ struct MeshBvhConfig {
 };
 
 struct MeshBvh {
-  std::vector<WideNode> nodes;        // nodes[0] is the root when there is any triangle
-  std::vector<TriangleGroup> groups;  // leaf data, permuted to leaf order
+  BuildVector<WideNode> nodes;        // nodes[0] is the root when there is any triangle
+  BuildVector<TriangleGroup> groups;  // leaf data, permuted to leaf order (resize leaves them
+                                      // uninitialised: the build's parallel pass writes them)
   std::uint32_t root = 0;             // a child reference: node 0, or a single leaf
   int depth = 0;                      // deepest node level (the root is level 1)
   bool empty() const { return groups.empty(); }
