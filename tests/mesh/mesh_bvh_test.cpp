@@ -1,7 +1,12 @@
 // The mesh BVH against brute force over the same watertight test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 #include "mesh/mesh.h"
 #include "mesh/procedural.h"
@@ -95,6 +100,67 @@ TEST(MeshBvh, ProceduralSphere_MatchesBruteForce) {
     check_against_brute_force(soup, bvh, random_ray(rng, 1));
     if (HasFatalFailure()) return;
   }
+}
+
+// Quantised child boxes must hold their triangles whatever the scale: clusters of small triangles
+// from 1e-30 up to beyond the builder's clamp (2^125) and near the largest float, in one tree, so
+// that nodes span extents from denormal-adjacent to infinite steps. Rays aimed at each triangle's
+// centroid from nearby must find what brute force finds.
+TEST(MeshBvh, QuantisedBoxes_ExtremeScales_MatchBruteForce) {
+  std::mt19937 rng(11);
+  const float scales[] = {1e-30f, 1e-3f, 1.0f, 1e20f, 1e37f, 1e38f, 3e38f};
+  TriangleSoup soup;
+  std::uniform_real_distribution<float> u(-1, 1);
+  for (float scale : scales)
+    for (int i = 0; i < 40; ++i) {
+      const Vec3f c{u(rng) * scale, u(rng) * scale, u(rng) * scale};
+      const auto base = static_cast<std::uint32_t>(soup.positions.size());
+      for (int k = 0; k < 3; ++k)
+        soup.positions.push_back(c + Vec3f{u(rng), u(rng), u(rng)} * (0.01f * scale));
+      soup.triangles.push_back({base, base + 1, base + 2});
+    }
+  for (const auto& p : soup.positions)
+    ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+  const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
+  for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
+    const auto& t = soup.triangles[i];
+    const Vec3f& a = soup.positions[t[0]];
+    const Vec3f& b = soup.positions[t[1]];
+    const Vec3f& c = soup.positions[t[2]];
+    const Vec3f centre = a * (1 / 3.0f) + b * (1 / 3.0f) + c * (1 / 3.0f);
+    const float reach = std::max({std::abs(a.x - b.x), std::abs(a.y - c.y), std::abs(b.z - c.z)});
+    for (int k = 0; k < 3; ++k) {
+      MeshRay r;
+      r.o = centre + Vec3f{u(rng), u(rng), u(rng)} * reach;
+      Vec3f d = centre - r.o;
+      const float m = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+      if (!(m > 0)) continue;
+      r.d = d * (1.5f / m);  // largest component in [1, 2), as the mesh's ray conversion makes it
+      r.tmin = 0;
+      r.tmax = std::numeric_limits<float>::infinity();
+      check_against_brute_force(soup, bvh, r);
+      if (HasFatalFailure()) return;
+    }
+  }
+}
+
+TEST(MeshBvh, Hits_ReportTheSourceIndexGivenToTheBuild) {
+  const TriangleSoup soup = make_octa_sphere(8);
+  std::vector<std::uint32_t> source(soup.triangles.size());
+  for (std::size_t i = 0; i < source.size(); ++i) source[i] = static_cast<std::uint32_t>(7 * i + 3);
+  const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, {}, source);
+  std::mt19937 rng(5);
+  int hits = 0;
+  for (int i = 0; i < 200; ++i) {
+    MeshBvhHit h;
+    if (!intersect_closest(bvh, random_ray(rng, 1), h)) continue;
+    ++hits;
+    EXPECT_EQ(h.source, source[h.triangle]);
+  }
+  EXPECT_GT(hits, 0);
+  std::vector<std::uint32_t> short_source(3, 0);
+  EXPECT_THROW(build_mesh_bvh(soup.positions, soup.triangles, {}, short_source),
+               std::invalid_argument);
 }
 
 TEST(MeshBvh, EveryHit_MatchesBruteForceCount) {

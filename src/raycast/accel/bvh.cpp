@@ -79,13 +79,7 @@ struct Box4 {
 // A reference's centre, doubled (lo + hi: exact for the clamped range, no rounding of a halving).
 inline F4 centre2(const BvhBuildRef& r) { return load_lo(r) + load_hi(r); }
 
-// The build's node: a float box and the same first/count as BvhNode (32 bytes).
-struct FNode {
-  float lo[3];
-  std::uint32_t first;
-  float hi[3];
-  std::uint32_t count;
-};
+using FNode = BvhFloatNode;
 
 struct Bins {
   Box4 box[3][kMaxBins];
@@ -148,16 +142,15 @@ class Builder {
     config_.leaf_block = std::max(config_.leaf_block, 1);
   }
 
-  Bvh run() {
-    Bvh out;
+  FloatBvh run() {
+    FloatBvh out;
     const std::size_t n = refs_.size();
     if (n == 0) return out;
     if (n >= 0x7FFFFFFFu) throw std::length_error("BVH build: too many primitives");
-    // Up to 2n - 1 nodes; the buffer is not touched beyond the nodes made, so the pages of the
-    // unused tail are never committed.
-    nodes_.reset(static_cast<FNode*>(std::malloc((2 * n - 1) * sizeof(FNode))));
-    if (!nodes_) throw std::bad_alloc();
-    advise_huge_pages(nodes_.get(), (2 * n - 1) * sizeof(FNode));
+    // Up to 2n - 1 nodes, left uninitialised: the buffer is not touched beyond the nodes made, so
+    // the pages of the unused tail are never committed.
+    out.nodes.resize(2 * n - 1);
+    nodes_ = out.nodes.data();
     next_node_ = 1;
     Box4 box, centres;
     bounds(0, static_cast<std::uint32_t>(n), box, centres);
@@ -165,20 +158,8 @@ class Builder {
     build(0, 0, static_cast<std::uint32_t>(n), 0, box, centres, tasks);
     tasks.wait();
     progress_.finish();
-    const std::uint32_t count = next_node_.load();
-    out.nodes.resize(count);  // uninitialised: written in parallel below
-    out.prims.resize(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16384),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                          const FNode& f = nodes_[i];
-                          BvhNode& b = out.nodes[i];
-                          b.box.lo = {widen_lo(f.lo[0]), widen_lo(f.lo[1]), widen_lo(f.lo[2])};
-                          b.box.hi = {widen_hi(f.hi[0]), widen_hi(f.hi[1]), widen_hi(f.hi[2])};
-                          b.first = f.first;
-                          b.count = f.count;
-                        }
-                      });
+    out.nodes.resize(next_node_.load());
+    out.prims.resize(n);  // uninitialised: written in parallel below
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i)
@@ -521,7 +502,7 @@ class Builder {
 
   BvhBuildRefs& refs_;
   BvhBuildConfig config_;
-  std::unique_ptr<FNode[], decltype(&std::free)> nodes_{nullptr, &std::free};
+  FNode* nodes_ = nullptr;
   std::atomic<std::uint32_t> next_node_{0};
   StageProgress progress_;  // drawn for a million primitives or more, on a terminal
 };
@@ -539,8 +520,28 @@ BvhBuildRef make_build_ref(const Aabb& box, std::uint32_t index) {
   return r;
 }
 
-Bvh build_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config) {
+FloatBvh build_float_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config) {
   return Builder(refs, config).run();
+}
+
+Bvh build_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config) {
+  FloatBvh f = build_float_bvh_from_refs(std::move(refs), config);
+  Bvh out;
+  const std::size_t count = f.nodes.size();
+  out.nodes.resize(count);  // uninitialised: written in parallel below
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16384),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                        const FNode& n = f.nodes[i];
+                        BvhNode& b = out.nodes[i];
+                        b.box.lo = {widen_lo(n.lo[0]), widen_lo(n.lo[1]), widen_lo(n.lo[2])};
+                        b.box.hi = {widen_hi(n.hi[0]), widen_hi(n.hi[1]), widen_hi(n.hi[2])};
+                        b.first = n.first;
+                        b.count = n.count;
+                      }
+                    });
+  out.prims = std::move(f.prims);
+  return out;
 }
 
 Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres,

@@ -61,6 +61,27 @@ inline constexpr float kBuildRefLimit = 0x1p125f;
 /// The reference of a finite box (rounded outwards to float, clamped to +-kBuildRefLimit).
 BvhBuildRef make_build_ref(const Aabb& box, std::uint32_t index);
 
+/// A node of the builder's own tree (32 bytes): the box in float, exact unions of the references'
+/// float boxes (a side at +-kBuildRefLimit is unbounded), and the same first/count as BvhNode.
+struct BvhFloatNode {
+  float lo[3];
+  std::uint32_t first;
+  float hi[3];
+  std::uint32_t count;
+  bool is_leaf() const { return count > 0; }
+};
+
+/// The tree as the builder makes it, before conversion to double boxes: for callers that consume
+/// the tree once (the mesh BVH's collapse), which saves a pass over 56-byte nodes.
+struct FloatBvh {
+  BuildVector<BvhFloatNode> nodes;   // nodes[0] is the root (absent when there are no primitives)
+  BuildVector<std::uint32_t> prims;  // permutation of primitive indices, grouped by leaf
+  bool empty() const { return nodes.empty(); }
+};
+
+/// The build of build_bvh_from_refs, returning the float tree.
+FloatBvh build_float_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config = {});
+
 /// Binned SAH build (Wald 2007) over primitive references (boxes not empty; the indices need not
 /// be distinct, they are copied to Bvh::prims). Consumes `refs` (the build partitions them in
 /// place). Parallel with oneTBB at every level (binning and partitioning of large nodes, subtrees

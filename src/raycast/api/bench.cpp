@@ -216,6 +216,7 @@ BenchResult run_bench(const BenchOptions& o) {
     if (const auto* m = std::get_if<MeshShape>(&obj.shape)) {
       r.triangles += m->mesh->triangle_count();
       mesh_build_ms += m->mesh->build_ms;
+      r.raycast_build_cpu_ms += m->mesh->build_cpu_ms;
       bvh_bytes += m->mesh->bvh_bytes();
       total_bytes += m->mesh->memory_bytes();
       peer_meshes.push_back({m->mesh, obj.xf});
@@ -292,6 +293,7 @@ BenchResult run_bench(const BenchOptions& o) {
   const EmbreePeer peer(peer_meshes, threads);
   r.embree = true;
   r.embree_build_ms = peer.build_ms();
+  r.embree_build_cpu_ms = peer.build_cpu_ms();
   r.embree_bytes_per_tri = peer.bytes() / tris;
   double embree_seconds = 0, embree_cpu = 0;
   if (o.rays == BenchRays::kShadow) {
@@ -340,12 +342,12 @@ std::string format_bench(const BenchResult& r, bool json) {
                   "{\"what\": \"%s\", \"ray_kind\": \"%s\", \"triangles\": %llu, \"rays\": %llu, "
                   "\"hits\": %llu, "
                   "\"threads\": %d, \"raycast_build_ms\": %.3f, \"raycast_mrays\": %.4f, "
-                  "\"raycast_mrays_cpu\": %.4f, \"isa\": \"%s\"",
+                  "\"raycast_mrays_cpu\": %.4f, \"isa\": \"%s\", \"raycast_build_cpu_ms\": %.3f",
                   json_escape(r.what).c_str(), r.ray_kind.c_str(),
                   static_cast<unsigned long long>(r.triangles),
                   static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
                   r.threads, r.raycast_build_ms, r.raycast_mrays, r.raycast_mrays_cpu,
-                  isa_name(active_isa()));
+                  isa_name(active_isa()), r.raycast_build_cpu_ms);
     out = buf;
     if (r.triangles > 0)  // else null: per triangle means nothing without triangles
       std::snprintf(buf, sizeof buf,
@@ -361,12 +363,13 @@ std::string format_bench(const BenchResult& r, bool json) {
           ", \"embree_build_ms\": %.3f, \"embree_mrays\": %.4f, \"embree_bytes_per_tri\": %.2f, "
           "\"ratio\": %.4f, \"embree_mrays_cpu\": %.4f, \"ratio_cpu\": %.4f, \"disagree\": %llu, "
           "\"disagree_hit\": %llu, \"disagree_t\": %llu, "
-          "\"disagree_prim\": %llu",
+          "\"disagree_prim\": %llu, \"embree_build_cpu_ms\": %.3f, \"build_ratio_cpu\": %.4f",
           r.embree_build_ms, r.embree_mrays, r.embree_bytes_per_tri, r.ratio, r.embree_mrays_cpu,
           r.raycast_mrays_cpu / r.embree_mrays_cpu, static_cast<unsigned long long>(r.disagree),
           static_cast<unsigned long long>(r.disagree_hit),
           static_cast<unsigned long long>(r.disagree_t),
-          static_cast<unsigned long long>(r.disagree_prim));
+          static_cast<unsigned long long>(r.disagree_prim), r.embree_build_cpu_ms,
+          r.raycast_build_cpu_ms > 0 ? r.embree_build_cpu_ms / r.raycast_build_cpu_ms : 0.0);
       out += buf;
     }
     return out + "}\n";

@@ -41,6 +41,9 @@ struct BenchResult {
          raycast_total_bytes_per_tri = 0;
   bool embree = false;
   double embree_build_ms = 0, embree_mrays = 0, embree_bytes_per_tri = 0;
+  // CPU time of the process (all threads) during the builds: steadier than wall time on a
+  // shared machine.
+  double raycast_build_cpu_ms = 0, embree_build_cpu_ms = 0;
   double ratio = 0;
   double raycast_mrays_cpu = 0, embree_mrays_cpu = 0;  // rays per CPU second (all threads)
   std::uint64_t disagree = 0, disagree_hit = 0, disagree_t = 0, disagree_prim = 0;

@@ -1,5 +1,7 @@
 #include "api/embree_peer.h"
 
+#include <sys/resource.h>
+
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
@@ -27,10 +29,19 @@ bool monitor(void* /*user*/, ssize_t bytes, bool /*post*/) {
 
 }  // namespace
 
+// CPU milliseconds (user + system, all threads) of the process so far.
+static double cpu_ms() {
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return 1e3 * (u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-3 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 struct EmbreePeer::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   double build_ms = 0;
+  double build_cpu_ms = 0;
   std::size_t bytes = 0;
   std::vector<const Mesh*> meshes;
   std::vector<std::vector<float>> vertices;  // world-space copies, padded as Embree requires
@@ -67,9 +78,11 @@ EmbreePeer::EmbreePeer(const std::vector<PeerMesh>& meshes, int threads)
   }
   g_embree_bytes = 0;
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_ms();
   rtcCommitScene(impl_->scene);
   impl_->build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  impl_->build_cpu_ms = cpu_ms() - cpu_start;
   impl_->bytes = static_cast<std::size_t>(std::max<std::int64_t>(0, g_embree_bytes.load()));
   if (rtcGetDeviceError(impl_->device) != RTC_ERROR_NONE)
     throw std::runtime_error("Embree: scene build failed");
@@ -81,6 +94,7 @@ EmbreePeer::~EmbreePeer() {
 }
 
 double EmbreePeer::build_ms() const { return impl_->build_ms; }
+double EmbreePeer::build_cpu_ms() const { return impl_->build_cpu_ms; }
 std::size_t EmbreePeer::bytes() const { return impl_->bytes; }
 bool EmbreePeer::available() { return true; }
 
@@ -149,6 +163,7 @@ EmbreePeer::EmbreePeer(const std::vector<PeerMesh>&, int) {
 }
 EmbreePeer::~EmbreePeer() = default;
 double EmbreePeer::build_ms() const { return 0; }
+double EmbreePeer::build_cpu_ms() const { return 0; }
 std::size_t EmbreePeer::bytes() const { return 0; }
 bool EmbreePeer::available() { return false; }
 void EmbreePeer::intersect(std::span<const BenchRay>, std::span<PeerHit>) const {}

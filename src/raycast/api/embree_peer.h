@@ -36,6 +36,7 @@ class EmbreePeer {
   EmbreePeer& operator=(const EmbreePeer&) = delete;
 
   double build_ms() const;
+  double build_cpu_ms() const;  // CPU time of the process (all threads) during the build
   std::size_t bytes() const;  // memory Embree allocated for the scene (its BVH and triangle data)
 
   /// rtcIntersect1 / rtcOccluded1 over every ray, in parallel (tbb), writing one answer per ray.

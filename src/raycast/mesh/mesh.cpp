@@ -9,6 +9,10 @@
 #include <stdexcept>
 #include <string>
 
+#if defined(__unix__)
+#include <sys/resource.h>
+#endif
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -20,6 +24,18 @@
 namespace raycast {
 
 namespace {
+
+// CPU milliseconds (user + system, all threads) of the process so far; 0 where unknown.
+double process_cpu_ms() {
+#if defined(__unix__)
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return 1e3 * (u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-3 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+#else
+  return 0;
+#endif
+}
 
 // A fixed direction for the inside test of closed meshes: irrational-looking so that it is
 // unlikely to run exactly along an edge of a modelled mesh.
@@ -267,9 +283,11 @@ std::shared_ptr<const Mesh> make_mesh(std::vector<Vec3f> positions,
     m.normals =
         normals.empty() ? angle_weighted_normals(m.positions, m.triangles) : std::move(normals);
   const auto start = std::chrono::steady_clock::now();
-  m.bvh = build_mesh_bvh(m.positions, m.triangles, options.bvh);
+  const double cpu_start = process_cpu_ms();
+  m.bvh = build_mesh_bvh(m.positions, m.triangles, options.bvh, m.source);
   m.build_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  m.build_cpu_ms = process_cpu_ms() - cpu_start;
   return mesh;
 }
 
@@ -321,8 +339,8 @@ bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
   if (!intersect_closest(m.bvh, r, h)) return false;
   double t = refine_hit(m, h, ray, scale);
   t = std::clamp(t, ray.tmin, ray.tmax);
-  hit = LocalHit{t, static_cast<std::int32_t>(m.source[h.triangle]),
-                 static_cast<std::int32_t>(h.triangle), h.b1, h.b2};
+  hit = LocalHit{t, static_cast<std::int32_t>(h.source), static_cast<std::int32_t>(h.triangle),
+                 h.b1, h.b2};
   return true;
 }
 
@@ -351,7 +369,7 @@ void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
   for (const MeshBvhHit& h : hits) {
     const double t = refine_hit(m, h, ray, scale);
     const double facing = dot(ray.d, face_normal_unnormalised(m, h.triangle)) * orientation;
-    xs.push_back({LocalHit{t, static_cast<std::int32_t>(m.source[h.triangle]),
+    xs.push_back({LocalHit{t, static_cast<std::int32_t>(h.source),
                            static_cast<std::int32_t>(h.triangle), h.b1, h.b2},
                   facing < 0});
   }

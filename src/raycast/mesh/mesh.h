@@ -25,7 +25,8 @@ struct Mesh {
   std::size_t dropped = 0;     // degenerate input triangles dropped
   Aabb box;                    // bounds of the kept triangles (empty when none)
   MeshBvh bvh;
-  double build_ms = 0;  // BVH build time
+  double build_ms = 0;      // BVH build time
+  double build_cpu_ms = 0;  // CPU time of the process (all threads) during the BVH build
 
   /// Whether every edge (by welded position) is shared by exactly two triangles. Found on first
   /// use (a sort of all edges, seconds for tens of millions of triangles), so that meshes never

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <tbb/parallel_for.h>
 
@@ -17,18 +18,72 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // ---- Build ------------------------------------------------------------------------------------
 
+constexpr float kMaxFloat = std::numeric_limits<float>::max();
+
+// Quantises the n child intervals [lo[i], hi[i]] of one axis (finite floats) to 8 bits relative
+// to their union: origin = the least lo, the smallest power-of-two scale whose 255 steps span
+// the union, then each lo rounded down and each hi rounded up in steps, checked against the
+// float dequantisation the traversal does (so that rounding of the sum can never shrink a box).
+// A scale too fine for some hi after that check is doubled and the axis redone.
+void quantise_axis(const float* lo, const float* hi, int n, float& origin, std::int8_t& exponent,
+                   std::uint8_t* qlo, std::uint8_t* qhi) {
+  float o = lo[0];
+  float top = hi[0];
+  for (int i = 1; i < n; ++i) {
+    o = std::min(o, lo[i]);
+    top = std::max(top, hi[i]);
+  }
+  const double extent = double(top) - double(o);
+  int e = -126;
+  if (extent > 0) {
+    int k = 0;
+    std::frexp(extent / 255, &k);  // 2^(k-1) <= extent / 255 < 2^k
+    e = std::clamp(k, -126, 127);
+  }
+  for (;; ++e) {
+    const float s = node_scale(e);
+    bool fits = true;
+    for (int i = 0; i < n && fits; ++i) {
+      double fl = std::floor((double(lo[i]) - o) / s);
+      int ql = static_cast<int>(std::clamp(fl, 0.0, 255.0));
+      while (ql > 0 && !(dequantise(o, s, static_cast<std::uint8_t>(ql)) <= lo[i])) --ql;
+      double ch = std::ceil((double(hi[i]) - o) / s);
+      int qh = static_cast<int>(std::clamp(ch, 0.0, 256.0));
+      while (qh <= 255 && !(dequantise(o, s, static_cast<std::uint8_t>(qh)) >= hi[i])) ++qh;
+      if (qh > 255) {
+        fits = false;
+        break;
+      }
+      qlo[i] = static_cast<std::uint8_t>(ql);
+      qhi[i] = static_cast<std::uint8_t>(qh);
+    }
+    // At 2^127 every q >= 2 dequantises to infinity, so the loop ends there at the latest.
+    if (fits || e >= 127) break;
+  }
+  for (int i = n; i < kNodeWidth; ++i) qlo[i] = qhi[i] = 0;
+  origin = o;
+  exponent = static_cast<std::int8_t>(e);
+}
+
+double half_area(const BvhFloatNode& n) {
+  const double x = double(n.hi[0]) - n.lo[0], y = double(n.hi[1]) - n.lo[1],
+               z = double(n.hi[2]) - n.lo[2];
+  return x * y + y * z + z * x;
+}
+
 class Collapser {
  public:
-  Collapser(const Bvh& bin, std::span<const Vec3f> positions,
-            std::span<const std::array<std::uint32_t, 3>> triangles, MeshBvh& out)
-      : bin_(bin), positions_(positions), triangles_(triangles), out_(out) {}
+  Collapser(const FloatBvh& bin, std::span<const Vec3f> positions,
+            std::span<const std::array<std::uint32_t, 3>> triangles,
+            std::span<const std::uint32_t> source, MeshBvh& out)
+      : bin_(bin), positions_(positions), triangles_(triangles), source_(source), out_(out) {}
 
   void run() {
     // Leaf groups: one prefix sum over the binary leaves (in node order) gives each its groups.
     leaf_group_.assign(bin_.nodes.size(), 0);
     std::uint32_t groups = 0;
     for (std::size_t i = 0; i < bin_.nodes.size(); ++i) {
-      const BvhNode& n = bin_.nodes[i];
+      const BvhFloatNode& n = bin_.nodes[i];
       if (!n.is_leaf()) continue;
       leaf_group_[i] = groups;
       groups += (n.count + 3) / 4;
@@ -48,12 +103,12 @@ class Collapser {
 
  private:
   std::uint32_t leaf_ref(std::uint32_t node) const {
-    const BvhNode& n = bin_.nodes[node];
+    const BvhFloatNode& n = bin_.nodes[node];
     const std::uint32_t count = (n.count + 3) / 4;
     return kLeafBit | ((count - 1) << 29) | leaf_group_[node];
   }
 
-  void fill_leaf(const BvhNode& n, std::uint32_t first_group) {
+  void fill_leaf(const BvhFloatNode& n, std::uint32_t first_group) {
     for (std::uint32_t k = 0; k < (n.count + 3) / 4; ++k) {
       TriangleGroup& g = out_.groups[first_group + k];
       for (int lane = 0; lane < 4; ++lane) {
@@ -62,6 +117,7 @@ class Collapser {
           for (auto& vertex : g.v)
             for (auto& axis : vertex) axis[lane] = kNaN;
           g.id[lane] = kNoTriangle;
+          g.source[lane] = kNoTriangle;
           continue;
         }
         const std::uint32_t tri = bin_.prims[n.first + i];
@@ -72,6 +128,7 @@ class Collapser {
           g.v[vtx][2][lane] = p.z;
         }
         g.id[lane] = tri;
+        g.source[lane] = source_.empty() ? tri : source_[tri];
       }
     }
   }
@@ -88,9 +145,9 @@ class Collapser {
       int best = -1;
       double best_area = -1;
       for (int i = 0; i < n; ++i) {
-        const BvhNode& c = bin_.nodes[kids[i]];
-        if (!c.is_leaf() && c.box.half_area() > best_area) {
-          best_area = c.box.half_area();
+        const BvhFloatNode& c = bin_.nodes[kids[i]];
+        if (!c.is_leaf() && half_area(c) > best_area) {
+          best_area = half_area(c);
           best = i;
         }
       }
@@ -103,29 +160,34 @@ class Collapser {
     out_.nodes.emplace_back();
     std::uint32_t refs[kNodeWidth] = {};
     for (int i = 0; i < n; ++i) {
-      const BvhNode& c = bin_.nodes[kids[i]];
+      const BvhFloatNode& c = bin_.nodes[kids[i]];
       refs[i] = c.is_leaf() ? leaf_ref(kids[i]) : collapse(kids[i], depth + 1);
     }
     WideNode& w = out_.nodes[index];
+    float lo[3][kNodeWidth], hi[3][kNodeWidth];
+    for (int i = 0; i < n; ++i) {
+      // Binary node boxes are unions of float vertex coordinates; a side at the builder's clamp
+      // (coordinates beyond it) becomes the largest float, which still holds every finite vertex.
+      const BvhFloatNode& b = bin_.nodes[kids[i]];
+      for (int a = 0; a < 3; ++a) {
+        lo[a][i] = b.lo[a] <= -kBuildRefLimit ? -kMaxFloat : b.lo[a];
+        hi[a][i] = b.hi[a] >= kBuildRefLimit ? kMaxFloat : b.hi[a];
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+      quantise_axis(lo[a], hi[a], n, w.origin[a], w.exponent[a], w.q[2 * a], w.q[2 * a + 1]);
+    w.used = static_cast<std::uint8_t>((1u << n) - 1);
     for (int i = 0; i < kNodeWidth; ++i) {
-      // Binary node boxes are unions of float vertex coordinates, so these conversions are exact.
-      const bool used = i < n;
-      const Aabb& b = used ? bin_.nodes[kids[i]].box : bin_.nodes[node].box;
-      w.lo_x[i] = used ? static_cast<float>(b.lo.x) : kInf;
-      w.lo_y[i] = used ? static_cast<float>(b.lo.y) : kInf;
-      w.lo_z[i] = used ? static_cast<float>(b.lo.z) : kInf;
-      w.hi_x[i] = used ? static_cast<float>(b.hi.x) : -kInf;
-      w.hi_y[i] = used ? static_cast<float>(b.hi.y) : -kInf;
-      w.hi_z[i] = used ? static_cast<float>(b.hi.z) : -kInf;
-      w.child[i] = refs[i];
+      w.child[i] = i < n ? refs[i] : 0;
       w.pad[i] = 0;
     }
     return index;
   }
 
-  const Bvh& bin_;
+  const FloatBvh& bin_;
   std::span<const Vec3f> positions_;
   std::span<const std::array<std::uint32_t, 3>> triangles_;
+  std::span<const std::uint32_t> source_;
   MeshBvh& out_;
   std::vector<std::uint32_t> leaf_group_;
 };
@@ -134,8 +196,10 @@ class Collapser {
 
 MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
                        std::span<const std::array<std::uint32_t, 3>> triangles,
-                       const MeshBvhConfig& config) {
+                       const MeshBvhConfig& config, std::span<const std::uint32_t> source) {
   MeshBvh out;
+  if (!source.empty() && source.size() != triangles.size())
+    throw std::invalid_argument("build_mesh_bvh: one source index per triangle expected");
   const std::size_t n = triangles.size();
   if (n == 0) return out;
   // Triangle boxes go straight into the builder's 32-byte references (exact: float vertices).
@@ -158,8 +222,8 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
   bc.max_leaf_size = std::clamp(config.max_leaf_size, 1, 4 * kMaxGroupsPerLeaf);
   bc.leaf_block = std::max(config.leaf_block, 1);
   bc.traversal_cost = config.traversal_cost;
-  const Bvh binary = build_bvh_from_refs(std::move(refs), bc);
-  Collapser(binary, positions, triangles, out).run();
+  const FloatBvh binary = build_float_bvh_from_refs(std::move(refs), bc);
+  Collapser(binary, positions, triangles, source, out).run();
   return out;
 }
 
@@ -199,6 +263,7 @@ const TriangleGroup kEmptyTriangleGroup = [] {
     for (auto& axis : vertex)
       for (float& f : axis) f = kNaN;
   for (auto& id : g.id) id = kNoTriangle;
+  for (auto& s : g.source) s = kNoTriangle;
   return g;
 }();
 

@@ -4,6 +4,7 @@
 // form; the AVX2 and AVX-512 kernels test two groups per pass). Traversal is ordered, nearest child
 // first, by kernels compiled per instruction set and picked at run time (mesh/wide_kernels.h).
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -16,31 +17,51 @@ namespace raycast {
 
 inline constexpr int kNodeWidth = 8;
 
-/// A node with up to 8 children, 256 bytes (four cache lines): the six box planes of the eight
-/// children as SoA float lanes (192 bytes), then the eight child references (32 bytes) and 32
-/// bytes of padding to keep nodes cache-line aligned. A child reference is an inner node's index,
+/// A node with up to 8 children, 128 bytes (two cache lines), its child boxes quantised to 8 bits
+/// relative to the node (Ylitie, Karras and Laine 2017). The first line holds all the box test
+/// reads: q[plane][child] for the planes lo_x, hi_x, lo_y, hi_y, lo_z, hi_z (48 bytes), the
+/// node's origin, one power-of-two scale exponent per axis, and a mask of the used children. A
+/// child's plane on axis a is dequantise(origin[a], node_scale(exponent[a]), q) in float, the same
+/// on every ISA; the build picks each q so that this box holds the child's float box. The second
+/// line: the eight child references, then padding. A child reference is an inner node's index,
 /// or (bit 31 set) a leaf: bits 0-28 the first triangle group, bits 29-30 the group count minus 1.
-/// An unused slot has an empty box (lo = +inf, hi = -inf), which no ray enters, and reference 0.
+/// An unused slot has its bit clear in `used` and reference 0.
 struct alignas(64) WideNode {
-  float lo_x[kNodeWidth], hi_x[kNodeWidth], lo_y[kNodeWidth], hi_y[kNodeWidth], lo_z[kNodeWidth],
-      hi_z[kNodeWidth];
+  std::uint8_t q[6][kNodeWidth];
+  float origin[3];
+  std::int8_t exponent[3];
+  std::uint8_t used;
   std::uint32_t child[kNodeWidth];
   std::uint32_t pad[kNodeWidth];
 };
-static_assert(sizeof(WideNode) == 256);
+static_assert(sizeof(WideNode) == 128);
+
+/// 2^e for e in [-126, 127] (a normal float), from its bits.
+inline float node_scale(int e) {
+  return std::bit_cast<float>(static_cast<std::uint32_t>(e + 127) << 23);
+}
+
+/// A quantised plane: origin + q * scale, the product exact (q < 2^8, scale a power of two), the
+/// sum rounded once (or overflowing to infinity). Never fused (the build is ISO C++).
+inline float dequantise(float origin, float scale, std::uint8_t q) {
+  return origin + static_cast<float>(q) * scale;
+}
 
 inline constexpr std::uint32_t kLeafBit = 0x80000000u;
 inline constexpr int kMaxGroupsPerLeaf = 4;
 
-/// Four triangles in SoA form (160 bytes): v[vertex][axis][lane], then the triangle index of each
-/// lane. A lane past the end of a leaf's triangles has NaN vertices (never hit) and id kNoTriangle.
+/// Four triangles in SoA form (176 bytes): v[vertex][axis][lane], then the triangle index of each
+/// lane and its caller-given source index (the mesh's input index: carried here so that a hit
+/// needs no second, cache-missing lookup). A lane past the end of a leaf's triangles has NaN
+/// vertices (never hit) and id and source kNoTriangle.
 /// The vertices (not edges) are stored so that the watertight test sees shared vertices bit for
 /// bit.
 struct alignas(16) TriangleGroup {
   float v[3][3][4];
   std::uint32_t id[4];
+  std::uint32_t source[4];
 };
-static_assert(sizeof(TriangleGroup) == 160);
+static_assert(sizeof(TriangleGroup) == 176);
 
 inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
 
@@ -52,8 +73,9 @@ struct MeshBvhConfig {
 };
 
 struct MeshBvh {
-  std::vector<WideNode> nodes;        // nodes[0] is the root when there is any triangle
-  std::vector<TriangleGroup> groups;  // leaf data, permuted to leaf order
+  BuildVector<WideNode> nodes;        // nodes[0] is the root when there is any triangle
+  BuildVector<TriangleGroup> groups;  // leaf data, permuted to leaf order (resize leaves them
+                                      // uninitialised: the build's parallel pass writes them)
   std::uint32_t root = 0;             // a child reference: node 0, or a single leaf
   int depth = 0;                      // deepest node level (the root is level 1)
   bool empty() const { return groups.empty(); }
@@ -63,11 +85,12 @@ struct MeshBvh {
 };
 
 /// Builds the BVH over triangles (vertex index triples into positions; all finite). Triangle ids
-/// in the leaves are indices into `triangles`. Parallel (oneTBB); the result does not depend on
-/// the thread count.
+/// in the leaves are indices into `triangles`; hits also report source[id] (the id itself when
+/// `source` is empty). Parallel (oneTBB); the result does not depend on the thread count.
 MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
                        std::span<const std::array<std::uint32_t, 3>> triangles,
-                       const MeshBvhConfig& config = {});
+                       const MeshBvhConfig& config = {},
+                       std::span<const std::uint32_t> source = {});
 
 /// A ray prepared for float traversal: origin and direction in float (the caller scales d by a
 /// power of two so that it is representable), [tmin, tmax] in units of that d.
@@ -85,6 +108,7 @@ struct MeshBvhHit {
   float b1 = 0;
   float b2 = 0;
   std::uint32_t triangle = kNoTriangle;
+  std::uint32_t source = kNoTriangle;  // source[triangle] of the build
   std::uint32_t group = 0;  // where the triangle's vertices sit in MeshBvh::groups (cache-warm)
   std::uint32_t lane = 0;
 };

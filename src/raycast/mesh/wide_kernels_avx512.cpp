@@ -23,6 +23,10 @@ struct V8 {
 using M8 = __mmask8;
 
 inline V8 load8(const float* p) { return {_mm256_load_ps(p)}; }
+inline V8 load8_u8(const std::uint8_t* p) {
+  return {_mm256_cvtepi32_ps(
+      _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p))))};
+}
 inline V8 load44(const float* a, const float* b) {
   return {_mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(a)), _mm_load_ps(b), 1)};
 }

@@ -2,7 +2,7 @@
 // includes: a mesh/wide_kernels_<isa>.cpp file includes it after its headers, inside its own
 // `#pragma GCC target` region, having defined RAYCAST_KERNEL_NS and, in that namespace, the lane
 // type V8 (8 floats) and its mask type M8 with:
-//   load8(p) (32-byte aligned), load44(a, b) (two 16-byte aligned halves), splat(x), store8(p, v),
+//   load8(p) (32-byte aligned), load8_u8(p) (8 bytes, converted to float), load44(a, b) (two 16-byte aligned halves), splat(x), store8(p, v),
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
@@ -25,7 +25,7 @@ constexpr float kMinDirection = 0x1p-64f;
 struct RayData {
   V8 o[3];          // origin, broadcast
   V8 inv[3];        // 1 / d, broadcast
-  int near_off[3];  // float offset of the near plane array of each axis in a WideNode
+  int near_off[3];  // byte offset of the near plane array of each axis in WideNode::q
   int far_off[3];
   // Watertight test (Woop, Benthin and Wald 2013): permutation and shear.
   int kx, ky, kz;
@@ -44,7 +44,7 @@ inline RayData prepare(const MeshRay& r) {
     if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
     const float inv = 1.0f / da;
     p.inv[a] = splat(inv);
-    // WideNode floats: lo_x 0, hi_x 8, lo_y 16, hi_y 24, lo_z 32, hi_z 40.
+    // WideNode::q bytes: lo_x 0, hi_x 8, lo_y 16, hi_y 24, lo_z 32, hi_z 40.
     p.near_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? 0 : kNodeWidth);
     p.far_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? kNodeWidth : 0);
   }
@@ -63,14 +63,20 @@ inline RayData prepare(const MeshRay& r) {
 }
 
 // Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
+// The planes are dequantised exactly as the build checked them (origin + q * scale), then tested
+// as float planes.
 inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnear) {
-  const float* f = n.lo_x;
-  const V8 nx = (load8(f + p.near_off[0]) - p.o[0]) * p.inv[0];
-  const V8 ny = (load8(f + p.near_off[1]) - p.o[1]) * p.inv[1];
-  const V8 nz = (load8(f + p.near_off[2]) - p.o[2]) * p.inv[2];
-  const V8 fx = (load8(f + p.far_off[0]) - p.o[0]) * p.inv[0];
-  const V8 fy = (load8(f + p.far_off[1]) - p.o[1]) * p.inv[1];
-  const V8 fz = (load8(f + p.far_off[2]) - p.o[2]) * p.inv[2];
+  const std::uint8_t* q = n.q[0];
+  const V8 sx = splat(node_scale(n.exponent[0]));
+  const V8 sy = splat(node_scale(n.exponent[1]));
+  const V8 sz = splat(node_scale(n.exponent[2]));
+  const V8 ox = splat(n.origin[0]), oy = splat(n.origin[1]), oz = splat(n.origin[2]);
+  const V8 nx = ((ox + load8_u8(q + p.near_off[0]) * sx) - p.o[0]) * p.inv[0];
+  const V8 ny = ((oy + load8_u8(q + p.near_off[1]) * sy) - p.o[1]) * p.inv[1];
+  const V8 nz = ((oz + load8_u8(q + p.near_off[2]) * sz) - p.o[2]) * p.inv[2];
+  const V8 fx = ((ox + load8_u8(q + p.far_off[0]) * sx) - p.o[0]) * p.inv[0];
+  const V8 fy = ((oy + load8_u8(q + p.far_off[1]) * sy) - p.o[1]) * p.inv[1];
+  const V8 fz = ((oz + load8_u8(q + p.far_off[2]) * sz) - p.o[2]) * p.inv[2];
   tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
   // Widen the far distance away from the near one: scale it up when it is positive, down when it
   // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
@@ -79,7 +85,7 @@ inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnea
   const V8 far = vmin(vmin(fx, fy), fz);
   const V8 widen = select(cmp_ge(far, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
   const V8 tfar = vmin(far * widen, tmax);
-  return bits(cmp_le(tnear, tfar));
+  return bits(cmp_le(tnear, tfar)) & n.used;
 }
 
 // Lane results of a two-group triangle test: t, and the edge functions v, w and det = u + v + w.
@@ -146,7 +152,7 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
   return m;
 }
 
-// Starts loading every hit child (a node's four cache lines, or all of a leaf's groups) at once,
+// Starts loading every hit child (a node's two cache lines, or all of a leaf's groups) at once,
 // so that the memory latency of siblings overlaps instead of adding up.
 inline void prefetch_children(const MeshBvh& bvh, const WideNode& node, int mask) {
   while (mask) {
@@ -156,7 +162,7 @@ inline void prefetch_children(const MeshBvh& bvh, const WideNode& node, int mask
     const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
                          : reinterpret_cast<const char*>(&bvh.nodes[ref]);
     const int bytes =
-        leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup)) : 224;
+        leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup)) : 128;
     for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
   }
 }
@@ -249,6 +255,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
                              res.v[l] / res.det[l],
                              res.w[l] / res.det[l],
                              bvh.groups[g].id[l & 3],
+                             bvh.groups[g].source[l & 3],
                              g,
                              static_cast<std::uint32_t>(l & 3)};
           if constexpr (Q == Query::kNearest) {
