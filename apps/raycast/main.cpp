@@ -26,6 +26,9 @@ std::string version_text() {
 #ifdef RAYCAST_HAVE_EMBREE
       {"embree-peer", true},
 #endif
+#ifdef RAYCAST_HAVE_SERVE
+      {"serve", true},
+#endif
   };
   for (const auto& [name, present] : parts)
     if (present) text += std::string(" ") + name;
@@ -79,9 +82,16 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.allow_extras();  // unknown words are reported below with a suggestion
   std::vector<std::pair<CLI::App*, raycast::cli::Action>> actions;
-  for (auto add : {raycast::cli::add_render_command, raycast::cli::add_cast_command,
-                   raycast::cli::add_info_command, raycast::cli::add_validate_command,
-                   raycast::cli::add_bench_command}) {
+  for (auto add : {
+           raycast::cli::add_render_command,
+           raycast::cli::add_cast_command,
+           raycast::cli::add_info_command,
+           raycast::cli::add_validate_command,
+           raycast::cli::add_bench_command,
+#ifdef RAYCAST_HAVE_SERVE
+           raycast::cli::add_serve_command,
+#endif
+       }) {
     auto action = add(app);
     actions.emplace_back(app.get_subcommands({}).back(), std::move(action));
   }

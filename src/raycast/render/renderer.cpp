@@ -141,6 +141,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     render_adaptive(
         aa, seed,
         [&](double x, double y, SampleState& state) {
+          if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return Color{};
           return integrator.li(camera.ray(x, y), state);
         },
         image, adaptive, [&] { rows.advance(); });
@@ -170,6 +171,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
                       std::uint64_t& counter = rays.local();
                       for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
                         for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+                          if (options.cancel && options.cancel->load(std::memory_order_relaxed))
+                            return;
                           const int y1 = std::min(height, (ty + 1) * kTileSize);
                           const int x1 = std::min(width, (tx + 1) * kTileSize);
                           for (int y = ty * kTileSize; y < y1; ++y) {

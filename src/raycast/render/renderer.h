@@ -2,6 +2,7 @@
 // Whole images: pixels in 16x16 tiles over oneTBB, `samples` stratified jittered samples per
 // pixel averaged in linear light (a box filter), each pixel's random numbers seeded by (x, y,
 // scene seed) so that the result does not depend on the thread count.
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -25,6 +26,9 @@ struct RenderOptions {
   /// Overrides render.antialias. Without it, spp > 0 renders fixed samples (no adaptive pass).
   std::optional<AntialiasSettings> antialias;
   bool progress = true;  // a progress bar on stderr, only when it is a terminal
+  /// When set and true, the render stops early and its image is incomplete (`raycast serve`
+  /// restarts a pass when the scene or the view changes).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RenderStats {

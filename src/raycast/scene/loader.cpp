@@ -25,7 +25,9 @@ constexpr const char* kCompoundKeys = "group, union, intersection, difference, u
 
 class Loader {
  public:
-  Loader(SourceContext ctx, Scene& scene) : ctx_(std::move(ctx)), scene_(scene) {}
+  Loader(SourceContext ctx, Scene& scene) : ctx_(std::move(ctx)), scene_(scene) {
+    ctx_.files = &scene_.marks.files;
+  }
 
   void load(const YAML::Node& root) {
     if (root.IsNull())
@@ -178,6 +180,7 @@ class Loader {
       } else if (t.has("image")) {
         Fields i(ctx_, t.required("image"), "image");
         m.image_file = resolve(i.string("file"));
+        scene_.marks.files.push_back(m.image_file);
         // Read now, so that a missing or bad file is an error at its position in every command.
         try {
           m.image = load_image_texture(m.image_file);
