@@ -10,7 +10,8 @@ packages=(cmake g++ make pkg-config git
   libyaml-cpp-dev libcli11-dev libtbb-dev libpng-dev libopenexr-dev libassimp-dev
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev povray
   pybind11-dev python3-dev python3-numpy python3-pytest
-  clang-14 libclang-rt-14-dev)
+  clang-14 libclang-rt-14-dev
+  libcpp-httplib-dev chromium)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -82,19 +82,16 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.allow_extras();  // unknown words are reported below with a suggestion
   std::vector<std::pair<CLI::App*, raycast::cli::Action>> actions;
-  for (auto add : {
-           raycast::cli::add_render_command,
-           raycast::cli::add_cast_command,
-           raycast::cli::add_info_command,
-           raycast::cli::add_validate_command,
-           raycast::cli::add_bench_command,
-#ifdef RAYCAST_HAVE_SERVE
-           raycast::cli::add_serve_command,
-#endif
-       }) {
+  for (auto add : {raycast::cli::add_render_command, raycast::cli::add_cast_command,
+                   raycast::cli::add_info_command, raycast::cli::add_validate_command,
+                   raycast::cli::add_bench_command}) {
     auto action = add(app);
     actions.emplace_back(app.get_subcommands({}).back(), std::move(action));
   }
+#ifdef RAYCAST_HAVE_SERVE
+  actions.emplace_back(nullptr, raycast::cli::add_serve_command(app));
+  actions.back().first = app.get_subcommands({}).back();
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

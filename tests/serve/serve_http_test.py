@@ -4,6 +4,7 @@ while the last image stays, the page's requests, and hostile requests that must 
 server stays up. Run by ctest (serve_http); stdlib only."""
 import os
 import re
+import shutil
 import struct
 import sys
 import tempfile
@@ -55,6 +56,51 @@ def image(server):
     status, headers, data = server.request("GET", "/image.png")
     assert status == 200 and headers["Content-Type"] == "image/png", (status, headers)
     return int(headers["X-Raycast-Frame"]), data
+
+
+def check_camera_saves(tmp):
+    """Save camera on other layouts: a block-style camera (with comments around it), no camera at
+    all, and a JSON scene (which gets a sidecar file instead)."""
+    camera = {"position": [0.5, 1, -4], "look_at": [0, 0.25, 0], "up": [0, 1, 0], "fov": 30}
+    line = ("camera: {type: perspective, position: [0.5,1,-4], look_at: [0,0.25,0], up: [0,1,0], "
+            "fov: 30}")
+    rest = SCENE.split("\n", 1)[1]
+    block = ("# a comment before\ncamera:\n  type: perspective\n  position: [0, 0, -5]  # eye\n"
+             "  look_at: [0, 0, 0]\n\n# about the image\n")
+    cases = [
+        ("block.yaml", block + rest, "# a comment before\n" + line + "\n\n# about the image\n" + rest),
+        ("none.yaml", rest, rest + line + "\n"),
+    ]
+    for name, text, expected in cases:
+        path = os.path.join(tmp, name)
+        write(path, text)
+        server = Server(path)
+        try:
+            final_after(server, 0)
+            assert server.post("/camera", camera)[0] == 200
+            status, saved = server.post("/camera/save")
+            assert status == 200 and not saved["sidecar"], saved
+            with open(path) as f:
+                assert f.read() == expected, name
+            assert server.stop() == 0
+        finally:
+            if server.proc.poll() is None:
+                server.proc.kill()
+    path = os.path.join(tmp, "scene.json")
+    write(path, '{"objects": [{"sphere": {"center": [0, 0, 0], "radius": 1}}],\n'
+                ' "image": {"width": 32, "height": 24}}\n')
+    server = Server(path)
+    try:
+        final_after(server, 0)
+        assert server.post("/camera", camera)[0] == 200
+        status, saved = server.post("/camera/save")
+        assert status == 200 and saved["sidecar"] and saved["written"] == path + ".camera.yaml"
+        with open(path + ".camera.yaml") as f:
+            assert f.read().splitlines()[1] == line
+        assert server.stop() == 0
+    finally:
+        if server.proc.poll() is None:
+            server.proc.kill()
 
 
 def main():
@@ -198,6 +244,8 @@ def main():
     finally:
         if server.proc.poll() is None:
             server.proc.kill()
+    check_camera_saves(tmp)
+    shutil.rmtree(tmp, ignore_errors=True)
     print("serve_http: all checks passed")
 
 

@@ -20,8 +20,9 @@ struct RouteLimits {
 };
 
 /// Registers every route on `server`. `hosts` are the Host header values accepted ("127.0.0.1:PORT"
-/// and the like): a request naming another host is refused (DNS rebinding). POST requests must be
-/// application/json from the page's own origin (a foreign page cannot drive the server).
+/// and the like; empty: any): a request naming another host is refused (DNS rebinding). POST
+/// requests must be application/json from the page's own origin (a foreign page cannot drive the
+/// server).
 void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<std::string>& hosts,
                 const RouteLimits& limits);
 

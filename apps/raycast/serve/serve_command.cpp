@@ -23,12 +23,13 @@ struct Options {
   int port = 8080, threads = 0;
 };
 
-/// The Host header values a browser sends for this server.
+/// The Host header values a browser sends for this server; empty (any) when it listens on every
+/// interface, since the machine's names and addresses are not known here.
 std::vector<std::string> accepted_hosts(const std::string& host, int port) {
+  if (host == "0.0.0.0" || host == "::") return {};
   const std::string p = ":" + std::to_string(port);
   std::vector<std::string> hosts = {host + p};
-  if (host == "127.0.0.1" || host == "localhost" || host == "::1" || host == "0.0.0.0" ||
-      host == "::")
+  if (host == "127.0.0.1" || host == "localhost" || host == "::1")
     for (const char* h : {"127.0.0.1", "localhost", "[::1]"}) hosts.push_back(h + p);
   if (host.find(':') != std::string::npos) hosts.push_back("[" + host + "]" + p);
   return hosts;
