@@ -3,7 +3,8 @@ each pass on its canvas; once the final pass is drawn the page (in its ?test=1 m
 event stream and puts the canvas, read back as a PNG data URL, into the DOM, which
 `chromium --dump-dom` prints. The canvas must equal `raycast render` of the same scene: every
 channel within 1 of 255 (colour management or canvas round trips could move a code by one; we
-expect and report 0). Skipped (exit 77) when Chromium is not installed."""
+expect and report 0). The page also checks its camera gestures' geometry (orbit, pan, zoom) in
+the browser and reports "ok" in the DOM. Skipped (exit 77) when Chromium is not installed."""
 import base64
 import os
 import re
@@ -62,6 +63,8 @@ def main():
                           r'([A-Za-z0-9+/=]+)</pre>', result.stdout)
         assert match, "no final image in the page's DOM:\n" + result.stdout[-2000:] + \
             result.stderr[-2000:]
+        self_test = re.search(r'<pre id="self-test">([^<]*)</pre>', result.stdout)
+        assert self_test and self_test.group(1) == "ok", self_test and self_test.group(1)
         state = server.get_json("/state")
         assert state["final"] and int(match.group(1)) == state["frame"], (match.group(1), state)
         canvas = base64.b64decode(match.group(2))
