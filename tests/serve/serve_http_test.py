@@ -103,6 +103,27 @@ def check_camera_saves(tmp):
             server.proc.kill()
 
 
+def check_broken_at_start(tmp):
+    """A scene that does not load at start: the server runs, shows the error, has no image, stays
+    idle through view changes, and renders once the file is fixed."""
+    path = os.path.join(tmp, "late.yaml")
+    write(path, SCENE.replace("radius: 1}", "radius: -1}"))
+    server = Server(path)
+    try:
+        state = server.wait(lambda s: s["error"] != "")
+        assert re.search(r"late\.yaml:9:\d+: sphere\.radius must be > 0", state["error"]), state
+        assert server.request("GET", "/image.png")[0] == 503
+        assert server.post("/camera/reset")[0] == 200
+        assert server.post("/pick", {"x": 1, "y": 1})[0] == 409
+        time.sleep(0.3)
+        write(path, SCENE)
+        final_after(server, 0)
+        assert server.stop() == 0
+    finally:
+        if server.proc.poll() is None:
+            server.proc.kill()
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix="raycast_serve_http_")
     scene = os.path.join(tmp, "scene.yaml")
@@ -216,6 +237,9 @@ def main():
         assert status == 403, status
         status, _, _ = server.request("GET", "/state", headers={"Host": "evil.example:80"})
         assert status == 403, status
+        status, _, _ = server.request("GET", "/image.png",
+                                      headers={"Range": "bytes=" + ",".join(["0-"] * 1000)})
+        assert status == 416, status
         status, _, _ = server.request("PUT", "/camera", b"{}", {"Content-Type": "application/json"})
         assert 400 <= status < 500, status
         assert server.get_json("/state")["camera"]["fov"] == 35  # nothing bad was applied
@@ -245,6 +269,7 @@ def main():
         if server.proc.poll() is None:
             server.proc.kill()
     check_camera_saves(tmp)
+    check_broken_at_start(tmp)
     shutil.rmtree(tmp, ignore_errors=True)
     print("serve_http: all checks passed")
 

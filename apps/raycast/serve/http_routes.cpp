@@ -73,6 +73,12 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
       send_error(res, 403, "unexpected Host header");
       return httplib::Server::HandlerResponse::Handled;
     }
+    // httplib 0.11 answers any number of byte ranges, one copy of the body each: a hostile
+    // Range header could multiply a response by a thousand. Images are small; no ranges.
+    if (req.has_header("Range")) {
+      send_error(res, 416, "byte ranges are not served");
+      return httplib::Server::HandlerResponse::Handled;
+    }
     if (req.method == "POST") {
       const std::string type = req.get_header_value("Content-Type");
       if (type.rfind("application/json", 0) != 0) {

@@ -225,7 +225,10 @@ void PreviewLoop::run() {
         reload();
         continue;
       }
-      if (!scene_) continue;
+      if (!scene_) {  // a view change before any scene loaded: nothing to restart yet
+        restart_wanted_ = false;
+        continue;
+      }
       if (restart_wanted_) {
         restart_wanted_ = false;
         next_pass_ = 0;
@@ -257,6 +260,8 @@ void PreviewLoop::run() {
       image_width = image.width;
       image_height = image.height;
       png = std::make_shared<const std::string>(encode_png(image));
+    } catch (const SceneError& e) {  // an image texture that cannot be read
+      error = e.what();
     } catch (const std::bad_alloc&) {
       error = path_ + ": out of memory while rendering";
     } catch (const std::exception& e) {
