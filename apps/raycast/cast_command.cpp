@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -17,19 +18,27 @@ Action add_cast_command(CLI::App& app) {
     bool any = false, all = false, binary = false;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("SCENE", opt->scene, "Scene file (YAML or JSON)")->required();
-  cmd->add_option("--rays", opt->rays, "Ray file (default: standard input)");
+  cmd->add_option("SCENE", opt->scene, "Scene file (YAML or JSON; - reads standard input)")
+      ->required();
+  cmd->add_option("--rays", opt->rays, "Ray file (default and -: standard input)");
   auto* any = cmd->add_flag("--any", opt->any, "Write 1 when something blocks the segment, else 0");
   auto* all = cmd->add_flag("--all", opt->all, "Write every surface crossing along the ray");
   any->excludes(all);
   cmd->add_flag("--binary", opt->binary, "Read 8 and write 11 little-endian float64 per ray");
   return [opt] {
+    const bool rays_from_stdin = opt->rays.empty() || opt->rays == "-";
+    if (opt->scene == "-" && rays_from_stdin) {
+      std::fprintf(stderr,
+                   "raycast cast: the scene and the rays cannot both come from standard input: "
+                   "give --rays FILE\n");
+      return 2;
+    }
     const Scene scene = load_scene_file(opt->scene);
     CastOptions c;
     c.mode = opt->any ? CastMode::kAny : (opt->all ? CastMode::kAll : CastMode::kNearest);
     c.binary = opt->binary;
     std::ios::sync_with_stdio(false);
-    if (opt->rays.empty()) {
+    if (rays_from_stdin) {
       c.source = "<stdin>";
       run_cast(scene, std::cin, std::cout, c);
     } else {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "output_file.h"
 #include "scene/frame_pattern.h"
 #include "scene/loader.h"
 
@@ -43,6 +44,10 @@ int render_frames(const std::string& scene, const std::string& output, const std
     probe = expand_frame_pattern(output, first);
   } catch (const std::invalid_argument& e) {
     return usage_error(std::string("-o: ") + e.what());
+  }
+  if (const std::string problem = output_problem(probe); !problem.empty()) {
+    std::fprintf(stderr, "raycast render: %s\n", problem.c_str());
+    return 1;  // an output that cannot be written (docs/cli.md)
   }
   const int count = last - first + 1;
   int failed = 0;

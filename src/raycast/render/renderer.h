@@ -16,6 +16,9 @@ namespace raycast {
 /// (albedo: the surface colour C before any lighting, black for misses).
 enum class Aov { kDepth, kNormal, kId, kAlbedo };
 
+/// The most worker threads a render may ask for (`--threads`; 0 means all cores).
+inline constexpr int kMaxThreads = 4096;
+
 struct RenderOptions {
   int width = 0;                             // > 0 overrides the scene's image.width
   int height = 0;                            // > 0 overrides image.height

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <vector>
 
@@ -344,6 +345,27 @@ class Loader {
     return obj;
   }
 
+  // While alive, `name` is on the stack of library entries being read (cycle detection) and, when
+  // `copying`, objects are counted against kMaxExpandedObjects; undone on every exit, throws too.
+  class Expansion {
+   public:
+    Expansion(Loader& loader, const std::string& name, bool copying)
+        : loader_(loader), counts_(copying) {
+      loader_.expanding_.push_back(name);
+      if (counts_) ++loader_.copying_;
+    }
+    ~Expansion() {
+      if (counts_) --loader_.copying_;
+      loader_.expanding_.pop_back();
+    }
+    Expansion(const Expansion&) = delete;
+    Expansion& operator=(const Expansion&) = delete;
+
+   private:
+    Loader& loader_;
+    bool counts_;
+  };
+
   const YAML::Node& library_entry(const YAML::Node& use) {
     if (!use.IsScalar()) fail_at(ctx_, use, "use must name a library entry, got " + describe(use));
     const auto it = library_.find(use.Scalar());
@@ -382,11 +404,8 @@ class Loader {
       const YAML::Node& def = library_entry(body);
       if (!expanding_.empty()) {
         // Inside a library entry: expanded in place, so that prototypes never hold instances.
-        expanding_.push_back(body.Scalar());
-        ++copying_;
+        const Expansion guard(*this, body.Scalar(), true);
         read_object(def, depth + 1, entry, here, out);
-        --copying_;
-        expanding_.pop_back();
         return;
       }
       Object obj;
@@ -427,12 +446,8 @@ class Loader {
       return read_csg_operation(node[key], key, depth, tree, here);
     if (key == "use") {
       const YAML::Node& def = library_entry(node[key]);
-      expanding_.push_back(node[key].Scalar());
-      ++copying_;
-      const std::int32_t code = read_csg_operand(def, depth + 1, tree, here);
-      --copying_;
-      expanding_.pop_back();
-      return code;
+      const Expansion guard(*this, node[key].Scalar(), true);
+      return read_csg_operand(def, depth + 1, tree, here);
     }
     Object leaf = read_shape(node, key, here, -1);
     if (!is_closed(leaf))
@@ -458,9 +473,10 @@ class Loader {
     for (const std::string& name : order) {
       const YAML::Node def = library_.at(name);
       std::vector<Object> objects;
-      expanding_.push_back(name);
-      read_object(def, 1, -1, Placement{std::nullopt, -1}, objects);
-      expanding_.pop_back();
+      {
+        const Expansion guard(*this, name, false);
+        read_object(def, 1, -1, Placement{std::nullopt, -1}, objects);
+      }
       prototypes_[name] = make_prototype(std::move(objects));
     }
   }
@@ -499,6 +515,12 @@ Scene load_scene_text(const std::string& text, const std::string& name, const st
 }
 
 Scene load_scene_file(const std::string& path, int frame) {
+  if (path == "-") {  // the CLI's convention for standard input (docs/cli.md)
+    std::stringstream ss;
+    ss << std::cin.rdbuf();
+    if (std::cin.bad()) throw SceneError("<stdin>", 0, 0, "cannot read the scene");
+    return load_scene_text(ss.str(), "<stdin>", ".", frame);
+  }
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw SceneError(path, 0, 0, "is a directory, not a scene file");
