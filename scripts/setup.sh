@@ -11,7 +11,8 @@ packages=(cmake g++ make pkg-config git
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev povray
   pybind11-dev python3-dev python3-numpy python3-pytest
   clang-14 libclang-rt-14-dev
-  libopenmpi-dev openmpi-bin)
+  libopenmpi-dev openmpi-bin
+  libcpp-httplib-dev chromium)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -14,5 +14,6 @@ Action add_info_command(CLI::App& app);
 Action add_render_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
 Action add_validate_command(CLI::App& app);
+Action add_serve_command(CLI::App& app);  // built with cpp-httplib (RAYCAST_HAVE_SERVE)
 
 }  // namespace raycast::cli

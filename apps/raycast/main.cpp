@@ -29,6 +29,9 @@ std::string version_text() {
 #ifdef RAYCAST_MPI
       {"mpi", true},
 #endif
+#ifdef RAYCAST_HAVE_SERVE
+      {"serve", true},
+#endif
   };
   for (const auto& [name, present] : parts)
     if (present) text += std::string(" ") + name;
@@ -88,6 +91,10 @@ int main(int argc, char** argv) {
     auto action = add(app);
     actions.emplace_back(app.get_subcommands({}).back(), std::move(action));
   }
+#ifdef RAYCAST_HAVE_SERVE
+  actions.emplace_back(nullptr, raycast::cli::add_serve_command(app));
+  actions.back().first = app.get_subcommands({}).back();
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -147,6 +147,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     render_adaptive(
         aa, seed,
         [&](double x, double y, SampleState& state) {
+          if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return Color{};
           return integrator.li(camera.ray(x, y), state);
         },
         image, adaptive, [&] { rows.advance(); }, RasterWindow{rect.x0, rect.y0, width, height});
@@ -176,6 +177,8 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
                       std::uint64_t& counter = rays.local();
                       for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
                         for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+                          if (options.cancel && options.cancel->load(std::memory_order_relaxed))
+                            return;
                           const int y1 = std::min(rect.y1, rect.y0 + (ty + 1) * kTileSize);
                           const int x1 = std::min(rect.x1, rect.x0 + (tx + 1) * kTileSize);
                           for (int y = rect.y0 + ty * kTileSize; y < y1; ++y) {

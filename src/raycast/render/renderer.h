@@ -2,6 +2,7 @@
 // Whole images: pixels in 16x16 tiles over oneTBB, `samples` stratified jittered samples per
 // pixel averaged in linear light (a box filter), each pixel's random numbers seeded by (x, y,
 // scene seed) so that the result does not depend on the thread count.
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -36,6 +37,9 @@ struct RenderOptions {
   /// Render only this part of the full image (a tile of a distributed render): the result is
   /// the rectangle's size and each of its pixels is bit-identical to the whole render's.
   std::optional<PixelRect> region;
+  /// When set and true, the render stops early and its image is incomplete (`raycast serve`
+  /// restarts a pass when the scene or the view changes).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RenderStats {

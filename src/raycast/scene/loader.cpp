@@ -27,7 +27,9 @@ constexpr const char* kCompoundKeys = "group, union, intersection, difference, u
 
 class Loader {
  public:
-  Loader(SourceContext ctx, Scene& scene) : ctx_(std::move(ctx)), scene_(scene) {}
+  Loader(SourceContext ctx, Scene& scene) : ctx_(std::move(ctx)), scene_(scene) {
+    ctx_.files = &scene_.marks.files;
+  }
 
   void load(const YAML::Node& root) {
     if (root.IsNull())

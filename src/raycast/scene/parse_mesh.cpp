@@ -67,6 +67,7 @@ ShapeVariant parse_shape(std::type_identity<MeshShape>, Fields& f) {
     const std::string name = f.string("file");
     const std::filesystem::path p(name);
     const std::string path = p.is_absolute() ? name : (std::filesystem::path(ctx.dir) / p).string();
+    if (ctx.files) ctx.files->push_back(path);
     try {
       MeshFileData data = load_mesh_file(path);
       if (!usable(data.normals)) data.normals.clear();

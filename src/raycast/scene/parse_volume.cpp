@@ -24,7 +24,10 @@ std::string data_path(Fields& f, const std::string& key) {
     f.fail(key, f.name(key) + ": " + e.what());
   }
   const std::filesystem::path p(name);
-  return p.is_absolute() ? name : (std::filesystem::path(f.ctx().dir) / p).string();
+  const std::string path =
+      p.is_absolute() ? name : (std::filesystem::path(f.ctx().dir) / p).string();
+  if (f.ctx().files) f.ctx().files->push_back(path);
+  return path;
 }
 
 SceneError as_scene_error(const VolumeFileError& e) {
@@ -94,6 +97,7 @@ ShapeVariant from_grid(Fields& f) {
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   ScalarGrid grid;
   if (ext == ".raw") {
+    if (f.ctx().files) f.ctx().files->push_back(grid_sidecar_path(path));
     try {
       grid = read_raw_grid(path);
     } catch (const VolumeFileError& e) {

@@ -51,6 +51,7 @@ Material read_material(const SourceContext& ctx, const YAML::Node& node, const s
     } else if (t.has("image")) {
       Fields i(ctx, t.required("image"), "image");
       m.image_file = resolve(ctx, i.string("file"));
+      if (ctx.files) ctx.files->push_back(m.image_file);
       // Read now, so that a missing or bad file is an error at its position in every command.
       try {
         m.image = load_image_texture(m.image_file);

@@ -2,6 +2,7 @@
 // Where the parts of a loaded scene were written in its file, for checks made after loading
 // (`raycast validate`).
 
+#include <string>
 #include <vector>
 
 namespace raycast {
@@ -15,6 +16,7 @@ struct SourceMarks {
   SourceMark camera;                // the `camera` mapping
   std::vector<SourceMark> lights;   // by index in Scene::lights
   std::vector<SourceMark> entries;  // by top-level `objects` entry (Object::entry)
+  std::vector<std::string> files;  // data files read (meshes, textures, particles, grids, sidecars)
 };
 
 }  // namespace raycast

@@ -18,6 +18,7 @@ struct SourceContext {
   std::string file;  // as given by the user, used in messages
   std::string dir;   // folder that relative paths resolve against
   int frame = -1;    // the frame `{frame}` patterns in data paths expand to (-1: none given)
+  std::vector<std::string>* files = nullptr;  // when set, every data file read is appended
 };
 
 /// Throws SceneError at node's position (1-based line and column).

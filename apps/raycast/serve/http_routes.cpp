@@ -1,0 +1,236 @@
+#include "serve/http_routes.h"
+
+#include <httplib.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "scene/scene_error.h"
+#include "scene/yaml_reader.h"
+#include "serve/camera_request.h"
+#include "serve/camera_writeback.h"
+#include "serve/json_text.h"
+#include "serve/page_asset.h"
+#include "serve/pick.h"
+#include "serve/preview_loop.h"
+
+namespace raycast::serve {
+
+namespace {
+
+std::string state_json(const PreviewState& s, const std::string& scene) {
+  std::ostringstream out;
+  out << "{\"version\":" << s.version << ",\"frame\":" << s.frame << ",\"pass\":" << s.pass
+      << ",\"passes\":" << s.passes << ",\"final\":" << (s.final ? "true" : "false")
+      << ",\"width\":" << s.width << ",\"height\":" << s.height
+      << ",\"image_width\":" << s.image_width << ",\"image_height\":" << s.image_height
+      << ",\"spp\":" << s.spp << ",\"error\":" << json_string(s.error)
+      << ",\"integrator\":" << json_string(s.integrator) << ",\"camera\":" << camera_json(s.camera)
+      << ",\"camera_overridden\":" << (s.camera_overridden ? "true" : "false")
+      << ",\"first_ms\":" << json_number(s.first_ms) << ",\"final_ms\":" << json_number(s.final_ms)
+      << ",\"reloads\":" << s.reloads << ",\"scene\":" << json_string(scene) << "}";
+  return out.str();
+}
+
+void send_json(httplib::Response& res, int status, const std::string& json) {
+  res.status = status;
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(json, "application/json");
+}
+
+void send_error(httplib::Response& res, int status, const std::string& message) {
+  send_json(res, status, "{\"error\":" + json_string(message) + "}");
+}
+
+/// Runs a POST handler body, turning bad input into 400 with its message.
+template <class F>
+void guarded(httplib::Response& res, F&& body) {
+  try {
+    body();
+  } catch (const SceneError& e) {
+    send_error(res, 400, e.what());
+  } catch (const std::exception& e) {
+    send_error(res, 500, e.what());
+  }
+}
+
+}  // namespace
+
+void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<std::string>& hosts,
+                const RouteLimits& limits) {
+  server.set_payload_max_length(limits.max_body_bytes);
+
+  // Before any route: the Host must be ours (DNS rebinding), and a POST must be JSON from our own
+  // origin (a plain cross-site form or fetch cannot send application/json without a preflight,
+  // which this server never approves).
+  server.set_pre_routing_handler([hosts](const httplib::Request& req, httplib::Response& res) {
+    const std::string host = req.get_header_value("Host");
+    if (!hosts.empty() && std::find(hosts.begin(), hosts.end(), host) == hosts.end()) {
+      send_error(res, 403, "unexpected Host header");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    // httplib 0.11 answers any number of byte ranges, one copy of the body each: a hostile
+    // Range header could multiply a response by a thousand. Images are small; no ranges.
+    if (req.has_header("Range")) {
+      send_error(res, 416, "byte ranges are not served");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    if (req.method == "POST") {
+      const std::string type = req.get_header_value("Content-Type");
+      if (type.rfind("application/json", 0) != 0) {
+        send_error(res, 415, "POST bodies must be application/json");
+        return httplib::Server::HandlerResponse::Handled;
+      }
+      if (req.has_header("Origin") && req.get_header_value("Origin") != "http://" + host) {
+        send_error(res, 403, "cross-origin requests are refused");
+        return httplib::Server::HandlerResponse::Handled;
+      }
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+
+  server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+    if (!res.body.empty()) return;  // a route's own message
+    const char* what = res.status == 404   ? "not found"
+                       : res.status == 413 ? "request too large"
+                       : res.status == 405 ? "method not allowed"
+                                           : "bad request";
+    send_error(res, res.status, what);
+  });
+  server.set_exception_handler([](const httplib::Request&, httplib::Response& res,
+                                  std::exception_ptr) { send_error(res, 500, "internal error"); });
+
+  server.Get("/", [](const httplib::Request&, httplib::Response& res) {
+    const std::string_view page = page_html();
+    res.set_header("Cache-Control", "no-store");
+    res.set_header("Content-Security-Policy",
+                   "default-src 'self'; img-src 'self' data: blob:; style-src 'unsafe-inline'; "
+                   "script-src 'unsafe-inline'");
+    res.set_content(page.data(), page.size(), "text/html; charset=utf-8");
+  });
+
+  server.Get("/state", [&loop](const httplib::Request&, httplib::Response& res) {
+    send_json(res, 200, state_json(loop.state(), loop.scene_path()));
+  });
+
+  server.Get("/image.png", [&loop](const httplib::Request& req, httplib::Response& res) {
+    const PreviewState s = loop.state();
+    if (!s.png) return send_error(res, 503, "no image yet");
+    res.set_header("Cache-Control", "no-store");
+    res.set_header("X-Raycast-Frame", std::to_string(s.frame));
+    if (req.has_param("download")) {
+      const std::string stem = std::filesystem::path(loop.scene_path()).stem().string();
+      std::string name;
+      for (const char c : stem)  // a header-safe file name
+        name += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+      res.set_header("Content-Disposition", "attachment; filename=\"" + name + ".png\"");
+    }
+    res.set_content(*s.png, "image/png");
+  });
+
+  // Server-sent events: one "state" event per change. Every stream reads the one shared state, so
+  // many pages cost no more rendering; the number of streams is bounded (each holds a thread).
+  auto streams = std::make_shared<std::atomic<int>>(0);
+  const int max_streams = limits.max_event_streams;
+  server.Get("/events",
+             [&loop, streams, max_streams](const httplib::Request&, httplib::Response& res) {
+               if (streams->fetch_add(1) >= max_streams) {
+                 streams->fetch_sub(1);
+                 return send_error(res, 503, "too many open pages");
+               }
+               auto seen = std::make_shared<std::uint64_t>(0);
+               res.set_header("Cache-Control", "no-store");
+               res.set_chunked_content_provider(
+                   "text/event-stream",
+                   [&loop, seen](std::size_t, httplib::DataSink& sink) {
+                     if (loop.stopping()) return false;
+                     PreviewState s;
+                     std::string message;
+                     if (loop.wait_newer(*seen, std::chrono::seconds(5), s)) {
+                       *seen = s.version;
+                       message = "event: state\ndata: " + state_json(s, loop.scene_path()) + "\n\n";
+                     } else {
+                       message = ": keep-alive\n\n";  // also finds closed connections
+                     }
+                     if (loop.stopping()) return false;
+                     return sink.write(message.data(), message.size());
+                   },
+                   [streams](bool) { streams->fetch_sub(1); });
+             });
+
+  const std::size_t max_body = limits.max_body_bytes;
+  server.Post("/camera", [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
+    guarded(res, [&] {
+      CameraDesc current;
+      loop.scene(&current);
+      loop.set_camera(parse_camera_request(req.body.substr(0, max_body + 1), current));
+      send_json(res, 200, state_json(loop.state(), loop.scene_path()));
+    });
+  });
+
+  server.Post("/camera/reset", [&loop](const httplib::Request&, httplib::Response& res) {
+    loop.reset_camera();
+    send_json(res, 200, state_json(loop.state(), loop.scene_path()));
+  });
+
+  server.Post("/camera/save", [&loop](const httplib::Request&, httplib::Response& res) {
+    guarded(res, [&] {
+      CameraDesc camera;
+      if (!loop.scene(&camera)) return send_error(res, 409, "the scene has not loaded yet");
+      const WriteResult written = write_camera(loop.scene_path(), camera);
+      std::ostringstream out;
+      out << "{\"written\":" << json_string(written.path)
+          << ",\"sidecar\":" << (written.sidecar ? "true" : "false")
+          << ",\"reason\":" << json_string(written.reason) << "}";
+      send_json(res, 200, out.str());
+    });
+  });
+
+  server.Post("/integrator",
+              [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
+                guarded(res, [&] {
+                  const YAML::Node root = parse_request_object(req.body, max_body);
+                  const SourceContext ctx{"request", "."};
+                  Fields f(ctx, root, "request");
+                  const std::string name = f.string("integrator");
+                  f.finish();
+                  static const std::pair<const char*, IntegratorType> kNames[] = {
+                      {"whitted", IntegratorType::kWhitted},
+                      {"raycast", IntegratorType::kRaycast},
+                      {"depth", IntegratorType::kDepth},
+                      {"normal", IntegratorType::kNormal},
+                      {"id", IntegratorType::kId}};
+                  for (const auto& [n, type] : kNames)
+                    if (name == n) {
+                      loop.set_integrator(type);
+                      return send_json(res, 200, state_json(loop.state(), loop.scene_path()));
+                    }
+                  send_error(res, 400, "integrator must be whitted, raycast, depth, normal or id");
+                });
+              });
+
+  server.Post("/pick", [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
+    guarded(res, [&] {
+      const YAML::Node root = parse_request_object(req.body, max_body);
+      const SourceContext ctx{"request", "."};
+      Fields f(ctx, root, "pick");
+      const double x = f.number("x"), y = f.number("y");
+      f.finish();
+      CameraDesc camera;
+      const std::shared_ptr<const Scene> scene = loop.scene(&camera);
+      if (!scene) return send_error(res, 409, "the scene has not loaded yet");
+      const int w = scene->image.width, h = scene->image.height;
+      if (!(x >= 0 && x < w && y >= 0 && y < h))
+        return send_error(res, 400,
+                          "x and y must lie inside the " + std::to_string(w) + "x" +
+                              std::to_string(h) + " image");
+      send_json(res, 200, pick_json(*scene, camera, w, h, x, y));
+    });
+  });
+}
+
+}  // namespace raycast::serve
