@@ -73,6 +73,9 @@ DistanceIndex::DistanceIndex(const raycast::Scene& scene) {
                        ": distances cover meshes, plane, full sphere, box, ellipsoid, full "
                        "cylinder and cone, torus and triangle (docs/library.md)";
     }
+    if (e.closed)
+      for (int a = 0; a < 3; ++a)
+        magnitude_ = std::max({magnitude_, std::abs(e.box.lo[a]), std::abs(e.box.hi[a])});
     entries_.push_back(std::move(e));
   }
 }

@@ -16,6 +16,9 @@ namespace raycast::api {
 namespace {
 
 constexpr std::size_t kGrain = 64;
+// Points nearer to a surface than this times the scene's magnitude never share a sign: it is far
+// above every on-surface tolerance of public/distance_index.cpp (16 float ulps for meshes).
+constexpr double kSignReuseFloor = 1e-4;
 
 void check_points(std::span<const double> points, std::size_t out_size, std::size_t per_point,
                   const char* call) {
@@ -73,23 +76,32 @@ std::vector<std::uint32_t> spatial_order(std::span<const double> points) {
   return order;
 }
 
-// f(i) for every point, in parallel; in spatial order when the batch is large enough for it to
-// pay (and the indices fit the order's 32 bits).
-template <class F>
-void for_each_point(std::span<const double> points, F&& f) {
+// f(i, state) for every point, in parallel, with one State per block of consecutive points; in
+// spatial order when the batch is large enough for it to pay (and the indices fit the order's 32
+// bits), so that consecutive points of a block are neighbours.
+template <class State, class F>
+void for_each_point_with(std::span<const double> points, F&& f) {
   const std::size_t n = points.size() / 3;
   if (n < 256 || n > 0xffffffffu) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i != r.end(); ++i) f(i);
+                        State state;
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) f(i, state);
                       });
     return;
   }
   const std::vector<std::uint32_t> order = spatial_order(points);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) f(order[i]);
+                      State state;
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) f(order[i], state);
                     });
+}
+
+template <class F>
+void for_each_point(std::span<const double> points, F&& f) {
+  struct None {};
+  for_each_point_with<None>(points, [&](std::size_t i, None&) { f(i); });
 }
 
 }  // namespace
@@ -127,7 +139,17 @@ void Scene::signed_distance(std::span<const double> points, std::span<double> ou
   const DistanceIndex& index = ready().distance_index();
   if (!index.unsupported().empty()) throw NotImplementedError(index.unsupported());
   check_points(points, out.size(), 1, "signed_distance");
-  for_each_point(points, [&](std::size_t i) {
+  // The sign of the previous point of the block is reused when this point lies well inside the
+  // ball around it that no surface meets (radius: its distance), both points being far beyond
+  // every on-surface tolerance: inside-ness of a closed solid is constant in such a ball. Exact,
+  // and with the points in spatial order it saves most parity queries.
+  struct Previous {
+    raycast::Vec3 p;
+    double d = 0;  // 0: no usable previous point
+    bool inside = false;
+  };
+  const double magnitude = index.magnitude();
+  for_each_point_with<Previous>(points, [&](std::size_t i, Previous& prev) {
     const raycast::Vec3 p = point_at(points, i);
     if (!raycast::is_finite(p)) {
       out[i] = std::numeric_limits<double>::quiet_NaN();
@@ -135,7 +157,17 @@ void Scene::signed_distance(std::span<const double> points, std::span<double> ou
     }
     const DistanceIndex::Nearest n = index.nearest(p);
     const double d = n.object >= 0 ? std::sqrt(n.distance2) : raycast::kInfinity;
-    out[i] = index.inside(p, n.distance2) ? -d : d;
+    const double scale =
+        std::max({magnitude, std::abs(p.x), std::abs(p.y), std::abs(p.z)}) * kSignReuseFloor;
+    const bool far = d > scale && std::isfinite(d);
+    bool inside;
+    if (far && prev.d > 0 && raycast::length(p - prev.p) < 0.5 * prev.d) {
+      inside = prev.inside;
+    } else {
+      inside = index.inside(p, n.distance2);
+    }
+    prev = far && std::isfinite(scale) ? Previous{p, d, inside} : Previous{};
+    out[i] = inside ? -d : d;
   });
 }
 
