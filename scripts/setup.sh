@@ -10,8 +10,9 @@ packages=(cmake g++ make pkg-config git
   libyaml-cpp-dev libcli11-dev libtbb-dev libpng-dev libopenexr-dev libassimp-dev
   libgtest-dev libgmock-dev libbenchmark-dev libembree-dev povray
   pybind11-dev python3-dev python3-numpy python3-pytest
-  libopenvdb-dev libboost-dev
-  clang-14 libclang-rt-14-dev)
+  clang-14 libclang-rt-14-dev
+  libopenmpi-dev openmpi-bin
+  libopenvdb-dev libboost-dev)
 
 missing=()
 for p in "${packages[@]}"; do

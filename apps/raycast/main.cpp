@@ -26,6 +26,9 @@ std::string version_text() {
 #ifdef RAYCAST_HAVE_EMBREE
       {"embree-peer", true},
 #endif
+#ifdef RAYCAST_MPI
+      {"mpi", true},
+#endif
   };
   for (const auto& [name, present] : parts)
     if (present) text += std::string(" ") + name;

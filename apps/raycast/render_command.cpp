@@ -12,9 +12,13 @@
 #include <vector>
 
 #include "commands.h"
+#include "distributed/distributed.h"
+#include "distributed/launch.h"
 #include "io/image.h"
+#include "output_file.h"
 #include "render/renderer.h"
 #include "render_frames.h"
+#include "render_output.h"
 #include "scene/demo_scene.h"
 #include "scene/loader.h"
 
@@ -30,6 +34,12 @@ struct Options {
 int usage_error(const std::string& message) {
   std::fprintf(stderr, "raycast render: %s\n", message.c_str());
   return 2;
+}
+
+/// An output that cannot be written is not bad input (docs/cli.md: exit 1).
+int output_error(const std::string& message) {
+  std::fprintf(stderr, "raycast render: %s\n", message.c_str());
+  return 1;
 }
 
 /// `--antialias none` or `METHOD[,THRESHOLD[,DEPTH]]` (METHOD 1, 2, neighbour, subdivide or
@@ -71,42 +81,17 @@ bool parse_antialias(const std::string& text, AntialiasSettings& aa, std::string
   return true;
 }
 
-/// Depth in an 8-bit file: distances divided by twice the median finite distance and clamped
-/// (robust against a ground plane running to the horizon), misses white.
-void normalize_depth(Image& image) {
-  std::vector<float> finite;
-  for (std::size_t i = 0; i < image.rgb.size(); i += 3)
-    if (std::isfinite(image.rgb[i])) finite.push_back(image.rgb[i]);
-  float scale = 0;
-  if (!finite.empty()) {
-    auto middle = finite.begin() + std::ptrdiff_t(finite.size() / 2);
-    std::nth_element(finite.begin(), middle, finite.end());
-    scale = 2 * *middle;
-  }
-  for (float& d : image.rgb)
-    d = std::isfinite(d) ? (scale > 0 ? std::min(1.f, d / scale) : 0.f) : 1.f;
-}
-
-/// "out.png" + "depth" -> "out.depth.pfm" (next to the output).
-std::string aov_path(const std::string& output, const std::string& aov) {
-  std::filesystem::path p(output);
-  p.replace_extension();
-  return p.string() + "." + aov + ".pfm";
-}
-
-void save(Image image, const std::string& path, bool depth) {
-  if (depth && image_format_for(path) == ImageFormat::kPng) normalize_depth(image);
-  save_image(image, path);
-}
-
 }  // namespace
 
 Action add_render_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("render", "Render a scene (or the built-in demo) to an image");
   auto opt = std::make_shared<Options>();
-  cmd->add_option("SCENE", opt->scene, "Scene file (YAML or JSON); none renders the built-in demo");
+  cmd->add_option("SCENE", opt->scene,
+                  "Scene file (YAML or JSON; - reads standard input); none renders the built-in "
+                  "demo");
   cmd->add_option("-o,--output", opt->output,
-                  "Output image: .png (8-bit sRGB), .pfm or .exr (linear float); default out.png");
+                  "Output image: .png (8-bit sRGB), .pfm or .exr (linear float), - for PNG on "
+                  "standard output; default out.png");
   auto* width =
       cmd->add_option("--width", opt->width, "Image width in pixels (overrides the scene)");
   auto* height =
@@ -118,7 +103,8 @@ Action add_render_command(CLI::App& app) {
       cmd->add_option("--antialias", opt->antialias,
                       "Adaptive antialiasing: none, or METHOD[,THRESHOLD[,DEPTH]] with METHOD 1 "
                       "(neighbour), 2 (subdivide) or variance (overrides the scene and --spp)");
-  auto* threads = cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
+  auto* threads =
+      cmd->add_option("--threads", opt->threads, "Worker threads (default and 0: all cores)");
   cmd->add_option("--integrator", opt->integrator,
                   "whitted, raycast, depth, normal or id (overrides the scene)");
   cmd->add_option("--aov", opt->aovs,
@@ -129,15 +115,17 @@ Action add_render_command(CLI::App& app) {
   return [opt, width, height, spp, threads, antialias] {
     // Validate everything before the (possibly long) render.
     constexpr int kMaxSize = kMaxImageSide;  // also the --spp limit, like image.samples
-    const std::tuple<const char*, CLI::Option*, int, int> limits[] = {
-        {"--width", width, opt->width, kMaxSize},
-        {"--height", height, opt->height, kMaxSize},
-        {"--spp", spp, opt->spp, kMaxSize},
-        {"--threads", threads, opt->threads, 4096}};
-    for (const auto& [name, option, value, hi] : limits)
-      if (option->count() > 0 && (value < 1 || value > hi))
-        return usage_error(std::string(name) + " must be in [1, " + std::to_string(hi) + "], got " +
-                           std::to_string(value));
+    const std::tuple<const char*, CLI::Option*, int, int, int> limits[] = {
+        {"--width", width, opt->width, 1, kMaxSize},
+        {"--height", height, opt->height, 1, kMaxSize},
+        {"--spp", spp, opt->spp, 1, kMaxSize},
+        {"--threads", threads, opt->threads, 0, kMaxThreads}};
+    for (const auto& [name, option, value, lo, hi] : limits)
+      if (option->count() > 0 && (value < lo || value > hi)) {
+        std::ostringstream message;
+        message << name << " must be in [" << lo << ", " << hi << "], got " << value;
+        return usage_error(message.str());
+      }
     RenderOptions options;
     options.width = opt->width;
     options.height = opt->height;
@@ -179,10 +167,15 @@ Action add_render_command(CLI::App& app) {
         aovs.emplace_back(name, it->second);
       }
     }
-    try {
-      image_format_for(opt->output);
-    } catch (const ImageError& e) {
-      return usage_error(e.what());
+    if (is_stdout(opt->output)) {
+      if (!aovs.empty()) return usage_error("--aov writes files beside -o: it needs a file, not -");
+      if (!opt->frames.empty()) return usage_error("--frames writes one file per frame, not -");
+    } else {
+      try {
+        image_format_for(opt->output);
+      } catch (const ImageError& e) {
+        return usage_error(e.what());
+      }
     }
 
     // Refuse an image too large to allocate before loading (and building) the scene.
@@ -192,7 +185,16 @@ Action add_render_command(CLI::App& app) {
                          " pixels, got " + std::to_string(opt->width) + " x " +
                          std::to_string(opt->height));
     if (!opt->frames.empty()) return render_frames(opt->scene, opt->output, opt->frames, options);
+    if (const std::string problem = output_problem(opt->output); !problem.empty())
+      return output_error(problem);
+    if (distributed::active())  // under mpirun: tiles over the ranks (docs/distributed.md)
+      return distributed::render_image(opt->scene, opt->output, options, aovs);
     const Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
+    const IntegratorType integrator = options.integrator.value_or(scene.render.integrator);
+    if (scene.lights.empty() && integrator == IntegratorType::kWhitted)
+      std::fprintf(stderr,
+                   "raycast render: warning: the scene has no lights: the whitted integrator "
+                   "shows only ambient light and the background\n");
     const long long pixels =
         static_cast<long long>(opt->width > 0 ? opt->width : scene.image.width) *
         (opt->height > 0 ? opt->height : scene.image.height);
@@ -201,10 +203,9 @@ Action add_render_command(CLI::App& app) {
                          " pixels, got " + std::to_string(pixels));
     RenderStats stats;
     const Image image = render(scene, options, &stats);
-    const bool depth =
-        options.integrator.value_or(scene.render.integrator) == IntegratorType::kDepth;
+    const bool depth = integrator == IntegratorType::kDepth;
     try {
-      save(image, opt->output, depth);
+      save_render(image, opt->output, depth);
       for (const auto& [name, aov] : aovs) {
         RenderOptions aov_options = options;
         aov_options.aov = aov;
@@ -215,10 +216,11 @@ Action add_render_command(CLI::App& app) {
         stats.seconds += aov_stats.seconds;
       }
     } catch (const ImageError& e) {
-      return usage_error(e.what());
+      return output_error(e.what());
     }
     std::fprintf(stderr, "raycast render: %s -> %s: %s\n",
-                 opt->scene.empty() ? "<demo>" : opt->scene.c_str(), opt->output.c_str(),
+                 opt->scene.empty() ? "<demo>" : opt->scene.c_str(),
+                 is_stdout(opt->output) ? "<stdout>" : opt->output.c_str(),
                  format_summary(stats).c_str());
     return 0;
   };

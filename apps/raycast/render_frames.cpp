@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "distributed/distributed.h"
+#include "distributed/launch.h"
+#include "output_file.h"
 #include "scene/frame_pattern.h"
 #include "scene/loader.h"
 
@@ -22,6 +25,16 @@ bool parse_int(const std::string& s, int& v) {
 }
 
 }  // namespace
+
+RenderStats render_frame(const std::string& scene, const std::string& output, int frame,
+                         const RenderOptions& options, std::string& written) {
+  written = expand_frame_pattern(output, frame);
+  const Scene s = load_scene_file(scene, frame);
+  RenderStats stats;
+  const Image image = render(s, options, &stats);
+  save_image(image, written);
+  return stats;
+}
 
 int render_frames(const std::string& scene, const std::string& output, const std::string& frames,
                   const RenderOptions& options) {
@@ -44,16 +57,18 @@ int render_frames(const std::string& scene, const std::string& output, const std
   } catch (const std::invalid_argument& e) {
     return usage_error(std::string("-o: ") + e.what());
   }
+  if (const std::string problem = output_problem(probe); !problem.empty()) {
+    std::fprintf(stderr, "raycast render: %s\n", problem.c_str());
+    return 1;  // an output that cannot be written (docs/cli.md)
+  }
+  if (distributed::active()) return distributed::render_frames(scene, output, first, last, options);
   const int count = last - first + 1;
   int failed = 0;
   RenderStats total;
   for (int f = first; f <= last; ++f) {
-    const std::string out = expand_frame_pattern(output, f);
+    std::string out;
     try {
-      const Scene s = load_scene_file(scene, f);
-      RenderStats stats;
-      const Image image = render(s, options, &stats);
-      save_image(image, out);
+      const RenderStats stats = render_frame(scene, output, f, options, out);
       total.rays += stats.rays;
       total.seconds += stats.seconds;
       total.width = stats.width;

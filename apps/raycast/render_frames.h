@@ -13,4 +13,9 @@ namespace raycast::cli {
 int render_frames(const std::string& scene, const std::string& output, const std::string& frames,
                   const RenderOptions& options);
 
+/// One frame: loads the scene for `frame`, renders it and writes the output pattern expanded for
+/// it (returned in `written`). Throws SceneError or ImageError.
+RenderStats render_frame(const std::string& scene, const std::string& output, int frame,
+                         const RenderOptions& options, std::string& written);
+
 }  // namespace raycast::cli

@@ -12,7 +12,8 @@
 #   MODES     "1spp aa" (default), or one of them
 #   POV_AA    POV-Ray's antialiasing options (default "+A0.3": method 1, depth 3, no jitter)
 #   RAYCAST_AA raycast's (default "--antialias 1,0.3,3": the same method; docs/rendering.md)
-#   REF_SPP   samples per pixel of the reference (default 256); REF_DIR caches the references
+#   REF_SPP   samples per pixel of the reference (default 256, rendered with render.bailout 0:
+#             every ray traced to max_depth); REF_DIR caches the references
 #             (default /tmp/raycast-suite-ref; delete it after changing the renderer's output)
 #   RAYCAST   (default build/release/raycast); KEEP=dir keeps every image there
 # Each run's times come from the programs' own reports: POV-Ray's "Trace Time: ... (S seconds)"
@@ -85,9 +86,14 @@ for scene in "${scenes[@]}"; do
       read -r rt rc < <(best <"$tmp/o")
       pov_rmse=- our_rmse=-
       if [ "$mode" = aa ]; then
-        if [ ! -e "$ref" ]; then
-          "$raycast" render "$(yaml_of "$scene")" -o "$ref" --width "$width" --height "$height" \
-            --spp "$ref_spp" >/dev/null 2>&1
+        if [ ! -e "$ref" ]; then  # the exact image: a copy of the scene with render.bailout 0
+          yaml=$(yaml_of "$scene")
+          exact="$(dirname "$yaml")/.exact-$scene.yaml"  # beside it: relative paths still resolve
+          grep -q '^render: {' "$yaml" || { echo "$yaml: no 'render: {' line" >&2; exit 2; }
+          sed 's/^render: {/render: {bailout: 0, /' "$yaml" >"$exact"
+          "$raycast" render "$exact" -o "$ref" --width "$width" --height "$height" \
+            --spp "$ref_spp" >/dev/null 2>&1 || { rm -f "$exact"; exit 1; }
+          rm -f "$exact"
         fi
         pov_rmse=$(bench/povray/rmse.py "$tmp/pov.png" "$ref")
         our_rmse=$(bench/povray/rmse.py "$tmp/our.png" "$ref")

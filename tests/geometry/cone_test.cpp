@@ -6,13 +6,13 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "quadric_test_util.h"
 #include "scene/object.h"
+#include "shape_checks.h"
 
 namespace raycast {
 namespace {
 
-using qtest::Rng;
+using testing::Rng;
 
 TEST(Cone, HandRayThroughTheSide_HitsAtHalfHeight) {
   // radius 1, height 2: r(z) = 1 - z/2, so r(1) = 0.5 and the ray along x meets x = -0.5.
@@ -100,15 +100,15 @@ TEST(Cone, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
     Rng rng(53 + variant);
     int hits = 0;
     for (int i = 0; i < 2000; ++i) {
-      const Ray ray = qtest::random_ray(rng, 1.5);
-      SCOPED_TRACE("seed " + std::to_string(53 + variant) + ", " + qtest::describe(ray));
-      ASSERT_EQ(qtest::span_mismatches(c, ray, inside, -10, 10), 0);
+      const Ray ray = testing::random_ray(rng, 1.5);
+      SCOPED_TRACE("seed " + std::to_string(53 + variant) + ", " + testing::describe(ray));
+      ASSERT_EQ(testing::span_mismatches(c, ray, inside, -10, 10), 0);
       LocalHit h;
       const bool hit = intersect(c, ray, h);
-      ASSERT_EQ(hit, qtest::first_span_end(c, ray) < kInfinity);
+      ASSERT_EQ(hit, testing::first_span_end(c, ray) < kInfinity);
       if (!hit) continue;
       ++hits;
-      qtest::expect_outward_normal(c, ray, h, inside, 1e-7);
+      testing::expect_outward_normal(c, ray, h, inside, 1e-7);
     }
     EXPECT_GT(hits, 300);
   }
@@ -120,11 +120,11 @@ TEST(Cone, RandomRays_SideRootsMatchLongDouble) {
   Rng rng(59);
   int checked = 0;
   for (int i = 0; i < 3000; ++i) {
-    Ray ray = qtest::random_ray(rng, 1.5);
+    Ray ray = testing::random_ray(rng, 1.5);
     ray.tmin = -kInfinity;
     LocalHit h;
     if (!intersect(c, ray, h)) continue;
-    SCOPED_TRACE("seed 59, " + qtest::describe(ray));
+    SCOPED_TRACE("seed 59, " + testing::describe(ray));
     // Newton's method in long double from the returned t converges to the nearby root.
     const long double k = -0.9L / 1.6L;
     auto g = [&](long double t) {

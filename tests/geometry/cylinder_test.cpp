@@ -6,13 +6,13 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "quadric_test_util.h"
 #include "scene/object.h"
+#include "shape_checks.h"
 
 namespace raycast {
 namespace {
 
-using qtest::Rng;
+using testing::Rng;
 
 TEST(Cylinder, HandRayThroughTheSide_HitsAtFourAndLeavesAtSix) {
   const Cylinder c = make_cylinder(1, 0, 2);
@@ -113,16 +113,16 @@ TEST(Cylinder, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
   Rng rng(31);
   int hits = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = qtest::random_ray(rng, 1.5);
-    SCOPED_TRACE("seed 31, " + qtest::describe(ray));
-    ASSERT_EQ(qtest::span_mismatches(c, ray, inside, -10, 10), 0);
+    const Ray ray = testing::random_ray(rng, 1.5);
+    SCOPED_TRACE("seed 31, " + testing::describe(ray));
+    ASSERT_EQ(testing::span_mismatches(c, ray, inside, -10, 10), 0);
     LocalHit h;
     const bool hit = intersect(c, ray, h);
-    ASSERT_EQ(hit, qtest::first_span_end(c, ray) < kInfinity);
+    ASSERT_EQ(hit, testing::first_span_end(c, ray) < kInfinity);
     if (!hit) continue;
     ++hits;
-    EXPECT_EQ(h.t, qtest::first_span_end(c, ray));
-    qtest::expect_outward_normal(c, ray, h, inside, 1e-7);
+    EXPECT_EQ(h.t, testing::first_span_end(c, ray));
+    testing::expect_outward_normal(c, ray, h, inside, 1e-7);
   }
   EXPECT_GT(hits, 500);
 }
@@ -134,8 +134,8 @@ void expect_partial_matches_closed(double phi_max) {
   const Cylinder full = make_cylinder(0.8, -0.5, 1.2);
   Rng rng(37);
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = qtest::random_ray(rng, 1.5);
-    SCOPED_TRACE("seed 37, " + qtest::describe(ray));
+    const Ray ray = testing::random_ray(rng, 1.5);
+    SCOPED_TRACE("seed 37, " + testing::describe(ray));
     SpanList sp, sf;
     spans(part, ray, sp);
     spans(full, ray, sf);
@@ -174,8 +174,8 @@ TEST(Cylinder, FromTo_MatchesTheCanonicalCylinderMoved) {
   Rng rng(41);
   int hits = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = qtest::random_ray(rng, 2, 0.5 * (from + to));
-    SCOPED_TRACE("seed 41, " + qtest::describe(ray));
+    const Ray ray = testing::random_ray(rng, 2, 0.5 * (from + to));
+    SCOPED_TRACE("seed 41, " + testing::describe(ray));
     LocalHit a, b;
     const bool ha = intersect(moved, ray, a), hb = intersect(obj, ray, b);
     if (ha != hb) {

@@ -6,13 +6,13 @@
 #include <stdexcept>
 
 #include "geometry/sphere.h"
-#include "quadric_test_util.h"
 #include "scene/object.h"
+#include "shape_checks.h"
 
 namespace raycast {
 namespace {
 
-using qtest::Rng;
+using testing::Rng;
 
 TEST(Ellipsoid, HandRayAlongZ_CrossesAtTheSouthAndNorthPoles) {
   const Ellipsoid e = make_ellipsoid({1, 2, 3}, {2, 3, 4});
@@ -50,8 +50,8 @@ TEST(Ellipsoid, RandomRays_MatchAScaledSphere) {
   Rng rng(3);
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Ray ray = qtest::random_ray(rng, 1.5);
-    SCOPED_TRACE("seed 3, " + qtest::describe(ray));
+    const Ray ray = testing::random_ray(rng, 1.5);
+    SCOPED_TRACE("seed 3, " + testing::describe(ray));
     LocalHit a, b;
     const bool ha = intersect(e, ray, a), hb = intersect(obj, ray, b);
     ASSERT_EQ(ha, hb);
@@ -75,11 +75,11 @@ TEST(Ellipsoid, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
   auto inside = [&](const Vec3& p) { return contains(e, p); };
   Rng rng(5);
   for (int i = 0; i < 1000; ++i) {
-    const Ray ray = qtest::random_ray(rng, 1.5);
-    SCOPED_TRACE("seed 5, " + qtest::describe(ray));
-    ASSERT_EQ(qtest::span_mismatches(e, ray, inside, -10, 10), 0);
+    const Ray ray = testing::random_ray(rng, 1.5);
+    SCOPED_TRACE("seed 5, " + testing::describe(ray));
+    ASSERT_EQ(testing::span_mismatches(e, ray, inside, -10, 10), 0);
     LocalHit h;
-    if (intersect(e, ray, h)) qtest::expect_outward_normal(e, ray, h, inside, 1e-7);
+    if (intersect(e, ray, h)) testing::expect_outward_normal(e, ray, h, inside, 1e-7);
   }
 }
 

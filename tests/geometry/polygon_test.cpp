@@ -7,12 +7,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "quadric_test_util.h"
+#include "shape_checks.h"
 
 namespace raycast {
 namespace {
 
-using qtest::Rng;
+using testing::Rng;
 
 // The winding number of the 2D polygon around q by summed angles in long double: an
 // independent inside test for points off the edges.
@@ -73,7 +73,7 @@ TEST(Polygon, ConcaveStar_RandomRaysMatchTheWindingNumber) {
     const Vec3 target = xf.point(q);
     const Vec3 o = target + 3.0 * rng.direction();
     const Ray ray{o, target - o};
-    SCOPED_TRACE("seed 17, " + qtest::describe(ray));
+    SCOPED_TRACE("seed 17, " + testing::describe(ray));
     LocalHit h;
     const bool hit = intersect(p, ray, h);
     EXPECT_EQ(hit, winding_inside(v, q.x, q.y));

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "quadric_test_util.h"
+#include "shape_checks.h"
 
 namespace raycast {
 namespace {
 
-using qtest::Rng;
+using testing::Rng;
 
 // The box [lo, hi] as six half-spaces.
 Polyhedron box_polyhedron(const Vec3& lo, const Vec3& hi) {
@@ -46,8 +46,8 @@ TEST(Polyhedron, RandomRays_MatchTheBoxSlabTest) {
   Rng rng(83);
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Ray ray = qtest::random_ray(rng, 1.5);
-    SCOPED_TRACE("seed 83, " + qtest::describe(ray));
+    const Ray ray = testing::random_ray(rng, 1.5);
+    SCOPED_TRACE("seed 83, " + testing::describe(ray));
     double t0 = kInfinity, t1 = kInfinity;
     const bool expect = slab_interval(box, ray.o, reciprocal(ray.d), t0, t1) && t1 >= 0;
     LocalHit h;
@@ -80,22 +80,22 @@ TEST(Polyhedron, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
     Rng rng(89);
     int hits = 0;
     for (int i = 0; i < 2000; ++i) {
-      const Ray ray = qtest::random_ray(rng, 1.5);
-      SCOPED_TRACE("seed 89, " + qtest::describe(ray));
-      ASSERT_EQ(qtest::span_mismatches(*p, ray, inside, -20, 20), 0);
+      const Ray ray = testing::random_ray(rng, 1.5);
+      SCOPED_TRACE("seed 89, " + testing::describe(ray));
+      ASSERT_EQ(testing::span_mismatches(*p, ray, inside, -20, 20), 0);
       LocalHit h;
       const bool hit = intersect(*p, ray, h);
-      ASSERT_EQ(hit, qtest::first_span_end(*p, ray) < kInfinity);
+      ASSERT_EQ(hit, testing::first_span_end(*p, ray) < kInfinity);
       if (!hit) continue;
       ++hits;
-      EXPECT_EQ(h.t, qtest::first_span_end(*p, ray));
-      qtest::expect_outward_normal(*p, ray, h, inside, 1e-7);
+      EXPECT_EQ(h.t, testing::first_span_end(*p, ray));
+      testing::expect_outward_normal(*p, ray, h, inside, 1e-7);
     }
     EXPECT_GT(hits, 300);
     // The hull holds every crossing.
     if (bounds(*p).is_bounded()) {
       for (int i = 0; i < 200; ++i) {
-        const Ray ray = qtest::random_ray(rng, 1.5);
+        const Ray ray = testing::random_ray(rng, 1.5);
         LocalHit h;
         if (intersect(*p, ray, h)) {
           EXPECT_TRUE(bounds(*p).contains(ray.at(h.t)));

@@ -9,12 +9,12 @@
 #include "geometry/quadric.h"
 #include "geometry/slab.h"
 #include "geometry/spawn.h"
-#include "quadric_test_util.h"
+#include "shape_checks.h"
 
 namespace raycast {
 namespace {
 
-using qtest::Rng;
+using testing::Rng;
 
 // For random hits, rays spawned into the outer hemisphere must not hit the convex shape again.
 // Returns the number of re-hits.
@@ -23,7 +23,7 @@ int rehits(const S& s, std::uint64_t seed, double extent) {
   Rng rng(seed);
   int bad = 0, hits = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Ray ray = qtest::random_ray(rng, extent);
+    const Ray ray = testing::random_ray(rng, extent);
     LocalHit h;
     if (!intersect(s, ray, h)) continue;
     ++hits;

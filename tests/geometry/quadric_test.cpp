@@ -5,13 +5,13 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "quadric_test_util.h"
 #include "scene/object.h"
+#include "shape_checks.h"
 
 namespace raycast {
 namespace {
 
-using qtest::Rng;
+using testing::Rng;
 
 constexpr QuadricKind kAllKinds[] = {QuadricKind::kEllipsoid,    QuadricKind::kParaboloid,
                                      QuadricKind::kHyperboloid1, QuadricKind::kHyperboloid2,
@@ -83,9 +83,9 @@ TEST(Quadric, KindCoefficientsAndMatrix_GiveTheSameHits) {
     for (int i = 0; i < 10; ++i) EXPECT_DOUBLE_EQ(a.c[i], b.c[i]) << "coefficient " << i;
     Rng rng(7);
     for (int i = 0; i < 500; ++i) {
-      const Ray ray = qtest::random_ray(rng, 2);
+      const Ray ray = testing::random_ray(rng, 2);
       LocalHit ha, hb;
-      ASSERT_EQ(intersect(a, ray, ha), intersect(b, ray, hb)) << qtest::describe(ray);
+      ASSERT_EQ(intersect(a, ray, ha), intersect(b, ray, hb)) << testing::describe(ray);
       if (ha.t < kInfinity) {
         EXPECT_EQ(ha.t, hb.t);
       }
@@ -122,8 +122,8 @@ TEST(Quadric, TransformedCoefficients_MatchTheTransformedObject) {
     Rng rng(11);
     int hits = 0;
     for (int i = 0; i < 1000; ++i) {
-      const Ray ray = qtest::random_ray(rng, 2);
-      SCOPED_TRACE(qtest::describe(ray));
+      const Ray ray = testing::random_ray(rng, 2);
+      SCOPED_TRACE(testing::describe(ray));
       LocalHit h1, h2;
       const bool b1 = intersect(moved, ray, h1), b2 = intersect(obj, ray, h2);
       long double r[2];
@@ -144,12 +144,12 @@ TEST(Quadric, RandomRays_RootsMatchLongDoubleTo1e9) {
     SCOPED_TRACE("seed " + std::to_string(23 + static_cast<int>(k)));
     int checked = 0;
     for (int i = 0; i < 2000; ++i) {
-      Ray ray = qtest::random_ray(rng, 3);
+      Ray ray = testing::random_ray(rng, 3);
       ray.tmin = -kInfinity;
       long double r[2];
       const int n = roots_ld(q.c, ray, r);
       if (n == 0) continue;
-      SCOPED_TRACE(qtest::describe(ray));
+      SCOPED_TRACE(testing::describe(ray));
       LocalHit h;
       ASSERT_TRUE(intersect(q, ray, h));
       // The first crossing on the whole line is the smaller root.
@@ -169,13 +169,13 @@ TEST(Quadric, RandomRays_SpansMatchInsideOracle) {
       auto inside = [&](const Vec3& p) { return contains(q, p); };
       Rng rng(101);
       for (int i = 0; i < 300; ++i) {
-        const Ray ray = qtest::random_ray(rng, 2);
-        SCOPED_TRACE(qtest::describe(ray));
-        ASSERT_EQ(qtest::span_mismatches(q, ray, inside, -10, 10), 0)
+        const Ray ray = testing::random_ray(rng, 2);
+        SCOPED_TRACE(testing::describe(ray));
+        ASSERT_EQ(testing::span_mismatches(q, ray, inside, -10, 10), 0)
             << "kind " << int(k) << " bounded " << bounded;
         LocalHit h;
         const bool hit = intersect(q, ray, h);
-        const double first = qtest::first_span_end(q, ray);
+        const double first = testing::first_span_end(q, ray);
         EXPECT_EQ(hit, first < kInfinity);
         if (hit) {
           EXPECT_EQ(h.t, first);
@@ -194,12 +194,12 @@ TEST(Quadric, RandomRays_NormalsAreUnitAndOutward) {
     Rng rng(202);
     int hits = 0;
     for (int i = 0; i < 500; ++i) {
-      const Ray ray = qtest::random_ray(rng, 2);
-      SCOPED_TRACE(qtest::describe(ray));
+      const Ray ray = testing::random_ray(rng, 2);
+      SCOPED_TRACE(testing::describe(ray));
       LocalHit h;
       if (!intersect(q, ray, h)) continue;
       ++hits;
-      qtest::expect_outward_normal(q, ray, h, inside, 1e-7);
+      testing::expect_outward_normal(q, ray, h, inside, 1e-7);
     }
     EXPECT_GT(hits, 50);
   }

@@ -1,10 +1,13 @@
 #pragma once
-// Shared checks for the shape tests: seeded random rays, the spans-vs-inside oracle, and
-// surface-record invariants. Header-only; every helper reports through gtest.
+// The shared helpers of every shape test: seeded random points, directions and rays, the
+// spans-vs-inside oracle, outward normals by stepping off the surface, surface-record invariants.
+// Header-only; every helper reports through gtest.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "geometry/shape.h"
@@ -42,30 +45,91 @@ inline void expect_unit(const Vec3& n, const std::string& what = "normal") {
   EXPECT_NEAR(length(n), 1, 1e-12) << what << " not unit";
 }
 
-/// For a closed shape: samples the line at many t and checks that `inside(p)` agrees with the
-/// union of the spans everywhere except within `guard` (relative) of a span end.
+class Rng {
+ public:
+  explicit Rng(std::uint64_t seed) : g_(seed) {}
+  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(g_); }
+  Vec3 in_box(double h) { return {uniform(-h, h), uniform(-h, h), uniform(-h, h)}; }
+  Vec3 direction() {
+    std::normal_distribution<double> n;
+    Vec3 v{n(g_), n(g_), n(g_)};
+    return v / length(v);
+  }
+
+ private:
+  std::mt19937_64 g_;
+};
+
+/// A ray from a random point in [-2h, 2h]^3 towards a random point in [-h, h]^3, with a direction
+/// of random length (t is in units of d, never of a unit vector).
+inline Ray random_ray(Rng& r, double h, const Vec3& centre = {}) {
+  const Vec3 o = centre + r.in_box(2 * h);
+  const Vec3 target = centre + r.in_box(h);
+  Vec3 d = target - o;
+  if (length_squared(d) == 0) d = {1, 0, 0};
+  return {o, d * r.uniform(0.25, 4.0), 0, kInfinity};
+}
+
+inline std::string describe(const Ray& ray) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "ray o=(" << ray.o.x << ", " << ray.o.y << ", " << ray.o.z << ") d=(" << ray.d.x << ", "
+    << ray.d.y << ", " << ray.d.z << ") tmin=" << ray.tmin << " tmax=" << ray.tmax;
+  return s.str();
+}
+
+/// Spans are sorted, each in <= out; and a point sampled on the line (away from the ends by a
+/// guard of 1e-7 relative) is inside the oracle exactly when it lies in a span. Returns the
+/// number of samples that disagree.
+template <class S, class Inside>
+int span_mismatches(const S& s, const Ray& ray, Inside inside, double t_lo, double t_hi,
+                    int samples = 200) {
+  SpanList sl;
+  spans(s, ray, sl);
+  int bad = 0;
+  for (std::size_t i = 0; i < sl.size(); ++i) {
+    if (!(sl[i].in.t <= sl[i].out.t)) ++bad;
+    if (i + 1 < sl.size() && !(sl[i].out.t <= sl[i + 1].in.t)) ++bad;
+  }
+  for (int k = 0; k < samples; ++k) {
+    const double t = t_lo + (k + 0.5) / samples * (t_hi - t_lo);
+    const double guard = 1e-7 * (1 + std::abs(t));
+    bool near = false, in = false;
+    for (const Span& sp : sl) {
+      near = near || std::abs(t - sp.in.t) < guard || std::abs(t - sp.out.t) < guard;
+      in = in || (sp.in.t <= t && t <= sp.out.t);
+    }
+    if (!near && in != inside(ray.at(t))) ++bad;
+  }
+  return bad;
+}
+
+/// The hit's normal is unit, and a step of h along it leaves the solid while a step back enters.
+template <class S, class Inside>
+void expect_outward_normal(const S& s, const Ray& ray, const LocalHit& hit, Inside inside,
+                           double h) {
+  const SurfaceInfo si = surface(s, ray, hit);
+  EXPECT_NEAR(length(si.n), 1.0, 1e-12);
+  EXPECT_FALSE(inside(si.p + h * si.n)) << "part " << hit.part;
+  EXPECT_TRUE(inside(si.p - h * si.n)) << "part " << hit.part;
+}
+
+/// The nearest span end in [tmin, tmax] with a surface, or inf: what intersect must return.
+template <class S>
+double first_span_end(const S& s, const Ray& ray) {
+  SpanList sl;
+  spans(s, ray, sl);
+  for (const Span& sp : sl)
+    for (const LocalHit& h : {sp.in, sp.out})
+      if (h.part != kNoSurface && h.t >= ray.tmin && h.t <= ray.tmax) return h.t;
+  return kInfinity;
+}
+
+/// For a closed shape: span_mismatches over [lo, hi] must find no disagreement.
 template <class S, class Inside>
 void check_spans_against_oracle(const S& s, const Ray& ray, Inside inside, double lo = -20,
                                 double hi = 20, int samples = 401) {
-  SpanList list;
-  spans(s, ray, list);  // found by argument-dependent lookup
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    EXPECT_LE(list[i].in.t, list[i].out.t) << "span " << i << " reversed";
-    if (i > 0) {
-      EXPECT_LE(list[i - 1].out.t, list[i].in.t) << "spans not sorted";
-    }
-  }
-  const double guard = 1e-9 * (hi - lo);
-  for (int k = 0; k < samples; ++k) {
-    const double t = lo + (hi - lo) * (k + 0.37) / samples;
-    bool in_span = false, near_end = false;
-    for (const Span& sp : list) {
-      if (t >= sp.in.t && t <= sp.out.t) in_span = true;
-      if (std::abs(t - sp.in.t) < guard || std::abs(t - sp.out.t) < guard) near_end = true;
-    }
-    if (near_end) continue;
-    EXPECT_EQ(in_span, inside(ray.at(t))) << "t = " << t;
-  }
+  EXPECT_EQ(span_mismatches(s, ray, inside, lo, hi, samples), 0) << describe(ray);
 }
 
 }  // namespace raycast::testing

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "quadric_test_util.h"
+#include "shape_checks.h"
 
 namespace raycast {
 namespace {
 
-using qtest::Rng;
+using testing::Rng;
 
 TEST(Slab, HandRay_EntersAtD0AndLeavesAtD1) {
   // 1 <= 2z <= 3, i.e. 0.5 <= z <= 1.5.
@@ -65,9 +65,9 @@ TEST(Slab, RandomRays_MatchLongDoubleAndTheInsideOracle) {
   auto inside = [&](const Vec3& p) { return contains(s, p); };
   Rng rng(71);
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = qtest::random_ray(rng, 2);
-    SCOPED_TRACE("seed 71, " + qtest::describe(ray));
-    ASSERT_EQ(qtest::span_mismatches(s, ray, inside, -20, 20), 0);
+    const Ray ray = testing::random_ray(rng, 2);
+    SCOPED_TRACE("seed 71, " + testing::describe(ray));
+    ASSERT_EQ(testing::span_mismatches(s, ray, inside, -20, 20), 0);
     SpanList sl;
     spans(s, ray, sl);
     ASSERT_EQ(sl.size(), 1u);
@@ -80,7 +80,7 @@ TEST(Slab, RandomRays_MatchLongDoubleAndTheInsideOracle) {
     EXPECT_NEAR(sl[0].in.t, lo, 1e-9 * std::max(1.0, std::abs(lo)));
     EXPECT_NEAR(sl[0].out.t, hi, 1e-9 * std::max(1.0, std::abs(hi)));
     LocalHit h;
-    if (intersect(s, ray, h)) qtest::expect_outward_normal(s, ray, h, inside, 1e-7);
+    if (intersect(s, ray, h)) testing::expect_outward_normal(s, ray, h, inside, 1e-7);
   }
 }
 

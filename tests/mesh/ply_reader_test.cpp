@@ -192,16 +192,18 @@ TEST_F(PlyReader, BadFaceCount_Refused) {
 }
 
 TEST_F(PlyReader, BadHeaders_Refused) {
-  expect_error("ply\nformat binary_little_endian 1.0\nelement vertex 3\n", "end_header");
-  expect_error("plx\nformat binary_little_endian 1.0\nend_header\n", "magic");
-  expect_error("ply\nformat binary_little_endian 1.0\nelement vertex x\nend_header\n", "malformed");
+  expect_error("ply\nformat binary_little_endian 1.0\nelement vertex 3\n",
+               "bad.ply:3:1: truncated PLY header (no end_header line)");
+  expect_error("plx\nformat binary_little_endian 1.0\nend_header\n", "bad.ply:1:1: not a PLY file");
+  expect_error("ply\nformat binary_little_endian 1.0\nelement vertex x\nend_header\n",
+               "bad.ply:3:16: element count must be a whole number");
   expect_error("ply\nformat binary_little_endian 1.0\nproperty float x\nend_header\n",
-               "before any element");
+               "bad.ply:3:1: a property before any element");
   expect_error(
       "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float q\nend_header\n"
       "0123",
-      "no x, y, z");
-  expect_error("", "magic");
+      "the PLY vertex element has no x, y, z properties");
+  expect_error("", "bad.ply:1:1: not a PLY file");
 }
 
 // Found by mesh_fuzz: assimp 5.2 never returned on an ASCII PLY whose header has no end_header
@@ -210,15 +212,17 @@ TEST_F(PlyReader, HeaderWithoutEndHeaderOrWithStrayTokens_RefusedBeforeAnyReader
   expect_error(
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
       "float z\nelement face 1 0\n3 0 1 2\n",
-      "line 7: expected 'element NAME COUNT'");
+      "bad.ply:7:1: expected 'element NAME COUNT'");
   expect_error("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n0 0 0\n1 0 0\n",
-               "line 5: unknown keyword '0'");
+               "bad.ply:5:1: unexpected PLY header line starting with '0'");
   expect_error("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x", "no end_header line");
   expect_error(
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nelement face 1 0\nend_header\n",
-      "line 5: expected 'element NAME COUNT'");
-  expect_error("ply\nformat ascii 1.0\nelemnt vertex 3\nend_header\n", "unknown keyword 'elemnt'");
-  expect_error("ply\nformat binary_middle_endian 1.0\nend_header\n", "unknown format");
+      "bad.ply:5:1: expected 'element NAME COUNT'");
+  expect_error("ply\nformat ascii 1.0\nelemnt vertex 3\nend_header\n",
+               "bad.ply:3:1: unexpected PLY header line starting with 'elemnt'");
+  expect_error("ply\nformat binary_middle_endian 1.0\nend_header\n",
+               "bad.ply:2:8: unknown PLY format 'binary_middle_endian'");
 }
 
 // The PLY format ends the header at an `end_header` line, not at those letters anywhere: a

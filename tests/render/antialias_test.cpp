@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "render/renderer.h"
 #include "scene/demo_scene.h"
@@ -112,6 +114,31 @@ TEST(Antialias, EdgesRefined_CloserToTheReferenceThanOneSample) {
     const unsigned most = method == AntialiasMethod::kSubdivide ? 105u : 9u;
     EXPECT_LT(stats.samples, 40u * 30u * most) << int(method);
     EXPECT_GT(stats.samples, 41u * 31u) << int(method);
+  }
+}
+
+TEST(Antialias, Method1_OddDepthReusesTheCentreSampleForTheMiddleStratum) {
+  // A 4 x 1 image with an edge at x = 2: pixels 1 and 2 differ from a neighbour and are
+  // refined. Depth 3: 8 new samples each, none at a pixel centre again, the centre value
+  // counted once in the mean of 9; depth 2: 4 new samples each.
+  for (int depth : {2, 3}) {
+    std::vector<std::pair<double, double>> calls;
+    const RasterSampler sample = [&](double x, double y, SampleState& state) {
+      calls.emplace_back(x, y);
+      ++state.rays;
+      return x < 2 ? Color{1, 1, 1} : Color{0, 0, 0};
+    };
+    Image image(4, 1);
+    AdaptiveStats stats;
+    render_adaptive({AntialiasMethod::kNeighbour, 0.3, depth}, 1, sample, image, stats, nullptr);
+    const std::uint64_t refined = depth == 3 ? 8 : 4;
+    EXPECT_EQ(stats.samples, 4 + 2 * refined);
+    EXPECT_EQ(calls.size(), 4 + 2 * refined);
+    int centres = 0;
+    for (const auto& [x, y] : calls) centres += x - std::floor(x) == 0.5 && y == 0.5;
+    EXPECT_EQ(centres, 4) << depth;  // the first pass only
+    // Pixel 1 ([1, 2]) lies left of the edge: all 1; pixel 2 all 0; the others untouched.
+    for (int x = 0; x < 4; ++x) EXPECT_EQ(image.at(x, 0)[0], x < 2 ? 1.0f : 0.0f) << x;
   }
 }
 

@@ -94,7 +94,7 @@ TEST_F(RenderCli, BadValues_ExitWithTwo) {
   EXPECT_EQ(run("render" + out + " --width abc"), 2);
   EXPECT_EQ(run("render" + out + " --height 100000"), 2);
   EXPECT_EQ(run("render" + out + " --spp 0"), 2);
-  EXPECT_EQ(run("render" + out + " --threads 0"), 2);
+  EXPECT_EQ(run("render" + out + " --threads -1"), 2);
   EXPECT_EQ(run("render" + out + " --integrator phong"), 2);
   EXPECT_EQ(run("render" + out + " --aov depth,colour"), 2);
   EXPECT_EQ(run("render -o " + path("bad.bmp")), 2);

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "render/integrator.h"
 #include "render/renderer.h"
 #include "scene/loader.h"
+#include "scene/scene_error.h"
 
 namespace raycast {
 namespace {
@@ -220,6 +222,82 @@ objects:
     const Vec3 got = Integrator(scene, Channel::kWhitted).whitted(down, 0, state);
     expect_color(got, max_depth == 0 ? Vec3{0, 0, 0} : Vec3{0.5, 0.5, 0.5}, 0);
     EXPECT_EQ(state.rays, max_depth == 0 ? 1u : 2u);
+  }
+}
+
+TEST(Whitted, Bailout_StopsRaysWhoseWeightFallsBelowIt) {
+  // Two facing half mirrors (reflection 0.5, nothing else): the k-th secondary ray of a vertical
+  // ray between them has weight 0.5^k and is traced only when 0.5^k >= bailout.
+  const std::string base = R"(
+materials:
+  half: {color: [1, 1, 1], ambient: 0, diffuse: 0, reflection: 0.5}
+objects:
+  - {plane: {normal: [0, 1, 0], point: [0, 0, 0]}, material: half}
+  - {plane: {normal: [0, -1, 0], point: [0, 1, 0]}, material: half}
+)";
+  const Ray down{{0, 0.5, 0}, {0, -1, 0}};
+  // bailout -> secondary rays traced (of max_depth 20): 0 traces all; 1/255 stops at 0.5^8 =
+  // 1/256; 0.25 = 0.5^2 exactly keeps the second; above 0.5 none.
+  const std::pair<std::string, std::uint64_t> cases[] = {
+      {"0", 20}, {"0.00392156862745098", 7}, {"0.25", 2}, {"0.6", 0}};
+  for (const auto& [bailout, secondary] : cases) {
+    const Scene scene =
+        load_scene_text("render: {max_depth: 20, bailout: " + bailout + "}\n" + base);
+    SampleState state{Rng(1), 0};
+    expect_color(Integrator(scene, Channel::kWhitted).whitted(down, 0, state), {0, 0, 0}, 0);
+    EXPECT_EQ(state.rays, 1 + secondary) << "bailout " << bailout;
+  }
+  // The default is 1/255; a negative or non-numeric cut-off is a scene error.
+  EXPECT_EQ(load_scene_text(base).render.bailout, 1.0 / 255);
+  for (const char* bad : {"-0.1", ".nan", "a lot"})
+    EXPECT_THROW(load_scene_text(std::string("render: {bailout: ") + bad + "}\n" + base),
+                 SceneError)
+        << bad;
+  // A cut ray contributes nothing: one half mirror under a white sky.
+  const std::string floor = R"(
+materials:
+  half: {color: [1, 1, 1], ambient: 0, diffuse: 0, reflection: 0.5}
+objects:
+  - {plane: {normal: [0, 1, 0], point: [0, 0, 0]}, material: half}
+)";
+  for (const char* bailout : {"0.5", "0.6"}) {
+    const Scene scene = load_scene_text(std::string("render: {background: [1, 1, 1], bailout: ") +
+                                        bailout + "}\n" + floor);
+    SampleState state{Rng(1), 0};
+    const double want = std::string(bailout) == "0.5" ? 0.5 : 0;
+    expect_color(Integrator(scene, Channel::kWhitted).whitted(down, 0, state), {want, want, want},
+                 0);
+  }
+}
+
+TEST(Whitted, ZeroLightTerm_CastsNoShadowRay) {
+  // A floor seen along (1, -1, 0) from (0, 1, 0), hit at (1, 0, 0). Without a diffuse part the
+  // light term is the highlight only, 0 when the mirrored light direction faces away from the
+  // viewer: then no shadow ray is cast (the pixel is the same either way). A light at (-3, 2, 0)
+  // gives l ~ (-2, 1, 0), r ~ (2, 1, 0), r.v < 0; one at (3, 2, 0) gives r.v > 0.
+  const Ray ray{{0, 1, 0}, {1, -1, 0}};
+  for (const char* diffuse : {"0", "0.5"}) {
+    for (const char* light : {"[-3, 2, 0]", "[3, 2, 0]"}) {
+      const Scene scene = load_scene_text(std::string(R"(
+render: {max_depth: 0}
+materials:
+  m: {color: [1, 1, 1], ambient: 0, specular: 0.5, shininess: 10, diffuse: )") +
+                                          diffuse + R"(}
+lights:
+  - {type: point, position: )" + light + R"(, color: [1, 1, 1]}
+objects:
+  - {plane: {normal: [0, 1, 0], point: [0, 0, 0]}, material: m}
+)");
+      SampleState state{Rng(1), 0};
+      const Vec3 got = Integrator(scene, Channel::kWhitted).whitted(ray, 0, state);
+      const bool dark = std::string(diffuse) == "0" && std::string(light) == "[-3, 2, 0]";
+      EXPECT_EQ(state.rays, dark ? 1u : 2u) << diffuse << " " << light;
+      if (dark) {
+        expect_color(got, {0, 0, 0}, 0);
+      } else {
+        EXPECT_GT(got.x, 0) << diffuse << " " << light;
+      }
+    }
   }
 }
 

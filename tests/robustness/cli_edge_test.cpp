@@ -150,8 +150,8 @@ TEST(RobustCli, Render_HugeImage_RefusedBeforeAllocating) {
 TEST(RobustCli, Render_ZeroCounts_ExitTwo) {
   const std::string scene = write("box.yaml", kBox);
   const std::string out = (temp_dir() / "z.png").string();
-  for (const char* flag :
-       {"--spp 0", "--threads 0", "--width 0", "--height -3", "--spp 99999999999"}) {
+  for (const char* flag : {"--spp 0", "--threads -1", "--threads 4097", "--width 0", "--height -3",
+                           "--spp 99999999999"}) {
     SCOPED_TRACE(flag);
     const Outcome r = run("render '" + scene + "' -o '" + out + "' " + flag);
     EXPECT_EQ(r.code, 2) << r.err;
@@ -202,8 +202,8 @@ TEST(RobustCli, BadMeshes_PositionedErrors) {
       run("info '" + write("objmesh.yaml", "objects:\n  - mesh: {file: nan.obj}\n") + "'");
   EXPECT_EQ(f.code, 2) << f.out << f.err;
   // Used to load as "1 degenerate triangles dropped": assimp's vertex joining merged the NaN away.
-  EXPECT_TRUE(contains(f.err, "objmesh.yaml:2:18: mesh.file 'nan.obj': a vertex is not finite"))
-      << f.err;
+  EXPECT_TRUE(contains(f.err, "objmesh.yaml:2:18: mesh.file 'nan.obj': ")) << f.err;
+  EXPECT_TRUE(contains(f.err, "nan.obj:2:5: expected a finite number, got 'nan'")) << f.err;
   const std::string range = write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
   const Outcome g =
       run("info '" + write("rangemesh.yaml", "objects:\n  - mesh: {file: range.obj}\n") + "'");

@@ -340,14 +340,21 @@ std::string format_bench(const BenchResult& r, bool json) {
                   "{\"what\": \"%s\", \"ray_kind\": \"%s\", \"triangles\": %llu, \"rays\": %llu, "
                   "\"hits\": %llu, "
                   "\"threads\": %d, \"raycast_build_ms\": %.3f, \"raycast_mrays\": %.4f, "
-                  "\"raycast_bytes_per_tri\": %.2f, \"raycast_total_bytes_per_tri\": %.2f, "
                   "\"raycast_mrays_cpu\": %.4f, \"isa\": \"%s\"",
                   json_escape(r.what).c_str(), r.ray_kind.c_str(),
                   static_cast<unsigned long long>(r.triangles),
                   static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
-                  r.threads, r.raycast_build_ms, r.raycast_mrays, r.raycast_bytes_per_tri,
-                  r.raycast_total_bytes_per_tri, r.raycast_mrays_cpu, isa_name(active_isa()));
+                  r.threads, r.raycast_build_ms, r.raycast_mrays, r.raycast_mrays_cpu,
+                  isa_name(active_isa()));
     out = buf;
+    if (r.triangles > 0)  // else null: per triangle means nothing without triangles
+      std::snprintf(buf, sizeof buf,
+                    ", \"raycast_bytes_per_tri\": %.2f, \"raycast_total_bytes_per_tri\": %.2f",
+                    r.raycast_bytes_per_tri, r.raycast_total_bytes_per_tri);
+    else
+      std::snprintf(buf, sizeof buf,
+                    ", \"raycast_bytes_per_tri\": null, \"raycast_total_bytes_per_tri\": null");
+    out += buf;
     if (r.embree) {
       std::snprintf(
           buf, sizeof buf,
@@ -364,15 +371,21 @@ std::string format_bench(const BenchResult& r, bool json) {
     }
     return out + "}\n";
   }
-  std::snprintf(
-      buf, sizeof buf,
-      "mesh: %s (%llu triangles)\nrays: %s, %llu rays (%llu hit), %d threads, isa %s\n"
-      "raycast: build %.1f ms, %.3f Mrays/s, %.1f bytes/triangle (BVH; %.1f with mesh storage)\n",
-      r.what.c_str(), static_cast<unsigned long long>(r.triangles), r.ray_kind.c_str(),
-      static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits), r.threads,
-      isa_name(active_isa()), r.raycast_build_ms, r.raycast_mrays, r.raycast_bytes_per_tri,
-      r.raycast_total_bytes_per_tri);
+  std::snprintf(buf, sizeof buf,
+                "%s: %s (%llu triangles)\nrays: %s, %llu rays (%llu hit), %d threads, isa %s\n"
+                "raycast: build %.1f ms, %.3f Mrays/s",
+                r.triangles > 0 ? "mesh" : "scene", r.what.c_str(),
+                static_cast<unsigned long long>(r.triangles), r.ray_kind.c_str(),
+                static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
+                r.threads, isa_name(active_isa()), r.raycast_build_ms, r.raycast_mrays);
   out = buf;
+  // Bytes per triangle only mean something when there are triangles.
+  if (r.triangles > 0) {
+    std::snprintf(buf, sizeof buf, ", %.1f bytes/triangle (BVH; %.1f with mesh storage)",
+                  r.raycast_bytes_per_tri, r.raycast_total_bytes_per_tri);
+    out += buf;
+  }
+  out += "\n";
   if (r.embree) {
     std::snprintf(
         buf, sizeof buf,

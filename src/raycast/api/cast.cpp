@@ -160,7 +160,7 @@ void run_cast(const Scene& scene, std::istream& in, std::ostream& out, const Cas
   std::vector<Ray> rays;
   std::vector<Answer> answers;
   std::string line;
-  long line_no = 0, record = 0;
+  long line_no = 0, record = opt.first_record;
   bool done = false;
   while (!done) {
     rays.clear();

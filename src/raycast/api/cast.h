@@ -13,6 +13,7 @@ struct CastOptions {
   CastMode mode = CastMode::kNearest;
   bool binary = false;
   std::string source = "<stdin>";  // name of the ray input, for error messages
+  long first_record = 0;           // binary records are numbered from first_record + 1 in messages
 };
 
 /// Reads rays from `in`, answers them on `scene` (in parallel, in batches) and writes one answer

@@ -54,26 +54,21 @@ bool intersect(const Box& b, const Ray& ray, LocalHit& hit) {
   int f0, f1;
   if (!box_line_interval(b, ray, t0, f0, t1, f1)) return false;
   if (t0 >= ray.tmin && t0 <= ray.tmax) {
-    hit = LocalHit{t0, -1, f0, 0, 0};
+    hit = LocalHit{.t = t0, .part = f0};
     return true;
   }
   if (t1 >= ray.tmin && t1 <= ray.tmax) {
-    hit = LocalHit{t1, -1, f1, 0, 0};
+    hit = LocalHit{.t = t1, .part = f1};
     return true;
   }
   return false;
-}
-
-bool occluded(const Box& b, const Ray& ray) {
-  LocalHit h;
-  return intersect(b, ray, h);
 }
 
 void spans(const Box& b, const Ray& ray, SpanList& out) {
   double t0, t1;
   int f0, f1;
   if (!box_line_interval(b, ray, t0, f0, t1, f1)) return;
-  out.add(LocalHit{t0, -1, f0, 0, 0}, LocalHit{t1, -1, f1, 0, 0});
+  out.add(LocalHit{.t = t0, .part = f0}, LocalHit{.t = t1, .part = f1});
 }
 
 SurfaceInfo surface(const Box& b, const Ray& ray, const LocalHit& hit) {

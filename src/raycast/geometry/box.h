@@ -25,7 +25,6 @@ bool box_line_interval(const Box& b, const Ray& ray, double& t0, int& face0, dou
 
 Aabb bounds(const Box& b);
 bool intersect(const Box& b, const Ray& ray, LocalHit& hit);
-bool occluded(const Box& b, const Ray& ray);
 void spans(const Box& b, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Box& b, const Ray& ray, const LocalHit& hit);
 bool contains(const Box& b, const Vec3& p);

@@ -59,9 +59,9 @@ void chord_spans(const BoxChord& c, const double* roots, const double* errors, i
                  NegativeAt&& negative_at, SpanList& out) {
   auto point = [&](int i) { return i < 0 ? c.t0 : (i >= n ? c.t1 : roots[i]); };
   auto end = [&](int i) {
-    if (i < 0) return LocalHit{c.t0, -1, kFacePart + c.face0, 0, 0};
-    if (i >= n) return LocalHit{c.t1, -1, kFacePart + c.face1, 0, 0};
-    return LocalHit{roots[i], -1, kCurvedPart, errors[i], 0};
+    if (i < 0) return LocalHit{.t = c.t0, .part = kFacePart + c.face0};
+    if (i >= n) return LocalHit{.t = c.t1, .part = kFacePart + c.face1};
+    return LocalHit{.t = roots[i], .part = kCurvedPart, .a = errors[i]};
   };
   if (!closed) {
     for (int i = 0; i < n; ++i) {
@@ -82,19 +82,6 @@ void chord_spans(const BoxChord& c, const double* roots, const double* errors, i
       out.add(end(i), end(i + 1));
     }
   }
-}
-
-/// The first span end in [tmin, tmax] among spans produced by chord_spans; false when none.
-inline bool first_crossing(const SpanList& l, const Ray& ray, LocalHit& hit) {
-  for (const Span& s : l) {
-    for (const LocalHit* h : {&s.in, &s.out}) {
-      if (h->t >= ray.tmin && h->t <= ray.tmax) {
-        hit = *h;
-        return true;
-      }
-    }
-  }
-  return false;
 }
 
 }  // namespace raycast

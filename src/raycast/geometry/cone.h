@@ -26,10 +26,6 @@ inline Aabb bounds(const Cone& s) { return frustum_bounds(s.f); }
 inline bool intersect(const Cone& s, const Ray& ray, LocalHit& hit) {
   return frustum_intersect(s.f, ray, hit);
 }
-inline bool occluded(const Cone& s, const Ray& ray) {
-  LocalHit h;
-  return frustum_intersect(s.f, ray, h);
-}
 inline void spans(const Cone& s, const Ray& ray, SpanList& out) { frustum_spans(s.f, ray, out); }
 inline SurfaceInfo surface(const Cone& s, const Ray& ray, const LocalHit& hit) {
   return frustum_surface(s.f, ray, hit);

@@ -25,10 +25,6 @@ inline Aabb bounds(const Cylinder& s) { return frustum_bounds(s.f); }
 inline bool intersect(const Cylinder& s, const Ray& ray, LocalHit& hit) {
   return frustum_intersect(s.f, ray, hit);
 }
-inline bool occluded(const Cylinder& s, const Ray& ray) {
-  LocalHit h;
-  return frustum_intersect(s.f, ray, h);
-}
 inline void spans(const Cylinder& s, const Ray& ray, SpanList& out) {
   frustum_spans(s.f, ray, out);
 }

@@ -100,13 +100,8 @@ bool intersect(const Disk& d, const Ray& ray, LocalHit& hit) {
   double t, x, y;
   if (!line_crossing(d, ray, t, x, y)) return false;
   if (!(t >= ray.tmin && t <= ray.tmax)) return false;
-  hit = LocalHit{t, -1, 0, x, y};
+  hit = LocalHit{.t = t, .a = x, .b = y};
   return true;
-}
-
-bool occluded(const Disk& d, const Ray& ray) {
-  LocalHit h;
-  return intersect(d, ray, h);
 }
 
 void spans(const Disk& d, const Ray& ray, SpanList& out) {

@@ -29,7 +29,6 @@ Disk make_disk(const Vec3& center, const Vec3& normal, double radius, double inn
 
 Aabb bounds(const Disk& d);
 bool intersect(const Disk& d, const Ray& ray, LocalHit& hit);
-bool occluded(const Disk& d, const Ray& ray);
 void spans(const Disk& d, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Disk& d, const Ray& ray, const LocalHit& hit);
 inline bool contains(const Disk&, const Vec3&) { return false; }

@@ -40,7 +40,7 @@ bool intersect(const Ellipsoid& e, const Ray& ray, LocalHit& hit) {
   if (!roots(e, ray, t[0], t[1])) return false;
   for (int i = 0; i < 2; ++i) {
     if (t[i] < ray.tmin || t[i] > ray.tmax) continue;
-    hit = LocalHit{t[i], -1, i, 0, 0};
+    hit = LocalHit{.t = t[i], .part = i};
     return true;
   }
   return false;
@@ -55,7 +55,7 @@ bool occluded(const Ellipsoid& e, const Ray& ray) {
 void spans(const Ellipsoid& e, const Ray& ray, SpanList& out) {
   double t0, t1;
   if (!roots(e, ray, t0, t1)) return;
-  out.add(LocalHit{t0, -1, 0, 0, 0}, LocalHit{t1, -1, 1, 0, 0});
+  out.add(LocalHit{.t = t0}, LocalHit{.t = t1, .part = 1});
 }
 
 namespace {

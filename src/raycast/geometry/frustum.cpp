@@ -173,14 +173,14 @@ bool frustum_intersect(const Frustum& f, const Ray& ray, LocalHit& hit) {
     const int n = solid_intervals(f, r, iv);
     LineEnd e;
     if (!first_end(iv, n, r.tmin, r.tmax, e)) return false;
-    hit = LocalHit{e.t, -1, e.part, 0, 0};
+    hit = LocalHit{.t = e.t, .part = e.part};
     return true;
   }
   LineEnd c[4];
   const int n = open_crossings(f, r, c);
   for (int i = 0; i < n; ++i) {
     if (c[i].t < r.tmin || c[i].t > r.tmax) continue;
-    hit = LocalHit{c[i].t, -1, c[i].part, 0, 0};
+    hit = LocalHit{.t = c[i].t, .part = c[i].part};
     return true;
   }
   return false;
@@ -192,8 +192,8 @@ void frustum_spans(const Frustum& f, const Ray& ray, SpanList& out) {
     LineInterval iv[2];
     const int n = solid_intervals(f, r, iv);
     for (int i = 0; i < n; ++i)
-      out.add(LocalHit{iv[i].in.t, -1, iv[i].in.part, 0, 0},
-              LocalHit{iv[i].out.t, -1, iv[i].out.part, 0, 0});
+      out.add(LocalHit{.t = iv[i].in.t, .part = iv[i].in.part},
+              LocalHit{.t = iv[i].out.t, .part = iv[i].out.part});
     return;
   }
   LineEnd c[4];

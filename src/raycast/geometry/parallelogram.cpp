@@ -56,13 +56,8 @@ bool intersect(const Parallelogram& q, const Ray& ray, LocalHit& hit) {
   double t, a, b;
   if (!line_crossing(q, ray, t, a, b)) return false;
   if (!(t >= ray.tmin && t <= ray.tmax)) return false;
-  hit = LocalHit{t, -1, 0, a, b};
+  hit = LocalHit{.t = t, .a = a, .b = b};
   return true;
-}
-
-bool occluded(const Parallelogram& q, const Ray& ray) {
-  LocalHit h;
-  return intersect(q, ray, h);
 }
 
 void spans(const Parallelogram& q, const Ray& ray, SpanList& out) {

@@ -20,7 +20,6 @@ Parallelogram make_parallelogram(const Vec3& origin, const Vec3& u, const Vec3& 
 
 Aabb bounds(const Parallelogram& q);
 bool intersect(const Parallelogram& q, const Ray& ray, LocalHit& hit);
-bool occluded(const Parallelogram& q, const Ray& ray);
 void spans(const Parallelogram& q, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Parallelogram& q, const Ray& ray, const LocalHit& hit);
 inline bool contains(const Parallelogram&, const Vec3&) { return false; }

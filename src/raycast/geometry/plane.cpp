@@ -44,13 +44,8 @@ bool intersect(const Plane& p, const Ray& ray, LocalHit& hit) {
   // A parallel ray gives NaN (on the plane) or +-inf (off it): neither is a crossing, even
   // when tmax is infinite.
   if (!std::isfinite(t) || !(t >= ray.tmin && t <= ray.tmax)) return false;
-  hit = LocalHit{t, -1, 0, 0, 0};
+  hit = LocalHit{.t = t};
   return true;
-}
-
-bool occluded(const Plane& p, const Ray& ray) {
-  LocalHit h;
-  return intersect(p, ray, h);
 }
 
 void spans(const Plane& p, const Ray& ray, SpanList& out) {

@@ -19,7 +19,6 @@ Plane make_plane(const Vec3& normal, const Vec3& point);
 
 Aabb bounds(const Plane& p);
 bool intersect(const Plane& p, const Ray& ray, LocalHit& hit);
-bool occluded(const Plane& p, const Ray& ray);
 void spans(const Plane& p, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Plane& p, const Ray& ray, const LocalHit& hit);
 bool contains(const Plane& p, const Vec3& q);

@@ -131,13 +131,8 @@ bool intersect(const Polygon& p, const Ray& ray, LocalHit& hit) {
   const double t = plane_t(p, ray);
   if (!(t >= ray.tmin && t <= ray.tmax) || !std::isfinite(t)) return false;
   if (!polygon_contains_projected(p, ray.at(t))) return false;
-  hit = LocalHit{t, -1, 0, 0, 0};
+  hit = LocalHit{.t = t};
   return true;
-}
-
-bool occluded(const Polygon& p, const Ray& ray) {
-  LocalHit h;
-  return intersect(p, ray, h);
 }
 
 void spans(const Polygon& p, const Ray& ray, SpanList& out) {

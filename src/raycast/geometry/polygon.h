@@ -35,7 +35,6 @@ Polygon make_polygon(const std::vector<Vec3>& vertices);
 
 Aabb bounds(const Polygon& p);
 bool intersect(const Polygon& p, const Ray& ray, LocalHit& hit);
-bool occluded(const Polygon& p, const Ray& ray);
 void spans(const Polygon& p, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Polygon& p, const Ray& ray, const LocalHit& hit);
 inline bool contains(const Polygon&, const Vec3&) { return false; }

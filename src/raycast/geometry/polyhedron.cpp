@@ -232,11 +232,11 @@ bool intersect(const Polyhedron& p, const Ray& ray, LocalHit& hit) {
   Crossings c;
   if (!crossings(p, ray.o, ray.d, ray.tmin, ray.tmax, c)) return false;
   if (c.t_in >= ray.tmin && c.part_in != kNoSurface) {
-    hit = LocalHit{c.t_in, -1, c.part_in, 0, 0};
+    hit = LocalHit{.t = c.t_in, .part = c.part_in};
     return true;
   }
   if (c.t_out <= ray.tmax && c.part_out != kNoSurface) {
-    hit = LocalHit{c.t_out, -1, c.part_out, 0, 0};
+    hit = LocalHit{.t = c.t_out, .part = c.part_out};
     return true;
   }
   return false;
@@ -250,7 +250,7 @@ bool occluded(const Polyhedron& p, const Ray& ray) {
 void spans(const Polyhedron& p, const Ray& ray, SpanList& out) {
   Crossings c;
   if (!crossings(p, ray.o, ray.d, -kInfinity, kInfinity, c)) return;
-  out.add(LocalHit{c.t_in, -1, c.part_in, 0, 0}, LocalHit{c.t_out, -1, c.part_out, 0, 0});
+  out.add(LocalHit{.t = c.t_in, .part = c.part_in}, LocalHit{.t = c.t_out, .part = c.part_out});
 }
 
 SurfaceInfo surface(const Polyhedron& p, const Ray& ray, const LocalHit& hit) {

@@ -188,7 +188,7 @@ bool intersect(const Quadric& q, const Ray& ray, LocalHit& hit) {
     const int n = open_crossings(q, ray, t);
     for (int i = 0; i < n; ++i) {
       if (t[i] < ray.tmin || t[i] > ray.tmax) continue;
-      hit = LocalHit{t[i], -1, kCurved, 0, 0};
+      hit = LocalHit{.t = t[i], .part = kCurved};
       return true;
     }
     return false;
@@ -197,13 +197,8 @@ bool intersect(const Quadric& q, const Ray& ray, LocalHit& hit) {
   const int n = solid_intervals(q, ray, iv);
   LineEnd e;
   if (!first_end(iv, n, ray.tmin, ray.tmax, e)) return false;
-  hit = LocalHit{e.t, -1, e.part, 0, 0};
+  hit = LocalHit{.t = e.t, .part = e.part};
   return true;
-}
-
-bool occluded(const Quadric& q, const Ray& ray) {
-  LocalHit h;
-  return intersect(q, ray, h);
 }
 
 void spans(const Quadric& q, const Ray& ray, SpanList& out) {
@@ -219,8 +214,8 @@ void spans(const Quadric& q, const Ray& ray, SpanList& out) {
   LineInterval iv[2];
   const int n = solid_intervals(q, ray, iv);
   for (int i = 0; i < n; ++i)
-    out.add(LocalHit{iv[i].in.t, -1, iv[i].in.part, 0, 0},
-            LocalHit{iv[i].out.t, -1, iv[i].out.part, 0, 0});
+    out.add(LocalHit{.t = iv[i].in.t, .part = iv[i].in.part},
+            LocalHit{.t = iv[i].out.t, .part = iv[i].out.part});
 }
 
 SurfaceInfo surface(const Quadric& q, const Ray& ray, const LocalHit& hit) {

@@ -48,7 +48,6 @@ Vec3 quadric_gradient(const QuadricCoefficients& c, const Vec3& p);
 
 Aabb bounds(const Quadric& q);
 bool intersect(const Quadric& q, const Ray& ray, LocalHit& hit);
-bool occluded(const Quadric& q, const Ray& ray);
 void spans(const Quadric& q, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Quadric& q, const Ray& ray, const LocalHit& hit);
 bool contains(const Quadric& q, const Vec3& p);

@@ -123,7 +123,7 @@ int sorted_crossings(const Revolution& s, const Ray& ray, Crossing* c) {
   return n;
 }
 
-LocalHit to_hit(const Crossing& c) { return LocalHit{c.t, -1, c.part, c.s, 0}; }
+LocalHit to_hit(const Crossing& c) { return LocalHit{.t = c.t, .part = c.part, .a = c.s}; }
 
 // Crossing number of the profile loop (profile + caps + axis) by a ray from (rho, z) towards +r.
 bool inside_profile(const Revolution& s, double rho, double z) {
@@ -239,11 +239,6 @@ bool intersect(const Revolution& s, const Ray& ray, LocalHit& hit) {
     }
   }
   return false;
-}
-
-bool occluded(const Revolution& s, const Ray& ray) {
-  LocalHit h;
-  return intersect(s, ray, h);
 }
 
 void spans(const Revolution& s, const Ray& ray, SpanList& out) {

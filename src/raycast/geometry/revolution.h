@@ -45,7 +45,6 @@ Revolution make_revolution(const std::vector<std::array<double, 2>>& profile, Pr
 
 Aabb bounds(const Revolution& s);
 bool intersect(const Revolution& s, const Ray& ray, LocalHit& hit);
-bool occluded(const Revolution& s, const Ray& ray);
 void spans(const Revolution& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Revolution& s, const Ray& ray, const LocalHit& hit);
 bool contains(const Revolution& s, const Vec3& p);

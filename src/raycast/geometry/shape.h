@@ -15,6 +15,7 @@ namespace raycast {
 // - intersect(s, ray, hit): the nearest crossing with ray.tmin <= t <= ray.tmax; fills hit and
 //   returns true, or returns false and leaves hit untouched.
 // - occluded(s, ray): whether any crossing lies in [tmin, tmax]; may stop at the first found.
+//   Optional: a shape with no cheaper any-hit test than its nearest hit gets the default below.
 // - spans(s, ray, out): appends, sorted by t, every interval of the whole line (t from -inf to
 //   inf, ignoring tmin/tmax) inside the solid; for open surfaces each crossing as a zero-length
 //   span.
@@ -22,6 +23,17 @@ namespace raycast {
 // - contains(s, p): p inside the closed solid (false everywhere for open surfaces).
 // - is_closed(s): whether s bounds a solid (only those may be CSG operands).
 // - S::kName: the shape's key in the scene format ("sphere"), for messages and `raycast info`.
+/// The default any-hit query: the nearest hit. A shape's own non-template `occluded` (a faster
+/// test, or one that stops at the first crossing found) is preferred by overload resolution.
+template <class S>
+requires requires(const S& s, const Ray& ray, LocalHit& hit) {
+  { intersect(s, ray, hit) } -> std::same_as<bool>;
+}
+bool occluded(const S& s, const Ray& ray) {
+  LocalHit hit;
+  return intersect(s, ray, hit);
+}
+
 template <class S>
 concept Shape = requires(const S& s, const Ray& ray, LocalHit& hit, const LocalHit& chit,
                          SpanList& out, const Vec3& p) {

@@ -61,30 +61,26 @@ bool intersect(const Slab& s, const Ray& ray, LocalHit& hit) {
   SlabCrossings c;
   if (!slab_crossings(s, ray, c)) return false;
   if (c.t_in >= ray.tmin && c.t_in <= ray.tmax) {
-    hit = LocalHit{c.t_in, -1, c.part_in, 0, 0};
+    hit = LocalHit{.t = c.t_in, .part = c.part_in};
     return true;
   }
   if (c.t_out >= ray.tmin && c.t_out <= ray.tmax) {
-    hit = LocalHit{c.t_out, -1, c.part_out, 0, 0};
+    hit = LocalHit{.t = c.t_out, .part = c.part_out};
     return true;
   }
   return false;
 }
 
-bool occluded(const Slab& s, const Ray& ray) {
-  LocalHit h;
-  return intersect(s, ray, h);
-}
-
 void spans(const Slab& s, const Ray& ray, SpanList& out) {
   SlabCrossings c;
   if (slab_crossings(s, ray, c)) {
-    out.add(LocalHit{c.t_in, -1, c.part_in, 0, 0}, LocalHit{c.t_out, -1, c.part_out, 0, 0});
+    out.add(LocalHit{.t = c.t_in, .part = c.part_in}, LocalHit{.t = c.t_out, .part = c.part_out});
     return;
   }
   const double x = dot(s.n, ray.o);
   if (s.d0 <= x && x <= s.d1)  // parallel (or overflowing): wholly inside or outside
-    out.add(LocalHit{-kInfinity, -1, kNoSurface, 0, 0}, LocalHit{kInfinity, -1, kNoSurface, 0, 0});
+    out.add(LocalHit{.t = -kInfinity, .part = kNoSurface},
+            LocalHit{.t = kInfinity, .part = kNoSurface});
 }
 
 SurfaceInfo surface(const Slab& s, const Ray& ray, const LocalHit& hit) {

@@ -19,7 +19,6 @@ Slab make_slab(const Vec3& n, double d0, double d1);
 
 Aabb bounds(const Slab& s);
 bool intersect(const Slab& s, const Ray& ray, LocalHit& hit);
-bool occluded(const Slab& s, const Ray& ray);
 void spans(const Slab& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Slab& s, const Ray& ray, const LocalHit& hit);
 inline bool contains(const Slab& s, const Vec3& p) {

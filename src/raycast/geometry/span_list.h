@@ -47,9 +47,6 @@ class SpanList {
     data()[size_++] = s;
   }
   void add(const LocalHit& in, const LocalHit& out) { push_back({in, out}); }
-  void resize_down(std::size_t n) {
-    if (n < size_) size_ = n;
-  }
 
  private:
   Span* data() { return heap_ ? heap_.get() : inline_; }

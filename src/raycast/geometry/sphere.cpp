@@ -84,15 +84,10 @@ bool intersect(const Sphere& s, const Ray& ray, LocalHit& hit) {
   for (int i = 0; i < 2; ++i) {
     if (t[i] < ray.tmin || t[i] > ray.tmax) continue;
     if (partial && !on_kept_part(s, o + t[i] * ray.d)) continue;
-    hit = LocalHit{t[i], -1, i, 0, 0};
+    hit = LocalHit{.t = t[i], .part = i};
     return true;
   }
   return false;
-}
-
-bool occluded(const Sphere& s, const Ray& ray) {
-  LocalHit h;
-  return intersect(s, ray, h);
 }
 
 void spans(const Sphere& s, const Ray& ray, SpanList& out) {

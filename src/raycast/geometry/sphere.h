@@ -25,7 +25,6 @@ Sphere make_sphere(const Vec3& center, double radius, double z_min = -kInfinity,
 
 Aabb bounds(const Sphere& s);
 bool intersect(const Sphere& s, const Ray& ray, LocalHit& hit);
-bool occluded(const Sphere& s, const Ray& ray);
 void spans(const Sphere& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Sphere& s, const Ray& ray, const LocalHit& hit);
 /// surface() without (u, v) (left 0): no atan2 or acos, for hits whose shading needs no

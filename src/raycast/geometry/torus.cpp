@@ -87,16 +87,11 @@ bool intersect(const Torus& s, const Ray& ray, LocalHit& hit) {
   for (int i = 0; i < n; ++i) {
     const double t = q.t_c + u[i] * q.inv_len;
     if (t >= ray.tmin && t <= ray.tmax) {
-      hit = LocalHit{t, -1, 0, 0, 0};
+      hit = LocalHit{.t = t};
       return true;
     }
   }
   return false;
-}
-
-bool occluded(const Torus& s, const Ray& ray) {
-  LocalHit h;
-  return intersect(s, ray, h);
 }
 
 void spans(const Torus& s, const Ray& ray, SpanList& out) {

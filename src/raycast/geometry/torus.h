@@ -20,7 +20,6 @@ Torus make_torus(double major_radius, double minor_radius);
 
 Aabb bounds(const Torus& s);
 bool intersect(const Torus& s, const Ray& ray, LocalHit& hit);
-bool occluded(const Torus& s, const Ray& ray);
 void spans(const Torus& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Torus& s, const Ray& ray, const LocalHit& hit);
 /// surface() without (u, v) (left 0): no atan2 (scene/object.h, SurfaceNeeds).

@@ -72,13 +72,8 @@ bool intersect(const Triangle& tri, const Ray& ray, LocalHit& hit) {
   double t, b1, b2;
   if (!line_crossing(tri, ray, t, b1, b2)) return false;
   if (!(t >= ray.tmin && t <= ray.tmax)) return false;
-  hit = LocalHit{t, -1, 0, b1, b2};
+  hit = LocalHit{.t = t, .a = b1, .b = b2};
   return true;
-}
-
-bool occluded(const Triangle& tri, const Ray& ray) {
-  LocalHit h;
-  return intersect(tri, ray, h);
 }
 
 void spans(const Triangle& tri, const Ray& ray, SpanList& out) {

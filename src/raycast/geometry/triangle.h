@@ -31,7 +31,6 @@ Triangle make_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec
 
 Aabb bounds(const Triangle& tri);
 bool intersect(const Triangle& tri, const Ray& ray, LocalHit& hit);
-bool occluded(const Triangle& tri, const Ray& ray);
 void spans(const Triangle& tri, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Triangle& tri, const Ray& ray, const LocalHit& hit);
 inline bool contains(const Triangle&, const Vec3&) { return false; }

@@ -2,6 +2,7 @@
 // Images in linear light: float RGB, row-major from the top-left pixel, and the files they go to.
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -56,6 +57,9 @@ std::uint8_t linear_to_srgb8(float linear);
 
 /// 8-bit sRGB PNG: each value clamped to [0, 1], sRGB-encoded, rounded to the nearest of 0..255.
 void save_png(const Image& image, const std::string& path);
+/// The same PNG to an open stream (standard output for `-o -`); `name` is used in messages. The
+/// stream is neither flushed nor closed.
+void write_png(const Image& image, std::FILE* file, const std::string& name);
 /// Reads an 8- or 16-bit PNG (grey, grey+alpha, RGB, RGBA, palette) into linear RGB: the sRGB
 /// encoding is undone, alpha is dropped. Throws ImageError.
 Image load_png(const std::string& path);

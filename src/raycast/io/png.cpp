@@ -35,7 +35,7 @@ void on_png_warning(png_structp, png_const_charp) {}
 // The full libpng API (the simplified one cannot choose the compression): zlib level 2 and the
 // "sub" and "up" filters write a 1280x720 render in a fraction of the default's time (the file is
 // about 30 % larger); the same chunks (IHDR, sRGB, IDAT, IEND) as libpng's simplified writer.
-void save_png(const Image& image, const std::string& path) {
+void write_png(const Image& image, std::FILE* file, const std::string& path) {
   if (image.width <= 0 || image.height <= 0)
     throw ImageError(path + ": cannot write an empty image");
   std::vector<std::uint8_t> bytes(image.rgb.size());
@@ -43,8 +43,6 @@ void save_png(const Image& image, const std::string& path) {
   std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
   for (std::size_t y = 0; y < rows.size(); ++y)
     rows[y] = bytes.data() + y * 3 * static_cast<std::size_t>(image.width);
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) throw ImageError(path + ": cannot write PNG: cannot open the file");
   WriteError error{};
   png_structp png =
       png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
@@ -52,7 +50,6 @@ void save_png(const Image& image, const std::string& path) {
   // No C++ object is created or changed between setjmp and the libpng calls that may jump back.
   if (!png || !info || setjmp(error.jump)) {
     png_destroy_write_struct(&png, &info);
-    std::fclose(file);
     throw ImageError(path +
                      ": cannot write PNG: " + (error.message[0] ? error.message : "out of memory"));
   }
@@ -66,6 +63,18 @@ void save_png(const Image& image, const std::string& path) {
   png_set_rows(png, info, rows.data());
   png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
   png_destroy_write_struct(&png, &info);
+}
+
+void save_png(const Image& image, const std::string& path) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) throw ImageError(path + ": cannot write PNG: cannot open the file");
+  try {
+    write_png(image, file, path);
+  } catch (...) {
+    std::fclose(file);
+    std::remove(path.c_str());  // no partial file left behind
+    throw;
+  }
   if (std::fclose(file) != 0) throw ImageError(path + ": cannot write PNG: error closing the file");
 }
 

@@ -154,26 +154,33 @@ Vec3 gradient(const Trivariate& f, const Vec3& p) {
 }
 
 namespace {
-long double ipow_ld(long double x, int n) {
-  long double r = 1;
-  for (int i = 0; i < n; ++i) r *= x;
-  return r;
-}
+// x^0 .. x^n, each the previous times x: the same products, in the same order, as multiplying
+// x into 1 k times, so the sums below round exactly as with a power computed per term.
+struct PowersLd {
+  long double v[kStride];
+  PowersLd(long double x, int n) {
+    v[0] = 1;
+    for (int i = 1; i <= n; ++i) v[i] = v[i - 1] * x;
+  }
+};
 }  // namespace
 
+// The polish of a hit calls this dozens of times per ray: the powers are tabled once per call.
 long double evaluate_extended(const Trivariate& f, long double x, long double y, long double z) {
+  const PowersLd px(x, f.degree), py(y, f.degree), pz(z, f.degree);
   long double s = 0;
-  for (const auto& t : f.terms) s += t.c * ipow_ld(x, t.i) * ipow_ld(y, t.j) * ipow_ld(z, t.k);
+  for (const auto& t : f.terms) s += t.c * px.v[t.i] * py.v[t.j] * pz.v[t.k];
   return s;
 }
 
 void gradient_extended(const Trivariate& f, long double x, long double y, long double z,
                        long double g[3]) {
+  const PowersLd px(x, f.degree), py(y, f.degree), pz(z, f.degree);
   g[0] = g[1] = g[2] = 0;
   for (const auto& t : f.terms) {
-    if (t.i > 0) g[0] += t.c * t.i * ipow_ld(x, t.i - 1) * ipow_ld(y, t.j) * ipow_ld(z, t.k);
-    if (t.j > 0) g[1] += t.c * t.j * ipow_ld(x, t.i) * ipow_ld(y, t.j - 1) * ipow_ld(z, t.k);
-    if (t.k > 0) g[2] += t.c * t.k * ipow_ld(x, t.i) * ipow_ld(y, t.j) * ipow_ld(z, t.k - 1);
+    if (t.i > 0) g[0] += t.c * t.i * px.v[t.i - 1] * py.v[t.j] * pz.v[t.k];
+    if (t.j > 0) g[1] += t.c * t.j * px.v[t.i] * py.v[t.j - 1] * pz.v[t.k];
+    if (t.k > 0) g[2] += t.c * t.k * px.v[t.i] * py.v[t.j] * pz.v[t.k - 1];
   }
 }
 

@@ -13,6 +13,10 @@ namespace raycast {
 class MeshFileError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  /// "file:line:column: message", the position inside the mesh file (text formats, headers).
+  MeshFileError(const std::string& path, int line, int column, const std::string& message)
+      : std::runtime_error(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                           message) {}
 };
 
 /// What a mesh file holds: positions, triangles in file order (polygons fanned into triangles) and
@@ -22,11 +26,11 @@ struct MeshFileData {
   std::vector<Vec3f> normals;
 };
 
-/// Reads a mesh file by its extension. Binary little-endian PLY files with float or double vertex
-/// coordinates and int/uint face lists are read by our own streaming reader (fast for tens of
-/// millions of triangles); every other file goes through assimp when the build has it. A progress
-/// bar is drawn on stderr when it is a terminal and the file is large. Positions and indices are
-/// returned as found: validation (finite values, indices in range) is make_mesh's.
+/// Reads a mesh file by its extension. PLY (ASCII and binary, mesh/ply_file.cpp), OBJ
+/// (mesh/obj_file.cpp) and STL (ASCII and binary, mesh/stl_file.cpp) are read by our own readers,
+/// with errors naming the line and column; glTF/GLB go through assimp when the build has it. A
+/// progress bar is drawn on stderr when it is a terminal and the file is large. Positions and
+/// indices are returned as found: validation (finite values, indices in range) is make_mesh's.
 MeshFileData load_mesh_file(const std::string& path);
 
 /// Whether this build can read the extension (".obj", ".ply", ...; case-insensitive).

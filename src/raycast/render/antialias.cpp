@@ -47,34 +47,58 @@ void for_rows(int rows, tbb::enumerable_thread_specific<Counters>& counters,
   });
 }
 
+/// First-pass values over the pixels [x0, x1) x [y0, y1) of a full_width x full_height picture
+/// (a window and the one-pixel ring around it that neighbour tests read), indexed by full-image
+/// pixel coordinates.
+struct FirstPass {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0, full_width = 0, full_height = 0;
+  std::vector<Color> values, shown;
+  std::size_t index(int x, int y) const {
+    return std::size_t(y - y0) * std::size_t(x1 - x0) + std::size_t(x - x0);
+  }
+};
+
 /// Whether pixel (x, y) of the first-pass values differs from one of its four neighbours by more
 /// than the threshold (POV-Ray's method 1 compares each pixel with its left and upper neighbours
 /// and refines both: the same set of pixels).
-bool differs(const std::vector<Color>& shown, int width, int height, int x, int y,
-             double threshold) {
-  const Color& c = shown[std::size_t(y) * width + x];
+bool differs(const FirstPass& first, int x, int y, double threshold) {
+  const Color& c = first.shown[first.index(x, y)];
   const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
   for (int k = 0; k < 4; ++k) {
     const int nx = x + dx[k], ny = y + dy[k];
-    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-    if (display_distance(c, shown[std::size_t(ny) * width + nx]) > threshold) return true;
+    if (nx < 0 || ny < 0 || nx >= first.full_width || ny >= first.full_height) continue;
+    if (display_distance(c, first.shown[first.index(nx, ny)]) > threshold) return true;
   }
   return false;
 }
 
-/// The first pass of methods 1 and variance: one sample through every pixel's centre.
-std::vector<Color> centre_pass(int width, int height, unsigned seed, const RasterSampler& sample,
-                               tbb::enumerable_thread_specific<Counters>& counters,
-                               const std::function<void()>& row_done) {
-  std::vector<Color> first(std::size_t(width) * height);
-  for_rows(height, counters, row_done, [&](int y, Counters& c) {
-    for (int x = 0; x < width; ++x) {
+/// The first pass of methods 1 and variance: one sample through every pixel's centre, over the
+/// window (wx0, wy0, w x h) grown by one pixel inside the full picture; row_done for the
+/// window's rows only.
+FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_height,
+                      unsigned seed, const RasterSampler& sample,
+                      tbb::enumerable_thread_specific<Counters>& counters,
+                      const std::function<void()>& row_done) {
+  FirstPass first;
+  first.full_width = full_width;
+  first.full_height = full_height;
+  first.x0 = std::max(0, wx0 - 1);
+  first.y0 = std::max(0, wy0 - 1);
+  first.x1 = std::min(full_width, wx0 + w + 1);
+  first.y1 = std::min(full_height, wy0 + h + 1);
+  first.values.resize(std::size_t(first.x1 - first.x0) * std::size_t(first.y1 - first.y0));
+  for_rows(first.y1 - first.y0, counters, nullptr, [&](int row, Counters& c) {
+    const int y = first.y0 + row;
+    for (int x = first.x0; x < first.x1; ++x) {
       SampleState state{Rng::for_pixel(x, y, seed), 0};
-      first[std::size_t(y) * width + x] = sample(x + 0.5, y + 0.5, state);
+      first.values[first.index(x, y)] = sample(x + 0.5, y + 0.5, state);
       c.rays += state.rays;
       ++c.samples;
     }
+    if (row_done && y >= wy0 && y < wy0 + h) row_done();
   });
+  first.shown.resize(first.values.size());
+  std::transform(first.values.begin(), first.values.end(), first.shown.begin(), display);
   return first;
 }
 
@@ -109,12 +133,19 @@ double colour_distance(const Color& a, const Color& b) {
 }
 
 void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
-                     Image& image, AdaptiveStats& stats, const std::function<void()>& row_done) {
+                     Image& image, AdaptiveStats& stats, const std::function<void()>& row_done,
+                     const RasterWindow& window) {
   if (!(aa.threshold >= 0) || !std::isfinite(aa.threshold))
     throw std::invalid_argument("antialias threshold must be finite and >= 0");
   if (aa.depth < 1 || aa.depth > 16)
     throw std::invalid_argument("antialias depth must be in [1, 16]");
-  const int width = image.width, height = image.height;
+  // (x0, y0): the image's place in the full picture; every sample and seed uses full-picture
+  // pixel coordinates, so a window's pixels are those of the whole render.
+  const int width = image.width, height = image.height, x0 = window.x0, y0 = window.y0;
+  const int full_width = window.full_width > 0 ? window.full_width : width;
+  const int full_height = window.full_height > 0 ? window.full_height : height;
+  if (x0 < 0 || y0 < 0 || x0 + width > full_width || y0 + height > full_height)
+    throw std::invalid_argument("render_adaptive: the window does not fit in the picture");
   tbb::enumerable_thread_specific<Counters> counters;
 
   switch (aa.method) {
@@ -123,26 +154,29 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
 
     case AntialiasMethod::kNeighbour: {
       // Method 1: a pixel that differs from a neighbour gets depth x depth stratified, jittered
-      // samples in place of its centre sample.
-      const std::vector<Color> first = centre_pass(width, height, seed, sample, counters, row_done);
-      std::vector<Color> shown(first.size());
-      std::transform(first.begin(), first.end(), shown.begin(), display);
+      // samples in place of its centre sample; with depth odd the middle stratum keeps the
+      // centre sample (it lies in that stratum), so depth^2 - 1 new samples.
+      const FirstPass first = centre_pass(x0, y0, width, height, full_width, full_height, seed,
+                                          sample, counters, row_done);
       const int n = aa.depth;
-      for_rows(height, counters, row_done, [&](int y, Counters& c) {
-        for (int x = 0; x < width; ++x) {
-          Color value = first[std::size_t(y) * width + x];
-          if (n > 1 && differs(shown, width, height, x, y, aa.threshold)) {
+      for_rows(height, counters, row_done, [&](int row, Counters& c) {
+        const int y = y0 + row;
+        for (int x = x0; x < x0 + width; ++x) {
+          Color value = first.values[first.index(x, y)];
+          if (n > 1 && differs(first, x, y, aa.threshold)) {
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0};
+            const int middle = n % 2 ? n * n / 2 : -1;
             for (int k = 0; k < n * n; ++k) {
               const double jx = state.rng.uniform(), jy = state.rng.uniform();
-              sum += sample(x + ((k % n) + jx) / n, y + ((k / n) + jy) / n, state);
+              sum += k == middle ? value
+                                 : sample(x + ((k % n) + jx) / n, y + ((k / n) + jy) / n, state);
             }
             value = sum / double(n * n);
             c.rays += state.rays;
-            c.samples += std::uint64_t(n) * n;
+            c.samples += std::uint64_t(n) * n - (middle >= 0);
           }
-          image.set(x, y, Vec3f(value));
+          image.set(x - x0, row, Vec3f(value));
         }
       });
       break;
@@ -153,23 +187,24 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       // subdivided into four while its corners differ, up to depth levels.
       const int cw = width + 1;
       std::vector<Color> corners(std::size_t(cw) * (height + 1));
-      for_rows(height + 1, counters, nullptr, [&](int y, Counters& c) {
-        for (int x = 0; x < cw; ++x) {
-          SampleState state{Rng::for_pixel(x, y, seed), 0};
-          corners[std::size_t(y) * cw + x] = sample(x, y, state);
+      for_rows(height + 1, counters, nullptr, [&](int row, Counters& c) {
+        for (int i = 0; i < cw; ++i) {
+          SampleState state{Rng::for_pixel(x0 + i, y0 + row, seed), 0};
+          corners[std::size_t(row) * cw + i] = sample(x0 + i, y0 + row, state);
           c.rays += state.rays;
           ++c.samples;
         }
-        if (row_done && y < height) row_done();
+        if (row_done && row < height) row_done();
       });
-      for_rows(height, counters, row_done, [&](int y, Counters& c) {
-        for (int x = 0; x < width; ++x) {
+      for_rows(height, counters, row_done, [&](int row, Counters& c) {
+        for (int i = 0; i < width; ++i) {
           const Color corner[4] = {
-              corners[std::size_t(y) * cw + x], corners[std::size_t(y) * cw + x + 1],
-              corners[std::size_t(y + 1) * cw + x], corners[std::size_t(y + 1) * cw + x + 1]};
+              corners[std::size_t(row) * cw + i], corners[std::size_t(row) * cw + i + 1],
+              corners[std::size_t(row + 1) * cw + i], corners[std::size_t(row + 1) * cw + i + 1]};
+          const int x = x0 + i, y = y0 + row;
           SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
           std::uint64_t samples = 0;
-          image.set(x, y, Vec3f(subdivide(x, y, 1, corner, 0, aa, sample, state, samples)));
+          image.set(i, row, Vec3f(subdivide(x, y, 1, corner, 0, aa, sample, state, samples)));
           c.rays += state.rays;
           c.samples += samples;
         }
@@ -181,15 +216,15 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       // A pixel that differs from a neighbour takes rounds of four samples (2 x 2 strata,
       // jittered) until the standard error of its mean is at most threshold / 4 in every
       // channel (after at least two rounds) or it has depth x depth samples (rounded up to 4).
-      const std::vector<Color> first = centre_pass(width, height, seed, sample, counters, row_done);
-      std::vector<Color> shown(first.size());
-      std::transform(first.begin(), first.end(), shown.begin(), display);
+      const FirstPass first = centre_pass(x0, y0, width, height, full_width, full_height, seed,
+                                          sample, counters, row_done);
       const int most = std::max(8, (aa.depth * aa.depth + 3) / 4 * 4);
       const double target = aa.threshold / 4;
-      for_rows(height, counters, row_done, [&](int y, Counters& c) {
-        for (int x = 0; x < width; ++x) {
-          Color value = first[std::size_t(y) * width + x];
-          if (differs(shown, width, height, x, y, aa.threshold)) {
+      for_rows(height, counters, row_done, [&](int row, Counters& c) {
+        const int y = y0 + row;
+        for (int x = x0; x < x0 + width; ++x) {
+          Color value = first.values[first.index(x, y)];
+          if (differs(first, x, y, aa.threshold)) {
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0}, sum1{0, 0, 0}, sum2{0, 0, 0};  // values; clamped; squared
             int n = 0;
@@ -217,7 +252,7 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
             c.rays += state.rays;
             c.samples += std::uint64_t(n);
           }
-          image.set(x, y, Vec3f(value));
+          image.set(x - x0, row, Vec3f(value));
         }
       });
       break;

@@ -27,11 +27,20 @@ struct AdaptiveStats {
   std::uint64_t samples = 0;  // camera samples traced
 };
 
+/// Where `image` sits in the full picture: its pixel (0, 0) is the full image's (x0, y0), and
+/// the full image is full_width x full_height (0: the image's own size, i.e. the whole picture).
+struct RasterWindow {
+  int x0 = 0, y0 = 0, full_width = 0, full_height = 0;
+};
+
 /// Renders every pixel of `image` (its size) with `aa.method` (not kNone), `seed` the scene's.
 /// `row_done` is called once per image row of each of the two passes (for progress reports).
-/// Throws std::invalid_argument for a threshold that is negative or not finite or a depth
-/// outside [1, 16].
+/// With a window, `image` is that part of the full picture, each pixel bit-identical to the
+/// full render's: the decisions that look at neighbours sample one pixel beyond the window.
+/// Throws std::invalid_argument for a threshold that is negative or not finite, a depth
+/// outside [1, 16] or a window that does not fit in the full picture.
 void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
-                     Image& image, AdaptiveStats& stats, const std::function<void()>& row_done);
+                     Image& image, AdaptiveStats& stats, const std::function<void()>& row_done,
+                     const RasterWindow& window = {});
 
 }  // namespace raycast

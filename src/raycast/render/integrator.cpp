@@ -42,11 +42,14 @@ Integrator::Integrator(const Scene& scene, Channel channel)
   for (const Material& m : scene.materials) any_transmissive_ |= m.transmission > 0;
 }
 
-SurfaceNeeds Integrator::needs(const SceneHit& hit) const {
+std::size_t Integrator::material_index(const SceneHit& hit) const {
   const int m = material_of(scene_.objects[hit.object], hit.local);
-  const std::size_t index = m >= 0 ? std::size_t(m) : 0;
-  return index < textures_.size() && textures_[index] ? SurfaceNeeds::kAll
-                                                      : SurfaceNeeds::kGeometry;
+  return m >= 0 ? std::size_t(m) : 0;
+}
+
+SurfaceNeeds Integrator::needs(std::size_t material) const {
+  return material < textures_.size() && textures_[material] ? SurfaceNeeds::kAll
+                                                            : SurfaceNeeds::kGeometry;
 }
 
 Color Integrator::li(const Ray& ray, SampleState& state) const {
@@ -80,13 +83,15 @@ Color Integrator::li(const Ray& ray, SampleState& state) const {
   return {0, 0, 0};
 }
 
-Color Integrator::whitted(const Ray& ray, int depth, SampleState& state) const {
+Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double weight) const {
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
-  const SurfaceInfo si = scene_.surface(ray, hit, needs(hit));
-  const Material& m = scene_.material_of(hit);
-  const Color c = albedo(scene_, textures_, ray, hit, si);
+  // The material is resolved once per hit (CSG and instances search their parts for it).
+  const std::size_t mi = material_index(hit);
+  const SurfaceInfo si = scene_.surface(ray, hit, needs(mi));
+  const Material& m = scene_.materials[mi];
+  const Color c = albedo(scene_, textures_, ray, hit, si, mi);
   const Vec3 wi = normalize(ray.d);
   const bool outside = dot(wi, si.n) < 0;
   const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer
@@ -112,12 +117,17 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state) const {
       w_refract = 0;
     }
   }
-  if (w_reflect > 0) {
+  // Like POV-Ray's adc_bailout: a ray whose contribution to the pixel (the product of the
+  // weights along its path) is below the cut-off is not traced (w > 0 keeps bailout 0 exact).
+  const double cutoff = scene_.render.bailout;
+  if (w_reflect > 0 && weight * w_reflect >= cutoff) {
     const Vec3 m_dir = reflect(wi, n);
-    result += w_reflect * whitted({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state);
+    result += w_reflect *
+              whitted({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
   }
-  if (w_refract > 0)
-    result += w_refract * whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state);
+  if (w_refract > 0 && weight * w_refract >= cutoff)
+    result += w_refract *
+              whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
   return result;
 }
 
@@ -138,10 +148,14 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
   // One light direction l towards `target` (a point, or a direction when at infinity).
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
     if (!(dot(n, l) > 0) || max_component(e) <= 0) return;
+    // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
+    // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
+    const Color term = light_term(n, v, l, e, m, c);
+    if (!(max_component(term) > 0)) return;
     const SurfaceInfo& from = dot(l, si.shading_n) > 0 ? lit : si;
     const Color visibility = shadow(offset_ray_origin(from, l), target, at_infinity, state);
     if (max_component(visibility) <= 0) return;
-    sum += mul(visibility, light_term(n, v, l, e, m, c));
+    sum += mul(visibility, term);
   };
   for (const Light& light : scene_.lights) {
     const Color emitted = light.emitted();
@@ -207,8 +221,16 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
   Color through{1, 1, 1};
-  const bool blocked = scene_.any_object(
-      segment, [&](std::uint32_t index) { return !filter(index, segment, through); });
+  // The visitor captures one pointer, so the std::function stores it in place: a capture of
+  // three references would cost a heap allocation per shadow ray.
+  struct Pass {
+    const Integrator* self;
+    const Ray* segment;
+    Color* through;
+  } pass{this, &segment, &through};
+  const bool blocked = scene_.any_object(segment, [p = &pass](std::uint32_t index) {
+    return !p->self->filter(index, *p->segment, *p->through);
+  });
   return blocked ? Color{0, 0, 0} : through;
 }
 

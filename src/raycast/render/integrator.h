@@ -34,8 +34,10 @@ class Integrator {
   /// The value seen along a primary ray (unit direction for `depth` to be a distance).
   Color li(const Ray& ray, SampleState& state) const;
 
-  /// Whitted radiance along a ray `depth` secondary bounces deep (primary rays: 0).
-  Color whitted(const Ray& ray, int depth, SampleState& state) const;
+  /// Whitted radiance along a ray `depth` secondary bounces deep (primary rays: 0) whose
+  /// radiance reaches the pixel multiplied by `weight` (primary rays: 1); its reflected and
+  /// refracted rays are traced only when their weight is at least render.bailout.
+  Color whitted(const Ray& ray, int depth, SampleState& state, double weight = 1) const;
 
   /// The fraction of light that reaches `from` (a surface point, already offset) from `to` along
   /// the straight segment between them: 0 when an opaque object blocks it, else the product of
@@ -49,7 +51,10 @@ class Integrator {
   /// segment crosses it (once per object).
   bool filter(std::uint32_t index, const Ray& segment, Color& through) const;
   /// (u, v) only for a material with an image texture.
-  SurfaceNeeds needs(const SceneHit& hit) const;
+  SurfaceNeeds needs(const SceneHit& hit) const { return needs(material_index(hit)); }
+  SurfaceNeeds needs(std::size_t material) const;
+  /// The index in scene.materials of the part hit (as Scene::material_of).
+  std::size_t material_index(const SceneHit& hit) const;
   /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
   /// (render/terminator.h), the others from si.
   Color direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,

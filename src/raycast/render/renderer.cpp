@@ -117,6 +117,12 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     throw std::invalid_argument("render: width * height must be at most " +
                                 std::to_string(kMaxImagePixels) + " pixels");
 
+  const PixelRect rect = options.region.value_or(PixelRect{0, 0, width, height});
+  if (rect.x0 < 0 || rect.y0 < 0 || rect.x1 > width || rect.y1 > height || rect.x0 >= rect.x1 ||
+      rect.y0 >= rect.y1)
+    throw std::invalid_argument("render: the region must be a non-empty part of the image");
+  const int region_width = rect.x1 - rect.x0, region_height = rect.y1 - rect.y0;
+
   std::optional<tbb::global_control> limit;
   if (options.threads > 0)
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
@@ -124,17 +130,17 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   const Camera camera(camera_or_default(scene), width, height);
   const Integrator integrator(scene, channel_for(scene, options));
   const unsigned seed = scene.render.seed;
-  Image image(width, height);
+  Image image(region_width, region_height);
   tbb::enumerable_thread_specific<std::uint64_t> rays(0);
-  const int tiles_x = (width + kTileSize - 1) / kTileSize;
-  const int tiles_y = (height + kTileSize - 1) / kTileSize;
+  const int tiles_x = (region_width + kTileSize - 1) / kTileSize;
+  const int tiles_y = (region_height + kTileSize - 1) / kTileSize;
   Progress progress(options.progress && isatty(STDERR_FILENO), std::size_t(tiles_x) * tiles_y);
 
   const AntialiasSettings aa = options.antialias ? *options.antialias
                                : options.spp > 0 ? AntialiasSettings{}
                                                  : scene.render.antialias;
   if (aa.method != AntialiasMethod::kNone) {
-    Progress rows(options.progress && isatty(STDERR_FILENO), 2 * std::size_t(height));
+    Progress rows(options.progress && isatty(STDERR_FILENO), 2 * std::size_t(region_height));
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = process_cpu_seconds();
     AdaptiveStats adaptive;
@@ -143,14 +149,14 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
         [&](double x, double y, SampleState& state) {
           return integrator.li(camera.ray(x, y), state);
         },
-        image, adaptive, [&] { rows.advance(); });
+        image, adaptive, [&] { rows.advance(); }, RasterWindow{rect.x0, rect.y0, width, height});
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double cpu_seconds = process_cpu_seconds() - cpu_start;
     rows.finish();
     if (stats) {
-      stats->width = width;
-      stats->height = height;
+      stats->width = region_width;
+      stats->height = region_height;
       stats->spp = 0;
       stats->antialias = aa.method;
       stats->samples = adaptive.samples;
@@ -170,10 +176,10 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
                       std::uint64_t& counter = rays.local();
                       for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
                         for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
-                          const int y1 = std::min(height, (ty + 1) * kTileSize);
-                          const int x1 = std::min(width, (tx + 1) * kTileSize);
-                          for (int y = ty * kTileSize; y < y1; ++y) {
-                            for (int x = tx * kTileSize; x < x1; ++x) {
+                          const int y1 = std::min(rect.y1, rect.y0 + (ty + 1) * kTileSize);
+                          const int x1 = std::min(rect.x1, rect.x0 + (tx + 1) * kTileSize);
+                          for (int y = rect.y0 + ty * kTileSize; y < y1; ++y) {
+                            for (int x = rect.x0 + tx * kTileSize; x < x1; ++x) {
                               SampleState state{Rng::for_pixel(x, y, seed), 0};
                               Color sum{0, 0, 0};
                               for (int k = 0; k < spp; ++k) {
@@ -183,7 +189,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
                                 sample_offset(k, spp, jx, jy, ox, oy);
                                 sum += integrator.li(camera.ray(x + ox, y + oy), state);
                               }
-                              image.set(x, y, Vec3f(sum / double(spp)));
+                              image.set(x - rect.x0, y - rect.y0, Vec3f(sum / double(spp)));
                               counter += state.rays;
                             }
                           }
@@ -197,14 +203,14 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   progress.finish();
 
   if (stats) {
-    stats->width = width;
-    stats->height = height;
+    stats->width = region_width;
+    stats->height = region_height;
     stats->spp = spp;
     stats->threads =
         int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
     stats->seconds = seconds;
     stats->cpu_seconds = cpu_seconds;
-    stats->samples = std::uint64_t(width) * height * spp;
+    stats->samples = std::uint64_t(region_width) * region_height * spp;
     stats->rays = rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
   }
   return image;

@@ -15,6 +15,14 @@ namespace raycast {
 /// (albedo: the surface colour C before any lighting, black for misses).
 enum class Aov { kDepth, kNormal, kId, kAlbedo };
 
+/// The most worker threads a render may ask for (`--threads`; 0 means all cores).
+inline constexpr int kMaxThreads = 4096;
+
+/// The pixels [x0, x1) x [y0, y1) of the full image.
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 struct RenderOptions {
   int width = 0;                             // > 0 overrides the scene's image.width
   int height = 0;                            // > 0 overrides image.height
@@ -25,6 +33,9 @@ struct RenderOptions {
   /// Overrides render.antialias. Without it, spp > 0 renders fixed samples (no adaptive pass).
   std::optional<AntialiasSettings> antialias;
   bool progress = true;  // a progress bar on stderr, only when it is a terminal
+  /// Render only this part of the full image (a tile of a distributed render): the result is
+  /// the rectangle's size and each of its pixels is bit-identical to the whole render's.
+  std::optional<PixelRect> region;
 };
 
 struct RenderStats {
@@ -39,7 +50,8 @@ struct RenderStats {
 };
 
 /// Renders the scene with its camera (or the default one). Throws SceneError when an image
-/// texture cannot be loaded and std::invalid_argument for a non-positive override.
+/// texture cannot be loaded and std::invalid_argument for a non-positive override or a region
+/// that is empty or not inside the image. Statistics describe the region when there is one.
 Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr);
 
 /// The one summary line: "800x600, 4 spp, 2 threads: 1.23 s (cpu 2.40 s), 9876543 rays,

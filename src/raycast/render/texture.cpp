@@ -56,17 +56,19 @@ std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scen
 
 Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
              const Ray& ray, const SceneHit& hit, const SurfaceInfo& si) {
-  const Object& object = scene.objects[hit.object];
   // The material of the part hit (a CSG leaf's or an instance's own), as Scene::material_of.
-  const int own = material_of(object, hit.local);
-  const int index = own >= 0 ? own : 0;
+  const int own = material_of(scene.objects[hit.object], hit.local);
+  return albedo(scene, textures, ray, hit, si, std::size_t(own >= 0 ? own : 0));
+}
+
+Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
+             const Ray& ray, const SceneHit& hit, const SurfaceInfo& si, std::size_t index) {
   const Material& m = scene.materials[index];
   if (m.has_checker) {
     // The object-space point from the object-space ray, as the shape itself computed it.
-    return checker(m.checker, to_object_space(object, ray).at(hit.local.t));
+    return checker(m.checker, to_object_space(scene.objects[hit.object], ray).at(hit.local.t));
   }
-  if (std::size_t(index) < textures.size() && textures[index])
-    return lookup(*textures[index], si.u, si.v);
+  if (index < textures.size() && textures[index]) return lookup(*textures[index], si.u, si.v);
   return m.color;
 }
 

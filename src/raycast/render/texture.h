@@ -25,5 +25,8 @@ std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scen
 /// (at the surface's (u, v)) or colour. `ray` is the world ray that made the hit.
 Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
              const Ray& ray, const SceneHit& hit, const SurfaceInfo& si);
+/// The same with the hit's material index already resolved (material_of, negative taken as 0).
+Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
+             const Ray& ray, const SceneHit& hit, const SurfaceInfo& si, std::size_t material);
 
 }  // namespace raycast

@@ -41,6 +41,7 @@ struct AntialiasSettings {
 struct RenderSettings {
   IntegratorType integrator = IntegratorType::kWhitted;
   int max_depth = 5;
+  double bailout = 1.0 / 255;  // secondary rays of accumulated weight below this are not traced
   Vec3 background{0, 0, 0};
   Vec3 ambient{0, 0, 0};
   unsigned seed = 0;

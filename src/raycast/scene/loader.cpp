@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <vector>
 
-#include "io/image.h"
 #include "scene/csg_tree.h"
 #include "scene/prototype.h"
+#include "scene/read_materials.h"
+#include "scene/read_settings.h"
 #include "scene/shape_parsers.h"
 #include "scene/yaml_prescan.h"
 #include "scene/yaml_reader.h"
@@ -34,11 +36,11 @@ class Loader {
     scene_.materials.emplace_back();
     scene_.materials.back().name = "default";
     if (top.has("camera")) {
-      scene_.camera = read_camera(top.required("camera"));
+      scene_.camera = read_camera(ctx_, top.required("camera"));
       scene_.marks.camera = mark_of(top.required("camera"));
     }
-    if (top.has("image")) read_image(top.required("image"));
-    if (top.has("render")) read_render(top.required("render"));
+    if (top.has("image")) scene_.image = read_image(ctx_, top.required("image"));
+    if (top.has("render")) scene_.render = read_render(ctx_, top.required("render"));
     if (top.has("materials")) read_materials(top.required("materials"));
     if (top.has("lights")) read_lights(top.required("lights"));
     if (top.has("library")) read_library(top.required("library"));
@@ -58,150 +60,6 @@ class Loader {
     return {node.Mark().line + 1, node.Mark().column + 1};
   }
 
-  CameraDesc read_camera(const YAML::Node& node) {
-    Fields f(ctx_, node, "camera");
-    CameraDesc c;
-    const std::string type = f.string("type", "perspective");
-    c.position = f.vec3("position", c.position);
-    c.look_at = f.vec3("look_at", c.look_at);
-    c.up = f.direction("up", c.up);
-    if (type == "perspective") {
-      c.type = CameraType::kPerspective;
-      c.fov = f.number("fov", c.fov);
-      if (!(c.fov > 0 && c.fov < 180)) f.fail("fov", "camera.fov must be in (0, 180) degrees");
-    } else if (type == "orthographic") {
-      c.type = CameraType::kOrthographic;
-      c.height = f.positive("height", c.height);
-    } else {
-      f.fail("type", "camera.type must be perspective or orthographic, got " + type);
-    }
-    f.finish();
-    if (length_squared(c.look_at - c.position) == 0)
-      fail_at(ctx_, node, "camera.look_at must differ from camera.position");
-    if (length_squared(cross(c.look_at - c.position, c.up)) == 0)
-      fail_at(ctx_, node, "camera.up must not be parallel to the viewing direction");
-    return c;
-  }
-
-  void read_image(const YAML::Node& node) {
-    Fields f(ctx_, node, "image");
-    scene_.image.width = f.integer("width", scene_.image.width, 1, kMaxImageSide);
-    scene_.image.height = f.integer("height", scene_.image.height, 1, kMaxImageSide);
-    scene_.image.samples = f.integer("samples", scene_.image.samples, 1, 1 << 16);
-    f.finish();
-    if (static_cast<long long>(scene_.image.width) * scene_.image.height > kMaxImagePixels)
-      fail_at(ctx_, node,
-              "image.width * image.height must be at most " + std::to_string(kMaxImagePixels) +
-                  " pixels, got " + std::to_string(scene_.image.width) + " x " +
-                  std::to_string(scene_.image.height));
-  }
-
-  void read_render(const YAML::Node& node) {
-    Fields f(ctx_, node, "render");
-    RenderSettings& r = scene_.render;
-    const std::string integrator = f.string("integrator", "whitted");
-    if (integrator == "whitted")
-      r.integrator = IntegratorType::kWhitted;
-    else if (integrator == "raycast")
-      r.integrator = IntegratorType::kRaycast;
-    else if (integrator == "depth")
-      r.integrator = IntegratorType::kDepth;
-    else if (integrator == "normal")
-      r.integrator = IntegratorType::kNormal;
-    else if (integrator == "id")
-      r.integrator = IntegratorType::kId;
-    else
-      f.fail("integrator",
-             "render.integrator must be whitted, raycast, depth, normal or id, got " + integrator);
-    r.max_depth = f.integer("max_depth", r.max_depth, 0, 1000);
-    r.background = read_color(f, "background", r.background);
-    r.ambient = read_color(f, "ambient", r.ambient);
-    r.seed = static_cast<unsigned>(f.integer("seed", 0, 0, 2147483647));
-    if (f.has("antialias")) read_antialias(f.required("antialias"), r.antialias);
-    f.finish();
-  }
-
-  // render.antialias: {method, threshold, depth} (docs/scene-format.md).
-  void read_antialias(const YAML::Node& node, AntialiasSettings& aa) {
-    Fields f(ctx_, node, "render.antialias");
-    const std::string method = f.string("method");
-    if (method == "none")
-      aa.method = AntialiasMethod::kNone;
-    else if (method == "1" || method == "neighbour")
-      aa.method = AntialiasMethod::kNeighbour;
-    else if (method == "2" || method == "subdivide")
-      aa.method = AntialiasMethod::kSubdivide;
-    else if (method == "variance")
-      aa.method = AntialiasMethod::kVariance;
-    else
-      f.fail("method",
-             "render.antialias.method must be none, 1 (neighbour), 2 (subdivide) or "
-             "variance, got " +
-                 method);
-    aa.threshold = f.non_negative("threshold", aa.threshold);
-    aa.depth = f.integer("depth", aa.depth, 1, 16);
-    f.finish();
-  }
-
-  Color read_color(Fields& f, const std::string& key, const Color& fallback) {
-    if (!f.has(key)) return fallback;
-    const Color c = f.vec3(key);
-    if (c.x < 0 || c.y < 0 || c.z < 0) f.fail(key, f.name(key) + " must be >= 0 in every channel");
-    return c;
-  }
-
-  double unit_fraction(Fields& f, const std::string& key, double fallback) {
-    const double v = f.non_negative(key, fallback);
-    if (v > 1) f.fail(key, f.name(key) + " must be in [0, 1], got " + std::to_string(v));
-    return v;
-  }
-
-  Material read_material(const YAML::Node& node, const std::string& name) {
-    Fields f(ctx_, node, "material");
-    Material m;
-    m.name = name;
-    if (f.has("color") && f.has("texture"))
-      f.fail("texture", "material has both color and texture");
-    m.color = read_color(f, "color", m.color);
-    if (f.has("texture")) {
-      Fields t(ctx_, f.required("texture"), "texture");
-      if (t.has("checker")) {
-        Fields c(ctx_, t.required("checker"), "checker");
-        const YAML::Node colors = c.required("colors");
-        if (!colors.IsSequence() || colors.size() != 2)
-          fail_at(ctx_, colors, "checker.colors must be a list of 2 colours");
-        m.has_checker = true;
-        m.checker.c0 = read_vec3(ctx_, colors[0], "checker.colors[0]");
-        m.checker.c1 = read_vec3(ctx_, colors[1], "checker.colors[1]");
-        m.checker.scale = c.positive("scale", 1.0);
-        c.finish();
-      } else if (t.has("image")) {
-        Fields i(ctx_, t.required("image"), "image");
-        m.image_file = resolve(i.string("file"));
-        // Read now, so that a missing or bad file is an error at its position in every command.
-        try {
-          m.image = load_image_texture(m.image_file);
-        } catch (const ImageError& e) {
-          fail_at(ctx_, i.required("file"), std::string("texture image: ") + e.what());
-        }
-        i.finish();
-      } else {
-        fail_at(ctx_, t.node(), "texture must be checker or image");
-      }
-      t.finish();
-    }
-    m.ambient = f.non_negative("ambient", m.ambient);
-    m.diffuse = f.non_negative("diffuse", m.diffuse);
-    m.specular = f.non_negative("specular", m.specular);
-    m.shininess = f.non_negative("shininess", m.shininess);
-    m.reflection = unit_fraction(f, "reflection", m.reflection);
-    m.transmission = unit_fraction(f, "transmission", m.transmission);
-    m.ior = f.positive("ior", m.ior);
-    m.fresnel = f.boolean("fresnel", m.fresnel);
-    f.finish();
-    return m;
-  }
-
   void read_materials(const YAML::Node& node) {
     if (!node.IsMap()) fail_at(ctx_, node, "materials must be a mapping of names to materials");
     for (const auto& kv : node) {
@@ -209,52 +67,16 @@ class Loader {
       if (named_materials_.count(name))
         fail_at(ctx_, kv.first, "material '" + name + "' is defined twice");
       named_materials_[name] = static_cast<int>(scene_.materials.size());
-      scene_.materials.push_back(read_material(kv.second, name));
+      scene_.materials.push_back(read_material(ctx_, kv.second, name));
     }
   }
 
   void read_lights(const YAML::Node& node) {
     if (!node.IsSequence()) fail_at(ctx_, node, "lights must be a list");
     for (const YAML::Node& l : node) {
-      Fields f(ctx_, l, "light");
-      Light light;
-      const std::string type = f.string("type");
-      light.color = read_color(f, "color", light.color);
-      light.intensity = f.non_negative("intensity", light.intensity);
-      if (type == "point" || type == "spot") {
-        light.type = type == "point" ? LightType::kPoint : LightType::kSpot;
-        light.position = f.vec3("position");
-        light.attenuation = read_attenuation(f);
-        if (type == "spot") {
-          light.direction = normalize(f.direction("direction"));
-          light.angle = f.number("angle", light.angle);
-          if (!(light.angle > 0 && light.angle < 180))
-            f.fail("angle", "light.angle must be in (0, 180)");
-          light.falloff = f.non_negative("falloff", light.falloff);
-        }
-      } else if (type == "directional") {
-        light.type = LightType::kDirectional;
-        light.direction = normalize(f.direction("direction"));
-      } else if (type == "sphere") {
-        light.type = LightType::kSphere;
-        light.position = f.vec3("center");
-        light.radius = f.positive("radius");
-        light.samples = f.integer("samples", light.samples, 1, 4096);
-        light.attenuation = read_attenuation(f);
-      } else {
-        f.fail("type", "light.type must be point, directional, spot or sphere, got " + type);
-      }
-      f.finish();
-      scene_.lights.push_back(light);
+      scene_.lights.push_back(read_light(ctx_, l));
       scene_.marks.lights.push_back(mark_of(l));
     }
-  }
-
-  Attenuation read_attenuation(Fields& f) {
-    const std::string a = f.string("attenuation", "none");
-    if (a == "none") return Attenuation::kNone;
-    if (a == "inverse_square") return Attenuation::kInverseSquare;
-    f.fail("attenuation", "light.attenuation must be none or inverse_square, got " + a);
   }
 
   int read_material_ref(const YAML::Node& node) {
@@ -264,7 +86,7 @@ class Loader {
         fail_at(ctx_, node, "unknown material '" + node.Scalar() + "'");
       return it->second;
     }
-    scene_.materials.push_back(read_material(node, ""));
+    scene_.materials.push_back(read_material(ctx_, node, ""));
     return static_cast<int>(scene_.materials.size() - 1);
   }
 
@@ -341,6 +163,27 @@ class Loader {
     return obj;
   }
 
+  // While alive, `name` is on the stack of library entries being read (cycle detection) and, when
+  // `copying`, objects are counted against kMaxExpandedObjects; undone on every exit, throws too.
+  class Expansion {
+   public:
+    Expansion(Loader& loader, const std::string& name, bool copying)
+        : loader_(loader), counts_(copying) {
+      loader_.expanding_.push_back(name);
+      if (counts_) ++loader_.copying_;
+    }
+    ~Expansion() {
+      if (counts_) --loader_.copying_;
+      loader_.expanding_.pop_back();
+    }
+    Expansion(const Expansion&) = delete;
+    Expansion& operator=(const Expansion&) = delete;
+
+   private:
+    Loader& loader_;
+    bool counts_;
+  };
+
   const YAML::Node& library_entry(const YAML::Node& use) {
     if (!use.IsScalar()) fail_at(ctx_, use, "use must name a library entry, got " + describe(use));
     const auto it = library_.find(use.Scalar());
@@ -379,11 +222,8 @@ class Loader {
       const YAML::Node& def = library_entry(body);
       if (!expanding_.empty()) {
         // Inside a library entry: expanded in place, so that prototypes never hold instances.
-        expanding_.push_back(body.Scalar());
-        ++copying_;
+        const Expansion guard(*this, body.Scalar(), true);
         read_object(def, depth + 1, entry, here, out);
-        --copying_;
-        expanding_.pop_back();
         return;
       }
       Object obj;
@@ -424,12 +264,8 @@ class Loader {
       return read_csg_operation(node[key], key, depth, tree, here);
     if (key == "use") {
       const YAML::Node& def = library_entry(node[key]);
-      expanding_.push_back(node[key].Scalar());
-      ++copying_;
-      const std::int32_t code = read_csg_operand(def, depth + 1, tree, here);
-      --copying_;
-      expanding_.pop_back();
-      return code;
+      const Expansion guard(*this, node[key].Scalar(), true);
+      return read_csg_operand(def, depth + 1, tree, here);
     }
     Object leaf = read_shape(node, key, here, -1);
     if (!is_closed(leaf))
@@ -455,16 +291,12 @@ class Loader {
     for (const std::string& name : order) {
       const YAML::Node def = library_.at(name);
       std::vector<Object> objects;
-      expanding_.push_back(name);
-      read_object(def, 1, -1, Placement{std::nullopt, -1}, objects);
-      expanding_.pop_back();
+      {
+        const Expansion guard(*this, name, false);
+        read_object(def, 1, -1, Placement{std::nullopt, -1}, objects);
+      }
       prototypes_[name] = make_prototype(std::move(objects));
     }
-  }
-
-  std::string resolve(const std::string& path) const {
-    const std::filesystem::path p(path);
-    return p.is_absolute() ? path : (std::filesystem::path(ctx_.dir) / p).string();
   }
 
   SourceContext ctx_;
@@ -496,6 +328,12 @@ Scene load_scene_text(const std::string& text, const std::string& name, const st
 }
 
 Scene load_scene_file(const std::string& path, int frame) {
+  if (path == "-") {  // the CLI's convention for standard input (docs/cli.md)
+    std::stringstream ss;
+    ss << std::cin.rdbuf();
+    if (std::cin.bad()) throw SceneError("<stdin>", 0, 0, "cannot read the scene");
+    return load_scene_text(ss.str(), "<stdin>", ".", frame);
+  }
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw SceneError(path, 0, 0, "is a directory, not a scene file");

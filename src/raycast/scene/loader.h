@@ -7,7 +7,9 @@
 
 namespace raycast {
 
-/// Loads and builds a scene from a file; relative paths inside resolve against its folder.
+/// Loads and builds a scene from a file; relative paths inside resolve against its folder. The
+/// path `-` reads standard input (named `<stdin>` in messages; relative paths from the current
+/// folder).
 /// `frame` (>= 0) is what `{frame}` patterns in data file paths expand to (docs/iso-surfaces.md).
 Scene load_scene_file(const std::string& path, int frame = -1);
 /// Loads and builds a scene from text; `name` is used in messages, `dir` for relative paths.

@@ -44,13 +44,13 @@ Aabb read_bounds(Fields& f) {
 
 }  // namespace
 
-ShapeVariant parse_torus(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Torus>, Fields& f) {
   const double R = f.positive("major_radius");
   const double r = f.positive("minor_radius");
   return make_torus(R, r);
 }
 
-ShapeVariant parse_algebraic(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Algebraic>, Fields& f) {
   const Aabb box = read_bounds(f);
   const bool open = f.boolean("open", false);
   return with_formula(f, "equation", [&](const std::string& text) -> ShapeVariant {
@@ -58,7 +58,7 @@ ShapeVariant parse_algebraic(Fields& f) {
   });
 }
 
-ShapeVariant parse_implicit(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Implicit>, Fields& f) {
   const Aabb box = read_bounds(f);
   const bool open = f.boolean("open", false);
   return with_formula(f, "function", [&](const std::string& text) -> ShapeVariant {
@@ -66,7 +66,7 @@ ShapeVariant parse_implicit(Fields& f) {
   });
 }
 
-ShapeVariant parse_revolution(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Revolution>, Fields& f) {
   const YAML::Node list = f.required("profile");
   if (!list.IsSequence())
     fail_at(f.ctx(), list,

@@ -34,13 +34,13 @@ std::vector<Vec3> points(Fields& f, const std::string& key, std::size_t count) {
 
 }  // namespace
 
-ShapeVariant parse_plane(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Plane>, Fields& f) {
   const Vec3 n = f.direction("normal");
   const Vec3 p = f.vec3("point", {0, 0, 0});
   return make_plane(n, p);
 }
 
-ShapeVariant parse_sphere(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Sphere>, Fields& f) {
   const Vec3 c = f.vec3("center", {0, 0, 0});
   const double r = f.positive("radius");
   const double z_min = f.number("z_min", -r);
@@ -53,7 +53,7 @@ ShapeVariant parse_sphere(Fields& f) {
   return make_sphere(c, r, z_min, z_max, phi);
 }
 
-ShapeVariant parse_box(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Box>, Fields& f) {
   const Vec3 lo = f.vec3("min");
   const Vec3 hi = f.vec3("max");
   for (int a = 0; a < 3; ++a)
@@ -63,7 +63,7 @@ ShapeVariant parse_box(Fields& f) {
   return make_box(lo, hi);
 }
 
-ShapeVariant parse_triangle(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Triangle>, Fields& f) {
   const std::vector<Vec3> p = points(f, "vertices", 3);
   const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
   if (!std::isfinite(length_squared(e1)) || !std::isfinite(length_squared(e2)))
@@ -80,7 +80,7 @@ ShapeVariant parse_triangle(Fields& f) {
   return make_triangle(p[0], p[1], p[2], n[0], n[1], n[2]);
 }
 
-ShapeVariant parse_parallelogram(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Parallelogram>, Fields& f) {
   const Vec3 origin = f.vec3("origin");
   const Vec3 u = f.direction("u");
   const Vec3 v = f.direction("v");
@@ -89,7 +89,7 @@ ShapeVariant parse_parallelogram(Fields& f) {
   return make_parallelogram(origin, u, v);
 }
 
-ShapeVariant parse_disk(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Disk>, Fields& f) {
   const bool centred = f.has("center") || f.has("normal");
   const double radius = f.positive("radius");
   const double inner = f.non_negative("inner_radius", 0);

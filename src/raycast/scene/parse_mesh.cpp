@@ -57,7 +57,7 @@ bool usable(const std::vector<Vec3f>& normals) {
 
 }  // namespace
 
-ShapeVariant parse_mesh(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<MeshShape>, Fields& f) {
   MeshOptions options;
   options.smooth = f.boolean("smooth", false);
   const SourceContext& ctx = f.ctx();

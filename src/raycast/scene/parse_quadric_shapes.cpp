@@ -104,14 +104,14 @@ double phi_max_degrees(Fields& f) {
 
 }  // namespace
 
-ShapeVariant parse_ellipsoid(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Ellipsoid>, Fields& f) {
   const Vec3 c = f.vec3("center", {0, 0, 0});
   const Vec3 r = f.vec3("radii");
   if (!(r.x > 0 && r.y > 0 && r.z > 0)) f.fail("radii", f.name("radii") + " must all be > 0");
   return positioned(f, "radii", [&] { return make_ellipsoid(c, r); });
 }
 
-ShapeVariant parse_quadric(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Quadric>, Fields& f) {
   std::string key;
   const QuadricCoefficients c = read_quadric_coefficients(f, key);
   const std::optional<Aabb> box = read_bounds(f);
@@ -119,7 +119,7 @@ ShapeVariant parse_quadric(Fields& f) {
   return positioned(f, key, [&] { return make_quadric(c, box, open); });
 }
 
-ShapeVariant parse_cylinder(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Cylinder>, Fields& f) {
   const bool capped = f.boolean("capped", true);
   const double r = f.positive("radius");
   if (f.has("from") || f.has("to")) {
@@ -132,7 +132,7 @@ ShapeVariant parse_cylinder(Fields& f) {
   return positioned(f, "radius", [&] { return make_cylinder(r, z_min, z_max, phi, capped); });
 }
 
-ShapeVariant parse_cone(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Cone>, Fields& f) {
   const bool capped = f.boolean("capped", true);
   if (f.has("from") || f.has("to")) {
     const Vec3 from = f.vec3("from"), to = f.vec3("to");
@@ -148,19 +148,19 @@ ShapeVariant parse_cone(Fields& f) {
   return positioned(f, "radius", [&] { return make_cone(r, h, phi, capped); });
 }
 
-ShapeVariant parse_polygon(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Polygon>, Fields& f) {
   const std::vector<Vec3> v = read_points(f.ctx(), f.required("vertices"), f.name("vertices"));
   return positioned(f, "vertices", [&] { return make_polygon(v); });
 }
 
-ShapeVariant parse_slab(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Slab>, Fields& f) {
   const Vec3 n = f.direction("normal");
   const auto d = numbers_n(f, f.required("offsets"), f.name("offsets"), 2);
   if (!(d[0] < d[1])) f.fail("offsets", f.name("offsets") + " must be [d0, d1] with d0 < d1");
   return positioned(f, "offsets", [&] { return make_slab(n, d[0], d[1]); });
 }
 
-ShapeVariant parse_polyhedron(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Polyhedron>, Fields& f) {
   const YAML::Node node = f.required("planes");
   if (!node.IsSequence())
     fail_at(f.ctx(), node, f.name("planes") + " must be a list of [nx, ny, nz, d]");

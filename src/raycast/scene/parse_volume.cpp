@@ -130,7 +130,7 @@ ShapeVariant from_grid(Fields& f) {
 
 }  // namespace
 
-ShapeVariant parse_isosurface(Fields& f) {
+ShapeVariant parse_shape(std::type_identity<Isosurface>, Fields& f) {
   const bool particles = f.has("particles"), grid = f.has("grid");
   if (particles == grid)
     f.fail(particles ? "grid" : "iso",

@@ -3,6 +3,7 @@
 // them.
 #include <map>
 #include <string>
+#include <type_traits>
 
 #include "scene/object.h"
 #include "scene/yaml_reader.h"
@@ -12,27 +13,30 @@ namespace raycast {
 /// Reads one shape from its mapping; throws SceneError at the offending field.
 using ShapeParser = ShapeVariant (*)(Fields& fields);
 
-/// Every shape key the loader knows, with its parser.
+/// Every shape key the loader knows (each shape's `kName`), with its parser. Made from
+/// ShapeVariant: a shape added to the variant without a `parse_shape` overload does not compile.
 const std::map<std::string, ShapeParser>& shape_parsers();
 
-ShapeVariant parse_plane(Fields& f);
-ShapeVariant parse_sphere(Fields& f);
-ShapeVariant parse_box(Fields& f);
-ShapeVariant parse_triangle(Fields& f);
-ShapeVariant parse_parallelogram(Fields& f);
-ShapeVariant parse_disk(Fields& f);
-ShapeVariant parse_ellipsoid(Fields& f);
-ShapeVariant parse_quadric(Fields& f);
-ShapeVariant parse_cylinder(Fields& f);
-ShapeVariant parse_cone(Fields& f);
-ShapeVariant parse_polygon(Fields& f);
-ShapeVariant parse_slab(Fields& f);
-ShapeVariant parse_polyhedron(Fields& f);
-ShapeVariant parse_torus(Fields& f);
-ShapeVariant parse_algebraic(Fields& f);
-ShapeVariant parse_implicit(Fields& f);
-ShapeVariant parse_mesh(Fields& f);
-ShapeVariant parse_revolution(Fields& f);
-ShapeVariant parse_isosurface(Fields& f);
+// One parser per shape (parse_basic_shapes.cpp, parse_quadric_shapes.cpp,
+// parse_algebraic_shapes.cpp, parse_mesh.cpp, parse_volume.cpp), chosen by the shape's type.
+ShapeVariant parse_shape(std::type_identity<Plane>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Sphere>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Box>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Triangle>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Parallelogram>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Disk>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Ellipsoid>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Quadric>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Cylinder>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Cone>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Polygon>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Slab>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Polyhedron>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Torus>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Algebraic>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Implicit>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<MeshShape>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Revolution>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Isosurface>, Fields& f);
 
 }  // namespace raycast

@@ -1,29 +1,34 @@
 #include "scene/shape_parsers.h"
 
+#include <type_traits>
+#include <utility>
+#include <variant>
+
 namespace raycast {
 
-const std::map<std::string, ShapeParser>& shape_parsers() {
-  static const std::map<std::string, ShapeParser> table = {
-      {"plane", parse_plane},
-      {"sphere", parse_sphere},
-      {"box", parse_box},
-      {"triangle", parse_triangle},
-      {"parallelogram", parse_parallelogram},
-      {"disk", parse_disk},
-      {"ellipsoid", parse_ellipsoid},
-      {"quadric", parse_quadric},
-      {"cylinder", parse_cylinder},
-      {"cone", parse_cone},
-      {"polygon", parse_polygon},
-      {"slab", parse_slab},
-      {"polyhedron", parse_polyhedron},
-      {"torus", parse_torus},
-      {"algebraic", parse_algebraic},
-      {"implicit", parse_implicit},
-      {"mesh", parse_mesh},
-      {"revolution", parse_revolution},
-      {"isosurface", parse_isosurface},
+namespace {
+
+// CSG trees and instances have no key of their own: the loader builds them from `csg:` and `use:`.
+template <class T>
+constexpr bool kHasShapeKey = !std::is_same_v<T, CsgShape> && !std::is_same_v<T, InstanceShape>;
+
+template <std::size_t... I>
+std::map<std::string, ShapeParser> make_shape_parsers(std::index_sequence<I...>) {
+  std::map<std::string, ShapeParser> table;
+  const auto add = [&table]<class T>(std::type_identity<T>) {
+    if constexpr (kHasShapeKey<T>)
+      table.emplace(
+          T::kName, +[](Fields& f) { return parse_shape(std::type_identity<T>{}, f); });
   };
+  (add(std::type_identity<std::variant_alternative_t<I, ShapeVariant>>{}), ...);
+  return table;
+}
+
+}  // namespace
+
+const std::map<std::string, ShapeParser>& shape_parsers() {
+  static const std::map<std::string, ShapeParser> table =
+      make_shape_parsers(std::make_index_sequence<std::variant_size_v<ShapeVariant>>{});
   return table;
 }
 
