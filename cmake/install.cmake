@@ -43,6 +43,12 @@ endif()
 if(TARGET embree)
   string(APPEND raycast_deps "find_dependency(embree 3 CONFIG)\n")
 endif()
+if(TARGET raycast::openvdb)  # volume/ links OpenVDB: the same imported target for users
+  string(APPEND raycast_deps "if(NOT TARGET raycast::openvdb)\n"
+    "  add_library(raycast::openvdb INTERFACE IMPORTED)\n"
+    "  set_target_properties(raycast::openvdb PROPERTIES INTERFACE_LINK_LIBRARIES \"${RAYCAST_OPENVDB_LIBRARY};${RAYCAST_IMATH_LIBRARY};TBB::tbb\")\n"
+    "endif()\n")
+endif()
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/raycastConfig.cmake.in
   ${PROJECT_BINARY_DIR}/raycastConfig.cmake INSTALL_DESTINATION ${raycast_cmake_dir})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake
@@ -60,6 +66,10 @@ endif()
 set(raycast_pc_extra "")
 if(TARGET embree)
   set(raycast_pc_extra "-lembree3")
+endif()
+if(TARGET raycast::openvdb)
+  string(APPEND raycast_pc_requires " Imath")
+  string(APPEND raycast_pc_extra " -lopenvdb")
 endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/raycast.pc.in ${PROJECT_BINARY_DIR}/raycast.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/raycast.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

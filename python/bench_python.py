@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """Benchmarks of the Python module (docs/performance-python.md). Short runs; say the load.
 
-  PYTHONPATH=build/release/python /usr/bin/python3 python/bench_python.py [--open3d]
+  PYTHONPATH=build/release/python /usr/bin/python3 python/bench_python.py [--open3d] [--distance]
 
 1. Python overhead of cast_rays over the C++ batch path (Scene::intersect over a RayArray with
    preallocated columns), 10^6 rays at a 1M-triangle sphere, best of 3 each.
 2. compute_distance / compute_signed_distance points per second on the same sphere, and the same
-   for Open3D's RaycastingScene when --open3d is given (python3-open3d).
+   for Open3D's RaycastingScene when --open3d is given (python3-open3d). --distance runs only 2.
 """
 import os
 import sys
@@ -58,7 +58,7 @@ def main():
     o = rng.normal(size=(n, 3))
     o *= 3 / np.linalg.norm(o, axis=1, keepdims=True)
     rays = np.concatenate([o, rng.uniform(-1, 1, (n, 3)) - o], 1)
-    for dtype in (np.float64, np.float32):
+    for dtype in () if "--distance" in sys.argv else (np.float64, np.float32):
         r = rays.astype(dtype)
         py_s = best(lambda: scene.cast_rays(r))
         cpp_s = best(lambda: raycast._time_intersect(scene, r))
@@ -82,8 +82,8 @@ def main():
         o3.compute_distance(o3d.core.Tensor(np.zeros((1, 3), np.float32)))
     for name, pts in sets.items():
         pts = pts.astype(np.float32).astype(np.float64)  # the same points for both
-        d_s = best(lambda: scene.compute_distance(pts), 1)
-        sd_s = best(lambda: scene.compute_signed_distance(pts), 1)
+        d_s = best(lambda: scene.compute_distance(pts), 3)
+        sd_s = best(lambda: scene.compute_signed_distance(pts), 3)
         sd = scene.compute_signed_distance(pts)
         r = np.linalg.norm(pts, axis=1)
         clear = np.abs(r - 1) > 1e-3  # the polyhedron is within 1e-5 of the unit sphere
@@ -92,7 +92,7 @@ def main():
                 f"points per cpu-s, {wrong} wrong signs")
         if o3 is not None:
             q = o3d.core.Tensor(pts.astype(np.float32))
-            o_s = best(lambda: o3.compute_distance(q, nthreads=2), 1)
+            o_s = best(lambda: o3.compute_distance(q, nthreads=2), 3)
             od = o3.compute_distance(q, nthreads=2).numpy()
             osd = o3.compute_signed_distance(q, nthreads=2).numpy()
             ours = scene.compute_distance(pts)

@@ -12,7 +12,8 @@ packages=(cmake g++ make pkg-config git
   pybind11-dev python3-dev python3-numpy python3-pytest
   clang-14 libclang-rt-14-dev
   libopenmpi-dev openmpi-bin
-  libcpp-httplib-dev chromium)
+  libcpp-httplib-dev chromium
+  libopenvdb-dev libboost-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -7,6 +7,7 @@
 namespace raycast {
 using api::Camera;
 using api::Crossing;
+using api::GridSurface;
 using api::CsgOp;
 using api::HitColumns;
 using api::Image;
@@ -16,6 +17,7 @@ using api::Material;
 using api::MaterialId;
 using api::NotImplementedError;
 using api::ObjectId;
+using api::ParticleSurface;
 using api::Ray;
 using api::RayArray;
 using api::RenderOptions;

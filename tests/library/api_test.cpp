@@ -224,3 +224,56 @@ TEST(PublicScene, Render_FillsTheImage) {
 }
 
 }  // namespace
+
+namespace {
+
+// signed_distance reuses a neighbour's sign inside a surface-free ball (public/scene_points.cpp):
+// its signs must equal occupancy's point by point, also for dense points straddling surfaces.
+TEST(PublicScene, SignedDistanceSigns_EqualOccupancyOnDenseBatches) {
+  raycast::Scene s;
+  std::vector<double> v;
+  std::vector<std::uint32_t> t;
+  const int rows = 24, cols = 32;  // a closed UV sphere of radius 1 about the origin
+  v.insert(v.end(), {0, 0, 1});
+  for (int i = 1; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) {
+      const double th = M_PI * i / rows, ph = 2 * M_PI * j / cols;
+      v.insert(v.end(), {std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)});
+    }
+  v.insert(v.end(), {0, 0, -1});
+  auto at = [&](int i, int j) { return static_cast<std::uint32_t>(1 + (i - 1) * cols + j % cols); };
+  const auto last = static_cast<std::uint32_t>(v.size() / 3 - 1);
+  for (int j = 0; j < cols; ++j) {
+    t.insert(t.end(), {0, at(1, j), at(1, j + 1)});
+    t.insert(t.end(), {at(rows - 1, j), last, at(rows - 1, j + 1)});
+    for (int i = 1; i + 1 < rows; ++i) {
+      t.insert(t.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      t.insert(t.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  s.add_mesh(std::span<const double>(v), t);
+  s.add_box({1.5, -0.5, -0.5}, {2.5, 0.5, 0.5});
+  s.commit();
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-2.6, 2.6), tiny(-1e-3, 1e-3);
+  std::vector<double> points;
+  for (int i = 0; i < 3000; ++i) points.insert(points.end(), {u(rng), u(rng), u(rng)});
+  // Rows of points 1e-4 apart across the sphere's surface and the box's faces.
+  for (double x = 0.95; x < 1.05; x += 1e-4) points.insert(points.end(), {x, tiny(rng), 0.01});
+  for (double x = 1.45; x < 1.55; x += 1e-4) points.insert(points.end(), {x, tiny(rng), 0.2});
+  const std::size_t n = points.size() / 3;
+  std::vector<double> sd(n);
+  std::vector<std::uint8_t> occ(n);
+  s.signed_distance(points, sd);
+  s.occupancy(points, occ);
+  std::size_t inside = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    ASSERT_EQ(std::signbit(sd[i]), occ[i] == 1)
+        << i << ": " << points[3 * i] << " " << points[3 * i + 1] << " " << points[3 * i + 2];
+    inside += occ[i];
+  }
+  EXPECT_GT(inside, 1000u);
+  EXPECT_LT(inside, n - 1000);
+}
+
+}  // namespace

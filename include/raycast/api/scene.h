@@ -67,6 +67,11 @@ class Scene {
   /// The implicit surface f(x, y, z) = 0 of any formula, in a box.
   ObjectId add_implicit(std::string_view function, const Vec3d& bounds_min,
                         const Vec3d& bounds_max);
+  /// The iso-surface of SPH particles (x, y, z per particle). Throws SceneError for bad
+  /// parameters, and for a grid too large for memory (before allocating, with the bytes needed).
+  ObjectId add_isosurface(std::span<const double> particles, const ParticleSurface& params);
+  /// The iso-surface of a grid of values (counts[0] * counts[1] * counts[2] of them, x fastest).
+  ObjectId add_isosurface(std::span<const float> values, const GridSurface& grid);
   /// A set operation over closed solids (shapes or CSG objects) that were added before; they
   /// become parts of the new object and stop being objects of their own.
   ObjectId add_csg(CsgOp op, std::span<const ObjectId> operands);

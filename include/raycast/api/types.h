@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -95,6 +96,29 @@ struct Transform {
 };
 
 /// Surface appearance for rendering (docs/rendering.md); colours are linear RGB.
+/// SPH particles as an iso-surface (docs/iso-surfaces.md, the `isosurface` scene key with
+/// `particles`): the density rho = sum V rest_density W(r, h) (cubic spline kernel) is splatted
+/// to a grid and the solid is {rho > iso}. Unset fields take the scene format's defaults.
+struct ParticleSurface {
+  double smoothing_length = 0;                   // h, > 0 (required)
+  double rest_density = 1000;                    // > 0
+  std::optional<double> particle_volume;         // V, default (h / 1.3)^3
+  std::optional<double> iso;                     // >= 0, default rest_density / 2
+  std::optional<std::array<Vec3d, 2>> domain;    // min, max; default: particles' box + 2h
+  std::optional<std::array<int, 3>> resolution;  // nodes per axis (>= 2) over the domain
+  std::optional<double> cell_size;               // default h / 2 (without resolution)
+};
+
+/// A scalar grid as an iso-surface (the `isosurface` scene key with `grid`): node (i, j, k) at
+/// origin + (i, j, k) * spacing holds values[i + nx * (j + ny * k)] (x fastest), trilinear in
+/// each cell, 0 outside the grid; the solid is {field > iso}.
+struct GridSurface {
+  std::array<int, 3> counts{};  // nodes per axis, >= 2
+  Vec3d origin{0, 0, 0};
+  Vec3d spacing{1, 1, 1};  // > 0
+  double iso = 0;          // >= 0
+};
+
 struct Material {
   Vec3d color{0.8, 0.8, 0.8};
   double ambient = 1, diffuse = 0.8, specular = 0, shininess = 32;

@@ -1,10 +1,101 @@
 #include "mesh/closest_point.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "geometry/distance.h"
 
 namespace raycast {
+
+namespace {
+
+// Rounding of the stored boxes. The axes are unit vectors rounded to float, so their Gram matrix
+// differs from the identity by a few 2^-24 per entry: coordinates along them and projections
+// onto them differ by at most that times the sum of the half-extents, which the half-extents
+// are widened by (kAxisSlack), and squared lengths measured along them shrink by at most
+// 1 + 3 * 3 * 2^-24, which pruning allows for (kPruneSlack). Double rounding of the
+// projections is covered by kRoundSlack times the box's magnitude.
+constexpr double kAxisSlack = 4e-6;
+constexpr double kRoundSlack = 1e-12;
+constexpr double kPruneSlack = 4e-6;
+
+// A tree is at most 96 levels deep (accel/bvh.cpp); each level leaves at most 3 siblings behind.
+constexpr int kStackSize = 3 * 96 + 4;
+
+// The second axis of a box from its first and third (float): n x u in double. Products of
+// floats are exact in double, so the build and the queries get the same vector bit for bit.
+inline void third_axis(const double u[3], const double n[3], double v[3]) {
+  v[0] = n[1] * u[2] - n[2] * u[1];
+  v[1] = n[2] * u[0] - n[0] * u[2];
+  v[2] = n[0] * u[1] - n[1] * u[0];
+}
+
+struct Obb {
+  float c[3] = {0, 0, 0};
+  float a[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // u, (v, computed), n
+  float h[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
+                std::numeric_limits<float>::infinity()};
+  double volume = kInfinity;
+};
+
+float round_up(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) >= x ? f
+                                     : std::nextafter(f, std::numeric_limits<float>::infinity());
+}
+
+// The box along `axes` (u and n rounded to float, v = n x u from those) holding every point
+// `each(f)` passes to f. An infinite box (bound 0 everywhere) when the values do not fit in
+// float.
+template <class Each>
+Obb fit(const Vec3 (&axes)[3], Each&& each) {
+  Obb out;
+  Vec3 ad[3];
+  for (int k : {0, 2})
+    for (int j = 0; j < 3; ++j) {
+      out.a[k][j] = static_cast<float>(axes[k][j]);
+      ad[k][j] = out.a[k][j];
+    }
+  double u[3] = {ad[0].x, ad[0].y, ad[0].z}, n[3] = {ad[2].x, ad[2].y, ad[2].z}, v[3];
+  third_axis(u, n, v);
+  ad[1] = Vec3(v[0], v[1], v[2]);
+  double lo[3] = {kInfinity, kInfinity, kInfinity}, hi[3] = {-kInfinity, -kInfinity, -kInfinity};
+  each([&](const Vec3& v) {
+    for (int k = 0; k < 3; ++k) {
+      const double s = dot(v, ad[k]);
+      lo[k] = std::min(lo[k], s);
+      hi[k] = std::max(hi[k], s);
+    }
+  });
+  Vec3 c;
+  for (int k = 0; k < 3; ++k) c += (0.5 * (lo[k] + hi[k])) * ad[k];
+  Vec3 cd;
+  for (int j = 0; j < 3; ++j) {
+    out.c[j] = static_cast<float>(c[j]);
+    cd[j] = out.c[j];
+  }
+  double h[3] = {0, 0, 0};
+  each([&](const Vec3& v) {
+    const Vec3 d = v - cd;
+    for (int k = 0; k < 3; ++k) h[k] = std::max(h[k], std::abs(dot(d, ad[k])));
+  });
+  const double sum = h[0] + h[1] + h[2];
+  const double scale = std::max({std::abs(cd.x), std::abs(cd.y), std::abs(cd.z)}) + sum;
+  const double widest = std::max({h[0], h[1], h[2]});
+  out.volume = 1;
+  for (int k = 0; k < 3; ++k) {
+    out.h[k] = round_up(h[k] + kAxisSlack * sum + kRoundSlack * scale);
+    out.volume *= h[k] + 1e-3 * widest;
+  }
+  bool finite = std::isfinite(scale) && std::isfinite(out.volume);
+  for (int k = 0; k < 3; ++k) finite = finite && std::isfinite(out.h[k]) && std::isfinite(out.c[k]);
+  return finite ? out : Obb{};
+}
+
+}  // namespace
 
 double distance2(const Aabb& box, const Vec3& p) {
   double d2 = 0;
@@ -32,51 +123,207 @@ MeshDistance::MeshDistance(const Mesh& mesh, const std::optional<Transform>& xf)
     centres[i] = boxes[i].centre();
     box_.grow(boxes[i]);
   }
+  if (n == 0) return;
   BvhBuildConfig config;
   config.max_leaf_size = 4;
-  bvh_ = build_bvh(boxes, centres, config);
+  const Bvh bvh = build_bvh(boxes, centres, config);
   tris_.resize(n);
-  for (std::size_t i = 0; i < bvh_.prims.size(); ++i) tris_[i] = tris[bvh_.prims[i]];
+  for (std::size_t i = 0; i < bvh.prims.size(); ++i) tris_[i] = tris[bvh.prims[i]];
+
+  // The triangle range under each binary node (leaves are contiguous in leaf order when the
+  // builder partitions in place; a subtree whose range has gaps keeps its axis-aligned box).
+  const std::size_t m = bvh.nodes.size();
+  std::vector<std::uint32_t> lo(m), hi(m), count(m);
+  auto ranges = [&](auto&& self, std::uint32_t i) -> void {
+    const BvhNode& node = bvh.nodes[i];
+    if (node.is_leaf()) {
+      lo[i] = node.first, hi[i] = node.first + node.count, count[i] = node.count;
+      return;
+    }
+    self(self, node.first);
+    self(self, node.first + 1);
+    lo[i] = std::min(lo[node.first], lo[node.first + 1]);
+    hi[i] = std::max(hi[node.first], hi[node.first + 1]);
+    count[i] = count[node.first] + count[node.first + 1];
+  };
+  ranges(ranges, 0);
+
+  // Collapse the binary tree into 4-wide nodes: open the child of largest area until 4.
+  struct Job {
+    std::uint32_t node, lane, source;
+  };
+  std::vector<Job> jobs;
+  auto collapse = [&](auto&& self, std::uint32_t i) -> std::uint32_t {
+    std::uint32_t lanes[4] = {bvh.nodes[i].first, bvh.nodes[i].first + 1, 0, 0};
+    int used = 2;
+    while (used < 4) {
+      int pick = -1;
+      double area = -1;
+      for (int l = 0; l < used; ++l) {
+        const BvhNode& c = bvh.nodes[lanes[l]];
+        if (!c.is_leaf() && c.box.half_area() > area) pick = l, area = c.box.half_area();
+      }
+      if (pick < 0) break;
+      const std::uint32_t opened = lanes[pick];
+      lanes[pick] = bvh.nodes[opened].first;
+      lanes[used++] = bvh.nodes[opened].first + 1;
+    }
+    const auto index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    for (int l = 0; l < 4; ++l) {
+      std::uint32_t ref = 0, cnt = kNone;
+      if (l < used) {
+        const BvhNode& c = bvh.nodes[lanes[l]];
+        if (c.is_leaf()) {
+          ref = c.first, cnt = c.count;
+        } else {
+          ref = self(self, lanes[l]), cnt = 0;
+        }
+        jobs.push_back({index, static_cast<std::uint32_t>(l), lanes[l]});
+      }
+      nodes_[index].ref[l] = ref;
+      nodes_[index].count[l] = cnt;
+    }
+    return index;
+  };
+  if (bvh.nodes[0].is_leaf()) {
+    root_ref_ = bvh.nodes[0].first, root_count_ = bvh.nodes[0].count;
+    return;
+  }
+  collapse(collapse, 0);
+  root_ref_ = 0, root_count_ = 0;
+
+  tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t j) {
+    const Job& job = jobs[j];
+    const std::uint32_t s = job.source;
+    const Aabb& box = bvh.nodes[s].box;
+    const Vec3 world[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    Obb best;
+    if (count[s] == hi[s] - lo[s]) {
+      auto each = [&](auto&& f) {
+        for (std::uint32_t t = lo[s]; t < hi[s]; ++t) f(tris_[t].a), f(tris_[t].b), f(tris_[t].c);
+      };
+      best = fit(world, each);
+      // The patch's frame: its area-weighted mean normal, and in the plane the world axis along
+      // which the box is widest. Only for patches whose normals mostly agree.
+      Vec3 sum;
+      double area = 0;
+      for (std::uint32_t t = lo[s]; t < hi[s]; ++t) {
+        const Vec3 nt = cross(tris_[t].b - tris_[t].a, tris_[t].c - tris_[t].a);
+        sum += nt, area += length(nt);
+      }
+      if (length(sum) > 0.3 * area && area > 0) {
+        const Vec3 nz = normalize(sum);
+        const Vec3 e = box.extent();
+        int order[3] = {0, 1, 2};
+        std::sort(order, order + 3, [&](int x, int y) { return e[x] > e[y]; });
+        for (int o : order) {
+          const Vec3 u = world[o] - dot(world[o], nz) * nz;
+          if (length(u) < 0.3) continue;
+          const Vec3 nx = normalize(u);
+          const Vec3 axes[3] = {nx, cross(nz, nx), nz};
+          const Obb oriented = fit(axes, each);
+          if (oriented.volume < best.volume) best = oriented;
+          break;
+        }
+      }
+    } else if (box.is_bounded()) {
+      best = fit(world, [&](auto&& f) {
+        for (int k = 0; k < 8; ++k)
+          f(Vec3(k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y,
+                 k & 4 ? box.hi.z : box.lo.z));
+      });
+    }
+    Node& node = nodes_[job.node];
+    for (int k = 0; k < 3; ++k) {
+      node.c[k][job.lane] = best.c[k];
+      node.h[k][job.lane] = best.h[k];
+      node.u[k][job.lane] = best.a[0][k];
+      node.n[k][job.lane] = best.a[2][k];
+    }
+  });
+  // Lanes without a child: a finite box that is never looked at (count kNone).
+  for (Node& node : nodes_)
+    for (int l = 0; l < 4; ++l)
+      if (node.count[l] == kNone)
+        for (int k = 0; k < 3; ++k) {
+          node.c[k][l] = node.h[k][l] = 0;
+          node.u[k][l] = k == 0 ? 1.f : 0.f;
+          node.n[k][l] = k == 2 ? 1.f : 0.f;
+        }
 }
 
 bool MeshDistance::closest(const Vec3& p, Result& best) const {
-  if (bvh_.empty()) return false;
+  if (tris_.empty()) return false;
   bool improved = false;
-  // Depth-first, the nearer child first; a node farther than the best so far is skipped. Each
-  // stack entry carries its box distance, computed once when its parent is opened.
+  auto test_leaf = [&](std::uint32_t first, std::uint32_t count) {
+    for (std::uint32_t i = first; i < first + count; ++i) {
+      const Tri& t = tris_[i];
+      const Vec3 q = closest_point_on_triangle(p, t.a, t.b, t.c);
+      const double d2 = length_squared(q - p);
+      if (d2 < best.distance2 || (d2 == best.distance2 && t.prim < best.prim)) {
+        best = {q, d2, t.prim};
+        improved = true;
+      }
+    }
+  };
+  if (root_count_ != 0) {
+    test_leaf(root_ref_, root_count_);
+    return improved;
+  }
+  // Depth-first, the nearest child first; an entry whose box is farther than the best so far
+  // (allowing for the boxes' rounding) is skipped. Ties are never pruned, so the least prim wins
+  // whatever the order.
   struct Entry {
-    std::uint32_t node;
+    std::uint32_t ref, count;
     double d2;
   };
-  Entry stack[256];  // a tree is at most 96 levels deep (accel/bvh.cpp): 2 per level
+  Entry stack[kStackSize];
   int top = 0;
-  stack[top++] = {0, distance2(bvh_.nodes[0].box, p)};
+  stack[top++] = {0, 0, 0};
+  const double px = p.x, py = p.y, pz = p.z;
   while (top > 0) {
     const Entry e = stack[--top];
-    if (e.d2 > best.distance2) continue;
-    const BvhNode& node = bvh_.nodes[e.node];
-    if (node.is_leaf()) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-        const Tri& t = tris_[i];
-        const Vec3 q = closest_point_on_triangle(p, t.a, t.b, t.c);
-        const double d2 = length_squared(q - p);
-        if (d2 < best.distance2 || (d2 == best.distance2 && t.prim < best.prim)) {
-          best = {q, d2, t.prim};
-          improved = true;
-        }
-      }
+    const double bound = best.distance2 * (1 + kPruneSlack);
+    if (e.d2 > bound) continue;
+    if (e.count != 0) {
+      test_leaf(e.ref, e.count);
       continue;
     }
-    const std::uint32_t a = node.first, b = node.first + 1;
-    const double da = distance2(bvh_.nodes[a].box, p), db = distance2(bvh_.nodes[b].box, p);
-    if (top + 2 > 256) continue;  // unreachable: see the stack's size
-    if (da <= db) {
-      if (db <= best.distance2) stack[top++] = {b, db};
-      if (da <= best.distance2) stack[top++] = {a, da};
-    } else {
-      if (da <= best.distance2) stack[top++] = {a, da};
-      if (db <= best.distance2) stack[top++] = {b, db};
+    const Node& node = nodes_[e.ref];
+    double d2[4];
+    for (int l = 0; l < 4; ++l) {
+      const double dx = px - node.c[0][l], dy = py - node.c[1][l], dz = pz - node.c[2][l];
+      const double u[3] = {node.u[0][l], node.u[1][l], node.u[2][l]};
+      const double n[3] = {node.n[0][l], node.n[1][l], node.n[2][l]};
+      double v[3];
+      third_axis(u, n, v);
+      const double q[3] = {dx * u[0] + dy * u[1] + dz * u[2], dx * v[0] + dy * v[1] + dz * v[2],
+                           dx * n[0] + dy * n[1] + dz * n[2]};
+      double s = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double out = std::max(std::abs(q[k]) - static_cast<double>(node.h[k][l]), 0.0);
+        s += out * out;
+      }
+      d2[l] = s;
     }
+    // Push the kept children farthest first, so that the nearest is taken next.
+    Entry kept[4];
+    int n = 0;
+    for (int l = 0; l < 4; ++l) {
+      if (node.count[l] == kNone || d2[l] > bound) continue;
+      Entry c{node.ref[l], node.count[l], d2[l]};
+      // Start every kept child's fetch now, so that their cache misses overlap.
+      const char* child = node.count[l] == 0 ? reinterpret_cast<const char*>(&nodes_[c.ref])
+                                             : reinterpret_cast<const char*>(&tris_[c.ref]);
+      const std::size_t bytes = node.count[l] == 0 ? sizeof(Node) : c.count * sizeof(Tri);
+      for (std::size_t b = 0; b < bytes; b += 64) __builtin_prefetch(child + b);
+      int j = n++;
+      while (j > 0 && kept[j - 1].d2 < c.d2) kept[j] = kept[j - 1], --j;
+      kept[j] = c;
+    }
+    if (top + n > kStackSize) continue;  // unreachable: see kStackSize
+    for (int j = 0; j < n; ++j) stack[top++] = kept[j];
   }
   return improved;
 }

@@ -73,6 +73,9 @@ DistanceIndex::DistanceIndex(const raycast::Scene& scene) {
                        ": distances cover meshes, plane, full sphere, box, ellipsoid, full "
                        "cylinder and cone, torus and triangle (docs/library.md)";
     }
+    if (e.closed)
+      for (int a = 0; a < 3; ++a)
+        magnitude_ = std::max({magnitude_, std::abs(e.box.lo[a]), std::abs(e.box.hi[a])});
     entries_.push_back(std::move(e));
   }
 }
@@ -98,15 +101,15 @@ DistanceIndex::Nearest DistanceIndex::nearest(const raycast::Vec3& p) const {
   return best;
 }
 
-bool DistanceIndex::inside(const raycast::Vec3& p) const {
+bool DistanceIndex::inside(const raycast::Vec3& p, double distance2) const {
   for (const Entry& e : entries_) {
     if (!e.closed || !e.box.contains(p)) continue;
-    if (raycast::contains(*e.object, p) || on_surface(e, p)) return true;
+    if (raycast::contains(*e.object, p) || on_surface(e, p, distance2)) return true;
   }
   return false;
 }
 
-bool DistanceIndex::on_surface(const Entry& e, const raycast::Vec3& p) const {
+bool DistanceIndex::on_surface(const Entry& e, const raycast::Vec3& p, double distance2) const {
   // The solid is closed: its surface belongs to it. A point counts as on the surface when its
   // computed distance is within the rounding error bound of the closest-point computation (a few
   // dozen operations on coordinates of magnitude `scale`, Higham's gamma).
@@ -118,12 +121,14 @@ bool DistanceIndex::on_surface(const Entry& e, const raycast::Vec3& p) const {
     // Mesh spans merge crossings closer than 8 float ulps of the mesh's coordinates into one
     // event (mesh/mesh.cpp): a point that near the surface has no parity, it is on the surface.
     const double resolution = kMeshEventUlps * std::numeric_limits<float>::epsilon() * scale;
+    if (distance2 > resolution * resolution) return false;  // no surface is that near
     raycast::MeshDistance::Result r;
     r.distance2 = resolution * resolution;
     return e.mesh->closest(p, r) || r.distance2 == 0;
   }
   const raycast::Object& o = *e.object;
   if (!std::isfinite(scale) || (o.xf && !is_similarity(*o.xf))) return false;
+  if (distance2 > bound * bound * (1 + 1e-9)) return false;  // no surface is that near
   raycast::Vec3 q;
   if (!shape_point(o.shape, o.xf ? o.xf->inverse_point(p) : p, q)) return false;
   if (o.xf) q = o.xf->point(q);

@@ -24,7 +24,11 @@ class DistanceIndex {
   /// of the first object without a distance.
   Nearest nearest(const raycast::Vec3& p) const;
   /// Whether p is inside or on a closed solid (exact span parity, scene/object.h contains).
-  bool inside(const raycast::Vec3& p) const;
+  /// `distance2`, when known, is p's squared distance to the nearest surface: points farther
+  /// than rounding from every surface skip the on-surface test.
+  bool inside(const raycast::Vec3& p, double distance2 = 0) const;
+  /// The largest coordinate magnitude of the closed solids' boxes (inf when one is unbounded).
+  double magnitude() const { return magnitude_; }
   /// Empty when every object has a distance, else the error message for the first one without.
   const std::string& unsupported() const { return unsupported_; }
 
@@ -35,9 +39,10 @@ class DistanceIndex {
     bool closed;
     std::unique_ptr<raycast::MeshDistance> mesh;  // meshes, placed in world space
   };
-  bool on_surface(const Entry& e, const raycast::Vec3& p) const;
+  bool on_surface(const Entry& e, const raycast::Vec3& p, double distance2) const;
   std::vector<Entry> entries_;
   std::string unsupported_;
+  double magnitude_ = 0;
 };
 
 }  // namespace raycast::api

@@ -10,6 +10,8 @@
 #include "scene/csg_tree.h"
 #include "scene/loader.h"
 #include "scene/shape_parsers.h"
+#include "volume/isosurface.h"
+#include "volume/splat.h"
 
 namespace raycast::api {
 
@@ -273,6 +275,59 @@ ObjectId Scene::add_algebraic(std::string_view equation, const Vec3d& lo, const 
 ObjectId Scene::add_implicit(std::string_view function, const Vec3d& lo, const Vec3d& hi) {
   return add_shape("implicit",
                    "{function: " + quoted(function) + ", " + bounds_fields(lo, hi) + "}");
+}
+
+ObjectId Scene::add_isosurface(std::span<const double> particles, const ParticleSurface& params) {
+  const char* call = "add_isosurface";
+  check_open(impl_.get(), call);
+  if (particles.size() % 3 != 0) bad(call, "particles must hold x, y, z per particle");
+  std::vector<raycast::Vec3> points(particles.size() / 3);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    points[i] = {particles[3 * i], particles[3 * i + 1], particles[3 * i + 2]};
+  raycast::SplatParams p;
+  p.h = params.smoothing_length;
+  p.rest_density = params.rest_density;
+  p.particle_volume = params.particle_volume;
+  if (params.domain)
+    p.domain = raycast::Aabb{to_engine((*params.domain)[0]), to_engine((*params.domain)[1])};
+  p.resolution = params.resolution;
+  p.cell_size = params.cell_size;
+  const double iso = params.iso.value_or(params.rest_density / 2);
+  raycast::ScalarGrid grid;
+  try {
+    grid = raycast::splat_particles(points, p);
+    return push(*impl_, raycast::make_isosurface(std::move(grid), iso));
+  } catch (const std::invalid_argument& e) {
+    bad(call, e.what());
+  } catch (const std::length_error& e) {
+    bad(call, e.what());
+  }
+}
+
+ObjectId Scene::add_isosurface(std::span<const float> values, const GridSurface& g) {
+  const char* call = "add_isosurface";
+  check_open(impl_.get(), call);
+  std::array<std::uint64_t, 3> n{};
+  for (int a = 0; a < 3; ++a) {
+    if (g.counts[a] < 2) bad(call, "a grid needs at least 2 nodes per axis");
+    n[a] = static_cast<std::uint64_t>(g.counts[a]);
+  }
+  if (values.size() / n[0] / n[1] != n[2] || values.size() % (n[0] * n[1]) != 0)
+    bad(call, "the grid holds " + std::to_string(values.size()) + " values, its counts need " +
+                  std::to_string(n[0] * n[1] * n[2]));
+  try {
+    raycast::check_grid_fits(n);  // the iso-surface's tables besides the copy of the values
+    raycast::ScalarGrid grid;
+    grid.n = g.counts;
+    grid.lo = to_engine(g.origin);
+    grid.cell = to_engine(g.spacing);
+    grid.v.assign(values.begin(), values.end());
+    return push(*impl_, raycast::make_isosurface(std::move(grid), g.iso));
+  } catch (const std::invalid_argument& e) {
+    bad(call, e.what());
+  } catch (const std::length_error& e) {
+    bad(call, e.what());
+  }
 }
 
 ObjectId Scene::add_csg(CsgOp op, std::span<const ObjectId> operands) {

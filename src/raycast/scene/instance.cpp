@@ -3,71 +3,35 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "accel/bvh_traverse.h"
 #include "scene/prototype.h"
 
 namespace raycast {
 
 std::size_t Prototype::memory_bytes() const {
-  return sizeof(Prototype) + objects.capacity() * sizeof(Object) + bvh.memory_bytes() +
-         (bounded.capacity() + unbounded.capacity()) * sizeof(std::uint32_t);
+  return sizeof(Prototype) + objects.capacity() * sizeof(Object) + set.memory_bytes();
 }
 
 std::shared_ptr<const Prototype> make_prototype(std::vector<Object> objects) {
   auto p = std::make_shared<Prototype>();
   p->objects = std::move(objects);
-  std::vector<Aabb> boxes;
-  std::vector<Vec3> centres;
-  for (std::size_t i = 0; i < p->objects.size(); ++i) {
-    if (std::holds_alternative<InstanceShape>(p->objects[i].shape))
+  for (const Object& o : p->objects)
+    if (std::holds_alternative<InstanceShape>(o.shape))
       throw std::invalid_argument("a prototype cannot hold instances");
-    const Aabb b = bounds(p->objects[i]);
-    p->box.grow(b);
-    if (b.is_empty()) continue;
-    if (b.is_bounded()) {
-      boxes.push_back(b);
-      centres.push_back(b.centre());
-      p->bounded.push_back(static_cast<std::uint32_t>(i));
-    } else {
-      p->unbounded.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
-  BvhBuildConfig config;
-  config.max_leaf_size = 4;
-  p->bvh = build_bvh(boxes, centres, config);
+  p->set.build(p->objects);
   return p;
 }
 
-Aabb bounds(const InstanceShape& s) { return s.proto->box; }
+Aabb bounds(const InstanceShape& s) { return s.proto->set.bounds(); }
 
 bool intersect(const InstanceShape& s, const Ray& ray, LocalHit& hit) {
-  const Prototype& p = *s.proto;
-  Ray r = ray;
-  bool found = false;
-  auto test = [&](std::uint32_t index, double& tmax) {
-    r.tmax = tmax;
-    LocalHit h;
-    if (intersect(p.objects[index], r, h) && h.t <= tmax) {
-      tmax = h.t;
-      h.inner = static_cast<std::int32_t>(index);
-      hit = h;
-      found = true;
-    }
-  };
-  double tmax = ray.tmax;
-  for (std::uint32_t index : p.unbounded) test(index, tmax);
-  traverse_nearest(p.bvh, ray.o, ray.d, ray.tmin, tmax,
-                   [&](std::uint32_t prim, double& t) { test(p.bounded[prim], t); });
-  return found;
+  std::int32_t index = -1;
+  if (!s.proto->set.intersect(s.proto->objects, ray, hit, index)) return false;
+  hit.inner = index;
+  return true;
 }
 
 bool occluded(const InstanceShape& s, const Ray& ray) {
-  const Prototype& p = *s.proto;
-  for (std::uint32_t index : p.unbounded)
-    if (occluded(p.objects[index], ray)) return true;
-  return traverse_any(p.bvh, ray.o, ray.d, ray.tmin, ray.tmax, [&](std::uint32_t prim) {
-    return occluded(p.objects[p.bounded[prim]], ray);
-  });
+  return s.proto->set.occluded(s.proto->objects, ray);
 }
 
 void spans(const InstanceShape& s, const Ray& ray, SpanList& out) {

@@ -10,6 +10,7 @@
 #include "volume/isosurface.h"
 #include "volume/particle_file.h"
 #include "volume/splat.h"
+#include "volume/vdb_file.h"
 
 namespace raycast {
 
@@ -104,7 +105,21 @@ ShapeVariant from_grid(Fields& f) {
       throw as_scene_error(e);
     }
   } else if (ext == ".vdb") {
-    f.fail("grid", f.name("grid") + ": this build of raycast cannot read OpenVDB files");
+    if (!vdb_supported())
+      f.fail("grid", f.name("grid") +
+                         ": this build of raycast cannot read OpenVDB files (built without "
+                         "libopenvdb-dev; docs/iso-surfaces.md)");
+    const std::string name = f.has("name") ? f.string("name") : std::string();
+    try {
+      grid = read_vdb_grid(path, name);
+    } catch (const VolumeFileError& e) {
+      throw as_scene_error(e);
+    } catch (const VdbGridError& e) {
+      f.fail(f.has("name") ? "name" : "grid",
+             f.name(f.has("name") ? "name" : "grid") + ": " + e.what());
+    } catch (const std::length_error& e) {
+      f.fail("grid", f.name("grid") + ": " + e.what());
+    }
   } else {
     f.fail("grid", f.name("grid") +
                        " must be a .raw file (with a .json sidecar) or a .vdb file, got '" + ext +

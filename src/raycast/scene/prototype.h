@@ -4,8 +4,8 @@
 #include <memory>
 #include <vector>
 
-#include "accel/bvh.h"
 #include "scene/object.h"
+#include "scene/object_set.h"
 
 namespace raycast {
 
@@ -13,10 +13,7 @@ namespace raycast {
 /// `use` is expanded when the prototype is built), so a hit needs one LocalHit::inner level.
 struct Prototype {
   std::vector<Object> objects;
-  Bvh bvh;                               // over the bounded objects
-  std::vector<std::uint32_t> bounded;    // bvh prim -> object index
-  std::vector<std::uint32_t> unbounded;  // tested on every ray
-  Aabb box;
+  ObjectSet set;  // their BVH and the walks over it (the same as the scene's top level)
 
   /// Bytes held by this prototype (objects, BVH, index arrays), shared by all its instances.
   std::size_t memory_bytes() const;

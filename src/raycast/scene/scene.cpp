@@ -5,73 +5,28 @@
 #include <cmath>
 #include <numbers>
 
-#include "accel/bvh_traverse.h"
-
 namespace raycast {
 
 void Scene::build() {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<Aabb> boxes;
-  std::vector<Vec3> centres;
-  bounded_.clear();
-  unbounded_.clear();
-  bounds_ = finite_bounds_ = Aabb{};
-  for (std::size_t i = 0; i < objects.size(); ++i) {
-    const Aabb b = raycast::bounds(objects[i]);
-    bounds_.grow(b);
-    if (b.is_empty()) continue;  // nothing to hit
-    if (b.is_bounded()) {
-      boxes.push_back(b);
-      centres.push_back(b.centre());
-      bounded_.push_back(static_cast<std::uint32_t>(i));
-      finite_bounds_.grow(b);
-    } else {
-      unbounded_.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
-  BvhBuildConfig config;
-  config.max_leaf_size = 4;
-  bvh_ = build_bvh(boxes, centres, config);
+  set_.build(objects);
   build_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
   if (!is_valid(ray)) return false;
-  Ray r = ray;
-  bool found = false;
-  auto test = [&](std::uint32_t index, double& tmax) {
-    r.tmax = tmax;
-    LocalHit h;
-    if (raycast::intersect(objects[index], r, h) && h.t <= tmax) {
-      tmax = h.t;
-      hit.local = h;
-      hit.object = static_cast<std::int32_t>(index);
-      found = true;
-    }
-  };
-  double tmax = ray.tmax;
-  for (std::uint32_t index : unbounded_) test(index, tmax);
-  traverse_nearest(bvh_, ray.o, ray.d, ray.tmin, tmax,
-                   [&](std::uint32_t prim, double& t) { test(bounded_[prim], t); });
-  return found;
+  return set_.intersect(objects, ray, hit.local, hit.object);
 }
 
 bool Scene::occluded(const Ray& ray) const {
   if (!is_valid(ray)) return false;
-  for (std::uint32_t index : unbounded_)
-    if (raycast::occluded(objects[index], ray)) return true;
-  return traverse_any(bvh_, ray.o, ray.d, ray.tmin, ray.tmax, [&](std::uint32_t prim) {
-    return raycast::occluded(objects[bounded_[prim]], ray);
-  });
+  return set_.occluded(objects, ray);
 }
 
 bool Scene::any_object(const Ray& ray, const std::function<bool(std::uint32_t)>& visit) const {
   if (!is_valid(ray)) return false;
-  for (std::uint32_t index : unbounded_)
-    if (visit(index)) return true;
-  return traverse_any(bvh_, ray.o, ray.d, ray.tmin, ray.tmax,
-                      [&](std::uint32_t prim) { return visit(bounded_[prim]); });
+  return set_.any(ray, visit);
 }
 
 void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
@@ -96,9 +51,7 @@ void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
       }
     }
   };
-  for (std::uint32_t index : unbounded_) collect(index);
-  traverse_all(bvh_, ray.o, ray.d, ray.tmin, ray.tmax,
-               [&](std::uint32_t prim) { collect(bounded_[prim]); });
+  set_.all(ray, collect);
   std::stable_sort(out.begin(), out.end(), [](const Crossing& a, const Crossing& b) {
     return a.t < b.t || (a.t == b.t && a.object < b.object);
   });

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "accel/bvh.h"
 #include "scene/camera.h"
 #include "scene/light.h"
 #include "scene/material.h"
 #include "scene/object.h"
+#include "scene/object_set.h"
 #include "scene/source_marks.h"
 
 namespace raycast {
@@ -44,12 +44,10 @@ struct Scene {
   /// Builds the top-level BVH; call after the objects are final and before querying.
   void build();
   double build_ms() const { return build_ms_; }
-  std::size_t accel_bytes() const {
-    return bvh_.memory_bytes() + unbounded_.capacity() * sizeof(std::uint32_t);
-  }
-  const Aabb& bounds() const { return bounds_; }
+  std::size_t accel_bytes() const { return set_.memory_bytes(); }
+  const Aabb& bounds() const { return set_.bounds(); }
   /// The bounds of the bounded objects only (used to frame a default camera).
-  const Aabb& finite_bounds() const { return finite_bounds_; }
+  const Aabb& finite_bounds() const { return set_.finite_bounds(); }
 
   // The queries answer "nothing" (no hit, not occluded, no crossings) for a ray that is not
   // is_valid (geometry/ray.h): |o| or |d| out of range, NaN or empty [tmin, tmax].
@@ -70,10 +68,7 @@ struct Scene {
   const Material& material_of(const SceneHit& hit) const;
 
  private:
-  Bvh bvh_;                               // over the bounded objects
-  std::vector<std::uint32_t> bounded_;    // bvh prim -> object index
-  std::vector<std::uint32_t> unbounded_;  // objects tested on every ray (planes, ...)
-  Aabb bounds_, finite_bounds_;
+  ObjectSet set_;  // the objects' BVH and the walks over it
   double build_ms_ = 0;
 };
 
