@@ -9,10 +9,6 @@
 
 namespace raycast::cli {
 
-namespace {
-
-/// Depth in an 8-bit file: distances divided by twice the median finite distance and clamped
-/// (robust against a ground plane running to the horizon), misses white.
 void normalize_depth(Image& image) {
   std::vector<float> finite;
   for (std::size_t i = 0; i < image.rgb.size(); i += 3)
@@ -26,8 +22,6 @@ void normalize_depth(Image& image) {
   for (float& d : image.rgb)
     d = std::isfinite(d) ? (scale > 0 ? std::min(1.f, d / scale) : 0.f) : 1.f;
 }
-
-}  // namespace
 
 std::string aov_path(const std::string& output, const std::string& aov) {
   std::filesystem::path p(output);

@@ -7,6 +7,11 @@
 
 namespace raycast::cli {
 
+/// Depth for an 8-bit image: distances divided by twice the median finite distance and clamped
+/// to [0, 1] (robust against a ground plane running to the horizon), misses white. Also used by
+/// `raycast serve` for its depth passes.
+void normalize_depth(Image& image);
+
 /// "out.png" + "depth" -> "out.depth.pfm" (next to the output).
 std::string aov_path(const std::string& output, const std::string& aov);
 

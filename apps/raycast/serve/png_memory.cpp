@@ -2,8 +2,6 @@
 
 #include <png.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -27,20 +25,6 @@ std::string encode_png(const Image& image) {
     throw std::runtime_error(std::string("PNG encoding failed: ") + png.message);
   bytes.resize(size);
   return bytes;
-}
-
-void normalize_depth(Image& image) {
-  std::vector<float> finite;
-  for (std::size_t i = 0; i < image.rgb.size(); i += 3)
-    if (std::isfinite(image.rgb[i])) finite.push_back(image.rgb[i]);
-  float scale = 0;
-  if (!finite.empty()) {
-    auto middle = finite.begin() + std::ptrdiff_t(finite.size() / 2);
-    std::nth_element(finite.begin(), middle, finite.end());
-    scale = 2 * *middle;
-  }
-  for (float& d : image.rgb)
-    d = std::isfinite(d) ? (scale > 0 ? std::min(1.f, d / scale) : 0.f) : 1.f;
 }
 
 }  // namespace raycast::serve

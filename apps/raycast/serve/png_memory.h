@@ -10,8 +10,4 @@ namespace raycast::serve {
 /// The image as a PNG file's bytes. Throws std::runtime_error if libpng fails.
 std::string encode_png(const Image& image);
 
-/// Depth images as `raycast render` writes them to PNG: distances divided by twice the median
-/// finite distance and clamped to [0, 1], misses white.
-void normalize_depth(Image& image);
-
 }  // namespace raycast::serve

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "render/renderer.h"
+#include "render_output.h"
 #include "scene/loader.h"
 #include "scene/scene_error.h"
 #include "serve/png_memory.h"
@@ -256,7 +257,7 @@ void PreviewLoop::run() {
       Image image = render(*scene, options);
       if (cancel_) continue;
       if (options.integrator.value_or(scene->render.integrator) == IntegratorType::kDepth)
-        normalize_depth(image);
+        cli::normalize_depth(image);  // as `raycast render` writes depth to PNG
       image_width = image.width;
       image_height = image.height;
       png = std::make_shared<const std::string>(encode_png(image));
