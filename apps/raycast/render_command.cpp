@@ -1,10 +1,8 @@
 // `raycast render [SCENE] [-o out.png] ...` (docs/cli.md): renders a scene, or the
 // built-in demo, to an image whose format follows the extension; AOVs go beside it.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <map>
 #include <sstream>
 #include <string>

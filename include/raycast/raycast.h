@@ -7,8 +7,8 @@
 namespace raycast {
 using api::Camera;
 using api::Crossing;
-using api::GridSurface;
 using api::CsgOp;
+using api::GridSurface;
 using api::HitColumns;
 using api::Image;
 using api::kNoObject;

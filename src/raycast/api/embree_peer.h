@@ -37,7 +37,7 @@ class EmbreePeer {
 
   double build_ms() const;
   double build_cpu_ms() const;  // CPU time of the process (all threads) during the build
-  std::size_t bytes() const;  // memory Embree allocated for the scene (its BVH and triangle data)
+  std::size_t bytes() const;    // memory Embree allocated for the scene (its BVH and triangle data)
 
   /// rtcIntersect1 / rtcOccluded1 over every ray, in parallel (tbb), writing one answer per ray.
   void intersect(std::span<const BenchRay> rays, std::span<PeerHit> out) const;

@@ -64,6 +64,11 @@ inline bool parse_number(std::string_view s, double& v) {
   return !s.empty() && r.ec == std::errc() && r.ptr == s.data() + s.size();
 }
 
+/// The whole word as a finite number; false for anything else (NaN and infinities included).
+inline bool parse_finite(std::string_view s, double& v) {
+  return parse_number(s, v) && v - v == 0;  // v - v is NaN for NaN and the infinities
+}
+
 /// The whole word as a signed integer; false when it is not one (or out of range).
 inline bool parse_integer(std::string_view s, std::int64_t& v) {
   if (!s.empty() && s[0] == '+') s.remove_prefix(1);

@@ -59,7 +59,7 @@ class ObjReader {
 
   double number(const text::Lines& lines, std::size_t w) const {
     double v;
-    if (!text::parse_number(words_[w].text, v) || !std::isfinite(v))
+    if (!text::parse_finite(words_[w].text, v))
       fail(lines, words_[w].column,
            "expected a finite number, got '" + std::string(words_[w].text) + "'");
     return v;

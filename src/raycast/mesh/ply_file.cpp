@@ -363,7 +363,7 @@ class AsciiReader {
       throw MeshFileError(path_, lines_.number(), static_cast<int>(line.size()) + 1,
                           "the row ends before its " + what + " value");
     double v;
-    if (!text::parse_number(words_[w].text, v) || !std::isfinite(v))
+    if (!text::parse_finite(words_[w].text, v))
       throw MeshFileError(
           path_, lines_.number(), words_[w].column,
           what + " must be a finite number, got '" + std::string(words_[w].text) + "'");
