@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "../support/cli_runner.h"
 #include "render/renderer.h"
 #include "scene/loader.h"
 #include "scene/pov_loader.h"
 #include "scene/scene_error.h"
-#include "../support/cli_runner.h"
 
 namespace raycast {
 namespace {
@@ -73,12 +73,12 @@ const Case kCases[] = {
      "contained_by { box { -2, 2 } } translate 4*z }",
      2.5},
     {"lathe", "lathe { 4, <0, -1>, <1, -1>, <1, 1>, <0, 1> translate 3*z }", 2},
-    {"lathe_bezier",
-     "lathe { bezier_spline 4, <0, -1>, <1, -1>, <1, 1>, <0, 1> translate 3*z }", 2.25},
+    {"lathe_bezier", "lathe { bezier_spline 4, <0, -1>, <1, -1>, <1, 1>, <0, 1> translate 3*z }",
+     2.25},
     {"sor", "sor { 4, <1, -2>, <1, -1>, <1, 1>, <1, 2> translate 3*z }", 2},
     {"mesh", "mesh { triangle { <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } }", 3},
-    {"mesh_smooth",
-     "mesh { smooth_triangle { <-1, -1, 3>, -z, <1, -1, 3>, -z, <0, 1, 3>, -z } }", 3},
+    {"mesh_smooth", "mesh { smooth_triangle { <-1, -1, 3>, -z, <1, -1, 3>, -z, <0, 1, 3>, -z } }",
+     3},
     {"mesh2",
      "mesh2 { vertex_vectors { 3, <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } "
      "face_indices { 1, <0, 1, 2> } }",
@@ -114,12 +114,12 @@ TEST_P(PovConstruct, CentreDepthIsExact) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Subset, PovConstruct, ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
-    [](const auto& info) {
-      return std::string(std::get<0>(info.param).name) +
-             (std::get<1>(info.param) ? "_right_handed" : "_left_handed");
-    });
+INSTANTIATE_TEST_SUITE_P(Subset, PovConstruct,
+                         ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
+                         [](const auto& info) {
+                           return std::string(std::get<0>(info.param).name) +
+                                  (std::get<1>(info.param) ? "_right_handed" : "_left_handed");
+                         });
 
 // +x is on the right of POV-Ray's default (left-handed) image and on the left under right -x.
 TEST(PovImport, HandednessKeepsPovRaysPicture) {
@@ -253,7 +253,8 @@ TEST(PovImport, CliConvertAndRender) {
   EXPECT_NE(b.err.find("bad.pov:2:15: 'inverse' is not supported by the POV-Ray import"),
             std::string::npos)
       << b.err;
-  const auto v = test::run("render '" + bad + "' -o '" + (test::temp_dir() / "x.png").string() + "'");
+  const auto v =
+      test::run("render '" + bad + "' -o '" + (test::temp_dir() / "x.png").string() + "'");
   EXPECT_EQ(v.code, 2);
 }
 

@@ -35,16 +35,22 @@ TEST(PovParser, UnsupportedObjectIsNamedAtItsPosition) {
 TEST(PovParser, UnsupportedPatternsModifiersAndDirectives) {
   EXPECT_TRUE(starts(error_of("sphere { 0, 1 pigment { bozo } }"),
                      "t.pov:1:25: 'bozo' is not supported by the POV-Ray import"));
-  EXPECT_TRUE(starts(error_of("#macro M() #end"), "t.pov:1:1: '#macro' is not supported by the POV-Ray i"));
-  EXPECT_TRUE(starts(error_of("sphere { 0, 1 no_shadow }"), "t.pov:1:15: 'no_shadow' is not supported by the POV-Ray "));
-  EXPECT_TRUE(starts(error_of("camera { fisheye }"), "t.pov:1:10: 'fisheye' is not supported by the POV-Ra"));
-  EXPECT_TRUE(starts(error_of("sphere { 0, 1 finish { metallic } }"), "t.pov:1:24: 'metallic' is not supported by the POV-Ray"));
-  EXPECT_TRUE(starts(error_of("global_settings { radiosity { } }"), "t.pov:1:19: 'radiosity' is not supported by the POV-Ray"));
+  EXPECT_TRUE(
+      starts(error_of("#macro M() #end"), "t.pov:1:1: '#macro' is not supported by the POV-Ray i"));
+  EXPECT_TRUE(starts(error_of("sphere { 0, 1 no_shadow }"),
+                     "t.pov:1:15: 'no_shadow' is not supported by the POV-Ray "));
+  EXPECT_TRUE(starts(error_of("camera { fisheye }"),
+                     "t.pov:1:10: 'fisheye' is not supported by the POV-Ra"));
+  EXPECT_TRUE(starts(error_of("sphere { 0, 1 finish { metallic } }"),
+                     "t.pov:1:24: 'metallic' is not supported by the POV-Ray"));
+  EXPECT_TRUE(starts(error_of("global_settings { radiosity { } }"),
+                     "t.pov:1:19: 'radiosity' is not supported by the POV-Ray"));
 }
 
 TEST(PovParser, StandardIncludesAreNotRead) {
-  EXPECT_NE(error_of("#include \"colors.inc\"").find("t.pov:1:10: cannot open #include file "
-                                                     "'colors.inc'"),
+  EXPECT_NE(error_of("#include \"colors.inc\"")
+                .find("t.pov:1:10: cannot open #include file "
+                      "'colors.inc'"),
             std::string::npos);
 }
 
@@ -54,8 +60,7 @@ TEST(PovParser, ErrorsInsideAnIncludedFileNameThatFile) {
 }
 
 TEST(PovParser, MalformedInput) {
-  EXPECT_EQ(error_of("sphere { 0 }"),
-            "t.pov:1:12: expected a number, a vector or a name, got '}'");
+  EXPECT_EQ(error_of("sphere { 0 }"), "t.pov:1:12: expected a number, a vector or a name, got '}'");
   EXPECT_EQ(error_of("sphere { <1, 2, 3 0.5 }"),
             "t.pov:1:19: expected '>' to close the vector '<', got the number 0.5");
   EXPECT_EQ(error_of("sphere { 0, 1"),
@@ -76,8 +81,9 @@ TEST(PovParser, NonFiniteValuesAreRejected) {
 TEST(PovParser, DeepNestingIsAnErrorNotACrash) {
   std::string objects, close;
   for (int i = 0; i < 300; ++i) objects += "union {\n", close += "}";
-  EXPECT_NE(error_of(objects + "sphere { 0, 1 }" + close).find("objects are nested deeper than 256"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(objects + "sphere { 0, 1 }" + close).find("objects are nested deeper than 256"),
+      std::string::npos);
   EXPECT_TRUE(starts(error_of(objects + "sphere { 0, 1 }" + close), "t.pov:258:1:"));
   std::string parens(400, '(');
   EXPECT_NE(error_of("sphere { 0, " + parens + "1" + std::string(400, ')') + " }")
@@ -96,8 +102,9 @@ TEST(PovParser, HugeCountsAreRefusedBeforeAnyWork) {
   EXPECT_NE(error_of("mesh2 { vertex_vectors { 2.5, <0,0,0> } face_indices { 0 } }")
                 .find("must be a whole number"),
             std::string::npos);
-  EXPECT_NE(error_of("poly { 40, <1> }").find("t.pov:1:8: poly's order must be a whole number "
-                                              "in [2, 16]"),
+  EXPECT_NE(error_of("poly { 40, <1> }")
+                .find("t.pov:1:8: poly's order must be a whole number "
+                      "in [2, 16]"),
             std::string::npos);
   EXPECT_NE(error_of("light_source { 0, rgb 1 area_light x, z, 100000, 100000 }")
                 .find("at most 4096 samples"),
@@ -114,8 +121,9 @@ TEST(PovParser, CountsMustMatchTheItems) {
                      "<0, 1, 7> } }")
                 .find("vertex index 7 out of range (3 vertices)"),
             std::string::npos);
-  EXPECT_NE(error_of("quartic { <1, 2, 3> }").find("a polynomial of order 4 has 35 coefficients, "
-                                                   "got 3"),
+  EXPECT_NE(error_of("quartic { <1, 2, 3> }")
+                .find("a polynomial of order 4 has 35 coefficients, "
+                      "got 3"),
             std::string::npos);
 }
 

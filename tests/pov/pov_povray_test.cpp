@@ -8,10 +8,10 @@
 #include <cstdlib>
 #include <string>
 
+#include "../support/cli_runner.h"
 #include "io/image.h"
 #include "render/renderer.h"
 #include "scene/loader.h"
-#include "../support/cli_runner.h"
 
 namespace raycast {
 namespace {
@@ -54,8 +54,8 @@ TEST_P(PovRayRoundTrip, MeanAbsoluteDifferenceIsSmall) {
       mad[2] += std::abs(int(linear_to_srgb8(p.z)) - int(linear_to_srgb8(q.z)));
     }
   for (double& m : mad) m /= kWidth * kHeight;
-  RecordProperty("mad", std::to_string(mad[0]) + " " + std::to_string(mad[1]) + " " +
-                            std::to_string(mad[2]));
+  RecordProperty(
+      "mad", std::to_string(mad[0]) + " " + std::to_string(mad[1]) + " " + std::to_string(mad[2]));
   std::printf("%s: mean absolute difference per channel %.3f %.3f %.3f (codes of 255)\n",
               name.c_str(), mad[0], mad[1], mad[2]);
   for (double m : mad) EXPECT_LT(m, kTolerance) << name;

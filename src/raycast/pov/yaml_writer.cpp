@@ -10,6 +10,49 @@ namespace raycast::pov {
 
 namespace {
 
+// Whether a flat face of the shape lies in a plane x, y or z = k * scale (k whole), where the
+// checker's floor() flips with rounding.
+bool on_checker_grid(const Node& n, double scale) {
+  auto on = [&](double v) { return std::floor(v / scale) == v / scale; };
+  auto axis_of = [](const Vec3& d) {  // the axis d is along, or -1
+    if (d.y == 0 && d.z == 0) return 0;
+    if (d.x == 0 && d.z == 0) return 1;
+    if (d.x == 0 && d.y == 0) return 2;
+    return -1;
+  };
+  auto at = [](const Vec3& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
+  switch (n.kind) {
+    case Node::Plane: {
+      const int a = axis_of(n.points[0]);
+      return a >= 0 && on(n.values[0] / at(n.points[0], a));
+    }
+    case Node::Box:
+      for (const Vec3& c : n.points)
+        if (on(c.x) || on(c.y) || on(c.z)) return true;
+      return false;
+    case Node::Disc: {
+      const int a = axis_of(n.points[1]);
+      return a >= 0 && on(at(n.points[0], a));
+    }
+    case Node::Cylinder:
+    case Node::Cone: {
+      const int a = axis_of(n.points[1] - n.points[0]);
+      return a >= 0 && (on(at(n.points[0], a)) || on(at(n.points[1], a)));
+    }
+    case Node::Mesh:
+      for (const auto& t : n.triangles)
+        for (int a = 0; a < 3; ++a) {
+          const double v = at(n.vertices[static_cast<std::size_t>(t[0])], a);
+          if (on(v) && at(n.vertices[static_cast<std::size_t>(t[1])], a) == v &&
+              at(n.vertices[static_cast<std::size_t>(t[2])], a) == v)
+            return true;
+        }
+      return false;
+    default:
+      return false;  // curved surfaces meet the grid's planes along curves only
+  }
+}
+
 std::string num(double v) {
   if (v == 0) v = 0;  // no "-0" in the output
   char buf[64];
@@ -256,12 +299,10 @@ class Writer {
     // POV-Ray evaluates its checker at p + 0.001 (its SMALL_TOLERANCE), so a floor through an
     // integer coordinate (plane { y, 0 }) is one colour, not noise. raycast's checker has no
     // offset: the shape's points are moved by it in object space and moved back by the
-    // transform (for the shapes given by points; see docs/pov-import.md).
+    // transform (for the shapes given by points; see docs/pov-import.md). Only where a flat
+    // face lies on the grid: the transform costs time on every ray.
     shift_ = Vec3{0, 0, 0};
-    if (here && here->pigment.checker &&
-        (n.kind == Node::Plane || n.kind == Node::Sphere || n.kind == Node::Box ||
-         n.kind == Node::Cylinder || n.kind == Node::Cone || n.kind == Node::Disc ||
-         n.kind == Node::Mesh)) {
+    if (here && here->pigment.checker && on_checker_grid(n, here->pigment.scale)) {
       const double e = kCheckerOffset * here->pigment.scale;
       shift_ = m(Vec3{e, e, e});
     }
