@@ -164,7 +164,7 @@ TEST_P(PovConvertRoundTrip, ConvertedYamlRendersIdentically) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovConvertRoundTrip,
-                         ::testing::Values("basic", "csg", "surfaces", "glass"));
+                         ::testing::Values("basic", "csg", "surfaces", "glass", "transmit"));
 
 TEST(PovImport, LoaderErrorsPointIntoThePovFile) {
   try {
@@ -203,8 +203,8 @@ TEST(PovImport, MaterialsMapFinishAndPigment) {
   EXPECT_EQ(s.render.background.z, 0.3);
   const Material& a = s.materials[static_cast<std::size_t>(s.objects[0].material)];
   EXPECT_EQ(a.color.y, 0.5);
-  EXPECT_EQ(a.ambient, 0.3);
-  EXPECT_EQ(a.diffuse, 0.4);
+  EXPECT_DOUBLE_EQ(a.ambient, 0.3 * (1 - 0.6));  // weighed by the opacity, as POV-Ray does
+  EXPECT_DOUBLE_EQ(a.diffuse, 0.4 * (1 - 0.6));
   EXPECT_EQ(a.specular, 0.7);
   EXPECT_EQ(a.shininess, 20);
   EXPECT_EQ(a.reflection, 0.25);

@@ -62,7 +62,7 @@ TEST_P(PovRayRoundTrip, MeanAbsoluteDifferenceIsSmall) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovRayRoundTrip,
-                         ::testing::Values("basic", "csg", "surfaces", "glass"));
+                         ::testing::Values("basic", "csg", "surfaces", "glass", "transmit"));
 
 }  // namespace
 }  // namespace raycast

@@ -188,7 +188,10 @@ class Writer {
       if (f.phong == 0) shininess = 1 / (4 * f.roughness);
       specular += f.specular;
     }
-    o << ", ambient: " << num(f.ambient) << ", diffuse: " << num(f.diffuse)
+    // POV-Ray weighs a surface's own ambient and diffuse light by its opacity,
+    // 1 - filter - transmit (the rest is what shows through); raycast never scales them.
+    const double opacity = 1 - transmission;
+    o << ", ambient: " << num(f.ambient * opacity) << ", diffuse: " << num(f.diffuse * opacity)
       << ", specular: " << num(specular) << ", shininess: " << num(shininess)
       << ", reflection: " << num(std::min(1.0, f.reflection));
     if (transmission > 0) o << ", transmission: " << num(transmission);
