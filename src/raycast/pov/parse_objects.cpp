@@ -47,13 +47,15 @@ constexpr int kSplineSamples = 16;  // line segments per spline segment of a lat
 // becomes the poly's bounds (raycast's algebraic solid is the polynomial's inside closed by its
 // box: the same solid) and leaves the intersection.
 void fold_poly_bounds(Node& n) {
-  for (Node& p : n.children) {
+  for (std::size_t k = 0; k < n.children.size(); ++k) {
+    Node& p = n.children[k];
     if (p.kind != Node::Poly || p.bounds || !p.xforms.empty()) continue;
     for (std::size_t i = 0; i < n.children.size(); ++i) {
       const Node& b = n.children[i];
       if (b.kind != Node::Box || !b.xforms.empty() || (b.texture && !p.texture)) continue;
       p.bounds = std::array<Vec3, 2>{b.points[0], b.points[1]};
       n.children.erase(n.children.begin() + static_cast<std::ptrdiff_t>(i));
+      if (i < k) --k;  // the poly moved down by one
       break;
     }
   }
