@@ -36,7 +36,7 @@ TEST(PovParser, UnsupportedPatternsModifiersAndDirectives) {
   EXPECT_TRUE(starts(error_of("sphere { 0, 1 pigment { bozo } }"),
                      "t.pov:1:25: 'bozo' is not supported by the POV-Ray import"));
   EXPECT_TRUE(
-      starts(error_of("#macro M() #end"), "t.pov:1:1: '#macro' is not supported by the POV-Ray i"));
+      starts(error_of("#if (1) #end"), "t.pov:1:1: '#if' is not supported by the POV-Ray i"));
   EXPECT_TRUE(starts(error_of("sphere { 0, 1 no_shadow }"),
                      "t.pov:1:15: 'no_shadow' is not supported by the POV-Ray "));
   EXPECT_TRUE(starts(error_of("camera { fisheye }"),
@@ -110,6 +110,48 @@ TEST(PovParser, HugeCountsAreRefusedBeforeAnyWork) {
                 .find("at most 4096 samples"),
             std::string::npos);
   EXPECT_NE(error_of("lathe { 1e9, <0, 0> }").find("t.pov:1:9: the number of points must be"),
+            std::string::npos);
+}
+
+TEST(PovParser, DeclaredObjectsCopiedIntoEachOtherAreBounded) {
+  // Each declaration doubles the one before: 2^40 spheres if nothing stopped it.
+  std::string text = "#declare A0 = sphere { 0, 1 }\n";
+  for (int i = 1; i <= 40; ++i)
+    text += "#declare A" + std::to_string(i) + " = union { object { A" + std::to_string(i - 1) +
+            " } object { A" + std::to_string(i - 1) + " } }\n";
+  const std::string e = error_of(text);
+  EXPECT_NE(e.find("the scene is too large"), std::string::npos) << e;
+}
+
+TEST(PovParser, MacrosReplayTheirBodyWithTheArguments) {
+  const PovScene s = parse_pov(
+      "#macro Ball(C, R) sphere { C, R * 2 } #end\n"
+      "#macro Two(T) union { Ball(<1, 2, 3>, 0.5) Ball(-x, 1 + 1) texture { T } } #end\n"
+      "#declare Red = texture { pigment { rgb <1, 0, 0> } }\n"
+      "object { Two(Red) }",
+      "t.pov", ".");
+  ASSERT_EQ(s.objects.size(), 1u);
+  ASSERT_EQ(s.objects[0].children.size(), 2u);
+  EXPECT_EQ(s.objects[0].children[0].points[0].z, 3);
+  EXPECT_EQ(s.objects[0].children[0].values[0], 1);
+  EXPECT_EQ(s.objects[0].children[1].points[0].x, -1);
+  EXPECT_EQ(s.objects[0].children[1].values[0], 4);  // (1 + 1) * 2, not 1 + 1 * 2
+  EXPECT_EQ(s.objects[0].texture->pigment.c0.r, 1);
+}
+
+TEST(PovParser, MacroErrors) {
+  EXPECT_NE(error_of("#macro M() sphere { 0, 1 }").find("t.pov:1:1: #macro M is never closed"),
+            std::string::npos);
+  EXPECT_NE(error_of("#macro M(A) sphere { 0, A } #end\nM(1, 2)")
+                .find("t.pov:2:1: M takes 1 "
+                      "argument(s), got 2"),
+            std::string::npos);
+  EXPECT_NE(error_of("#macro M() M() #end\nM()").find("macros are nested deeper than 64"),
+            std::string::npos);
+  // An error inside a macro's body points at the body.
+  EXPECT_NE(error_of("#macro M()\n  blob { } #end\nM()")
+                .find("t.pov:2:3: 'blob' is not "
+                      "supported"),
             std::string::npos);
 }
 

@@ -61,7 +61,24 @@ void fold_poly_bounds(Node& n) {
   }
 }
 
+std::size_t weight(const Node& n) {
+  std::size_t w = kPovNodeWeight + n.points.size() + n.vertices.size() + n.normals.size() +
+                  n.triangles.size() + n.terms.size();
+  for (const Node& c : n.children) w += weight(c);
+  return w;
+}
+
 }  // namespace
+
+void Parser::add_weight(std::size_t w, const Pos& at) {
+  weight_ += w;
+  if (weight_ > kMaxPovWeight)
+    fail_at(at, "the scene is too large: its objects (" + std::to_string(kPovNodeWeight) +
+                    " units each), points, vertices, triangles and terms exceed " +
+                    std::to_string(kMaxPovWeight) +
+                    " units (declared objects copied into each "
+                    "other?)");
+}
 
 bool Parser::is_object_keyword() const {
   return tok().kind == Token::Word && (object_kinds().count(tok().text) || tok().text == "object");
@@ -92,6 +109,7 @@ Node Parser::object(int depth) {
       else
         unexpected("a declared object's name or an object");
     } else {
+      add_weight(weight(*it->second.node), tok().pos);  // a copy
       n = *it->second.node;
       next();
     }
@@ -147,6 +165,10 @@ Node Parser::object(int depth) {
     }
     if (!modifier(n, depth)) unexpected(("an object modifier in " + kw.text).c_str());
   }
+  if (kw.text != "object")  // its own data (children were counted when they were read)
+    add_weight(kPovNodeWeight + n.points.size() + n.vertices.size() + n.normals.size() +
+                   n.triangles.size() + n.terms.size(),
+               n.pos);
   if (n.kind == Node::Intersection) fold_poly_bounds(n);
   if (n.kind == Node::Poly && n.terms.empty()) fail_at(n.pos, "the polynomial has no terms");
   if (is_csg(n.kind) && n.children.empty()) fail_at(n.pos, kw.text + " needs at least one object");

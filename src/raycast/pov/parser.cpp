@@ -1,5 +1,6 @@
 #include "pov/parser.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -75,12 +76,118 @@ void Parser::open(std::string text, const std::string& name, const std::string& 
   files_.push_back(std::move(f));
 }
 
-void Parser::next() {
-  cur_ = files_.back()->lexer->next();
-  while (cur_.kind == Token::End && files_.size() > 1) {
-    files_.pop_back();
-    cur_ = files_.back()->lexer->next();
+Token Parser::raw_next() {
+  while (!replay_.empty()) {
+    Replay& r = replay_.back();
+    if (r.at < r.tokens.size()) return r.tokens[r.at++];
+    replay_.pop_back();
   }
+  Token t = files_.back()->lexer->next();
+  while (t.kind == Token::End && files_.size() > 1) {
+    files_.pop_back();
+    t = files_.back()->lexer->next();
+  }
+  return t;
+}
+
+void Parser::next() {
+  cur_ = raw_next();
+  while (cur_.kind == Token::Word && macros_.count(cur_.text)) expand_macro();
+}
+
+namespace {
+constexpr std::size_t kMaxMacroNesting = 64;
+constexpr std::size_t kMaxMacroTokens = std::size_t{1} << 22;
+bool is_symbol_token(const Token& t, char c) {
+  return t.kind == Token::Symbol && t.text.size() == 1 && t.text[0] == c;
+}
+}  // namespace
+
+void Parser::define_macro(const Pos& at) {
+  // #macro Name(a, b) ... #end, read as raw tokens (nothing in the body is evaluated yet).
+  Token name = raw_next();
+  if (name.kind != Token::Word) fail_at(name.pos, "expected a macro name after #macro");
+  Macro m;
+  Token t = raw_next();
+  if (!is_symbol_token(t, '(')) fail_at(t.pos, "expected '(' after the macro's name");
+  t = raw_next();
+  while (!is_symbol_token(t, ')')) {
+    if (t.kind != Token::Word) fail_at(t.pos, "expected a parameter name in #macro");
+    m.params.push_back(t.text);
+    t = raw_next();
+    if (is_symbol_token(t, ',')) t = raw_next();
+  }
+  int depth = 0;
+  for (;;) {
+    t = raw_next();
+    if (t.kind == Token::End) fail_at(at, "#macro " + name.text + " is never closed by #end");
+    if (t.kind == Token::Directive) {
+      if (t.text == "end" && depth == 0) break;
+      if (t.text == "end") --depth;
+      if (t.text == "macro" || t.text == "if" || t.text == "ifdef" || t.text == "ifndef" ||
+          t.text == "while" || t.text == "for" || t.text == "switch")
+        ++depth;
+    }
+    m.body.push_back(t);
+    if (m.body.size() > kMaxMacroTokens) fail_at(at, "the macro's body is too long");
+  }
+  macros_[name.text] = std::move(m);
+  next();
+}
+
+void Parser::expand_macro() {
+  const Token name = cur_;
+  const Macro& m = macros_.at(name.text);
+  if (replay_.size() >= kMaxMacroNesting)
+    fail_at(name.pos, "macros are nested deeper than " + std::to_string(kMaxMacroNesting) +
+                          " (a macro calling itself?)");
+  Token t = raw_next();
+  if (!is_symbol_token(t, '(')) fail_at(t.pos, "expected '(' after the macro " + name.text);
+  // Arguments: token lists split at top-level commas; (), {} and <> nest.
+  std::vector<std::vector<Token>> args(1);
+  int depth = 0;
+  for (;;) {
+    t = raw_next();
+    if (t.kind == Token::End) fail_at(name.pos, "the call of " + name.text + " is never closed");
+    if (depth == 0 && is_symbol_token(t, ')')) break;
+    if (depth == 0 && is_symbol_token(t, ',')) {
+      args.emplace_back();
+      continue;
+    }
+    if (is_symbol_token(t, '(') || is_symbol_token(t, '{') || is_symbol_token(t, '<')) ++depth;
+    if (is_symbol_token(t, ')') || is_symbol_token(t, '}') || is_symbol_token(t, '>')) --depth;
+    args.back().push_back(t);
+    if (args.back().size() > kMaxMacroTokens) fail_at(name.pos, "a macro argument is too long");
+  }
+  if (args.size() == 1 && args[0].empty()) args.clear();
+  if (args.size() != m.params.size())
+    fail_at(name.pos, name.text + " takes " + std::to_string(m.params.size()) +
+                          " argument(s), got " + std::to_string(args.size()));
+  Replay r;
+  for (const Token& b : m.body) {
+    const auto p = std::find(m.params.begin(), m.params.end(), b.text);
+    if (b.kind != Token::Word || p == m.params.end()) {
+      r.tokens.push_back(b);
+      continue;
+    }
+    const auto& a = args[static_cast<std::size_t>(p - m.params.begin())];
+    // An expression argument keeps its meaning inside the body's expressions: parenthesised
+    // (not when it holds a block, such as an object or a texture).
+    bool block = false;
+    for (const Token& x : a) block = block || is_symbol_token(x, '{');
+    const bool wrap = a.size() > 1 && !block;
+    Token paren = b;
+    paren.kind = Token::Symbol;
+    if (wrap) paren.text = "(", r.tokens.push_back(paren);
+    r.tokens.insert(r.tokens.end(), a.begin(), a.end());
+    if (wrap) paren.text = ")", r.tokens.push_back(paren);
+  }
+  expanded_ += r.tokens.size();
+  if (expanded_ > kMaxMacroTokens)
+    fail_at(name.pos, "macro expansions make more than " + std::to_string(kMaxMacroTokens) +
+                          " tokens in all");
+  replay_.push_back(std::move(r));
+  cur_ = raw_next();
 }
 
 bool Parser::accept_symbol(char c) {
@@ -216,6 +323,7 @@ Val Parser::expression(int depth) {
         {"degrees", 1}, {"vlength", 1}, {"vnormalize", 1}, {"vdot", 2}, {"vcross", 2}};
     const auto fn = arity.find(w);
     if (fn == arity.end()) {
+      if (w == "function") fail_at(t.pos, unsupported("function outside an isosurface"));
       if (w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w == "color" || w == "colour")
         fail_at(t.pos, "a colour is not allowed in an arithmetic expression here");
       fail_at(t.pos,
@@ -421,6 +529,8 @@ bool Parser::directive() {
   } else if (d.text == "default") {
     next();
     default_block();
+  } else if (d.text == "macro") {
+    define_macro(d.pos);
   } else {
     fail_at(d.pos, unsupported("#" + d.text));
   }

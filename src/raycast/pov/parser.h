@@ -3,6 +3,7 @@
 // POV-Ray's coordinates). Directives (#declare, #local, #include, #default, #version) are
 // evaluated while parsing; anything outside the subset is a positioned SceneError naming the
 // construct.
+#include <cstddef>
 #include <string>
 
 #include "pov/pov_scene.h"
@@ -18,6 +19,11 @@ inline constexpr int kMaxPovNesting = 256;
 inline constexpr int kMaxIncludeDepth = 16;
 /// The most items a counted list may announce (mesh2 vectors and indices, poly coefficients).
 inline constexpr long kMaxPovCount = 1L << 24;
+/// How much a scene may hold in all, counting every copy that `object { Name }` makes: each
+/// object weighs kPovNodeWeight (at most 131072 objects), each point, vertex, triangle or
+/// polynomial term 1.
+inline constexpr std::size_t kMaxPovWeight = std::size_t{1} << 25;
+inline constexpr std::size_t kPovNodeWeight = 256;
 /// What image_width and image_height evaluate to: raycast's default image size.
 inline constexpr int kPovImageWidth = 640, kPovImageHeight = 480;
 

@@ -87,7 +87,12 @@ class Parser {
   void mesh2_body(Node& n, int depth);
   long count(const char* what);
 
+  /// Counts what objects hold (each node, point, vertex, triangle, term) against
+  /// kMaxPovWeight, so that declared objects used within each other cannot grow exponentially.
+  void add_weight(std::size_t w, const Pos& at);
+
   PovScene scene_;
+  std::size_t weight_ = 0;
   std::map<std::string, Declared> symbols_;
   Texture default_texture_;
 
@@ -100,6 +105,22 @@ class Parser {
   void open(std::string text, const std::string& name, const std::string& path,
             const std::string& dir);
   void include_file(const Pos& at);
+  // Macros (#macro Name(params) ... #end): the body's tokens, replayed with each parameter
+  // replaced by its argument's tokens.
+  struct Macro {
+    std::vector<std::string> params;
+    std::vector<Token> body;
+  };
+  struct Replay {
+    std::vector<Token> tokens;
+    std::size_t at = 0;
+  };
+  Token raw_next();
+  void define_macro(const Pos& at);
+  void expand_macro();
+  std::map<std::string, Macro> macros_;
+  std::vector<Replay> replay_;  // macro expansions being read, innermost last
+  std::size_t expanded_ = 0;    // tokens replayed in all
   void declare(bool local);
   void default_block();
 
