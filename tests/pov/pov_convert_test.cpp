@@ -50,6 +50,7 @@ const Case kCases[] = {
     {"box", "box { <1, 1, 4>, <-1, -1, 2> }", 2},
     {"plane", "plane { z, 3 }", 3},
     {"plane_behind_normal", "plane { -z, -3 }", 3},
+    {"plane_distance_along_unit_normal", "plane { <0, 0, 2>, 3 }", 3},
     {"cylinder", "cylinder { <0, -1, 3>, <0, 1, 3>, 0.5 }", 2.5},
     {"cone", "cone { <0, -1, 3>, 1, <0, 1, 3>, 0 }", 2.5},
     {"disc", "disc { <0, 0, 3>, z, 1, 0.2 }", std::numeric_limits<double>::infinity()},

@@ -24,7 +24,7 @@ bool on_checker_grid(const Node& n, double scale) {
   switch (n.kind) {
     case Node::Plane: {
       const int a = axis_of(n.points[0]);
-      return a >= 0 && on(n.values[0] / at(n.points[0], a));
+      return a >= 0 && on(n.values[0]);  // the plane is at +-distance on that axis
     }
     case Node::Box:
       for (const Vec3& c : n.points)
@@ -320,9 +320,10 @@ class Writer {
       }
       case Node::Plane: {
         const Vec3 nn = n.points[0];
-        const double l2 = dot(nn, nn);
-        if (!(l2 > 0)) fail_at(n.pos, "a plane's normal must not be zero");
-        o << "plane: {normal: " << vec(m(nn)) << ", point: " << pt(nn * (n.values[0] / l2)) << "}";
+        // POV-Ray's distance is measured along the normal made unit length.
+        const double l = length(nn);
+        if (!(l > 0)) fail_at(n.pos, "a plane's normal must not be zero");
+        o << "plane: {normal: " << vec(m(nn)) << ", point: " << pt(nn * (n.values[0] / l)) << "}";
         break;
       }
       case Node::Cylinder:
