@@ -911,6 +911,8 @@ void Parser::camera_block() {
           "right, direction, sky, translate)");
     }
   }
+  for (const Vec3& v : {c.direction, c.up, c.right})
+    if (!(length(v) > 0)) fail_at(c.pos, "the camera's direction, up and right must be non-zero");
   if (angle > 0 && !c.orthographic)
     c.direction = c.direction / length(c.direction) *
                   (0.5 * length(c.right) / std::tan(angle / kDegrees / 2));
