@@ -540,6 +540,7 @@ bool Parser::directive() {
 void Parser::include_file(const Pos& at) {
   if (cur_.kind != Token::String) unexpected("a file name in quotes after #include");
   const std::string name = cur_.text;
+  if (!replay_.empty()) fail_at(at, unsupported("#include inside a macro"));
   if (static_cast<int>(files_.size()) > kMaxIncludeDepth)
     fail_at(at, "#include files are nested deeper than " + std::to_string(kMaxIncludeDepth));
   namespace fs = std::filesystem;
