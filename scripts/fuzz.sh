@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-${FUZZ_SECONDS:-30}}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(loader_fuzz formula_fuzz mesh_fuzz rays_fuzz volume_fuzz)
+[ ${#targets[@]} -eq 0 ] && targets=(loader_fuzz formula_fuzz mesh_fuzz rays_fuzz volume_fuzz pov_fuzz)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" --target "${targets[@]}"

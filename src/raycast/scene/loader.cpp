@@ -7,7 +7,9 @@
 #include <sstream>
 #include <vector>
 
+#include "pov/import.h"
 #include "scene/csg_tree.h"
+#include "scene/pov_loader.h"
 #include "scene/prototype.h"
 #include "scene/read_materials.h"
 #include "scene/read_settings.h"
@@ -336,6 +338,8 @@ Scene load_scene_file(const std::string& path, int frame) {
     if (std::cin.bad()) throw SceneError("<stdin>", 0, 0, "cannot read the scene");
     return load_scene_text(ss.str(), "<stdin>", ".", frame);
   }
+  if (pov::is_pov_path(path))
+    return load_pov_scene_file(path, frame);  // POV-Ray's language (docs/pov-import.md)
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw SceneError(path, 0, 0, "is a directory, not a scene file");

@@ -1,0 +1,121 @@
+#pragma once
+// What the POV-Ray parser produces: the scene in POV-Ray's own (left-handed) coordinates and
+// terms, before it is mapped to raycast's scene format by yaml_writer.
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "math/vec3.h"
+#include "pov/function_expr.h"
+#include "pov/source.h"
+
+namespace raycast::pov {
+
+/// rgb plus POV-Ray's filter and transmit.
+struct Colour {
+  double r = 0, g = 0, b = 0, filter = 0, transmit = 0;
+};
+
+struct Pigment {
+  bool checker = false;
+  Colour c0, c1{1, 1, 1, 0, 0};  // a plain pigment is c0; checker's defaults: blue and green
+  double scale = 1;              // the checker's uniform scale (pigment transforms)
+};
+
+struct Finish {
+  double ambient = 0.1, diffuse = 0.6;
+  double phong = 0, phong_size = 40;
+  double specular = 0, roughness = 0.05;
+  double reflection = 0;  // `reflection F` or `reflection { F }`
+  bool fresnel = false;   // `reflection { 0, 1 fresnel on }`
+  bool conserve_energy = false;
+};
+
+struct Texture {
+  Pigment pigment;
+  Finish finish;
+  std::optional<double> ior;  // interior { ior }, carried with the texture (raycast's material)
+  std::string name;           // the #declare name it came from, for the converted file
+};
+
+/// One transformation as written, in POV-Ray's coordinates.
+struct XformOp {
+  enum Kind { Translate, Rotate, Scale, Matrix };
+  Kind kind = Translate;
+  Vec3 v;
+  std::array<double, 12> m{};  // matrix <...>: rows of POV-Ray's row-vector form
+};
+
+struct Node {
+  enum Kind {
+    Sphere,
+    Box,
+    Plane,
+    Cylinder,
+    Cone,
+    Disc,
+    Torus,
+    Quadric,
+    Poly,
+    Isosurface,
+    Lathe,
+    Sor,
+    Mesh,
+    Union,
+    Intersection,
+    Difference,
+    Merge
+  };
+  Kind kind = Sphere;
+  Pos pos;
+  std::vector<Vec3> points;    // centre, corners, ends, normals, profile points (x, y, 0)
+  std::vector<double> values;  // radii, distances, coefficients
+  bool open = false;
+  // poly/cubic/quartic/polynomial: coefficient of x^i y^j z^k, keyed by {i, j, k}
+  std::map<std::array<int, 3>, double> terms;
+  std::shared_ptr<const FnNode> function;     // isosurface: f(x, y, z) - threshold
+  std::optional<std::array<Vec3, 2>> bounds;  // poly: bounded_by / intersection box; isosurface box
+  bool contained_by_sphere = false;           // isosurface: bounds hold the sphere's box
+  std::string spline;                         // lathe: linear_spline, cubic_spline, bezier_spline
+  // mesh: triangles of vertex indices, and normals per vertex when smooth
+  std::vector<Vec3> vertices, normals;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Node> children;
+  std::vector<XformOp> xforms;
+  std::optional<Texture> texture;
+};
+
+struct Camera {
+  bool orthographic = false;
+  Vec3 location{0, 0, 0}, direction{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
+  double angle = 0;  // horizontal degrees; 0: not given
+  Pos pos;
+  bool given = false;
+};
+
+struct Light {
+  enum Kind { Point, Spot } kind = Point;
+  Vec3 position, point_at{0, 0, 1};
+  Colour colour{1, 1, 1, 0, 0};
+  double radius = 30, falloff = 45;  // spotlight degrees
+  bool area = false;
+  Vec3 axis1, axis2;
+  int size1 = 1, size2 = 1;
+  Pos pos;
+};
+
+struct PovScene {
+  Camera camera;
+  std::vector<Light> lights;
+  std::vector<Node> objects;
+  Colour background;
+  Colour ambient_light{1, 1, 1, 0, 0};
+  int max_trace_level = 5;
+  std::optional<double> adc_bailout;
+  Sources sources;
+};
+
+}  // namespace raycast::pov
