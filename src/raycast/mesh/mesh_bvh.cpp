@@ -14,7 +14,6 @@ namespace raycast {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // ---- Build ------------------------------------------------------------------------------------
 

@@ -5,8 +5,8 @@
 namespace raycast {
 
 const char* demo_scene_text() {
-  return R"yaml(
-# The built-in demo (`raycast render` with no scene): Whitted's 1980 picture, a mirror sphere and a
+  // The text starts right after the delimiter, so line numbers in messages count from 1.
+  return R"yaml(# The built-in demo (`raycast render` with no scene): Whitted's 1980 picture, a mirror sphere and a
 # glass sphere over a checkerboard, lit by one point light under a sky-blue background.
 # The checkerboard is evaluated in object space with cells of size 1, so the floor sits at
 # y = -0.5, in the middle of a cell: a floor on a cell boundary (y = 0) would flicker.
@@ -29,7 +29,7 @@ objects:
   - name: glass ball
     sphere: {center: [-0.9, 0.35, -1.0], radius: 0.85}
     material: glass
-)yaml" + 1;  // + 1 skips the newline after the opening delimiter
+)yaml";
 }
 
 Scene load_demo_scene() { return load_scene_text(demo_scene_text(), "<demo>"); }
