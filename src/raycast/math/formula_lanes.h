@@ -1,0 +1,27 @@
+#pragma once
+// A formula's value and derivative along a ray over several consecutive t-intervals in one pass of
+// its bytecode: the interval search of implicit surfaces splits a piece in kFormulaLanes at once.
+#include "math/formula.h"
+
+namespace raycast {
+
+/// How many t-intervals one pass evaluates.
+inline constexpr int kFormulaLanes = 2;
+
+/// Inclusions of f and of df/dt over kFormulaLanes t-intervals, structure of arrays (lane k in
+/// element k), so that the compiler runs the lanes of + - * side by side in SIMD registers.
+struct FormulaLanes {
+  double lo[kFormulaLanes], hi[kFormulaLanes];    // f
+  double dlo[kFormulaLanes], dhi[kFormulaLanes];  // df/dt
+};
+
+/// f(o + t d) and its t-derivative over the intervals [t[k], t[k + 1]], k < kFormulaLanes
+/// (t increasing). Each lane is the inclusion run<Dual<Interval, 1>> gives for that interval
+/// (bit for bit for + - * and the other operations), except sin and cos of a bare variable: their
+/// ends come from one sincos per distinct t (kFormulaLanes + 1 instead of 2 kFormulaLanes), each
+/// lane's enclosure then widened by the distance between its interval's ends and those points
+/// (|sin'|, |cos'| <= 1), so it still holds every value.
+void run_lanes(const Formula& f, const double o[3], const double d[3],
+               const double t[kFormulaLanes + 1], FormulaLanes& out);
+
+}  // namespace raycast
