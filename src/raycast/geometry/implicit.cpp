@@ -72,6 +72,7 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool fir
     double a, b;
     int depth;  // halvings from the chord: a split into W parts adds log2(W)
     bool monotone;
+    double sin_a[3], cos_a[3], sin_b[3], cos_b[3];  // of the variables at a and b (trig_vars)
   };
   constexpr int kDepthStep = std::bit_width(static_cast<unsigned>(W)) - 1;
   Piece stack[W * (kImplicitMaxDepth / kDepthStep + 2)];
@@ -79,7 +80,8 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool fir
   const double o[3] = {ray.o.x, ray.o.y, ray.o.z}, d[3] = {ray.d.x, ray.d.y, ray.d.z};
   // Splits [a, b] into W parts and pushes those that may hold a root, last first. False when
   // the parts' ends would not increase strictly (the piece is a few ulps wide).
-  auto split = [&](double a, double b, int depth) {
+  const bool trig = s.f.trig_vars != 0;
+  auto split = [&](double a, double b, int depth, const Piece* known) {
     double t[W + 1];
     t[0] = a;
     t[W] = b;
@@ -88,12 +90,34 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool fir
     for (int k = 0; k < W; ++k)
       if (!(t[k] < t[k + 1])) return false;
     FormulaLanes f;
-    run_lanes(s.f, o, d, t, f);
+    LaneTrig lt;
+    if (trig && known) {
+      lt.ends_known = true;
+      for (int v = 0; v < 3; ++v) {
+        lt.s[v][0] = known->sin_a[v];
+        lt.c[v][0] = known->cos_a[v];
+        lt.s[v][W] = known->sin_b[v];
+        lt.c[v][W] = known->cos_b[v];
+      }
+    }
+    run_lanes(s.f, o, d, t, f, &lt);
     steps += W;
     for (int k = W - 1; k >= 0; --k) {
       if (!(f.lo[k] <= 0 && 0 <= f.hi[k])) continue;  // excludes 0, or empty (undefined)
       const bool monotone = f.dlo[k] <= f.dhi[k] && (f.dlo[k] > 0 || f.dhi[k] < 0);
-      stack[++top] = {t[k], t[k + 1], depth + kDepthStep, monotone};
+      Piece& p = stack[++top];
+      p.a = t[k];
+      p.b = t[k + 1];
+      p.depth = depth + kDepthStep;
+      p.monotone = monotone;
+      if (trig) {
+        for (int v = 0; v < 3; ++v) {
+          p.sin_a[v] = lt.s[v][k];
+          p.cos_a[v] = lt.c[v][k];
+          p.sin_b[v] = lt.s[v][k + 1];
+          p.cos_b[v] = lt.c[v][k + 1];
+        }
+      }
     }
     return true;
   };
@@ -114,10 +138,10 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool fir
     if (count == 0 || t > roots[count - 1]) roots[count++] = t;
     return first_only;
   };
-  if (!split(lo, hi, 0) && settle(lo, hi)) return count;
+  if (!split(lo, hi, 0, nullptr) && settle(lo, hi)) return count;
   while (top >= 0 && count < max_roots && steps <= kImplicitMaxSteps) {
     const Piece p = stack[top--];
-    if (p.monotone || p.depth >= kImplicitMaxDepth || !split(p.a, p.b, p.depth)) {
+    if (p.monotone || p.depth >= kImplicitMaxDepth || !split(p.a, p.b, p.depth, &p)) {
       if (settle(p.a, p.b)) break;
     }
   }

@@ -123,10 +123,10 @@ Interval widen_ulps(double lo, double hi) {
 
 // sin and cos of variable lanes `x` whose intervals run between the points p[k], p[k + 1]
 // (give or take the rounding of the intervals' ends), from sincos of those points.
-void sin_cos_var(const Slot& x, const double p[W + 1], Slot& sin_x, Slot& cos_x) {
+// s[j], c[j]: sin and cos of p[j].
+void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const double* c,
+                 Slot& sin_x, Slot& cos_x) {
   using interval_detail::hits_phase;
-  double s[W + 1], c[W + 1];
-  for (int j = 0; j <= W; ++j) interval_detail::sincos(p[j], &s[j], &c[j]);
   constexpr double kTwoPi = 2 * std::numbers::pi;
   for (int k = 0; k < W; ++k) {
     const Interval a{x.lo[k], x.hi[k]};
@@ -206,7 +206,7 @@ DualI binary(Opcode op, const DualI& a, const DualI& b) {
 }  // namespace
 
 void run_lanes(const Formula& f, const double o[3], const double d[3], const double t[W + 1],
-               FormulaLanes& out) {
+               FormulaLanes& out, LaneTrig* trig) {
   // The variables as f_over builds them: Interval(o) + [t_k, t_k+1] * Interval(d), derivative d.
   Slot var[3];
   V tlo, thi;
@@ -226,7 +226,11 @@ void run_lanes(const Formula& f, const double o[3], const double d[3], const dou
       if (!(f.trig_vars & (1u << v))) continue;
       double p[W + 1];
       for (int j = 0; j <= W; ++j) p[j] = o[v] + t[j] * d[v];
-      sin_cos_var(var[v], p, sin_var[v], cos_var[v]);
+      double* sv = trig->s[v];
+      double* cv = trig->c[v];
+      for (int j = trig->ends_known ? 1 : 0; j <= (trig->ends_known ? W - 1 : W); ++j)
+        interval_detail::sincos(p[j], &sv[j], &cv[j]);
+      sin_cos_var(var[v], p, sv, cv, sin_var[v], cos_var[v]);
     }
   }
   Slot s[kMaxFormulaStack];

@@ -15,6 +15,15 @@ struct FormulaLanes {
   double dlo[kFormulaLanes], dhi[kFormulaLanes];  // df/dt
 };
 
+/// sin and cos of each variable at the kFormulaLanes + 1 points o + t[j] d (computed there
+/// exactly so), for formulas with sin or cos of a bare variable: a caller that splits pieces
+/// passes the values at a piece's ends on to its parts (ends_known), so that a pass computes only
+/// the interior points'.
+struct LaneTrig {
+  double s[3][kFormulaLanes + 1], c[3][kFormulaLanes + 1];
+  bool ends_known = false;
+};
+
 /// f(o + t d) and its t-derivative over the intervals [t[k], t[k + 1]], k < kFormulaLanes
 /// (t increasing). Each lane is the inclusion run<Dual<Interval, 1>> gives for that interval
 /// (bit for bit for + - * and the other operations), except sin and cos of a bare variable: their
@@ -22,6 +31,6 @@ struct FormulaLanes {
 /// lane's enclosure then widened by the distance between its interval's ends and those points
 /// (|sin'|, |cos'| <= 1), so it still holds every value.
 void run_lanes(const Formula& f, const double o[3], const double d[3],
-               const double t[kFormulaLanes + 1], FormulaLanes& out);
+               const double t[kFormulaLanes + 1], FormulaLanes& out, LaneTrig* trig);
 
 }  // namespace raycast
