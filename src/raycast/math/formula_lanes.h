@@ -5,8 +5,10 @@
 
 namespace raycast {
 
-/// How many t-intervals one pass evaluates.
-inline constexpr int kFormulaLanes = 2;
+/// How many t-intervals one call evaluates: one pass of 4 lanes where the CPU has AVX2 (the
+/// kernel of math/formula_lanes_avx2.cpp), else two passes of 2 (math/formula_lanes_sse2.cpp);
+/// RAYCAST_ISA=scalar or sse4 forces the latter. Both give the same bits.
+inline constexpr int kFormulaLanes = 4;
 
 /// Inclusions of f and of df/dt over kFormulaLanes t-intervals, structure of arrays (lane k in
 /// element k), so that the compiler runs the lanes of + - * side by side in SIMD registers.
@@ -32,5 +34,8 @@ struct LaneTrig {
 /// (|sin'|, |cos'| <= 1), so it still holds every value.
 void run_lanes(const Formula& f, const double o[3], const double d[3],
                const double t[kFormulaLanes + 1], FormulaLanes& out, LaneTrig* trig);
+
+/// Whether run_lanes uses the AVX2 kernel (for `raycast info` and the tests).
+bool run_lanes_avx2();
 
 }  // namespace raycast
