@@ -203,9 +203,8 @@ DualI binary(Opcode op, const DualI& a, const DualI& b) {
 // variable v at the W + 1 points; the first (and the last) are given when first_known
 // (last_known), the others are computed here.
 void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3],
-                  double* const c_of[3], double* out_lo, double* out_hi, double* out_dlo,
-                  double* out_dhi) {
+                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
+                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi) {
   // The variables as f_over builds them: Interval(o) + [t_k, t_k+1] * Interval(d), derivative d.
   Slot var[3];
   V tlo, thi;
@@ -289,4 +288,3 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
     out_dhi[k] = s[0].dhi[k];
   }
 }
-
