@@ -365,10 +365,21 @@ Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3&
         break;
       }
       case Op::kMul: {
-        LinePoly r;
-        multiply_into(s[top - 1].c, s[top - 1].degree, s[top].c, s[top].degree, r.c);
-        r.degree = s[top - 1].degree + s[top].degree;
-        s[--top] = r;
+        LinePoly& a = s[top - 1];
+        const LinePoly& b = s[top];
+        if (b.degree == 0) {  // a constant factor (the common "c * term"): scale in place
+          for (int k = 0; k <= a.degree; ++k) a.c[k] *= b.c[0];
+        } else if (a.degree == 0) {
+          const double c = a.c[0];
+          a.degree = b.degree;
+          for (int k = 0; k <= b.degree; ++k) a.c[k] = c * b.c[k];
+        } else {
+          double r[kStride];
+          multiply_into(a.c, a.degree, b.c, b.degree, r);
+          a.degree += b.degree;
+          for (int k = 0; k <= a.degree; ++k) a.c[k] = r[k];
+        }
+        --top;
         break;
       }
       case Op::kNeg:
@@ -378,15 +389,20 @@ Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3&
         for (int k = 0; k <= s[top].degree; ++k) s[top].c[k] /= in.value;
         break;
       case Op::kPow: {
-        const LinePoly base = s[top];
-        LinePoly r{0, {1}};
-        for (int k = 0; k < in.n; ++k) {
-          LinePoly next;
-          multiply_into(r.c, r.degree, base.c, base.degree, next.c);
-          next.degree = r.degree + base.degree;
-          r = next;
+        LinePoly& a = s[top];
+        if (in.n == 0) {
+          a.degree = 0;
+          a.c[0] = 1;
+          break;
         }
-        s[top] = r;
+        double base[kStride], r[kStride];
+        const int db = a.degree;
+        for (int k = 0; k <= db; ++k) base[k] = a.c[k];
+        for (int m = 1; m < in.n; ++m) {  // a = a * base, n - 1 times
+          multiply_into(a.c, a.degree, base, db, r);
+          a.degree += db;
+          for (int k = 0; k <= a.degree; ++k) a.c[k] = r[k];
+        }
         break;
       }
     }
