@@ -87,6 +87,50 @@ inline void mul(V alo, V ahi, V blo, V bhi, V& rlo, V& rhi) {
   widen(mn, mx, empty_of(alo, ahi) | empty_of(blo, bhi), rlo, rhi);
 }
 
+// a^n for a whole n >= 1, as pow_int(Interval): for even n the range of |a| (from 0 when a holds
+// it), the ends' powers by repeated multiplication (n - 1 roundings of half an ulp each), widened
+// by 2 (n + kLibmUlps) steps of |x| 2^-52 + 2^-1074 (each at least an ulp; twice as many as ulps
+// cover the larger ulps past a power of two), so at least the scalar's n + kLibmUlps ulps. Lanes
+// whose powers are not finite take the scalar path.
+inline void pow_lanes(V lo, V hi, int n, V& rlo, V& rhi) {
+  const M empty = empty_of(lo, hi);
+  const V zero = splat(0);
+  if (n % 2 == 0) {
+    const V alo = vabs(lo), ahi = vabs(hi);
+    const V m = alo < ahi ? ahi : alo, l = alo < ahi ? alo : ahi;
+    lo = ((lo <= zero) & (zero <= hi)) ? zero : l;
+    hi = m;
+  }
+  V pl = lo, ph = hi;
+  for (int k = 1; k < n; ++k) {
+    pl = pl * lo;
+    ph = ph * hi;
+  }
+  const V steps = splat(2.0 * (n + kLibmUlps));
+  const V rel = splat(0x1p-52), tiny = splat(0x1p-1074), inf = splat(kInf);
+  V l = pl - steps * (vabs(pl) * rel + tiny), h = ph + steps * (vabs(ph) * rel + tiny);
+  if (n % 2 == 0) l = l < zero ? zero : l;
+  const M ok = (l <= h) & (h - l < inf) & (vabs(pl) < inf) & (vabs(ph) < inf);
+  for (int k = 0; k < W; ++k) {
+    if (ok[k] || empty[k]) continue;
+    const Interval r = pow_int(Interval{lo[k], hi[k]}, n);
+    l[k] = r.lo;
+    h[k] = r.hi;
+  }
+  rlo = empty ? inf : l;
+  rhi = empty ? -inf : h;
+}
+
+// Dual power: v = a.v^n, d = (n a.v^(n-1)) a.d, as pow_int(Dual) does.
+inline void dual_pow(Slot& a, int n) {
+  V pl, ph, ql, qh, sl, sh, dl, dh;
+  pow_lanes(a.lo, a.hi, n, pl, ph);
+  pow_lanes(a.lo, a.hi, n - 1, ql, qh);
+  mul(splat(n), splat(n), ql, qh, sl, sh);
+  mul(sl, sh, a.dlo, a.dhi, dl, dh);
+  a = {pl, ph, dl, dh};
+}
+
 // Dual product: v = a.v b.v, d = a.d b.v + a.v b.d.
 inline void dual_mul(const Slot& a, const Slot& b, Slot& r) {
   V l1, h1, l2, h2, vl, vh;
@@ -268,6 +312,13 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
         a = {-a.hi, -a.lo, -a.dhi, -a.dlo};
         break;
       }
+      case Opcode::kPowInt:
+        if (in.n >= 2) {
+          dual_pow(s[top], in.n);
+        } else {
+          for (int k = 0; k < W; ++k) set_lane(s[top], k, unary(in.op, lane(s[top], k), in.n));
+        }
+        break;
       case Opcode::kDiv:
       case Opcode::kPow:
       case Opcode::kMin:
