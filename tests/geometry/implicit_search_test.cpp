@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "geometry/clipped_solid.h"
@@ -140,6 +141,48 @@ TEST(ImplicitSearch, TwoCloseRoots_BothFoundInOrder) {
     const Ray back{{3, 0.2, -0.1}, {-1, 0, 0}};
     ASSERT_TRUE(intersect(s, back, h));
     EXPECT_NEAR(h.t, 3 - 0.3141 - g, 1e-12);
+  }
+}
+
+// sin(x) = 1 - eps holds at pi/2 +- delta (delta = acos(1 - eps), 1.4e-6 for eps 1e-12) and
+// at -3 pi/2 +- delta: two pairs of near-double roots at the sine's maxima, where the interval
+// sine's ends both lie below 1 - eps and only its extremum test keeps the piece. Rays at random
+// slopes through the box (x from -8 to 4): every root is found, in order; at 1 + eps none is.
+TEST(ImplicitSearch, NearDoubleRootsAtTrigExtremum_AllFoundNoneInvented) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const Aabb box{{-8, -4, -4}, {4, 4, 4}};
+  for (double eps : {1e-6, 1e-10, 1e-12}) {
+    std::ostringstream below, above;
+    below.precision(17);
+    above.precision(17);
+    below << "sin(x) - " << (1 - eps) << " + 0 * cos(y)";
+    above << "sin(x) - " << (1 + eps) << " + 0 * cos(y)";
+    const Implicit s = make_implicit(below.str(), box, true);
+    const Implicit solid = make_implicit(below.str(), box, false);
+    const Implicit never = make_implicit(above.str(), box, true);
+    const long double delta = std::acos(1 - static_cast<long double>(eps));
+    const long double half_pi = std::acos(-1.0L) / 2;
+    const long double xs[4] = {-3 * half_pi - delta, -3 * half_pi + delta, half_pi - delta,
+                               half_pi + delta};
+    for (int i = 0; i < 100; ++i) {
+      SCOPED_TRACE(testing::Message() << "eps " << eps << " ray " << i);
+      const Vec3 o{-10, 0.5 * u(rng), 0.5 * u(rng)};
+      const Vec3 d{1, 0.2 * u(rng), 0.2 * u(rng)};
+      const Ray r{o, d};
+      LocalHit h;
+      ASSERT_TRUE(intersect(s, r, h));
+      const double t0 = static_cast<double>((xs[0] - o.x) / d.x);
+      EXPECT_NEAR(h.t, t0, 1e-8);
+      SpanList l;
+      spans(solid, r, l);
+      ASSERT_EQ(l.size(), 3u);  // f < 0 on [-8, x0], [x1, x2], [x3, 4]
+      EXPECT_NEAR(l[0].out.t, t0, 1e-8);
+      EXPECT_NEAR(l[1].in.t, static_cast<double>((xs[1] - o.x) / d.x), 1e-8);
+      EXPECT_NEAR(l[1].out.t, static_cast<double>((xs[2] - o.x) / d.x), 1e-8);
+      EXPECT_NEAR(l[2].in.t, static_cast<double>((xs[3] - o.x) / d.x), 1e-8);
+      EXPECT_FALSE(intersect(never, r, h));
+    }
   }
 }
 

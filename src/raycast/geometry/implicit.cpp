@@ -1,18 +1,19 @@
 #include "geometry/implicit.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "geometry/algebraic.h"
 #include "geometry/clipped_solid.h"
+#include "math/formula_lanes.h"
 
 namespace raycast {
 
 namespace {
 
-using DualT = Dual<double, 1>;    // value and derivative along the ray
-using DualI = Dual<Interval, 1>;  // inclusions of both over a t-interval
-using Dual3 = Dual<double, 3>;    // value and gradient
+using DualT = Dual<double, 1>;  // value and derivative along the ray
+using Dual3 = Dual<double, 3>;  // value and gradient
 
 // Newton with bisection gives up cycling after this many steps (bisection alone needs ~64).
 constexpr int kMaxRefineSteps = 100;
@@ -29,16 +30,6 @@ DualT f_along(const Implicit& s, const Ray& ray, double t) {
   y.d[0] = ray.d.y;
   z.d[0] = ray.d.z;
   return run<DualT>(s.f, x, y, z);
-}
-
-DualI f_over(const Implicit& s, const Ray& ray, double a, double b) {
-  const Interval t{a, b};
-  DualI c[3];
-  for (int i = 0; i < 3; ++i) {
-    c[i].v = Interval(ray.o[i]) + t * Interval(ray.d[i]);
-    c[i].d[0] = Interval(ray.d[i]);
-  }
-  return run<DualI>(s.f, c[0], c[1], c[2]);
 }
 
 bool negative(double v) { return v < 0; }
@@ -70,42 +61,89 @@ double refine(const Implicit& s, const Ray& ray, double a, double b, double fa, 
 }
 
 // The roots of f along the ray in [lo, hi], in increasing order, into roots (at most max_roots);
-// with first_only the search stops at the first. Returns the count.
+// with first_only the search stops at the first. Returns the count. A piece is split in
+// kFormulaLanes parts evaluated in one pass (run_lanes); parts whose inclusion excludes 0 are
+// dropped, the others kept in order on a stack, each settled by its ends' signs once f is
+// monotone on it (or it is too small to split) and split again otherwise.
 int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool first_only,
                double* roots, int max_roots) {
+  constexpr int W = kFormulaLanes;
   struct Piece {
     double a, b;
-    int depth;
+    int depth;  // halvings from the chord: a split into W parts adds log2(W)
+    bool monotone;
+    double sin_a[3], cos_a[3], sin_b[3], cos_b[3];  // of the variables at a and b (trig_vars)
   };
-  Piece stack[kImplicitMaxDepth + 2];
-  int top = 0, count = 0, steps = 0;
-  stack[0] = {lo, hi, 0};
-  while (top >= 0 && count < max_roots) {
-    const Piece p = stack[top--];
-    if (++steps > kImplicitMaxSteps) break;
-    const DualI f = f_over(s, ray, p.a, p.b);
-    if (f.v.is_empty() || !f.v.contains(0)) continue;
-    const double mid = 0.5 * (p.a + p.b);
-    const bool monotone = !f.d[0].is_empty() && !f.d[0].contains(0);
-    const bool too_small = !(mid > p.a && mid < p.b) || p.depth >= kImplicitMaxDepth;
-    if (monotone || too_small) {
-      const double fa = f_at(s, ray, p.a), fb = f_at(s, ray, p.b);
-      double t;
-      if (fa == 0) {
-        t = p.a;
-      } else if (fb == 0 && p.b == hi) {
-        t = p.b;  // a root at an inner piece's end is its neighbour's start
-      } else if (std::isnan(fa) || std::isnan(fb) || negative(fa) == negative(fb)) {
-        continue;
-      } else {
-        t = refine(s, ray, p.a, p.b, fa, fb);
+  constexpr int kDepthStep = std::bit_width(static_cast<unsigned>(W)) - 1;
+  Piece stack[W * (kImplicitMaxDepth / kDepthStep + 2)];
+  int top = -1, count = 0, steps = 0;
+  const double o[3] = {ray.o.x, ray.o.y, ray.o.z}, d[3] = {ray.d.x, ray.d.y, ray.d.z};
+  // Splits [a, b] into W parts and pushes those that may hold a root, last first. False when
+  // the parts' ends would not increase strictly (the piece is a few ulps wide).
+  const bool trig = s.f.trig_vars != 0;
+  auto split = [&](double a, double b, int depth, const Piece* known) {
+    double t[W + 1];
+    t[0] = a;
+    t[W] = b;
+    for (int step = W / 2; step >= 1; step /= 2)
+      for (int k = step; k < W; k += 2 * step) t[k] = 0.5 * (t[k - step] + t[k + step]);
+    for (int k = 0; k < W; ++k)
+      if (!(t[k] < t[k + 1])) return false;
+    FormulaLanes f;
+    LaneTrig lt;
+    if (trig && known) {
+      lt.ends_known = true;
+      for (int v = 0; v < 3; ++v) {
+        lt.s[v][0] = known->sin_a[v];
+        lt.c[v][0] = known->cos_a[v];
+        lt.s[v][W] = known->sin_b[v];
+        lt.c[v][W] = known->cos_b[v];
       }
-      if (count == 0 || t > roots[count - 1]) roots[count++] = t;
-      if (first_only) break;
-      continue;
     }
-    stack[++top] = {mid, p.b, p.depth + 1};
-    stack[++top] = {p.a, mid, p.depth + 1};
+    run_lanes(s.f, o, d, t, f, &lt);
+    steps += W;
+    for (int k = W - 1; k >= 0; --k) {
+      if (!(f.lo[k] <= 0 && 0 <= f.hi[k])) continue;  // excludes 0, or empty (undefined)
+      const bool monotone = f.dlo[k] <= f.dhi[k] && (f.dlo[k] > 0 || f.dhi[k] < 0);
+      Piece& p = stack[++top];
+      p.a = t[k];
+      p.b = t[k + 1];
+      p.depth = depth + kDepthStep;
+      p.monotone = monotone;
+      if (trig) {
+        for (int v = 0; v < 3; ++v) {
+          p.sin_a[v] = lt.s[v][k];
+          p.cos_a[v] = lt.c[v][k];
+          p.sin_b[v] = lt.s[v][k + 1];
+          p.cos_b[v] = lt.c[v][k + 1];
+        }
+      }
+    }
+    return true;
+  };
+  // The root of a piece on which f is monotone (or which cannot be split): a sign change of its
+  // ends. Returns whether the search is over.
+  auto settle = [&](double a, double b) {
+    const double fa = f_at(s, ray, a), fb = f_at(s, ray, b);
+    double t;
+    if (fa == 0) {
+      t = a;
+    } else if (fb == 0 && b == hi) {
+      t = b;  // a root at an inner piece's end is its neighbour's start
+    } else if (std::isnan(fa) || std::isnan(fb) || negative(fa) == negative(fb)) {
+      return false;
+    } else {
+      t = refine(s, ray, a, b, fa, fb);
+    }
+    if (count == 0 || t > roots[count - 1]) roots[count++] = t;
+    return first_only;
+  };
+  if (!split(lo, hi, 0, nullptr) && settle(lo, hi)) return count;
+  while (top >= 0 && count < max_roots && steps <= kImplicitMaxSteps) {
+    const Piece p = stack[top--];
+    if (p.monotone || p.depth >= kImplicitMaxDepth || !split(p.a, p.b, p.depth, &p)) {
+      if (settle(p.a, p.b)) break;
+    }
   }
   return count;
 }

@@ -1,5 +1,6 @@
 #include "math/trivariate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -10,6 +11,8 @@ namespace {
 
 using Key = int;  // i * kStride^2 + j * kStride + k
 constexpr int kStride = kMaxPolynomialDegree + 1;
+// The deepest stack of polynomials line code may use (deeper formulas use the expanded terms).
+constexpr int kMaxLineStack = 24;
 using Sparse = std::map<Key, double>;
 
 int degree_of(const Sparse& p) {
@@ -115,6 +118,92 @@ class Expander {
   const Expression& e_;
 };
 
+// The formula's tree as LineOp code, and the multiplications one run of it costs (each
+// operation on the actual degrees). The tree was already checked by the Expander.
+class LineCompiler {
+ public:
+  explicit LineCompiler(const Expression& e) : e_(e) {}
+  // Emits the node; returns its degree.
+  int emit(int index, std::vector<Trivariate::LineOp>& code, int depth = 0) {
+    const int degree = emit_node(index, code, depth);
+    max_degree = std::max(max_degree, degree);
+    max_stack = std::max(max_stack, depth + 1);
+    return degree;
+  }
+  long cost = 0;
+  int max_degree = 0, max_stack = 0;
+
+ private:
+  int emit_node(int index, std::vector<Trivariate::LineOp>& code, int depth) {
+    using Op = Trivariate::LineOp;
+    const ExprNode& n = e_.nodes[index];
+    double v;
+    if (constant_value(Expander(e_).expand(index), v)) {
+      code.push_back({Op::kConst, 0, v});
+      return 0;
+    }
+    switch (n.op) {
+      case ExprOp::kX:
+      case ExprOp::kY:
+      case ExprOp::kZ:
+        code.push_back({Op::kVar, n.op == ExprOp::kX ? 0 : (n.op == ExprOp::kY ? 1 : 2), 0});
+        return 1;
+      case ExprOp::kAdd:
+      case ExprOp::kSub:
+      case ExprOp::kMul: {
+        const int da = emit(n.a, code, depth), db = emit(n.b, code, depth + 1);
+        if (n.op == ExprOp::kMul) {
+          cost += (da + 1) * (db + 1);
+          code.push_back({Op::kMul, 0, 0});
+          return da + db;
+        }
+        cost += std::max(da, db) + 1;
+        code.push_back({n.op == ExprOp::kAdd ? Op::kAdd : Op::kSub, 0, 0});
+        return std::max(da, db);
+      }
+      case ExprOp::kNeg: {
+        const int da = emit(n.a, code, depth);
+        code.push_back({Op::kNeg, 0, 0});
+        return da;
+      }
+      case ExprOp::kDiv: {
+        const int da = emit(n.a, code, depth);
+        constant_value(Expander(e_).expand(n.b), v);
+        cost += da + 1;
+        code.push_back({Op::kDiv, 0, v});
+        return da;
+      }
+      case ExprOp::kPow: {
+        constant_value(Expander(e_).expand(n.b), v);
+        const int p = static_cast<int>(v), da = emit(n.a, code, depth);
+        for (int k = 1; k < p; ++k) cost += (k * da + 1) * (da + 1);
+        code.push_back({Op::kPow, p, 0});
+        return p * da;
+      }
+      default:
+        return 0;  // not reached: the Expander refused the formula
+    }
+  }
+
+  const Expression& e_;
+};
+
+// Multiplications of restrict_expanded_to_line on f.
+long expanded_cost(const Trivariate& f) {
+  long cost = 3L * f.degree * (f.degree + 1) / 2;  // the power rows
+  std::size_t n = 0;
+  while (n < f.terms.size()) {
+    const int i = f.terms[n].i, j = f.terms[n].j;
+    int dz = 0;
+    for (; n < f.terms.size() && f.terms[n].i == i && f.terms[n].j == j; ++n) {
+      cost += f.terms[n].k + 1;
+      dz = std::max(dz, f.terms[n].k);
+    }
+    cost += (j + 1) * (dz + 1) + (i + 1) * (j + dz + 1);
+  }
+  return cost;
+}
+
 double ipow(double x, int n) {
   double r = 1;
   for (int i = 0; i < n; ++i) r *= x;
@@ -134,6 +223,12 @@ Trivariate expand_polynomial(std::string_view text) {
     f.terms.push_back({key / (kStride * kStride), (key / kStride) % kStride, key % kStride, c});
   }
   f.degree = degree_of(s);
+  LineCompiler lc(e);
+  lc.emit(e.root, f.line_code);
+  // Intermediate degrees can exceed the result's where terms cancel: such code is not used.
+  f.line_code_cheaper = lc.max_degree <= kMaxPolynomialDegree && lc.max_stack <= kMaxLineStack &&
+                        lc.cost < expanded_cost(f);
+  if (!f.line_code_cheaper) f.line_code.clear();
   return f;
 }
 
@@ -207,7 +302,7 @@ void multiply_into(const double* a, int da, const double* b, int db, double* r) 
 
 // Works on arrays sized by the actual degrees (no full Polynomial copies or zero-filled
 // products); the arithmetic is that of the Polynomial-based form, so the result is the same.
-Polynomial restrict_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
+Polynomial restrict_expanded_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
   double X[kStride][kStride], Y[kStride][kStride], Z[kStride][kStride];
   linear_power_rows(o.x, d.x, f.degree, X);
   linear_power_rows(o.y, d.y, f.degree, Y);
@@ -233,6 +328,94 @@ Polynomial restrict_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
     for (int m = 0; m <= dr; ++m) result.c[m] += xyz[m];
   }
   return result;
+}
+
+namespace {
+// A polynomial in t of small degree on the code's stack.
+struct LinePoly {
+  int degree;
+  double c[kStride];
+};
+}  // namespace
+
+Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
+  using Op = Trivariate::LineOp;
+  LinePoly s[kMaxLineStack];
+  int top = -1;
+  for (const Op& in : f.line_code) {
+    switch (in.kind) {
+      case Op::kConst:
+        s[++top].degree = 0;
+        s[top].c[0] = in.value;
+        break;
+      case Op::kVar:
+        s[++top].degree = 1;
+        s[top].c[0] = o[in.n];
+        s[top].c[1] = d[in.n];
+        break;
+      case Op::kAdd:
+      case Op::kSub: {
+        LinePoly& a = s[top - 1];
+        const LinePoly& b = s[top];
+        const double sign = in.kind == Op::kAdd ? 1 : -1;
+        for (int k = a.degree + 1; k <= b.degree; ++k) a.c[k] = 0;
+        for (int k = 0; k <= b.degree; ++k) a.c[k] += sign * b.c[k];
+        a.degree = std::max(a.degree, b.degree);
+        --top;
+        break;
+      }
+      case Op::kMul: {
+        LinePoly& a = s[top - 1];
+        const LinePoly& b = s[top];
+        if (b.degree == 0) {  // a constant factor (the common "c * term"): scale in place
+          for (int k = 0; k <= a.degree; ++k) a.c[k] *= b.c[0];
+        } else if (a.degree == 0) {
+          const double c = a.c[0];
+          a.degree = b.degree;
+          for (int k = 0; k <= b.degree; ++k) a.c[k] = c * b.c[k];
+        } else {
+          double r[kStride];
+          multiply_into(a.c, a.degree, b.c, b.degree, r);
+          a.degree += b.degree;
+          for (int k = 0; k <= a.degree; ++k) a.c[k] = r[k];
+        }
+        --top;
+        break;
+      }
+      case Op::kNeg:
+        for (int k = 0; k <= s[top].degree; ++k) s[top].c[k] = -s[top].c[k];
+        break;
+      case Op::kDiv:
+        for (int k = 0; k <= s[top].degree; ++k) s[top].c[k] /= in.value;
+        break;
+      case Op::kPow: {
+        LinePoly& a = s[top];
+        if (in.n == 0) {
+          a.degree = 0;
+          a.c[0] = 1;
+          break;
+        }
+        double base[kStride], r[kStride];
+        const int db = a.degree;
+        for (int k = 0; k <= db; ++k) base[k] = a.c[k];
+        for (int m = 1; m < in.n; ++m) {  // a = a * base, n - 1 times
+          multiply_into(a.c, a.degree, base, db, r);
+          a.degree += db;
+          for (int k = 0; k <= a.degree; ++k) a.c[k] = r[k];
+        }
+        break;
+      }
+    }
+  }
+  // Coefficients above f's degree belong to terms that cancel (rounding residue): dropped.
+  Polynomial p;
+  p.degree = std::min(s[0].degree, f.degree);
+  for (int k = 0; k <= p.degree; ++k) p.c[k] = s[0].c[k];
+  return p;
+}
+
+Polynomial restrict_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
+  return f.line_code_cheaper ? restrict_code_to_line(f, o, d) : restrict_expanded_to_line(f, o, d);
 }
 
 }  // namespace raycast

@@ -18,6 +18,17 @@ struct Trivariate {
   };
   std::vector<Term> terms;  // sorted by (i, j, k), no zero coefficients
   int degree = 0;
+
+  /// The formula as written (before expansion), as postfix code over polynomials in t: when its
+  /// products cost fewer multiplications than the expanded terms' (a product or power of sums,
+  /// like Taubin's heart or two tori multiplied), restrict_to_line runs this instead.
+  struct LineOp {
+    enum Kind : unsigned char { kConst, kVar, kAdd, kSub, kMul, kNeg, kDiv, kPow } kind;
+    int n = 0;         // kVar: 0, 1, 2 = x, y, z; kPow: the exponent
+    double value = 0;  // kConst: the value; kDiv: the constant divisor
+  };
+  std::vector<LineOp> line_code;
+  bool line_code_cheaper = false;
 };
 
 /// Expands formula text into a polynomial: + - *, / by constants, ^ with non-negative whole
@@ -35,8 +46,12 @@ void gradient_extended(const Trivariate& f, long double x, long double y, long d
 /// The gradient (df/dx, df/dy, df/dz) at p.
 Vec3 gradient(const Trivariate& f, const Vec3& p);
 
-/// f(o + t d) as a polynomial in t, of degree <= f.degree: the powers of the three linear forms
-/// are built once per call, then terms sharing (i, j) are summed before the products.
+/// f(o + t d) as a polynomial in t, of degree <= f.degree: from the expanded terms (the powers of
+/// the three linear forms built once per call, then terms sharing (i, j) summed before the
+/// products), or from f.line_code where that is cheaper (the same polynomial up to rounding).
 Polynomial restrict_to_line(const Trivariate& f, const Vec3& o, const Vec3& d);
+/// The two ways, for tests and benchmarks.
+Polynomial restrict_expanded_to_line(const Trivariate& f, const Vec3& o, const Vec3& d);
+Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3& d);
 
 }  // namespace raycast

@@ -1,0 +1,63 @@
+#include "math/formula_lanes.h"
+
+#include <cstdlib>
+#include <string_view>
+
+namespace raycast {
+
+// The kernels (math/formula_lanes_sse2.cpp, math/formula_lanes_avx2.cpp, both from
+// math/formula_lanes.inl): lanes [t[k], t[k + 1]] for k < W.
+namespace lanes_w2 {
+void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
+                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
+                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi);
+}
+namespace lanes_w4 {
+void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
+                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
+                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi);
+}
+
+namespace {
+
+// Whether to run the 4-lane AVX2 kernel: the CPU has AVX2 and RAYCAST_ISA does not ask for a
+// narrower path (scalar, sse4). The math layer sits below accel/isa.h, so it asks the CPU itself;
+// both kernels give the same bits, only the speed differs.
+bool use_avx2() {
+  static const bool wide = [] {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (const char* env = std::getenv("RAYCAST_ISA")) {
+      const std::string_view isa(env);
+      if (isa == "scalar" || isa == "sse4") return false;
+    }
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+#else
+    return false;
+#endif
+  }();
+  return wide;
+}
+
+}  // namespace
+
+void run_lanes(const Formula& f, const double o[3], const double d[3],
+               const double t[kFormulaLanes + 1], FormulaLanes& out, LaneTrig* trig) {
+  static_assert(kFormulaLanes == 4, "the kernels are 4 lanes, or 2 passes of 2");
+  double* s[3] = {trig->s[0], trig->s[1], trig->s[2]};
+  double* c[3] = {trig->c[0], trig->c[1], trig->c[2]};
+  const bool known = trig->ends_known;
+  if (use_avx2()) {
+    lanes_w4::lanes_kernel(f, o, d, t, known, known, s, c, out.lo, out.hi, out.dlo, out.dhi);
+    return;
+  }
+  lanes_w2::lanes_kernel(f, o, d, t, known, false, s, c, out.lo, out.hi, out.dlo, out.dhi);
+  double* s2[3] = {s[0] + 2, s[1] + 2, s[2] + 2};
+  double* c2[3] = {c[0] + 2, c[1] + 2, c[2] + 2};
+  lanes_w2::lanes_kernel(f, o, d, t + 2, true, known, s2, c2, out.lo + 2, out.hi + 2, out.dlo + 2,
+                         out.dhi + 2);
+}
+
+bool run_lanes_avx2() { return use_avx2(); }
+
+}  // namespace raycast

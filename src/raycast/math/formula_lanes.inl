@@ -1,0 +1,341 @@
+// The lane kernel of math/formula_lanes.cpp, written once over W lanes: each including file
+// (one per instruction set, docs/architecture.md "ISA dispatch") defines W and includes this
+// inside its own namespace, after every header (so that no header code is compiled for a wider
+// instruction set than the CPU's). Needs <algorithm>, <cmath>, <limits>, <numbers> and
+// math/formula.h.
+
+using DualI = Dual<Interval, 1>;
+namespace {
+
+// GCC's vector extension: W doubles, one SIMD register or a few (as wide as the target allows),
+// and the lane masks comparisons give.
+using V = double __attribute__((vector_size(8 * W)));
+using M = long long __attribute__((vector_size(8 * W)));
+
+// One stack slot: an inclusion of a value and of its t-derivative per lane.
+struct Slot {
+  V lo, hi, dlo, dhi;
+};
+
+DualI lane(const Slot& a, int k) {
+  DualI r;
+  r.v = {a.lo[k], a.hi[k]};
+  r.d[0] = {a.dlo[k], a.dhi[k]};
+  return r;
+}
+void set_lane(Slot& a, int k, const DualI& r) {
+  a.lo[k] = r.v.lo;
+  a.hi[k] = r.v.hi;
+  a.dlo[k] = r.d[0].lo;
+  a.dhi[k] = r.d[0].hi;
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+V splat(double v) {
+  V r;
+  for (int k = 0; k < W; ++k) r[k] = v;
+  return r;
+}
+V vabs(V x) { return x < 0 ? -x : x; }
+
+// [lo, hi] widened as interval_detail::widen(lo, hi): the branch-free form on every lane, then the
+// rare lanes whose ends are infinite or NaN redone by the exact path; lanes where `empty` is set
+// become empty.
+inline void widen(V lo, V hi, M empty, V& rlo, V& rhi) {
+  const V rel = splat(0x1p-52), tiny = splat(0x1p-1074), inf = splat(kInf);
+  V l = lo - (vabs(lo) * rel + tiny), h = hi + (vabs(hi) * rel + tiny);
+  const M ok = (l <= h) & (h - l < inf);
+  for (int k = 0; k < W; ++k) {
+    if (ok[k]) continue;
+    const Interval r = interval_detail::widen(lo[k], hi[k], 1);
+    l[k] = r.lo;
+    h[k] = r.hi;
+  }
+  rlo = empty ? inf : l;
+  rhi = empty ? -inf : h;
+}
+
+inline M empty_of(V lo, V hi) { return ~(lo <= hi); }
+
+// r = a + b (sub: a - b, i.e. a + (-b) with the same roundings), as Interval's operators.
+inline void add(V alo, V ahi, V blo, V bhi, bool sub, V& rlo, V& rhi) {
+  const M empty = empty_of(alo, ahi) | empty_of(blo, bhi);
+  if (sub) {
+    widen(alo + -bhi, ahi + -blo, empty, rlo, rhi);
+  } else {
+    widen(alo + blo, ahi + bhi, empty, rlo, rhi);
+  }
+}
+
+inline V mul0(V a, V b) {
+  const V zero = splat(0);
+  return ((a == zero) | (b == zero)) ? zero : a * b;
+}
+
+// r = a * b, as Interval's operator* lane by lane (std::min_element / max_element order: the
+// first of equal values wins).
+inline void mul(V alo, V ahi, V blo, V bhi, V& rlo, V& rhi) {
+  const V p0 = mul0(alo, blo), p1 = mul0(alo, bhi), p2 = mul0(ahi, blo), p3 = mul0(ahi, bhi);
+  V mn = p0, mx = p0;
+  mn = p1 < mn ? p1 : mn;
+  mx = mx < p1 ? p1 : mx;
+  mn = p2 < mn ? p2 : mn;
+  mx = mx < p2 ? p2 : mx;
+  mn = p3 < mn ? p3 : mn;
+  mx = mx < p3 ? p3 : mx;
+  widen(mn, mx, empty_of(alo, ahi) | empty_of(blo, bhi), rlo, rhi);
+}
+
+// a^n for a whole n >= 1, as pow_int(Interval): for even n the range of |a| (from 0 when a holds
+// it), the ends' powers by repeated multiplication (n - 1 roundings of half an ulp each), widened
+// by 2 (n + kLibmUlps) steps of |x| 2^-52 + 2^-1074 (each at least an ulp; twice as many as ulps
+// cover the larger ulps past a power of two), so at least the scalar's n + kLibmUlps ulps. Lanes
+// whose powers are not finite take the scalar path.
+inline void pow_lanes(V lo, V hi, int n, V& rlo, V& rhi) {
+  const M empty = empty_of(lo, hi);
+  const V zero = splat(0);
+  if (n % 2 == 0) {
+    const V alo = vabs(lo), ahi = vabs(hi);
+    const V m = alo < ahi ? ahi : alo, l = alo < ahi ? alo : ahi;
+    lo = ((lo <= zero) & (zero <= hi)) ? zero : l;
+    hi = m;
+  }
+  V pl = lo, ph = hi;
+  for (int k = 1; k < n; ++k) {
+    pl = pl * lo;
+    ph = ph * hi;
+  }
+  const V steps = splat(2.0 * (n + kLibmUlps));
+  const V rel = splat(0x1p-52), tiny = splat(0x1p-1074), inf = splat(kInf);
+  V l = pl - steps * (vabs(pl) * rel + tiny), h = ph + steps * (vabs(ph) * rel + tiny);
+  if (n % 2 == 0) l = l < zero ? zero : l;
+  const M ok = (l <= h) & (h - l < inf) & (vabs(pl) < inf) & (vabs(ph) < inf);
+  for (int k = 0; k < W; ++k) {
+    if (ok[k] || empty[k]) continue;
+    const Interval r = pow_int(Interval{lo[k], hi[k]}, n);
+    l[k] = r.lo;
+    h[k] = r.hi;
+  }
+  rlo = empty ? inf : l;
+  rhi = empty ? -inf : h;
+}
+
+// Dual power: v = a.v^n, d = (n a.v^(n-1)) a.d, as pow_int(Dual) does.
+inline void dual_pow(Slot& a, int n) {
+  V pl, ph, ql, qh, sl, sh, dl, dh;
+  pow_lanes(a.lo, a.hi, n, pl, ph);
+  pow_lanes(a.lo, a.hi, n - 1, ql, qh);
+  mul(splat(n), splat(n), ql, qh, sl, sh);
+  mul(sl, sh, a.dlo, a.dhi, dl, dh);
+  a = {pl, ph, dl, dh};
+}
+
+// Dual product: v = a.v b.v, d = a.d b.v + a.v b.d.
+inline void dual_mul(const Slot& a, const Slot& b, Slot& r) {
+  V l1, h1, l2, h2, vl, vh;
+  mul(a.dlo, a.dhi, b.lo, b.hi, l1, h1);
+  mul(a.lo, a.hi, b.dlo, b.dhi, l2, h2);
+  mul(a.lo, a.hi, b.lo, b.hi, vl, vh);
+  add(l1, h1, l2, h2, false, r.dlo, r.dhi);
+  r.lo = vl;
+  r.hi = vh;
+}
+
+inline void dual_add(const Slot& a, const Slot& b, bool sub, Slot& r) {
+  V l, h, dl, dh;
+  add(a.lo, a.hi, b.lo, b.hi, sub, l, h);
+  add(a.dlo, a.dhi, b.dlo, b.dhi, sub, dl, dh);
+  r = {l, h, dl, dh};
+}
+
+// [lo, hi] widened by at least kLibmUlps + 1 ulps each side (libm's error and the rounding of
+// the e terms below) without stepping bit patterns: as in interval_detail::widen, |x| 2^-52 +
+// 2^-1074 is at least one ulp of x, and twice as many such steps as ulps are needed cover the
+// larger ulps past a power of two. Values here are finite and within [-2, 2].
+Interval widen_ulps(double lo, double hi) {
+  constexpr double kSteps = 2 * (kLibmUlps + 1);
+  return {lo - kSteps * (std::abs(lo) * 0x1p-52 + 0x1p-1074),
+          hi + kSteps * (std::abs(hi) * 0x1p-52 + 0x1p-1074)};
+}
+
+// sin and cos of variable lanes `x` whose intervals run between the points p[k], p[k + 1]
+// (give or take the rounding of the intervals' ends), from sincos of those points.
+// s[j], c[j]: sin and cos of p[j].
+void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const double* c,
+                 Slot& sin_x, Slot& cos_x) {
+  using interval_detail::hits_phase;
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  for (int k = 0; k < W; ++k) {
+    const Interval a{x.lo[k], x.hi[k]};
+    Interval si, ci;
+    if (a.is_empty()) {
+      si = ci = a;
+    } else if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) {
+      si = ci = {-1, 1};
+    } else {
+      const double pmin = std::min(p[k], p[k + 1]), pmax = std::max(p[k], p[k + 1]);
+      // Every point of a lies within e of [pmin, pmax] (e rounded up).
+      const double e = std::max({0.0, pmin - a.lo, a.hi - pmax}) * (1 + 0x1p-50) + 0x1p-1074;
+      auto clamp = [](const Interval& r) {
+        return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
+      };
+      double lo = std::min(s[k], s[k + 1]) - e, hi = std::max(s[k], s[k + 1]) + e;
+      if (hits_phase(a.lo, a.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
+      if (hits_phase(a.lo, a.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
+      si = clamp(widen_ulps(lo, hi));
+      lo = std::min(c[k], c[k + 1]) - e;
+      hi = std::max(c[k], c[k + 1]) + e;
+      if (hits_phase(a.lo, a.hi, 0, kTwoPi)) hi = 1;
+      if (hits_phase(a.lo, a.hi, std::numbers::pi, kTwoPi)) lo = -1;
+      ci = clamp(widen_ulps(lo, hi));
+    }
+    const Interval dx{x.dlo[k], x.dhi[k]};
+    const Interval ds = ci * dx, dc = -si * dx;
+    sin_x.lo[k] = si.lo;
+    sin_x.hi[k] = si.hi;
+    sin_x.dlo[k] = ds.lo;
+    sin_x.dhi[k] = ds.hi;
+    cos_x.lo[k] = ci.lo;
+    cos_x.hi[k] = ci.hi;
+    cos_x.dlo[k] = dc.lo;
+    cos_x.dhi[k] = dc.hi;
+  }
+}
+
+// The operations without a lane form: each lane through Dual<Interval, 1>, as run() does.
+DualI unary(Opcode op, const DualI& a, int n) {
+  switch (op) {
+    case Opcode::kPowInt:
+      return pow_int(a, n);
+    case Opcode::kSqrt:
+      return sqrt(a);
+    case Opcode::kExp:
+      return exp(a);
+    case Opcode::kLog:
+      return log(a);
+    case Opcode::kSin:
+      return sin(a);
+    case Opcode::kCos:
+      return cos(a);
+    case Opcode::kTan:
+      return tan(a);
+    case Opcode::kAbs:
+      return abs(a);
+    default:
+      return a;
+  }
+}
+DualI binary(Opcode op, const DualI& a, const DualI& b) {
+  switch (op) {
+    case Opcode::kDiv:
+      return a / b;
+    case Opcode::kPow:
+      return pow(a, b);
+    case Opcode::kMin:
+      return min(a, b);
+    case Opcode::kMax:
+      return max(a, b);
+    default:
+      return a;
+  }
+}
+
+}  // namespace
+
+// The W lanes [t[k], t[k + 1]]: see run_lanes in formula_lanes.h. s[v], c[v] hold sin and cos of
+// variable v at the W + 1 points; the first (and the last) are given when first_known
+// (last_known), the others are computed here.
+void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
+                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
+                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi) {
+  // The variables as f_over builds them: Interval(o) + [t_k, t_k+1] * Interval(d), derivative d.
+  Slot var[3];
+  V tlo, thi;
+  for (int k = 0; k < W; ++k) {
+    tlo[k] = t[k];
+    thi[k] = t[k + 1];
+  }
+  for (int v = 0; v < 3; ++v) {
+    V ml, mh;
+    mul(tlo, thi, splat(d[v]), splat(d[v]), ml, mh);
+    add(splat(o[v]), splat(o[v]), ml, mh, false, var[v].lo, var[v].hi);
+    var[v].dlo = var[v].dhi = splat(d[v]);
+  }
+  Slot sin_var[3], cos_var[3];
+  if (f.trig_vars) {
+    for (int v = 0; v < 3; ++v) {
+      if (!(f.trig_vars & (1u << v))) continue;
+      double p[W + 1];
+      for (int j = 0; j <= W; ++j) p[j] = o[v] + t[j] * d[v];
+      double* sv = s_of[v];
+      double* cv = c_of[v];
+      for (int j = first_known ? 1 : 0; j <= (last_known ? W - 1 : W); ++j)
+        interval_detail::sincos(p[j], &sv[j], &cv[j]);
+      sin_cos_var(var[v], p, sv, cv, sin_var[v], cos_var[v]);
+    }
+  }
+  Slot s[kMaxFormulaStack];
+  int top = -1;
+  for (const Instruction& in : f.code) {
+    switch (in.op) {
+      case Opcode::kConst:
+        ++top;
+        s[top].lo = s[top].hi = splat(in.value);
+        s[top].dlo = s[top].dhi = splat(0);
+        break;
+      case Opcode::kX:
+      case Opcode::kY:
+      case Opcode::kZ:
+        s[++top] = var[static_cast<int>(in.op) - static_cast<int>(Opcode::kX)];
+        break;
+      case Opcode::kSinVar:
+        s[++top] = sin_var[in.n];
+        break;
+      case Opcode::kCosVar:
+        s[++top] = cos_var[in.n];
+        break;
+      case Opcode::kAdd:
+        dual_add(s[top - 1], s[top], false, s[top - 1]);
+        --top;
+        break;
+      case Opcode::kSub:
+        dual_add(s[top - 1], s[top], true, s[top - 1]);
+        --top;
+        break;
+      case Opcode::kMul:
+        dual_mul(s[top - 1], s[top], s[top - 1]);
+        --top;
+        break;
+      case Opcode::kNeg: {
+        Slot& a = s[top];
+        a = {-a.hi, -a.lo, -a.dhi, -a.dlo};
+        break;
+      }
+      case Opcode::kPowInt:
+        if (in.n >= 2) {
+          dual_pow(s[top], in.n);
+        } else {
+          for (int k = 0; k < W; ++k) set_lane(s[top], k, unary(in.op, lane(s[top], k), in.n));
+        }
+        break;
+      case Opcode::kDiv:
+      case Opcode::kPow:
+      case Opcode::kMin:
+      case Opcode::kMax:
+        for (int k = 0; k < W; ++k)
+          set_lane(s[top - 1], k, binary(in.op, lane(s[top - 1], k), lane(s[top], k)));
+        --top;
+        break;
+      default:
+        for (int k = 0; k < W; ++k) set_lane(s[top], k, unary(in.op, lane(s[top], k), in.n));
+        break;
+    }
+  }
+  for (int k = 0; k < W; ++k) {
+    out_lo[k] = s[0].lo[k];
+    out_hi[k] = s[0].hi[k];
+    out_dlo[k] = s[0].dlo[k];
+    out_dhi[k] = s[0].dhi[k];
+  }
+}
