@@ -221,16 +221,8 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
   Color through{1, 1, 1};
-  // The visitor captures one pointer, so the std::function stores it in place: a capture of
-  // three references would cost a heap allocation per shadow ray.
-  struct Pass {
-    const Integrator* self;
-    const Ray* segment;
-    Color* through;
-  } pass{this, &segment, &through};
-  const bool blocked = scene_.any_object(segment, [p = &pass](std::uint32_t index) {
-    return !p->self->filter(index, *p->segment, *p->through);
-  });
+  const bool blocked = scene_.any_object(
+      segment, [&](std::uint32_t index) { return !filter(index, segment, through); });
   return blocked ? Color{0, 0, 0} : through;
 }
 
