@@ -83,6 +83,10 @@ Aabb bounds(const Sphere& s) {
 
 bool intersect(const Sphere& s, const Ray& ray, LocalHit& hit) {
   const Vec3 o = ray.o - s.center;
+  // Outside and moving away: sphere_line_roots would give c > 0 and b > 0, so q < 0 and both
+  // roots c / q and q / a negative (the signs are exact), none in [tmin, tmax] for tmin >= 0.
+  // Rejected here without the division and the two square roots.
+  if (ray.tmin >= 0 && dot(o, o) > s.radius * s.radius && dot(o, ray.d) > 0) return false;
   double t[2];
   if (!sphere_line_roots(o, ray.d, s.radius, t[0], t[1])) return false;
   const bool partial = s.is_partial();
