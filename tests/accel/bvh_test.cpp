@@ -9,6 +9,7 @@
 
 #include "accel/bvh_traverse.h"
 #include "geometry/box.h"
+#include "support/random.h"
 
 namespace raycast {
 namespace {
@@ -24,7 +25,7 @@ struct Prims {
   }
 };
 
-Prims random_boxes(std::mt19937_64& rng, int n, double spread) {
+Prims random_boxes(testing::Rng& rng, int n, double spread) {
   std::uniform_real_distribution<double> pos(-spread, spread), size(0.01, 1.5);
   Prims p;
   for (int i = 0; i < n; ++i) {
@@ -32,16 +33,6 @@ Prims random_boxes(std::mt19937_64& rng, int n, double spread) {
     p.add(make_box(lo, lo + Vec3{size(rng), size(rng), size(rng)}));
   }
   return p;
-}
-
-Ray random_ray(std::mt19937_64& rng, double spread) {
-  std::uniform_real_distribution<double> pos(-spread, spread);
-  std::normal_distribution<double> g;
-  Ray r;
-  r.o = {pos(rng), pos(rng), pos(rng)};
-  do r.d = {g(rng), g(rng), g(rng)};
-  while (length_squared(r.d) < 1e-6);
-  return r;
 }
 
 // Checks the tree's invariants; returns its depth (a root-only tree has depth 1).
@@ -79,10 +70,10 @@ int check_structure(const Bvh& bvh, const Prims& p, int max_leaf) {
 }
 
 // The nearest hit and any-hit through the BVH against testing every primitive.
-void compare_with_brute_force(const Bvh& bvh, const Prims& p, std::mt19937_64& rng, int rays,
+void compare_with_brute_force(const Bvh& bvh, const Prims& p, testing::Rng& rng, int rays,
                               double spread) {
   for (int i = 0; i < rays; ++i) {
-    Ray ray = random_ray(rng, spread);
+    Ray ray = testing::random_ray(rng, spread, spread);
     if (i % 3 == 0) ray.tmax = std::uniform_real_distribution<double>(0, spread)(rng);
     double best = kInfinity;
     bool any = false;
@@ -147,7 +138,7 @@ TEST(Bvh, OnePrimitive_SingleLeaf) {
   ASSERT_EQ(bvh.nodes.size(), 1u);
   EXPECT_TRUE(bvh.nodes[0].is_leaf());
   check_structure(bvh, p, 8);
-  std::mt19937_64 rng(1);
+  testing::Rng rng(1);
   compare_with_brute_force(bvh, p, rng, 500, 3);
   double tmax = kInfinity;
   std::uint32_t seen = 99;
@@ -167,14 +158,14 @@ TEST(Bvh, AllEqualCentres_SplitByIndexAndStillCorrect) {
   const Bvh bvh = build_bvh(p.boxes, p.centres, config);
   const int depth = check_structure(bvh, p, 4);
   EXPECT_LE(depth, 12);  // halving 1000 down to leaves of 4
-  std::mt19937_64 rng(2);
+  testing::Rng rng(2);
   compare_with_brute_force(bvh, p, rng, 300, 2);
 }
 
 TEST(Bvh, RandomBoxes_NearestAndAnyHitMatchBruteForce) {
   const unsigned seed = 12345;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   for (int n : {2, 3, 17, 100, 2000}) {
     const Prims p = random_boxes(rng, n, 10);
     const Bvh bvh = build_bvh(p.boxes, p.centres);
@@ -184,7 +175,7 @@ TEST(Bvh, RandomBoxes_NearestAndAnyHitMatchBruteForce) {
 }
 
 TEST(Bvh, ParallelBuild_SameTreeAsSerial) {
-  std::mt19937_64 rng(6);
+  testing::Rng rng(6);
   const Prims p = random_boxes(rng, 20000, 50);
   BvhBuildConfig serial;
   serial.parallel_threshold = ~std::size_t{0};
@@ -225,7 +216,7 @@ TEST(Bvh, SuperExponentiallySpacedBoxes_DepthBoundedAndTraversalComplete) {
     if (prim == 199 && intersect(p.shapes[prim], Ray{ray.o, ray.d, 0, t}, h)) t = best = h.t;
   });
   EXPECT_EQ(best, std::ldexp(1.0, 5 * 199));
-  std::mt19937_64 rng(7);
+  testing::Rng rng(7);
   compare_with_brute_force(bvh, p, rng, 200, 2);
 }
 

@@ -142,7 +142,7 @@ TEST(Instancing, SameAnswersAsTheFlattenedScene) {
     }
     return out;
   };
-  std::mt19937 rng(5);
+  testing::Rng rng(5);
   std::uniform_real_distribution<double> u(-6, 6), angle(0, 360), s(0.5, 1.5);
   std::string used = kMaterials + "library:\n  thing:\n" + indented(def, "    ") + "objects:\n";
   std::string flat = kMaterials + "objects:\n";
@@ -161,9 +161,9 @@ TEST(Instancing, SameAnswersAsTheFlattenedScene) {
   ASSERT_EQ(b.objects.size(), 60u);
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
-    SCOPED_TRACE(testing::Message() << "seed 5, ray " << i);
+    SCOPED_TRACE(::testing::Message() << "seed 5, ray " << i);
     const Vec3 target{u(rng), u(rng), u(rng)};
-    const Vec3 d = normalize(csg_test::random_direction(rng));
+    const Vec3 d = rng.direction();
     const Ray ray{target - 15.0 * d, d};
     SceneHit ha, hb;
     const bool fa = a.intersect(ray, ha), fb = b.intersect(ray, hb);

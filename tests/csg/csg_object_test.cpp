@@ -208,11 +208,11 @@ TEST(CsgObject, HitAtTmaxCounts_HitBeyondDoesNot) {
 TEST(CsgObject, CoincidentFaces_AreDeterministic) {
   // A cube minus an equal cube is empty for every ray.
   const Scene empty = scene_of("- difference:\n" + cube_yaml(1, "    ") + cube_yaml(1, "    "));
-  std::mt19937 rng(7);
+  testing::Rng rng(7);
   SceneHit hit;
   for (int i = 0; i < 2000; ++i) {
-    const Vec3 d = csg_test::random_direction(rng);
-    const Vec3 o = csg_test::random_point(rng, 1.5) - 3.0 * normalize(d);
+    const Vec3 d = rng.direction();
+    const Vec3 o = rng.in_box(1.5) - 3.0 * normalize(d);
     EXPECT_FALSE(empty.intersect(Ray{o, d}, hit)) << "ray " << i;
   }
   // Axis-aligned rays exactly along the shared faces too.
@@ -263,7 +263,7 @@ TEST(CsgObject, RaysFromInside_SeeTheFirstBoundary) {
 }
 
 // Random trees of spheres and planes; the oracle is the boolean of the leaves' own contains().
-std::string random_tree(std::mt19937& rng, int depth, const std::string& indent) {
+std::string random_tree(testing::Rng& rng, int depth, const std::string& indent) {
   std::uniform_int_distribution<int> op(0, 2), kind(0, 5), arity(2, 3);
   std::uniform_real_distribution<double> u(-1, 1), r(0.3, 0.9);
   if (depth == 0 || kind(rng) == 0) {
@@ -284,18 +284,18 @@ std::string random_tree(std::mt19937& rng, int depth, const std::string& indent)
 
 TEST(CsgObject, RandomTrees_AgreeWithPointClassification) {
   const unsigned seed = 99;
-  std::mt19937 rng(seed);
+  testing::Rng rng(seed);
   for (int tree = 0; tree < 40; ++tree) {
     const std::string yaml = "- union:\n" + random_tree(rng, 4, "    ");
-    SCOPED_TRACE(testing::Message() << "tree " << tree << ":\n" << yaml);
+    SCOPED_TRACE(::testing::Message() << "tree " << tree << ":\n" << yaml);
     const Scene scene = scene_of(yaml);
     const Object& obj = scene.objects[0];
     const Oracle inside = [&](const Vec3& p) { return contains(obj, p); };
-    std::mt19937 ray_rng(seed + tree);
+    testing::Rng ray_rng(seed + tree);
     for (int i = 0; i < 40; ++i) {
-      SCOPED_TRACE(testing::Message() << "ray " << i);
-      const Vec3 d = normalize(csg_test::random_direction(ray_rng));
-      const Vec3 o = csg_test::random_point(ray_rng, 1.5) - (i % 2 ? 0.0 : 4.0) * d;
+      SCOPED_TRACE(::testing::Message() << "ray " << i);
+      const Vec3 d = ray_rng.direction();
+      const Vec3 o = ray_rng.in_box(1.5) - (i % 2 ? 0.0 : 4.0) * d;
       csg_test::check_ray(obj, inside, Ray{o, d}, 8, 300);
       if (HasFailure()) return;
     }
@@ -335,11 +335,11 @@ TEST(CsgObject, ConcurrentQueries_MatchSequentialAnswers) {
                "- union:\n    - sphere: {center: [3, 0, 0], radius: 1}\n"
                "    - intersection:\n        - sphere: {center: [3.5, 0, 0], radius: 1}\n"
                "        - plane: {normal: [0, 1, 0], point: [0, 0.2, 0]}\n");
-  std::mt19937 rng(11);
+  testing::Rng rng(11);
   std::vector<Ray> rays;
   for (int i = 0; i < 20000; ++i) {
-    const Vec3 d = normalize(csg_test::random_direction(rng));
-    rays.push_back({csg_test::random_point(rng, 2) + Vec3{1.5, 0, 0} - 4.0 * d, d});
+    const Vec3 d = rng.direction();
+    rays.push_back({rng.in_box(2) + Vec3{1.5, 0, 0} - 4.0 * d, d});
   }
   std::vector<double> sequential(rays.size()), parallel(rays.size());
   for (std::size_t i = 0; i < rays.size(); ++i) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "scene/loader.h"
+#include "support/random.h"
 
 namespace raycast::csg_test {
 
@@ -16,19 +17,6 @@ using Oracle = std::function<bool(const Vec3&)>;
 
 inline Scene scene_of(const std::string& objects_yaml) {
   return load_scene_text("objects:\n" + objects_yaml);
-}
-
-inline Vec3 random_point(std::mt19937& rng, double extent) {
-  std::uniform_real_distribution<double> u(-extent, extent);
-  return {u(rng), u(rng), u(rng)};
-}
-
-inline Vec3 random_direction(std::mt19937& rng) {
-  std::normal_distribution<double> n;
-  for (;;) {
-    const Vec3 d{n(rng), n(rng), n(rng)};
-    if (length_squared(d) > 1e-6) return d;
-  }
 }
 
 // Distance along the ray kept clear of span ends when sampling, in units of t (|d| ~ 1).
@@ -94,18 +82,17 @@ inline int check_ray(const Object& obj, const Oracle& inside, const Ray& ray, do
 /// have random lengths in [0.25, 4] (t is in units of d).
 inline void check_random_rays(const Object& obj, const Oracle& inside, unsigned seed, int rays,
                               double extent, int samples = 400) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> log_scale(std::log(0.25), std::log(4.0));
+  raycast::testing::Rng rng(seed);
   int with_spans = 0;
   for (int i = 0; i < rays; ++i) {
-    SCOPED_TRACE(testing::Message() << "seed " << seed << " ray " << i);
-    const Vec3 target = random_point(rng, extent);
-    const Vec3 unit = normalize(random_direction(rng));
-    const double scale = std::exp(log_scale(rng));
+    SCOPED_TRACE(::testing::Message() << "seed " << seed << " ray " << i);
+    const Vec3 target = rng.in_box(extent);
+    const Vec3 unit = rng.direction();
+    const double scale = std::exp(rng.uniform(std::log(0.25), std::log(4.0)));
     const Vec3 o = i % 2 ? target : target - 3.0 * extent * unit;
     with_spans += check_ray(obj, inside, Ray{o, scale * unit, 0, kInfinity}, 6.0 * extent / scale,
                             samples) > 0;
-    if (testing::Test::HasFailure()) return;
+    if (::testing::Test::HasFailure()) return;
   }
   EXPECT_GT(with_spans, rays / 10) << "the rays hardly meet the solid: the test would prove little";
 }

@@ -119,7 +119,7 @@ TEST(Aabb, SlabInterval_IsTheUnclippedWholeLine) {
 TEST(Aabb, RandomRays_AgreeWithPointSampling) {
   const unsigned seed = 101;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   const Aabb b{{-1, -0.5, -2}, {1.5, 0.5, 0.25}};
   for (int i = 0; i < 2000; ++i) {
     const Ray r = testing::random_ray(rng, 4, 2.5);
@@ -137,11 +137,11 @@ TEST(Aabb, RandomRays_AgreeWithPointSampling) {
 TEST(Aabb, TransformBounds_ContainsEveryTransformedCorner) {
   const unsigned seed = 5;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   std::uniform_real_distribution<double> deg(-180, 180);
   for (int i = 0; i < 200; ++i) {
-    const Transform xf = Transform::translate(testing::random_in_box(rng, 10)) *
-                         Transform::rotate(testing::random_unit(rng), deg(rng)) *
+    const Transform xf = Transform::translate(rng.in_box(10)) *
+                         Transform::rotate(rng.direction(), deg(rng)) *
                          Transform::scale({2, 0.5, 3});
     const Aabb tb = transform_bounds(xf, kCube);
     for (int c = 0; c < 8; ++c) {

@@ -8,31 +8,27 @@
 #include "geometry/algebraic.h"
 #include "geometry/clipped_solid.h"
 #include "geometry/spawn.h"
+#include "support/random.h"
 
 namespace raycast {
 namespace {
 
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return normalize(Vec3{g(rng), g(rng), g(rng)});
-}
-
 TEST(AlgebraicSpawn, Heart_SpawnedRaysDoNotRehit) {
   const Algebraic heart = make_algebraic("(x^2 + 9/4*y^2 + z^2 - 1)^3 - x^2*z^3 - 9/80*y^2*z^3",
                                          {{-1.5, -1.5, -1.5}, {1.5, 1.5, 1.5}}, false);
-  std::mt19937_64 rng(5);
+  testing::Rng rng(5);
   SCOPED_TRACE("seed 5");
   constexpr double kNear = 1e-7;
   int hits = 0, rehits = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Vec3 target = 0.8 * random_unit(rng);
-    const Vec3 o = target + 5.0 * random_unit(rng);
+    const Vec3 target = 0.8 * rng.direction();
+    const Vec3 o = target + 5.0 * rng.direction();
     const Ray ray{o, target - o};
     LocalHit hit;
     if (!intersect(heart, ray, hit) || hit.part >= kFacePart) continue;
     ++hits;
     const SurfaceInfo si = surface(heart, ray, hit);
-    Vec3 w = random_unit(rng);
+    Vec3 w = rng.direction();
     if (dot(w, si.n) < 0) w = -w;
     LocalHit again;
     if (intersect(heart, Ray{offset_ray_origin(si, w), w}, again) && again.t < kNear) ++rehits;

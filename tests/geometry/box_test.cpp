@@ -140,7 +140,7 @@ TEST(Box, TminTmax_InclusiveAtBothEnds) {
 TEST(Box, RandomRays_MatchBruteForceFaces) {
   const unsigned seed = 4242;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   for (int i = 0; i < 20000; ++i) {
     const Ray ray = testing::random_ray(rng, 6, 4);
     double tr = 0;
@@ -167,7 +167,7 @@ TEST(Box, RandomRays_MatchBruteForceFaces) {
 TEST(Box, Spans_AgreeWithInsideOracle) {
   const unsigned seed = 8;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   for (int i = 0; i < 500; ++i) {
     const Ray ray = testing::random_ray(rng, 6, 3);
     testing::check_spans_against_oracle(kBox, ray, [](const Vec3& p) { return contains(kBox, p); });

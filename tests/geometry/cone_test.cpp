@@ -100,7 +100,7 @@ TEST(Cone, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
     Rng rng(53 + variant);
     int hits = 0;
     for (int i = 0; i < 2000; ++i) {
-      const Ray ray = testing::random_ray(rng, 1.5);
+      const Ray ray = testing::random_ray(rng, 3, 1.5);
       SCOPED_TRACE("seed " + std::to_string(53 + variant) + ", " + testing::describe(ray));
       ASSERT_EQ(testing::span_mismatches(c, ray, inside, -10, 10), 0);
       LocalHit h;
@@ -120,7 +120,7 @@ TEST(Cone, RandomRays_SideRootsMatchLongDouble) {
   Rng rng(59);
   int checked = 0;
   for (int i = 0; i < 3000; ++i) {
-    Ray ray = testing::random_ray(rng, 1.5);
+    Ray ray = testing::random_ray(rng, 3, 1.5);
     ray.tmin = -kInfinity;
     LocalHit h;
     if (!intersect(c, ray, h)) continue;

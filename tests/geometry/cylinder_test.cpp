@@ -113,7 +113,7 @@ TEST(Cylinder, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
   Rng rng(31);
   int hits = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = testing::random_ray(rng, 1.5);
+    const Ray ray = testing::random_ray(rng, 3, 1.5);
     SCOPED_TRACE("seed 31, " + testing::describe(ray));
     ASSERT_EQ(testing::span_mismatches(c, ray, inside, -10, 10), 0);
     LocalHit h;
@@ -134,7 +134,7 @@ void expect_partial_matches_closed(double phi_max) {
   const Cylinder full = make_cylinder(0.8, -0.5, 1.2);
   Rng rng(37);
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = testing::random_ray(rng, 1.5);
+    const Ray ray = testing::random_ray(rng, 3, 1.5);
     SCOPED_TRACE("seed 37, " + testing::describe(ray));
     SpanList sp, sf;
     spans(part, ray, sp);
@@ -174,7 +174,7 @@ TEST(Cylinder, FromTo_MatchesTheCanonicalCylinderMoved) {
   Rng rng(41);
   int hits = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = testing::random_ray(rng, 2, 0.5 * (from + to));
+    const Ray ray = testing::random_ray(rng, 4, 2, 0.5 * (from + to));
     SCOPED_TRACE("seed 41, " + testing::describe(ray));
     LocalHit a, b;
     const bool ha = intersect(moved, ray, a), hb = intersect(obj, ray, b);

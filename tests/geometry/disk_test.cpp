@@ -93,7 +93,7 @@ TEST(Disk, CenterNormalForm_FacesAlongNormal) {
 TEST(Disk, RandomRays_MatchPlaneThenRadiusAndAngle) {
   const unsigned seed = 99;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   std::uniform_real_distribution<double> uni(0, 1);
   int hits = 0;
   for (int i = 0; i < 20000; ++i) {

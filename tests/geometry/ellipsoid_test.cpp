@@ -50,7 +50,7 @@ TEST(Ellipsoid, RandomRays_MatchAScaledSphere) {
   Rng rng(3);
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Ray ray = testing::random_ray(rng, 1.5);
+    const Ray ray = testing::random_ray(rng, 3, 1.5);
     SCOPED_TRACE("seed 3, " + testing::describe(ray));
     LocalHit a, b;
     const bool ha = intersect(e, ray, a), hb = intersect(obj, ray, b);
@@ -75,7 +75,7 @@ TEST(Ellipsoid, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
   auto inside = [&](const Vec3& p) { return contains(e, p); };
   Rng rng(5);
   for (int i = 0; i < 1000; ++i) {
-    const Ray ray = testing::random_ray(rng, 1.5);
+    const Ray ray = testing::random_ray(rng, 3, 1.5);
     SCOPED_TRACE("seed 5, " + testing::describe(ray));
     ASSERT_EQ(testing::span_mismatches(e, ray, inside, -10, 10), 0);
     LocalHit h;

@@ -12,7 +12,7 @@ namespace {
 
 void check_open(const ShapeVariant& shape, unsigned seed) {
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   Object o;
   o.shape = shape;
   EXPECT_FALSE(is_closed(o));

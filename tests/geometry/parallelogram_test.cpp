@@ -73,12 +73,10 @@ TEST(Parallelogram, TminTmax_InclusiveAtBothEnds) {
 TEST(Parallelogram, RandomRays_MatchPlaneThenLinearSystem) {
   const unsigned seed = 555;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   int hits = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Parallelogram q =
-        make_parallelogram(testing::random_in_box(rng, 1.5), testing::random_in_box(rng, 2),
-                           testing::random_in_box(rng, 2));
+    const Parallelogram q = make_parallelogram(rng.in_box(1.5), rng.in_box(2), rng.in_box(2));
     const Ray ray = testing::random_ray(rng, 5, 2);
     double tr = 0, a = 0, b = 0;
     if (!plane_then_solve(q, ray, tr, a, b)) continue;

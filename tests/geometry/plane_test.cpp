@@ -60,9 +60,9 @@ TEST(Plane, TminTmax_InclusiveAtBothEnds) {
 TEST(Plane, Spans_AgreeWithHalfSpaceOracle) {
   const unsigned seed = 9;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   for (int i = 0; i < 300; ++i) {
-    const Plane p = make_plane(testing::random_unit(rng), testing::random_in_box(rng, 1));
+    const Plane p = make_plane(rng.direction(), rng.in_box(1));
     const Ray ray = testing::random_ray(rng, 4, 2);
     testing::check_spans_against_oracle(p, ray, [&](const Vec3& q) { return contains(p, q); });
     LocalHit h;

@@ -46,7 +46,7 @@ TEST(Polyhedron, RandomRays_MatchTheBoxSlabTest) {
   Rng rng(83);
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Ray ray = testing::random_ray(rng, 1.5);
+    const Ray ray = testing::random_ray(rng, 3, 1.5);
     SCOPED_TRACE("seed 83, " + testing::describe(ray));
     double t0 = kInfinity, t1 = kInfinity;
     const bool expect = slab_interval(box, ray.o, reciprocal(ray.d), t0, t1) && t1 >= 0;
@@ -80,7 +80,7 @@ TEST(Polyhedron, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
     Rng rng(89);
     int hits = 0;
     for (int i = 0; i < 2000; ++i) {
-      const Ray ray = testing::random_ray(rng, 1.5);
+      const Ray ray = testing::random_ray(rng, 3, 1.5);
       SCOPED_TRACE("seed 89, " + testing::describe(ray));
       ASSERT_EQ(testing::span_mismatches(*p, ray, inside, -20, 20), 0);
       LocalHit h;
@@ -95,7 +95,7 @@ TEST(Polyhedron, RandomRays_SpansMatchInsideOracleAndNormalsPointOut) {
     // The hull holds every crossing.
     if (bounds(*p).is_bounded()) {
       for (int i = 0; i < 200; ++i) {
-        const Ray ray = testing::random_ray(rng, 1.5);
+        const Ray ray = testing::random_ray(rng, 3, 1.5);
         LocalHit h;
         if (intersect(*p, ray, h)) {
           EXPECT_TRUE(bounds(*p).contains(ray.at(h.t)));

@@ -23,7 +23,7 @@ int rehits(const S& s, std::uint64_t seed, double extent) {
   Rng rng(seed);
   int bad = 0, hits = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Ray ray = testing::random_ray(rng, extent);
+    const Ray ray = testing::random_ray(rng, 2 * extent, extent);
     LocalHit h;
     if (!intersect(s, ray, h)) continue;
     ++hits;

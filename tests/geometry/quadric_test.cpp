@@ -83,7 +83,7 @@ TEST(Quadric, KindCoefficientsAndMatrix_GiveTheSameHits) {
     for (int i = 0; i < 10; ++i) EXPECT_DOUBLE_EQ(a.c[i], b.c[i]) << "coefficient " << i;
     Rng rng(7);
     for (int i = 0; i < 500; ++i) {
-      const Ray ray = testing::random_ray(rng, 2);
+      const Ray ray = testing::random_ray(rng, 4, 2);
       LocalHit ha, hb;
       ASSERT_EQ(intersect(a, ray, ha), intersect(b, ray, hb)) << testing::describe(ray);
       if (ha.t < kInfinity) {
@@ -122,7 +122,7 @@ TEST(Quadric, TransformedCoefficients_MatchTheTransformedObject) {
     Rng rng(11);
     int hits = 0;
     for (int i = 0; i < 1000; ++i) {
-      const Ray ray = testing::random_ray(rng, 2);
+      const Ray ray = testing::random_ray(rng, 4, 2);
       SCOPED_TRACE(testing::describe(ray));
       LocalHit h1, h2;
       const bool b1 = intersect(moved, ray, h1), b2 = intersect(obj, ray, h2);
@@ -144,7 +144,7 @@ TEST(Quadric, RandomRays_RootsMatchLongDoubleTo1e9) {
     SCOPED_TRACE("seed " + std::to_string(23 + static_cast<int>(k)));
     int checked = 0;
     for (int i = 0; i < 2000; ++i) {
-      Ray ray = testing::random_ray(rng, 3);
+      Ray ray = testing::random_ray(rng, 6, 3);
       ray.tmin = -kInfinity;
       long double r[2];
       const int n = roots_ld(q.c, ray, r);
@@ -169,7 +169,7 @@ TEST(Quadric, RandomRays_SpansMatchInsideOracle) {
       auto inside = [&](const Vec3& p) { return contains(q, p); };
       Rng rng(101);
       for (int i = 0; i < 300; ++i) {
-        const Ray ray = testing::random_ray(rng, 2);
+        const Ray ray = testing::random_ray(rng, 4, 2);
         SCOPED_TRACE(testing::describe(ray));
         ASSERT_EQ(testing::span_mismatches(q, ray, inside, -10, 10), 0)
             << "kind " << int(k) << " bounded " << bounded;
@@ -194,7 +194,7 @@ TEST(Quadric, RandomRays_NormalsAreUnitAndOutward) {
     Rng rng(202);
     int hits = 0;
     for (int i = 0; i < 500; ++i) {
-      const Ray ray = testing::random_ray(rng, 2);
+      const Ray ray = testing::random_ray(rng, 4, 2);
       SCOPED_TRACE(testing::describe(ray));
       LocalHit h;
       if (!intersect(q, ray, h)) continue;

@@ -9,29 +9,25 @@
 
 #include "geometry/revolution.h"
 #include "geometry/spawn.h"
+#include "support/random.h"
 
 namespace raycast {
 namespace {
 
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return normalize(Vec3{g(rng), g(rng), g(rng)});
-}
-
 // Counts rays spawned into the outer hemisphere at random hits that hit the surface again
 // closer than `near` (a tiny fraction of the shape's size).
 int count_rehits(const Revolution& shape, unsigned seed) {
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   constexpr double kNear = 1e-7;
   int rehits = 0;
   for (int i = 0; i < 20000; ++i) {
     const Vec3 target{0, 0, std::uniform_real_distribution<double>(0.1, 2.9)(rng)};
-    const Vec3 o = target + 6.0 * random_unit(rng);
+    const Vec3 o = target + 6.0 * rng.direction();
     const Ray ray{o, target - o};
     LocalHit hit;
     if (!intersect(shape, ray, hit)) continue;
     const SurfaceInfo si = surface(shape, ray, hit);
-    Vec3 w = random_unit(rng);
+    Vec3 w = rng.direction();
     if (dot(w, si.n) < 0) w = -w;
     const Ray out{offset_ray_origin(si, w), w};
     LocalHit again;

@@ -1,73 +1,21 @@
 #pragma once
-// The shared helpers of every shape test: seeded random points, directions and rays, the
+// The shared helpers of every shape test: the random rays of support/random.h, the
 // spans-vs-inside oracle, outward normals by stepping off the surface, surface-record invariants.
 // Header-only; every helper reports through gtest.
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
-#include <random>
 #include <sstream>
 #include <string>
 
 #include "geometry/shape.h"
 #include "math/vec3.h"
+#include "support/random.h"
 
 namespace raycast::testing {
 
-inline Vec3 random_in_box(std::mt19937_64& rng, double half) {
-  std::uniform_real_distribution<double> u(-half, half);
-  return {u(rng), u(rng), u(rng)};
-}
-
-inline Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  for (;;) {
-    const Vec3 v{g(rng), g(rng), g(rng)};
-    const double l = length(v);
-    if (l > 1e-6) return v / l;
-  }
-}
-
-/// A ray from a random point in [-half, half]^3 towards a random point in [-aim, aim]^3, with a
-/// direction of random length (t is in units of d, so this exercises the scaling).
-inline Ray random_ray(std::mt19937_64& rng, double half, double aim) {
-  std::uniform_real_distribution<double> len(0.1, 10);
-  Ray r;
-  r.o = random_in_box(rng, half);
-  Vec3 d = random_in_box(rng, aim) - r.o;
-  if (length_squared(d) == 0) d = {1, 0, 0};
-  r.d = normalize(d) * len(rng);
-  return r;
-}
-
 inline void expect_unit(const Vec3& n, const std::string& what = "normal") {
   EXPECT_NEAR(length(n), 1, 1e-12) << what << " not unit";
-}
-
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : g_(seed) {}
-  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(g_); }
-  Vec3 in_box(double h) { return {uniform(-h, h), uniform(-h, h), uniform(-h, h)}; }
-  Vec3 direction() {
-    std::normal_distribution<double> n;
-    Vec3 v{n(g_), n(g_), n(g_)};
-    return v / length(v);
-  }
-
- private:
-  std::mt19937_64 g_;
-};
-
-/// A ray from a random point in [-2h, 2h]^3 towards a random point in [-h, h]^3, with a direction
-/// of random length (t is in units of d, never of a unit vector).
-inline Ray random_ray(Rng& r, double h, const Vec3& centre = {}) {
-  const Vec3 o = centre + r.in_box(2 * h);
-  const Vec3 target = centre + r.in_box(h);
-  Vec3 d = target - o;
-  if (length_squared(d) == 0) d = {1, 0, 0};
-  return {o, d * r.uniform(0.25, 4.0), 0, kInfinity};
 }
 
 inline std::string describe(const Ray& ray) {

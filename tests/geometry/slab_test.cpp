@@ -65,7 +65,7 @@ TEST(Slab, RandomRays_MatchLongDoubleAndTheInsideOracle) {
   auto inside = [&](const Vec3& p) { return contains(s, p); };
   Rng rng(71);
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = testing::random_ray(rng, 2);
+    const Ray ray = testing::random_ray(rng, 4, 2);
     SCOPED_TRACE("seed 71, " + testing::describe(ray));
     ASSERT_EQ(testing::span_mismatches(s, ray, inside, -20, 20), 0);
     SpanList sl;

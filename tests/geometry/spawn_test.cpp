@@ -17,7 +17,7 @@ namespace {
 int count_rehits(const Object& o, bool open, unsigned seed, int cases, double half) {
   SCOPED_TRACE("seed " + std::to_string(seed));
   const Vec3 centre = bounds(o).centre();
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   std::uniform_real_distribution<double> len(1e-3, 1e3);
   int rehits = 0, hits = 0;
   for (int i = 0; i < cases; ++i) {
@@ -27,7 +27,7 @@ int count_rehits(const Object& o, bool open, unsigned seed, int cases, double ha
     if (!intersect(o, ray, h)) continue;
     ++hits;
     const SurfaceInfo si = surface(o, ray, h);
-    Vec3 w = testing::random_unit(rng);
+    Vec3 w = rng.direction();
     const bool outward = open ? (rng() & 1) != 0 : true;
     if ((dot(w, si.n) < 0) == outward) w = -w;
     if (dot(w, si.n) == 0) continue;

@@ -115,10 +115,10 @@ TEST(Sphere, TminTmax_InclusiveAtBothEnds) {
 TEST(Sphere, RandomRays_MatchGeometricSolution) {
   const unsigned seed = 2024;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   std::uniform_real_distribution<double> rad(0.1, 3);
   for (int i = 0; i < 5000; ++i) {
-    const Vec3 c = testing::random_in_box(rng, 2);
+    const Vec3 c = rng.in_box(2);
     const Sphere s = make_sphere(c, rad(rng));
     Ray ray = testing::random_ray(rng, 6, 3);
     ray.o += c;
@@ -197,7 +197,7 @@ TEST(Sphere, EarlyRejections_AgreeExactlyWithTheRoots) {
 TEST(Sphere, Spans_AgreeWithInsideOracle) {
   const unsigned seed = 77;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   const Sphere s = make_sphere({0.5, -0.25, 0.1}, 1.5);
   for (int i = 0; i < 300; ++i) {
     const Ray ray = testing::random_ray(rng, 4, 2);
@@ -214,7 +214,7 @@ TEST(Sphere, PartialUv_ReconstructsThePoint) {
   EXPECT_FALSE(contains(s, {0, 0, 0}));
   const unsigned seed = 3;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   const double th_lo = std::acos(z_min / r), th_hi = std::acos(z_max / r);
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {

@@ -24,17 +24,17 @@ Object bare(ShapeVariant shape) {
   return o;
 }
 
-Transform random_placement(std::mt19937_64& rng, bool uniform_scale) {
+Transform random_placement(testing::Rng& rng, bool uniform_scale) {
   std::uniform_real_distribution<double> s(0.3, 2.5), deg(-180, 180);
   const double k = s(rng);
   const Vec3 scale = uniform_scale ? Vec3{k, k, k} : Vec3{s(rng), s(rng), s(rng)};
-  return Transform::translate(testing::random_in_box(rng, 2)) *
-         Transform::rotate(testing::random_unit(rng), deg(rng)) * Transform::scale(scale);
+  return Transform::translate(rng.in_box(2)) * Transform::rotate(rng.direction(), deg(rng)) *
+         Transform::scale(scale);
 }
 
 // Runs random rays at both objects and compares t, hit point and normal; `uv` also compares
 // (u, v) (those invariant under the placement).
-void compare(const Object& a, const Object& b, std::mt19937_64& rng, bool uv, int* hits) {
+void compare(const Object& a, const Object& b, testing::Rng& rng, bool uv, int* hits) {
   const Ray ray = testing::random_ray(rng, 6, 2.5);
   LocalHit ha, hb;
   const bool hit_a = intersect(a, ray, ha), hit_b = intersect(b, ray, hb);
@@ -68,7 +68,7 @@ TEST(Transformed, Box_MatchesTranslatedBox) {
   const Object world = bare(make_box(b.lo + shift, b.hi + shift));
   const unsigned seed = 41;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   int hits = 0;
   for (int i = 0; i < 5000; ++i) compare(moved, world, rng, true, &hits);
   EXPECT_GT(hits, 500);
@@ -77,7 +77,7 @@ TEST(Transformed, Box_MatchesTranslatedBox) {
 TEST(Transformed, Sphere_MatchesScaledAndMovedSphere) {
   const unsigned seed = 42;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   int hits = 0;
   for (int i = 0; i < 5000; ++i) {
     const Transform xf = random_placement(rng, true);
@@ -92,7 +92,7 @@ TEST(Transformed, Sphere_MatchesScaledAndMovedSphere) {
 TEST(Transformed, Triangle_MatchesTriangleOfTransformedVertices) {
   const unsigned seed = 43;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   int hits = 0;
   const Vec3 p0{-1, -1, 0}, p1{2, -1, 0.5}, p2{0, 2, -0.5};
   for (int i = 0; i < 5000; ++i) {
@@ -107,7 +107,7 @@ TEST(Transformed, Triangle_MatchesTriangleOfTransformedVertices) {
 TEST(Transformed, Parallelogram_MatchesTransformedEdges) {
   const unsigned seed = 44;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   int hits = 0;
   const Vec3 o{-1, -1, 0.5}, u{2, 0.5, 0}, v{0.25, 2, 0.5};
   for (int i = 0; i < 5000; ++i) {
@@ -122,7 +122,7 @@ TEST(Transformed, Parallelogram_MatchesTransformedEdges) {
 TEST(Transformed, Disk_MatchesCenterNormalForm) {
   const unsigned seed = 45;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   int hits = 0;
   for (int i = 0; i < 5000; ++i) {
     const Transform xf = random_placement(rng, true);
@@ -152,7 +152,7 @@ TEST(Transformed, Disk_MatchesCenterNormalForm) {
 TEST(Transformed, RotatedScaledBox_SpansMatchContainsAndNormalsPointOut) {
   const unsigned seed = 46;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   for (int i = 0; i < 300; ++i) {
     const Object o = placed(make_box({-1, -0.5, -2}, {1, 0.5, 1}), random_placement(rng, false));
     const Ray ray = testing::random_ray(rng, 6, 2);

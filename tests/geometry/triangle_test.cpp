@@ -110,12 +110,10 @@ TEST(Triangle, ShadingNormals_InterpolatedAndOnTheGeometricSide) {
 TEST(Triangle, RandomRays_MatchPlaneThenInsideTest) {
   const unsigned seed = 31337;
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
+  testing::Rng rng(seed);
   int hits = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Triangle tri =
-        make_triangle(testing::random_in_box(rng, 2), testing::random_in_box(rng, 2),
-                      testing::random_in_box(rng, 2));
+    const Triangle tri = make_triangle(rng.in_box(2), rng.in_box(2), rng.in_box(2));
     const Ray ray = testing::random_ray(rng, 5, 2);
     double tr = 0, margin = 0;
     const bool plane = plane_then_inside(tri, ray, tr, margin);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/loader.h"
+#include "support/random.h"
 
 namespace raycast {
 namespace {
@@ -64,14 +65,6 @@ std::string label(const Solid& solid, double scale, const char* kind, int k) {
   return s.str();
 }
 
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  for (;;) {
-    const Vec3 v{g(rng), g(rng), g(rng)};
-    if (length_squared(v) > 1e-6) return normalize(v);
-  }
-}
-
 // A ray from well outside the solid along d, offset sideways by h along u.
 Ray offset_ray(const Vec3& d, const Vec3& u, double h, double scale) {
   Ray r;
@@ -114,12 +107,12 @@ TEST(AllHits, ClosedSolidsOnRandomRays_CrossingsAlternate) {
   for (const Solid& solid : kSolids) {
     for (const double scale : kScales) {
       const Scene scene = make_scene(solid, scale);
-      std::mt19937_64 rng(7);
+      testing::Rng rng(7);
       std::uniform_real_distribution<double> offset(-1.5 * scale, 1.5 * scale);
       int failures = 0;
       for (int k = 0; k < 200 && failures < 3; ++k) {
-        const Vec3 d = random_unit(rng);
-        const Vec3 u = normalize(cross(d, random_unit(rng)));
+        const Vec3 d = rng.direction();
+        const Vec3 u = normalize(cross(d, rng.direction()));
         const std::string what = label(solid, scale, "random", k);
         if (!check_alternation(scene, offset_ray(d, u, offset(rng), scale), what)) ++failures;
       }
@@ -131,11 +124,11 @@ TEST(AllHits, ClosedSolidsOnGrazingRays_TangentTouchIsTwoCrossingsOrNone) {
   for (const Solid& solid : kSolids) {
     for (const double scale : kScales) {
       const Scene scene = make_scene(solid, scale);
-      std::mt19937_64 rng(11);
+      testing::Rng rng(11);
       int failures = 0;
       for (int k = 0; k < 30 && failures < 3; ++k) {
-        const Vec3 d = random_unit(rng);
-        const Vec3 u = normalize(cross(d, random_unit(rng)));
+        const Vec3 d = rng.direction();
+        const Vec3 u = normalize(cross(d, rng.direction()));
         // Bisect the offset between a hitting ray (through the centre, if it hits) and a
         // missing one (far off) down to the silhouette.
         SceneHit hit;
