@@ -149,26 +149,25 @@ TEST(Sphere, RandomRays_MatchGeometricSolution) {
 // its answer must be exactly the roots' answer, also for rays leaving the surface (shadow and
 // secondary rays), near-tangent lines and tmin < 0.
 TEST(Sphere, EarlyRejections_AgreeExactlyWithTheRoots) {
-  std::mt19937_64 rng(77);
-  std::uniform_real_distribution<double> rad(0.1, 3), unit(-1, 1), tmin(-2, 1);
+  testing::Rng rng(77);
   int rejected_moving_away = 0, hits = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Vec3 c = testing::random_in_box(rng, 2);
-    const Sphere s = make_sphere(c, rad(rng));
+    const Vec3 c = rng.in_box(2);
+    const Sphere s = make_sphere(c, rng.uniform(0.1, 3));
     Ray ray = testing::random_ray(rng, 6, 3);
     ray.o += c;
     if (i % 4 == 1) {  // from just off the surface, leaving it or grazing it
-      const Vec3 n = normalize(Vec3{unit(rng), unit(rng), unit(rng)});
-      ray.o = c + s.radius * (1 + 1e-9 * unit(rng)) * n;
-      ray.d = normalize(n * unit(rng) + Vec3{unit(rng), unit(rng), unit(rng)});
+      const Vec3 n = rng.direction();
+      ray.o = c + s.radius * (1 + 1e-9 * rng.uniform(-1, 1)) * n;
+      ray.d = normalize(n * rng.uniform(-1, 1) + rng.in_box(1));
     }
     if (i % 4 == 2) {  // tangent to within rounding
-      const Vec3 n = normalize(Vec3{unit(rng), unit(rng), unit(rng)});
-      const Vec3 t = normalize(cross(n, Vec3{unit(rng), unit(rng), unit(rng)}));
+      const Vec3 n = rng.direction();
+      const Vec3 t = normalize(cross(n, rng.direction()));
       ray.o = c + s.radius * n - 4.0 * t;
       ray.d = t;
     }
-    if (i % 8 == 3) ray.tmin = tmin(rng);
+    if (i % 8 == 3) ray.tmin = rng.uniform(-2, 1);
     double t0 = 0, t1 = 0;
     bool expect = false;
     double expect_t = 0;

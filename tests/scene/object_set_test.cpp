@@ -5,52 +5,46 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <random>
 #include <set>
 #include <vector>
+
+#include "support/random.h"
 
 namespace raycast {
 namespace {
 
-std::vector<Object> random_objects(std::size_t bounded, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> pos(-4, 4), size(0.2, 1.2);
+std::vector<Object> random_objects(std::size_t bounded, testing::Rng& rng) {
   std::vector<Object> objects;
   Object plane;  // unbounded: tried on every ray
   plane.shape = make_plane({0, 1, 0}, {0, -5, 0});
   objects.push_back(std::move(plane));
   for (std::size_t i = 0; i < bounded; ++i) {
-    const Vec3 c{pos(rng), pos(rng), pos(rng)};
+    const Vec3 c = rng.in_box(4);
     Object o;
     if (i % 3 == 0) {
       o.shape = make_box(c - Vec3{0.5, 0.3, 0.4}, c + Vec3{0.5, 0.3, 0.4});
     } else {
-      o.shape = make_sphere({0, 0, 0}, size(rng));
+      o.shape = make_sphere({0, 0, 0}, rng.uniform(0.2, 1.2));
       if (i % 3 == 2)
         o.xf = Transform::translate(c);  // also through a transform
       else
-        o.shape = make_sphere(c, size(rng));
+        o.shape = make_sphere(c, rng.uniform(0.2, 1.2));
     }
     objects.push_back(std::move(o));
   }
   return objects;
 }
 
-Ray random_ray(std::mt19937_64& rng, bool segment) {
-  std::uniform_real_distribution<double> pos(-8, 8), dir(-1, 1), len(0.5, 12);
-  Vec3 d{dir(rng), dir(rng), dir(rng)};
-  if (length_squared(d) < 1e-6) d = {0, 0, 1};
-  return {{pos(rng), pos(rng), pos(rng)}, normalize(d), 0, segment ? len(rng) : kInfinity};
-}
-
 void check_against_brute_force(std::size_t bounded, bool flat) {
-  std::mt19937_64 rng(1234 + bounded);
+  testing::Rng rng(1234 + bounded);
   const std::vector<Object> objects = random_objects(bounded, rng);
   ObjectSet set;
   set.build(objects);
   ASSERT_EQ(bounded <= ObjectSet::kFlatLimit, flat) << "the case must exercise its path";
   int hits = 0, blocked = 0;
   for (int n = 0; n < 2000; ++n) {
-    const Ray ray = random_ray(rng, n % 2 == 1);
+    Ray ray = testing::random_ray(rng, 8, 5);
+    if (n % 2 == 1) ray.tmax = rng.uniform(0.05, 1.2);  // a segment (|d| is in [0.1, 10])
     // Nearest: the smallest t over every object's own nearest hit.
     double best = kInfinity;
     std::set<std::uint32_t> crossed;
