@@ -7,7 +7,7 @@
 
 namespace {
 
-void render_demo(benchmark::State& state, raycast::IntegratorType integrator) {
+void render_demo(benchmark::State& state, raycast::RenderMode integrator) {
   const raycast::Scene scene = raycast::load_demo_scene();
   raycast::RenderOptions options;
   options.width = 200;
@@ -23,10 +23,10 @@ void render_demo(benchmark::State& state, raycast::IntegratorType integrator) {
   state.counters["rays/s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
 }
 
-BENCHMARK_CAPTURE(render_demo, whitted, raycast::IntegratorType::kWhitted)
+BENCHMARK_CAPTURE(render_demo, whitted, raycast::RenderMode::kWhitted)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(render_demo, raycast, raycast::IntegratorType::kRaycast)
+BENCHMARK_CAPTURE(render_demo, raycast, raycast::RenderMode::kRaycast)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

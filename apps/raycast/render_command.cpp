@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -19,6 +18,7 @@
 #include "render_output.h"
 #include "scene/demo_scene.h"
 #include "scene/loader.h"
+#include "scene/validate.h"
 
 namespace raycast::cli {
 
@@ -136,35 +136,15 @@ Action add_render_command(CLI::App& app) {
       options.antialias = aa;
     }
     if (!opt->integrator.empty()) {
-      static const std::map<std::string, IntegratorType> kIntegrators = {
-          {"whitted", IntegratorType::kWhitted},
-          {"raycast", IntegratorType::kRaycast},
-          {"depth", IntegratorType::kDepth},
-          {"normal", IntegratorType::kNormal},
-          {"id", IntegratorType::kId}};
-      const auto it = kIntegrators.find(opt->integrator);
-      if (it == kIntegrators.end())
-        return usage_error("--integrator must be whitted, raycast, depth, normal or id, got '" +
+      options.integrator = integrator_named(opt->integrator);
+      if (!options.integrator)
+        return usage_error(std::string("--integrator must be ") + kIntegratorNames + ", got '" +
                            opt->integrator + "'");
-      options.integrator = it->second;
     }
-    std::vector<std::pair<std::string, Aov>> aovs;
-    if (!opt->aovs.empty()) {
-      static const std::map<std::string, Aov> kAovs = {{"depth", Aov::kDepth},
-                                                       {"normal", Aov::kNormal},
-                                                       {"id", Aov::kId},
-                                                       {"albedo", Aov::kAlbedo}};
-      std::stringstream list(opt->aovs);
-      std::string name;
-      while (std::getline(list, name, ',')) {
-        const auto it = kAovs.find(name);
-        if (it == kAovs.end())
-          return usage_error(
-              "--aov takes a comma-separated list of depth, normal, id, albedo; got '" + name +
-              "'");
-        aovs.emplace_back(name, it->second);
-      }
-    }
+    std::vector<std::pair<std::string, RenderMode>> aovs;
+    if (std::string bad; !parse_aov_list(opt->aovs, aovs, bad))
+      return usage_error(std::string("--aov takes a comma-separated list of ") + kAovNames +
+                         "; got '" + bad + "'");
     if (is_stdout(opt->output)) {
       if (!aovs.empty()) return usage_error("--aov writes files beside -o: it needs a file, not -");
       if (!opt->frames.empty()) return usage_error("--frames writes one file per frame, not -");
@@ -188,11 +168,9 @@ Action add_render_command(CLI::App& app) {
     if (distributed::active())  // under mpirun: tiles over the ranks (docs/distributed.md)
       return distributed::render_image(opt->scene, opt->output, options, aovs);
     const Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
-    const IntegratorType integrator = options.integrator.value_or(scene.render.integrator);
-    if (scene.lights.empty() && integrator == IntegratorType::kWhitted)
-      std::fprintf(stderr,
-                   "raycast render: warning: the scene has no lights: the whitted integrator "
-                   "shows only ambient light and the background\n");
+    if (const std::string warning = no_lights_warning(scene, render_mode(scene, options));
+        !warning.empty())
+      std::fprintf(stderr, "raycast render: warning: %s\n", warning.c_str());
     const long long pixels =
         static_cast<long long>(opt->width > 0 ? opt->width : scene.image.width) *
         (opt->height > 0 ? opt->height : scene.image.height);
@@ -201,7 +179,7 @@ Action add_render_command(CLI::App& app) {
                          " pixels, got " + std::to_string(pixels));
     RenderStats stats;
     const Image image = render(scene, options, &stats);
-    const bool depth = integrator == IntegratorType::kDepth;
+    const bool depth = render_mode(scene, options) == RenderMode::kDepth;
     try {
       save_render(image, opt->output, depth);
       for (const auto& [name, aov] : aovs) {

@@ -145,6 +145,54 @@ TEST(Sphere, RandomRays_MatchGeometricSolution) {
   }
 }
 
+// intersect() rejects early (outside and moving away; |f| clearly above r) before the roots:
+// its answer must be exactly the roots' answer, also for rays leaving the surface (shadow and
+// secondary rays), near-tangent lines and tmin < 0.
+TEST(Sphere, EarlyRejections_AgreeExactlyWithTheRoots) {
+  testing::Rng rng(77);
+  int rejected_moving_away = 0, hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 c = rng.in_box(2);
+    const Sphere s = make_sphere(c, rng.uniform(0.1, 3));
+    Ray ray = testing::random_ray(rng, 6, 3);
+    ray.o += c;
+    if (i % 4 == 1) {  // from just off the surface, leaving it or grazing it
+      const Vec3 n = rng.direction();
+      ray.o = c + s.radius * (1 + 1e-9 * rng.uniform(-1, 1)) * n;
+      ray.d = normalize(n * rng.uniform(-1, 1) + rng.in_box(1));
+    }
+    if (i % 4 == 2) {  // tangent to within rounding
+      const Vec3 n = rng.direction();
+      const Vec3 t = normalize(cross(n, rng.direction()));
+      ray.o = c + s.radius * n - 4.0 * t;
+      ray.d = t;
+    }
+    if (i % 8 == 3) ray.tmin = rng.uniform(-2, 1);
+    double t0 = 0, t1 = 0;
+    bool expect = false;
+    double expect_t = 0;
+    if (sphere_line_roots(ray.o - c, ray.d, s.radius, t0, t1)) {
+      for (double t : {t0, t1})
+        if (t >= ray.tmin && t <= ray.tmax) {
+          expect = true;
+          expect_t = t;
+          break;
+        }
+    }
+    LocalHit h;
+    const bool hit = intersect(s, ray, h);
+    ASSERT_EQ(hit, expect) << "case " << i;
+    if (hit) {
+      ++hits;
+      EXPECT_EQ(h.t, expect_t) << "case " << i;
+    }
+    const Vec3 o = ray.o - c;
+    rejected_moving_away += dot(o, o) > s.radius * s.radius && dot(o, ray.d) > 0;
+  }
+  EXPECT_GT(rejected_moving_away, 1000);  // the cases reach both early exits and the roots
+  EXPECT_GT(hits, 1000);
+}
+
 TEST(Sphere, Spans_AgreeWithInsideOracle) {
   const unsigned seed = 77;
   SCOPED_TRACE("seed " + std::to_string(seed));

@@ -89,30 +89,30 @@ objects:
 )");
   RenderOptions options;
   options.progress = false;
-  auto centre_and_corner = [&](IntegratorType type) {
+  auto centre_and_corner = [&](RenderMode type) {
     options.integrator = type;
     const Image image = render(scene, options);
     return std::pair{Vec3(image.at(2, 2)), Vec3(image.at(0, 0))};
   };
-  auto [depth, depth_miss] = centre_and_corner(IntegratorType::kDepth);
+  auto [depth, depth_miss] = centre_and_corner(RenderMode::kDepth);
   EXPECT_NEAR(depth.x, 4, 1e-6);
   EXPECT_TRUE(std::isinf(depth_miss.x));
-  auto [normal, normal_miss] = centre_and_corner(IntegratorType::kNormal);
+  auto [normal, normal_miss] = centre_and_corner(RenderMode::kNormal);
   EXPECT_NEAR(normal.x, 0.5, 1e-6);
   EXPECT_NEAR(normal.y, 0.5, 1e-6);
   EXPECT_NEAR(normal.z, 1.0, 1e-6);
   EXPECT_EQ(normal_miss, (Vec3{0, 0, 0}));
-  auto [shade, shade_miss] = centre_and_corner(IntegratorType::kRaycast);
+  auto [shade, shade_miss] = centre_and_corner(RenderMode::kRaycast);
   EXPECT_NEAR(shade.x, 0.5, 1e-6);  // albedo * |n.v| with n.v = 1
   EXPECT_NEAR(shade.z, 1, 1e-6);
   EXPECT_NEAR(shade_miss.x, 0.1, 1e-6);
-  auto [id, id_miss] = centre_and_corner(IntegratorType::kId);
+  auto [id, id_miss] = centre_and_corner(RenderMode::kId);
   const Vec3 want = id_color(0);
   EXPECT_NEAR(id.x, want.x, 1e-6);
   EXPECT_NEAR(id.y, want.y, 1e-6);
   EXPECT_EQ(id_miss, (Vec3{0, 0, 0}));
   options.integrator.reset();
-  options.aov = Aov::kAlbedo;
+  options.aov = RenderMode::kAlbedo;
   EXPECT_NEAR(render(scene, options).at(2, 2).y, 0.25f, 1e-6f);
 }
 

@@ -51,7 +51,7 @@ objects:
   - sphere: {radius: 1}
     material: t
 )");
-  const Integrator integrator(scene, Channel::kAlbedo);
+  const Integrator integrator(scene, RenderMode::kAlbedo);
   SampleState state{Rng(1), 0};
   const Vec3 c = integrator.li({{0, 0, 5}, {0, 0, -1}}, state);
   EXPECT_NEAR(c.x, 0.2, 2e-3);  // 8-bit sRGB quantisation

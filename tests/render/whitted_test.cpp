@@ -57,7 +57,7 @@ TEST(Whitted, SingleSphereAndPointLight_MatchesTheSpecFormula) {
   expect_color(want, {0.64942450944, 0.42821225472, 0.31710612736}, 1e-11);  // the sum worked out
   expect_color(pixel(scene), want, 1e-6);                                    // float image
   SampleState state{Rng(1), 0};
-  const Integrator integrator(scene, Channel::kWhitted);
+  const Integrator integrator(scene, RenderMode::kWhitted);
   expect_color(integrator.whitted({{0, 0, 5}, {0, 0, -1}}, 0, state), want, 1e-12);
   EXPECT_EQ(state.rays, 2u);  // the primary ray and one shadow ray
 }
@@ -103,7 +103,7 @@ objects:
   - sphere: {center: [0, 0, 5], radius: 0.5}
     material: b
 )");
-  const Integrator integrator(scene, Channel::kWhitted);
+  const Integrator integrator(scene, RenderMode::kWhitted);
   SampleState state{Rng(1), 0};
   const Vec3 want = mul(0.5 * Vec3{0.8, 0.6, 0.4}, 0.9 * Vec3{1, 0.5, 0.25});
   expect_color(integrator.shadow({0, 0, 0}, {0, 0, 10}, false, state), want, 1e-15);
@@ -175,7 +175,7 @@ objects:
 Vec3 trace_from_inside(const Scene& scene, double degrees_from_normal) {
   const double a = degrees_from_normal * std::numbers::pi / 180;
   SampleState state{Rng(1), 0};
-  return Integrator(scene, Channel::kWhitted)
+  return Integrator(scene, RenderMode::kWhitted)
       .whitted({{0, -1, 0}, {std::sin(a), std::cos(a), 0}}, 0, state);
 }
 
@@ -200,7 +200,8 @@ objects:
   - plane: {normal: [0, 1, 0], point: [0, -10, 0]}
 )");
   SampleState state{Rng(1), 0};
-  const Vec3 got = Integrator(scene, Channel::kWhitted).whitted({{0, 5, 0}, {0, -1, 0}}, 0, state);
+  const Vec3 got =
+      Integrator(scene, RenderMode::kWhitted).whitted({{0, 5, 0}, {0, -1, 0}}, 0, state);
   const double f = 0.5 * 0.5 / (2.5 * 2.5);
   expect_color(got, {f, f, f}, 1e-15);
 }
@@ -219,7 +220,7 @@ objects:
     const Scene scene = load_scene_text("render: {background: [0.5, 0.5, 0.5], max_depth: " +
                                         std::to_string(max_depth) + "}\n" + base);
     SampleState state{Rng(1), 0};
-    const Vec3 got = Integrator(scene, Channel::kWhitted).whitted(down, 0, state);
+    const Vec3 got = Integrator(scene, RenderMode::kWhitted).whitted(down, 0, state);
     expect_color(got, max_depth == 0 ? Vec3{0, 0, 0} : Vec3{0.5, 0.5, 0.5}, 0);
     EXPECT_EQ(state.rays, max_depth == 0 ? 1u : 2u);
   }
@@ -244,7 +245,7 @@ objects:
     const Scene scene =
         load_scene_text("render: {max_depth: 20, bailout: " + bailout + "}\n" + base);
     SampleState state{Rng(1), 0};
-    expect_color(Integrator(scene, Channel::kWhitted).whitted(down, 0, state), {0, 0, 0}, 0);
+    expect_color(Integrator(scene, RenderMode::kWhitted).whitted(down, 0, state), {0, 0, 0}, 0);
     EXPECT_EQ(state.rays, 1 + secondary) << "bailout " << bailout;
   }
   // The default is 1/255; a negative or non-numeric cut-off is a scene error.
@@ -265,8 +266,8 @@ objects:
                                         bailout + "}\n" + floor);
     SampleState state{Rng(1), 0};
     const double want = std::string(bailout) == "0.5" ? 0.5 : 0;
-    expect_color(Integrator(scene, Channel::kWhitted).whitted(down, 0, state), {want, want, want},
-                 0);
+    expect_color(Integrator(scene, RenderMode::kWhitted).whitted(down, 0, state),
+                 {want, want, want}, 0);
   }
 }
 
@@ -289,7 +290,7 @@ objects:
   - {plane: {normal: [0, 1, 0], point: [0, 0, 0]}, material: m}
 )");
       SampleState state{Rng(1), 0};
-      const Vec3 got = Integrator(scene, Channel::kWhitted).whitted(ray, 0, state);
+      const Vec3 got = Integrator(scene, RenderMode::kWhitted).whitted(ray, 0, state);
       const bool dark = std::string(diffuse) == "0" && std::string(light) == "[-3, 2, 0]";
       EXPECT_EQ(state.rays, dark ? 1u : 2u) << diffuse << " " << light;
       if (dark) {
@@ -313,7 +314,7 @@ objects:
     transform: [{translate: [0.5, -0.5, 0]}]
     material: c
 )");
-  const Integrator integrator(scene, Channel::kAlbedo);
+  const Integrator integrator(scene, RenderMode::kAlbedo);
   SampleState state{Rng(1), 0};
   // Object-space x = world x - 0.5; y = 0.5, z = 0.5 -> floor sum = floor(x - 0.5).
   expect_color(integrator.li({{0.25, 1, 0.5}, {0, -1, 0}}, state), {0, 0, 1},

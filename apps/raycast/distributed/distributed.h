@@ -20,7 +20,7 @@ int render_frames(const std::string& scene, const std::string& output, int first
 /// `render [SCENE] -o OUT [--aov ...]`: every rank loads the scene; the image is cut into tiles
 /// handed out one at a time; rank 0 gathers the pixels and writes the files.
 int render_image(const std::string& scene, const std::string& output, const RenderOptions& options,
-                 const std::vector<std::pair<std::string, Aov>>& aovs);
+                 const std::vector<std::pair<std::string, RenderMode>>& aovs);
 
 /// `cast SCENE --binary --rays IN -o OUT`: rank r answers the r-th contiguous slice of the rays
 /// and writes its answers at their place in OUT with MPI-IO.

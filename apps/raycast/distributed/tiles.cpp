@@ -130,7 +130,7 @@ bool render_pass(const MpiSession& session, const Scene& scene, RenderOptions op
 
 int render_image(const std::string& scene_path, const std::string& output,
                  const RenderOptions& options,
-                 const std::vector<std::pair<std::string, Aov>>& aovs) {
+                 const std::vector<std::pair<std::string, RenderMode>>& aovs) {
   return run_distributed(kCommand, [&](MpiSession& session) {
     std::optional<Scene> scene;
     std::string error;
@@ -144,8 +144,7 @@ int render_image(const std::string& scene_path, const std::string& output,
     const auto start = std::chrono::steady_clock::now();
     RenderStats total;
     std::vector<int> tiles_per_rank(std::size_t(session.size()), 0);
-    const bool depth =
-        options.integrator.value_or(scene->render.integrator) == IntegratorType::kDepth;
+    const bool depth = render_mode(*scene, options) == RenderMode::kDepth;
     // The image, then each AOV; rank 0 writes each file as soon as it is complete.
     for (std::size_t pass = 0; pass <= aovs.size(); ++pass) {
       RenderOptions pass_options = options;

@@ -24,7 +24,7 @@ int render_frames(const std::string&, const std::string&, int, int, const Render
 }
 
 int render_image(const std::string&, const std::string&, const RenderOptions&,
-                 const std::vector<std::pair<std::string, Aov>>&) {
+                 const std::vector<std::pair<std::string, RenderMode>>&) {
   return refuse("render");
 }
 

@@ -198,18 +198,11 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
                   Fields f(ctx, root, "request");
                   const std::string name = f.string("integrator");
                   f.finish();
-                  static const std::pair<const char*, IntegratorType> kNames[] = {
-                      {"whitted", IntegratorType::kWhitted},
-                      {"raycast", IntegratorType::kRaycast},
-                      {"depth", IntegratorType::kDepth},
-                      {"normal", IntegratorType::kNormal},
-                      {"id", IntegratorType::kId}};
-                  for (const auto& [n, type] : kNames)
-                    if (name == n) {
-                      loop.set_integrator(type);
-                      return send_json(res, 200, state_json(loop.state(), loop.scene_path()));
-                    }
-                  send_error(res, 400, "integrator must be whitted, raycast, depth, normal or id");
+                  if (const std::optional<RenderMode> mode = integrator_named(name)) {
+                    loop.set_integrator(*mode);
+                    return send_json(res, 200, state_json(loop.state(), loop.scene_path()));
+                  }
+                  send_error(res, 400, std::string("integrator must be ") + kIntegratorNames);
                 });
               });
 

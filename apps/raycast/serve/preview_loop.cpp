@@ -34,22 +34,6 @@ std::vector<Pass> plan_passes(const Scene& scene) {
   return passes;
 }
 
-const char* integrator_name(IntegratorType t) {
-  switch (t) {
-    case IntegratorType::kWhitted:
-      return "whitted";
-    case IntegratorType::kRaycast:
-      return "raycast";
-    case IntegratorType::kDepth:
-      return "depth";
-    case IntegratorType::kNormal:
-      return "normal";
-    case IntegratorType::kId:
-      return "id";
-  }
-  return "whitted";
-}
-
 double ms_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
@@ -117,7 +101,7 @@ void PreviewLoop::reset_camera() {
   restart_locked();
 }
 
-void PreviewLoop::set_integrator(IntegratorType integrator) {
+void PreviewLoop::set_integrator(RenderMode integrator) {
   std::lock_guard lock(mutex_);
   integrator_override_ = integrator;
   restart_locked();
@@ -140,8 +124,8 @@ void PreviewLoop::restart_locked() {
   state_.final = false;
   state_.camera = camera_locked();
   state_.camera_overridden = camera_override_.has_value();
-  state_.integrator = integrator_name(
-      integrator_override_.value_or(scene_ ? scene_->render.integrator : IntegratorType::kWhitted));
+  state_.integrator = render_mode_name(
+      integrator_override_.value_or(scene_ ? scene_->render.integrator : RenderMode::kWhitted));
   publish_locked();
   work_.notify_all();
 }
@@ -256,7 +240,7 @@ void PreviewLoop::run() {
     try {
       Image image = render(*scene, options);
       if (cancel_) continue;
-      if (options.integrator.value_or(scene->render.integrator) == IntegratorType::kDepth)
+      if (render_mode(*scene, options) == RenderMode::kDepth)
         cli::normalize_depth(image);  // as `raycast render` writes depth to PNG
       image_width = image.width;
       image_height = image.height;

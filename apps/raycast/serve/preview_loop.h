@@ -58,7 +58,7 @@ class PreviewLoop {
   // The view the pages ask for; each restarts the refinement.
   void set_camera(const CameraDesc& camera);
   void reset_camera();
-  void set_integrator(IntegratorType integrator);
+  void set_integrator(RenderMode integrator);
 
   /// The scene as last loaded (null before the first successful load) and the camera in use.
   std::shared_ptr<const Scene> scene(CameraDesc* camera) const;
@@ -81,7 +81,7 @@ class PreviewLoop {
   std::shared_ptr<Scene> scene_;  // its camera field is set by the loop before each pass
   CameraDesc scene_camera_;       // the scene file's camera (or the default framing)
   std::optional<CameraDesc> camera_override_;
-  std::optional<IntegratorType> integrator_override_;
+  std::optional<RenderMode> integrator_override_;
   bool reload_wanted_ = true;
   bool restart_wanted_ = false;
   bool stopping_ = false;

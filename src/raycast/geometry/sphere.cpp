@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -56,7 +57,11 @@ bool sphere_line_roots(const Vec3& o, const Vec3& d, double radius, double& t0, 
   const double b = 2 * dot(o, d);
   const double c = dot(o, o) - radius * radius;
   const Vec3 f = o - (b / (2 * a)) * d;
-  const double lf = length(f);
+  const double f2 = dot(f, f);
+  // Early out before both square roots: |f|^2 above r^2 (1 + 8 eps) makes the rounded |f|
+  // exceed r (sqrt and the two products round by at most 3 eps), which the test below rejects.
+  if (f2 > radius * radius * (1 + 8 * std::numeric_limits<double>::epsilon())) return false;
+  const double lf = std::sqrt(f2);
   const double disc = 4 * a * (radius + lf) * (radius - lf);
   if (!(disc >= 0)) return false;
   const double root = std::sqrt(disc);
@@ -78,6 +83,10 @@ Aabb bounds(const Sphere& s) {
 
 bool intersect(const Sphere& s, const Ray& ray, LocalHit& hit) {
   const Vec3 o = ray.o - s.center;
+  // Outside and moving away: sphere_line_roots would give c > 0 and b > 0, so q < 0 and both
+  // roots c / q and q / a negative (the signs are exact), none in [tmin, tmax] for tmin >= 0.
+  // Rejected here without the division and the two square roots.
+  if (ray.tmin >= 0 && dot(o, o) > s.radius * s.radius && dot(o, ray.d) > 0) return false;
   double t[2];
   if (!sphere_line_roots(o, ray.d, s.radius, t[0], t[1])) return false;
   const bool partial = s.is_partial();

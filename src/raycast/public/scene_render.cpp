@@ -9,15 +9,11 @@ namespace raycast::api {
 
 namespace {
 
-raycast::IntegratorType integrator(const std::string& name) {
-  if (name == "whitted") return raycast::IntegratorType::kWhitted;
-  if (name == "raycast") return raycast::IntegratorType::kRaycast;
-  if (name == "depth") return raycast::IntegratorType::kDepth;
-  if (name == "normal") return raycast::IntegratorType::kNormal;
-  if (name == "id") return raycast::IntegratorType::kId;
-  throw SceneError("render: integrator must be whitted, raycast, depth, normal or id, got " + name,
-                   "render", 0, 0,
-                   "integrator must be whitted, raycast, depth, normal or id, got " + name);
+raycast::RenderMode integrator(const std::string& name) {
+  if (const std::optional<raycast::RenderMode> mode = raycast::integrator_named(name)) return *mode;
+  const std::string message =
+      std::string("integrator must be ") + raycast::kIntegratorNames + ", got " + name;
+  throw SceneError("render: " + message, "render", 0, 0, message);
 }
 
 }  // namespace

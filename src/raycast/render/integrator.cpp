@@ -37,8 +37,8 @@ Color id_color(int entry) {
   return {channel(0), channel(8), channel(16)};
 }
 
-Integrator::Integrator(const Scene& scene, Channel channel)
-    : scene_(scene), channel_(channel), textures_(load_textures(scene)) {
+Integrator::Integrator(const Scene& scene, RenderMode mode)
+    : scene_(scene), mode_(mode), textures_(load_textures(scene)) {
   for (const Material& m : scene.materials) any_transmissive_ |= m.transmission > 0;
 }
 
@@ -53,31 +53,31 @@ SurfaceNeeds Integrator::needs(std::size_t material) const {
 }
 
 Color Integrator::li(const Ray& ray, SampleState& state) const {
-  if (channel_ == Channel::kWhitted) return whitted(ray, 0, state);
+  if (mode_ == RenderMode::kWhitted) return whitted(ray, 0, state);
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) {
-    if (channel_ == Channel::kRaycast) return scene_.render.background;
-    if (channel_ == Channel::kDepth) return {kInfinity, kInfinity, kInfinity};
+    if (mode_ == RenderMode::kRaycast) return scene_.render.background;
+    if (mode_ == RenderMode::kDepth) return {kInfinity, kInfinity, kInfinity};
     return {0, 0, 0};
   }
   const SurfaceInfo si = scene_.surface(ray, hit, needs(hit));
-  switch (channel_) {
-    case Channel::kRaycast: {
+  switch (mode_) {
+    case RenderMode::kRaycast: {
       const double facing = std::abs(dot(si.shading_n, normalize(ray.d)));
       return facing * albedo(scene_, textures_, ray, hit, si);
     }
-    case Channel::kDepth: {
+    case RenderMode::kDepth: {
       const double distance = hit.local.t * length(ray.d);
       return {distance, distance, distance};
     }
-    case Channel::kNormal:
+    case RenderMode::kNormal:
       return 0.5 * si.n + Vec3{0.5, 0.5, 0.5};
-    case Channel::kId:
+    case RenderMode::kId:
       return id_color(scene_.objects[hit.object].entry);
-    case Channel::kAlbedo:
+    case RenderMode::kAlbedo:
       return albedo(scene_, textures_, ray, hit, si);
-    case Channel::kWhitted:
+    case RenderMode::kWhitted:
       break;
   }
   return {0, 0, 0};
@@ -221,16 +221,8 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
   Color through{1, 1, 1};
-  // The visitor captures one pointer, so the std::function stores it in place: a capture of
-  // three references would cost a heap allocation per shadow ray.
-  struct Pass {
-    const Integrator* self;
-    const Ray* segment;
-    Color* through;
-  } pass{this, &segment, &through};
-  const bool blocked = scene_.any_object(segment, [p = &pass](std::uint32_t index) {
-    return !p->self->filter(index, *p->segment, *p->through);
-  });
+  const bool blocked = scene_.any_object(
+      segment, [&](std::uint32_t index) { return !filter(index, segment, through); });
   return blocked ? Color{0, 0, 0} : through;
 }
 

@@ -11,9 +11,6 @@
 
 namespace raycast {
 
-/// What a render computes per sample: an integrator's colour or an arbitrary output variable.
-enum class Channel { kWhitted, kRaycast, kDepth, kNormal, kId, kAlbedo };
-
 /// The mutable state of one sample: its random numbers and its ray count (every intersect or
 /// occluded query on the scene counts one ray: primary, secondary and shadow rays alike).
 struct SampleState {
@@ -29,7 +26,7 @@ class Integrator {
  public:
   /// Loads the scene's image textures (throws SceneError when one cannot be read). The scene
   /// must outlive the integrator.
-  Integrator(const Scene& scene, Channel channel);
+  Integrator(const Scene& scene, RenderMode mode);
 
   /// The value seen along a primary ray (unit direction for `depth` to be a distance).
   Color li(const Ray& ray, SampleState& state) const;
@@ -63,7 +60,7 @@ class Integrator {
                    const Color& c) const;
 
   const Scene& scene_;
-  Channel channel_;
+  RenderMode mode_;
   std::vector<std::shared_ptr<const ImageTexture>> textures_;
   bool any_transmissive_ = false;
 };

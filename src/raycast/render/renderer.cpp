@@ -24,34 +24,6 @@ namespace {
 
 constexpr int kTileSize = 16;
 
-Channel channel_for(const Scene& scene, const RenderOptions& options) {
-  if (options.aov) {
-    switch (*options.aov) {
-      case Aov::kDepth:
-        return Channel::kDepth;
-      case Aov::kNormal:
-        return Channel::kNormal;
-      case Aov::kId:
-        return Channel::kId;
-      case Aov::kAlbedo:
-        return Channel::kAlbedo;
-    }
-  }
-  switch (options.integrator.value_or(scene.render.integrator)) {
-    case IntegratorType::kWhitted:
-      return Channel::kWhitted;
-    case IntegratorType::kRaycast:
-      return Channel::kRaycast;
-    case IntegratorType::kDepth:
-      return Channel::kDepth;
-    case IntegratorType::kNormal:
-      return Channel::kNormal;
-    case IntegratorType::kId:
-      return Channel::kId;
-  }
-  return Channel::kWhitted;
-}
-
 /// A one-line bar on stderr, redrawn when the percentage changes; silent unless enabled.
 /// CPU seconds used so far by the whole process (every thread).
 double process_cpu_seconds() {
@@ -128,7 +100,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
 
   const Camera camera(camera_or_default(scene), width, height);
-  const Integrator integrator(scene, channel_for(scene, options));
+  const Integrator integrator(scene, render_mode(scene, options));
   const unsigned seed = scene.render.seed;
   Image image(region_width, region_height);
   tbb::enumerable_thread_specific<std::uint64_t> rays(0);

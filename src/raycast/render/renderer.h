@@ -12,10 +12,6 @@
 
 namespace raycast {
 
-/// Extra per-pixel outputs (`--aov`): each is what the integrator of the same name gives
-/// (albedo: the surface colour C before any lighting, black for misses).
-enum class Aov { kDepth, kNormal, kId, kAlbedo };
-
 /// The most worker threads a render may ask for (`--threads`; 0 means all cores).
 inline constexpr int kMaxThreads = 4096;
 
@@ -25,12 +21,12 @@ struct PixelRect {
 };
 
 struct RenderOptions {
-  int width = 0;                             // > 0 overrides the scene's image.width
-  int height = 0;                            // > 0 overrides image.height
-  int spp = 0;                               // > 0 overrides image.samples
-  std::optional<IntegratorType> integrator;  // overrides render.integrator
-  std::optional<Aov> aov;                    // render this output variable instead
-  int threads = 0;                           // > 0 caps the worker threads (tbb::global_control)
+  int width = 0;                         // > 0 overrides the scene's image.width
+  int height = 0;                        // > 0 overrides image.height
+  int spp = 0;                           // > 0 overrides image.samples
+  std::optional<RenderMode> integrator;  // overrides render.integrator (not kAlbedo)
+  std::optional<RenderMode> aov;         // render this extra output (--aov) instead
+  int threads = 0;                       // > 0 caps the worker threads (tbb::global_control)
   /// Overrides render.antialias. Without it, spp > 0 renders fixed samples (no adaptive pass).
   std::optional<AntialiasSettings> antialias;
   bool progress = true;  // a progress bar on stderr, only when it is a terminal
@@ -52,6 +48,11 @@ struct RenderStats {
   std::uint64_t rays = 0;     // every scene query: primary, secondary and shadow rays
   double mrays_per_second() const { return seconds > 0 ? double(rays) / seconds * 1e-6 : 0; }
 };
+
+/// What the render computes: the AOV when there is one, else the integrator (options first).
+inline RenderMode render_mode(const Scene& scene, const RenderOptions& options) {
+  return options.aov.value_or(options.integrator.value_or(scene.render.integrator));
+}
 
 /// Renders the scene with its camera (or the default one). Throws SceneError when an image
 /// texture cannot be loaded and std::invalid_argument for a non-positive override or a region

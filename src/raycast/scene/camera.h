@@ -1,5 +1,6 @@
 #pragma once
 #include "math/vec3.h"
+#include "scene/render_mode.h"
 
 namespace raycast {
 
@@ -25,8 +26,6 @@ struct ImageSettings {
 inline constexpr long long kMaxImagePixels = 1LL << 28;
 inline constexpr int kMaxImageSide = 1 << 16;
 
-enum class IntegratorType { kWhitted, kRaycast, kDepth, kNormal, kId };
-
 /// Adaptive antialiasing (docs/rendering.md "Adaptive antialiasing"): none (the image's fixed
 /// `samples`), POV-Ray's method 1 (neighbour-threshold supersampling), method 2 (recursive
 /// subdivision of the pixel from its corners) or a variance-driven sampler.
@@ -39,7 +38,7 @@ struct AntialiasSettings {
 };
 
 struct RenderSettings {
-  IntegratorType integrator = IntegratorType::kWhitted;
+  RenderMode integrator = RenderMode::kWhitted;  // never kAlbedo (not an integrator)
   int max_depth = 5;
   double bailout = 1.0 / 255;  // secondary rays of accumulated weight below this are not traced
   Vec3 background{0, 0, 0};

@@ -21,6 +21,13 @@ void ObjectSet::build(std::span<const Object> objects) {
       unbounded_.push_back(static_cast<std::uint32_t>(i));
     }
   }
+  flat_ = bounded_.size() <= kFlatLimit;
+  if (flat_) {
+    boxes_ = std::move(boxes);
+    bvh_ = Bvh{};
+    return;
+  }
+  boxes_.clear();
   BvhBuildConfig config;
   config.max_leaf_size = 4;
   bvh_ = build_bvh(boxes, centres, config);
@@ -42,6 +49,15 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   };
   double tmax = ray.tmax;
   for (std::uint32_t i : unbounded_) test(i, tmax);
+  if (flat_) {
+    const Vec3 inv_d = reciprocal(ray.d);
+    for (std::size_t k = 0; k < boxes_.size(); ++k) {
+      double t_enter;
+      if (intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, tmax, t_enter))
+        test(bounded_[k], tmax);
+    }
+    return found;
+  }
   traverse_nearest(bvh_, ray.o, ray.d, ray.tmin, tmax,
                    [&](std::uint32_t prim, double& t) { test(bounded_[prim], t); });
   return found;

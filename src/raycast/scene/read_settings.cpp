@@ -79,19 +79,11 @@ RenderSettings read_render(const SourceContext& ctx, const YAML::Node& node) {
   Fields f(ctx, node, "render");
   RenderSettings r;
   const std::string integrator = f.string("integrator", "whitted");
-  if (integrator == "whitted")
-    r.integrator = IntegratorType::kWhitted;
-  else if (integrator == "raycast")
-    r.integrator = IntegratorType::kRaycast;
-  else if (integrator == "depth")
-    r.integrator = IntegratorType::kDepth;
-  else if (integrator == "normal")
-    r.integrator = IntegratorType::kNormal;
-  else if (integrator == "id")
-    r.integrator = IntegratorType::kId;
+  if (const std::optional<RenderMode> mode = integrator_named(integrator))
+    r.integrator = *mode;
   else
     f.fail("integrator",
-           "render.integrator must be whitted, raycast, depth, normal or id, got " + integrator);
+           std::string("render.integrator must be ") + kIntegratorNames + ", got " + integrator);
   r.max_depth = f.integer("max_depth", r.max_depth, 0, 1000);
   r.bailout = f.non_negative("bailout", r.bailout);
   r.background = read_color(f, "background", r.background);

@@ -24,11 +24,6 @@ bool Scene::occluded(const Ray& ray) const {
   return set_.occluded(objects, ray);
 }
 
-bool Scene::any_object(const Ray& ray, const std::function<bool(std::uint32_t)>& visit) const {
-  if (!is_valid(ray)) return false;
-  return set_.any(ray, visit);
-}
-
 void Scene::intersect_all(const Ray& ray, std::vector<Crossing>& out) const {
   out.clear();
   if (!is_valid(ray)) return;

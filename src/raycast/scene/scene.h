@@ -61,7 +61,10 @@ struct Scene {
   /// cross: every unbounded object, then those whose bounds the BVH finds on the segment, in a
   /// fixed order for a given ray. Stops as soon as visit returns true, and returns whether it did.
   /// Nothing is visited for a ray that is not is_valid.
-  bool any_object(const Ray& ray, const std::function<bool(std::uint32_t)>& visit) const;
+  template <class F>
+  bool any_object(const Ray& ray, F&& visit) const {
+    return is_valid(ray) && set_.any(ray, visit);
+  }
   /// The full surface record of a hit found with this ray.
   SurfaceInfo surface(const Ray& ray, const SceneHit& hit,
                       SurfaceNeeds needs = SurfaceNeeds::kAll) const;

@@ -52,6 +52,12 @@ const char* severity_name(Severity s) {
   return "?";
 }
 
+std::string no_lights_warning(const Scene& scene, RenderMode mode) {
+  if (!scene.lights.empty() || mode != RenderMode::kWhitted) return "";
+  return "the scene has no lights: the whitted integrator shows only ambient light and the "
+         "background";
+}
+
 std::vector<Finding> check_scene(const Scene& scene) {
   std::vector<Finding> found;
   auto add = [&](Severity severity, SourceMark at, std::string message) {
@@ -63,10 +69,8 @@ std::vector<Finding> check_scene(const Scene& scene) {
                : SourceMark{};
   };
 
-  if (scene.lights.empty() && scene.render.integrator == IntegratorType::kWhitted)
-    add(Severity::kWarning, {},
-        "the scene has no lights: the whitted integrator shows only ambient light and the "
-        "background");
+  if (std::string warning = no_lights_warning(scene, scene.render.integrator); !warning.empty())
+    add(Severity::kWarning, {}, std::move(warning));
 
   const CameraDesc camera = camera_or_default(scene);
   if (const Object* o = solid_around(scene, camera.position, false))

@@ -26,6 +26,10 @@ std::vector<Finding> validate_scene_file(const std::string& path);
 /// unbounded shapes outside CSG, which every ray must test (notes).
 std::vector<Finding> check_scene(const Scene& scene);
 
+/// The warning for a whitted render of a scene without lights (it shows only ambient light and
+/// the background), else "". Shared by `validate` and `render`.
+std::string no_lights_warning(const Scene& scene, RenderMode mode);
+
 /// "error", "warning" or "note".
 const char* severity_name(Severity s);
 

@@ -1,0 +1,96 @@
+// ObjectSet's walks against a brute-force loop over every object, on both of its paths: the
+// flat list (at most kFlatLimit bounded objects) and the BVH (more).
+#include "scene/object_set.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+#include "support/random.h"
+
+namespace raycast {
+namespace {
+
+std::vector<Object> random_objects(std::size_t bounded, testing::Rng& rng) {
+  std::vector<Object> objects;
+  Object plane;  // unbounded: tried on every ray
+  plane.shape = make_plane({0, 1, 0}, {0, -5, 0});
+  objects.push_back(std::move(plane));
+  for (std::size_t i = 0; i < bounded; ++i) {
+    const Vec3 c = rng.in_box(4);
+    Object o;
+    if (i % 3 == 0) {
+      o.shape = make_box(c - Vec3{0.5, 0.3, 0.4}, c + Vec3{0.5, 0.3, 0.4});
+    } else {
+      o.shape = make_sphere({0, 0, 0}, rng.uniform(0.2, 1.2));
+      if (i % 3 == 2)
+        o.xf = Transform::translate(c);  // also through a transform
+      else
+        o.shape = make_sphere(c, rng.uniform(0.2, 1.2));
+    }
+    objects.push_back(std::move(o));
+  }
+  return objects;
+}
+
+void check_against_brute_force(std::size_t bounded, bool flat) {
+  testing::Rng rng(1234 + bounded);
+  const std::vector<Object> objects = random_objects(bounded, rng);
+  ObjectSet set;
+  set.build(objects);
+  ASSERT_EQ(bounded <= ObjectSet::kFlatLimit, flat) << "the case must exercise its path";
+  int hits = 0, blocked = 0;
+  for (int n = 0; n < 2000; ++n) {
+    Ray ray = testing::random_ray(rng, 8, 5);
+    if (n % 2 == 1) ray.tmax = rng.uniform(0.05, 1.2);  // a segment (|d| is in [0.1, 10])
+    // Nearest: the smallest t over every object's own nearest hit.
+    double best = kInfinity;
+    std::set<std::uint32_t> crossed;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      LocalHit h;
+      if (intersect(objects[i], ray, h)) {
+        best = std::min(best, h.t);
+        crossed.insert(std::uint32_t(i));
+      }
+    }
+    LocalHit hit;
+    std::int32_t index = -1;
+    const bool found = set.intersect(objects, ray, hit, index);
+    ASSERT_EQ(found, best < kInfinity) << n;
+    if (found) {
+      ++hits;
+      EXPECT_EQ(hit.t, best) << n;
+      LocalHit own;
+      ASSERT_TRUE(intersect(objects[std::size_t(index)], ray, own));
+      EXPECT_EQ(own.t, best) << n;
+    }
+    // Any: blocked exactly when some object crosses the segment.
+    const bool occluded = set.occluded(objects, ray);
+    EXPECT_EQ(occluded, !crossed.empty()) << n;
+    blocked += occluded;
+    // All: every crossed object visited, none twice.
+    std::multiset<std::uint32_t> visited;
+    set.all(ray, [&](std::uint32_t i) { visited.insert(i); });
+    for (std::uint32_t i : crossed) EXPECT_EQ(visited.count(i), 1u) << n << " object " << i;
+    for (std::uint32_t i : visited) EXPECT_EQ(visited.count(i), 1u) << n << " object " << i;
+  }
+  // The rays do meet objects (and miss them): the comparisons above are not vacuous.
+  EXPECT_GT(hits, 100);
+  EXPECT_LT(hits, 2000);
+  EXPECT_GT(blocked, 100);
+}
+
+TEST(ObjectSet, FlatWalk_MatchesBruteForce) {
+  for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(3), ObjectSet::kFlatLimit})
+    check_against_brute_force(n, true);
+}
+
+TEST(ObjectSet, BvhWalk_MatchesBruteForce) {
+  for (std::size_t n : {ObjectSet::kFlatLimit + 1, std::size_t(40)})
+    check_against_brute_force(n, false);
+}
+
+}  // namespace
+}  // namespace raycast
