@@ -34,7 +34,7 @@ Image render_depth(const std::string& pov) {
   o.width = kW;
   o.height = kH;
   o.spp = 1;
-  o.integrator = IntegratorType::kDepth;
+  o.integrator = RenderMode::kDepth;
   o.progress = false;
   return render(s, o);
 }
