@@ -1,7 +1,7 @@
 #include <cstdio>
 #include <string>
 
-#include "api/bench.h"
+#include "bench/bench.h"
 #include "commands.h"
 #include "scene/scene_error.h"
 

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "api/bench.h"
+#include "bench/bench.h"
 #include "mesh/mesh.h"
 
 namespace raycast {

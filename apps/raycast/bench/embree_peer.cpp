@@ -1,4 +1,4 @@
-#include "api/embree_peer.h"
+#include "bench/embree_peer.h"
 
 #include <sys/resource.h>
 

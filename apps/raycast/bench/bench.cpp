@@ -1,4 +1,4 @@
-#include "api/bench.h"
+#include "bench/bench.h"
 
 #include "accel/isa.h"
 
@@ -16,7 +16,7 @@
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
-#include "api/embree_peer.h"
+#include "bench/embree_peer.h"
 #include "geometry/spawn.h"
 #include "mesh/mesh_file.h"
 #include "mesh/procedural.h"
