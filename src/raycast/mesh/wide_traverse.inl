@@ -6,6 +6,8 @@
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
+// A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv) and
+// intersect_node16(...): its own node test with the same results (AVX-512: 16 lanes).
 // Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
 // with an add, so every ISA returns the same hits bit for bit (the tests compare them).
 
@@ -32,17 +34,22 @@ struct RayData {
   V8 sx, sy, sz;
   V8 okx, oky, okz;
   V8 tmin;
+#ifdef RAYCAST_KERNEL_NODE16
+  NodeRay16 node16;  // the kernel's own 16-lane node test (AVX-512)
+#endif
 };
 
 inline RayData prepare(const MeshRay& r) {
   RayData p;
   const float* o = &r.o.x;
   const float* d = &r.d.x;
+  float invs[3];
   for (int a = 0; a < 3; ++a) {
     p.o[a] = splat(o[a]);
     float da = d[a];
     if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
     const float inv = 1.0f / da;
+    invs[a] = inv;
     p.inv[a] = splat(inv);
     // WideNode::q bytes: lo_x 0, hi_x 8, lo_y 16, hi_y 24, lo_z 32, hi_z 40.
     p.near_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? 0 : kNodeWidth);
@@ -59,6 +66,11 @@ inline RayData prepare(const MeshRay& r) {
   p.oky = splat(o[w.ky]);
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
+#ifdef RAYCAST_KERNEL_NODE16
+  p.node16 = prepare_node16(o, invs);
+#else
+  (void)invs;
+#endif
   return p;
 }
 
@@ -66,6 +78,9 @@ inline RayData prepare(const MeshRay& r) {
 // The planes are dequantised exactly as the build checked them (origin + q * scale), then tested
 // as float planes.
 inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnear) {
+#ifdef RAYCAST_KERNEL_NODE16
+  return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
+#else
   const std::uint8_t* q = n.q[0];
   const V8 sx = splat(node_scale(n.exponent[0]));
   const V8 sy = splat(node_scale(n.exponent[1]));
@@ -86,6 +101,7 @@ inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnea
   const V8 widen = select(cmp_ge(far, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
   const V8 tfar = vmin(far * widen, tmax);
   return bits(cmp_le(tnear, tfar)) & n.used;
+#endif
 }
 
 // Lane results of a two-group triangle test: t, and the edge functions v, w and det = u + v + w.
