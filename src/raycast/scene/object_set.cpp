@@ -21,6 +21,9 @@ void ObjectSet::build(std::span<const Object> objects) {
       unbounded_.push_back(static_cast<std::uint32_t>(i));
     }
   }
+  only_ = bounded_.size() + unbounded_.size() == 1
+              ? static_cast<std::int32_t>(bounded_.empty() ? unbounded_[0] : bounded_[0])
+              : -1;
   BvhBuildConfig config;
   config.max_leaf_size = 4;
   bvh_ = build_bvh(boxes, centres, config);
@@ -41,6 +44,10 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
     }
   };
   double tmax = ray.tmax;
+  if (only_ >= 0) {
+    if (may_hit_only(ray)) test(static_cast<std::uint32_t>(only_), tmax);
+    return found;
+  }
   for (std::uint32_t i : unbounded_) test(i, tmax);
   traverse_nearest(bvh_, ray.o, ray.d, ray.tmin, tmax,
                    [&](std::uint32_t prim, double& t) { test(bounded_[prim], t); });

@@ -26,6 +26,7 @@ class ObjectSet {
   /// segment, in a fixed order for a given ray; stops when visit returns true (returned).
   template <class F>
   bool any(const Ray& ray, F&& visit) const {
+    if (only_ >= 0) return may_hit_only(ray) && visit(static_cast<std::uint32_t>(only_));
     for (std::uint32_t index : unbounded_)
       if (visit(index)) return true;
     return traverse_any(bvh_, ray.o, ray.d, ray.tmin, ray.tmax,
@@ -34,6 +35,10 @@ class ObjectSet {
   /// visit(index) for every object the segment may cross (unbounded ones first).
   template <class F>
   void all(const Ray& ray, F&& visit) const {
+    if (only_ >= 0) {
+      if (may_hit_only(ray)) visit(static_cast<std::uint32_t>(only_));
+      return;
+    }
     for (std::uint32_t index : unbounded_) visit(index);
     traverse_all(bvh_, ray.o, ray.d, ray.tmin, ray.tmax,
                  [&](std::uint32_t prim) { visit(bounded_[prim]); });
@@ -48,9 +53,20 @@ class ObjectSet {
   }
 
  private:
+  // The slab test of the only object's box (what the top-level BVH would do, without the walk):
+  // rays that miss it skip the object's own ray set-up.
+  bool may_hit_only(const Ray& ray) const {
+    double t;
+    return unbounded_.size() == 1 ||
+           intersect_slabs(finite_bounds_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t);
+  }
+
   Bvh bvh_;                               // over the bounded objects
   std::vector<std::uint32_t> bounded_;    // bvh prim -> object index
   std::vector<std::uint32_t> unbounded_;  // objects tested on every ray
+  // The one object of a set of one (a scene of one mesh): queried directly, without the top-level
+  // BVH, whose box test the object's own structure repeats anyway. -1 otherwise.
+  std::int32_t only_ = -1;
   Aabb bounds_, finite_bounds_;
 };
 
