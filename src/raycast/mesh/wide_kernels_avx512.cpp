@@ -116,6 +116,6 @@ inline int intersect_node16(const WideNode& n, const NodeRay16& r, V8 tmin, V8 t
 
 namespace raycast {
 const MeshKernels kMeshKernelsAvx512 = {Isa::kAvx512, kernels_avx512::closest, kernels_avx512::any,
-                                        kernels_avx512::every};
+                                        kernels_avx512::every, kernels_avx512::closest8};
 }  // namespace raycast
 #endif
