@@ -367,13 +367,25 @@ inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
   return true;
 }
 
+// A node's 48 planes dequantised at once (origin + q * scale, as every node test does).
+struct NodePlanes {
+  alignas(32) float f[6][8];
+};
+
+inline void dequantise_node(const WideNode& n, NodePlanes& out) {
+  for (int a = 0; a < 3; ++a) {
+    const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
+    store8(out.f[2 * a], o + load8_u8(n.q[2 * a]) * s);
+    store8(out.f[2 * a + 1], o + load8_u8(n.q[2 * a + 1]) * s);
+  }
+}
+
 // Child c of a node against every lane: the single-ray slab test of that child, lane by lane.
-inline int packet_child(const WideNode& n, int c, const PacketData& p, V8 tmax, V8& tnear) {
+inline int packet_child(const NodePlanes& n, int c, const PacketData& p, V8 tmax, V8& tnear) {
   V8 near[3], far[3];
   for (int a = 0; a < 3; ++a) {
-    const float s = node_scale(n.exponent[a]);
-    const V8 lo = (splat(dequantise(n.origin[a], s, n.q[2 * a][c])) - p.o[a]) * p.inv[a];
-    const V8 hi = (splat(dequantise(n.origin[a], s, n.q[2 * a + 1][c])) - p.o[a]) * p.inv[a];
+    const V8 lo = (splat(n.f[2 * a][c]) - p.o[a]) * p.inv[a];
+    const V8 hi = (splat(n.f[2 * a + 1][c]) - p.o[a]) * p.inv[a];
     near[a] = select(p.positive[a], lo, hi);
     far[a] = select(p.positive[a], hi, lo);
   }
@@ -449,6 +461,8 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
   for (;;) {
     if (!(ref & kLeafBit)) {
       const WideNode& node = bvh.nodes[ref];
+      NodePlanes planes;
+      dequantise_node(node, planes);
       // Hit children with the least entry over their lanes, nearest pushed last.
       const int base = top;
       int used = node.used;
@@ -456,7 +470,7 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
         const int c = __builtin_ctz(used);
         used &= used - 1;
         V8 tn;
-        const int m = packet_child(node, c, p, tmax, tn);
+        const int m = packet_child(planes, c, p, tmax, tn);
         if (!m) continue;
         alignas(32) float tnl[8];
         store8(tnl, tn);
