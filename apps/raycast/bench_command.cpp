@@ -1,7 +1,7 @@
 #include <cstdio>
 #include <string>
 
-#include "api/bench.h"
+#include "bench/bench.h"
 #include "commands.h"
 #include "scene/scene_error.h"
 
@@ -13,7 +13,7 @@ Action add_bench_command(CLI::App& app) {
   struct Options {
     std::string scene, mesh, procedural, rays = "primary", vs;
     int threads = 0, repeat = 3;
-    bool json = false;
+    bool json = false, packets = false;
   };
   auto opt = std::make_shared<Options>();
   auto* scene = cmd->add_option("SCENE", opt->scene, "Scene file (meshes only with --vs embree)");
@@ -31,6 +31,8 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--repeat", opt->repeat, "Tracing passes; the fastest counts (default 3)")
       ->check(CLI::Range(1, 100));
   cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->add_flag("--packets", opt->packets,
+                "Primary rays in packets of 8 (one mesh); with --vs embree, rtcIntersect8");
   auto bvh = std::make_shared<MeshBvhConfig>();
   cmd->add_option("--leaf-size", bvh->max_leaf_size, "Tuning: most triangles per leaf (1-16)")
       ->check(CLI::Range(1, 16));
@@ -48,6 +50,7 @@ Action add_bench_command(CLI::App& app) {
       throw SceneError("bench", 0, 0, "give a SCENE, --mesh FILE or --procedural NAME:TRIANGLES");
     o.rays = parse_bench_rays(opt->rays);
     o.vs_embree = opt->vs == "embree";
+    o.packets = opt->packets;
     o.threads = opt->threads;
     o.repeat = opt->repeat;
     o.bvh = *bvh;

@@ -252,6 +252,67 @@ TEST_P(WideKernels, DeepTree_StackSizedFromDepth_EveryHitFound) {
   EXPECT_EQ(h.triangle, 0u);
 }
 
+// Packets of eight rays under random masks give every active ray exactly its single-ray hit (t,
+// barycentrics, triangle: bit for bit, ties at shared edges and vertices included) and leave the
+// idle lanes alone; bundles around one direction (one packet) and scattered rays (traced one by
+// one inside the packet call).
+TEST_P(WideKernels, PacketsWithMixedMasks_EqualSingleRays) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> jitter(-0.05f, 0.05f), along(0, 1);
+  const TriangleSoup sphere = make_octa_sphere(12);
+  for (int mesh = 0; mesh < 3; ++mesh) {
+    SCOPED_TRACE("mesh " + std::to_string(mesh));
+    const TriangleSoup soup =
+        mesh == 0 ? sphere : random_soup(rng, 1500, 3, mesh == 1 ? 0.3f : 1.5f);
+    MeshBvhConfig config;
+    config.max_leaf_size = mesh == 2 ? 3 : 8;
+    const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, config);
+    Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
+    int packet_hits = 0;
+    for (int i = 0; i < 300; ++i) {
+      MeshRay rays[8];
+      const MeshRay base = random_ray(rng, 3);
+      for (int l = 0; l < 8; ++l) {
+        rays[l] = base;
+        if (i % 3 == 0) {
+          rays[l] = random_ray(rng, 3);  // scattered
+        } else if (i % 3 == 1) {         // at a shared vertex or edge point of the mesh
+          const auto& t = soup.triangles[rng() % soup.triangles.size()];
+          const Vec3f a = soup.positions[t[0]], b = soup.positions[t[1]];
+          rays[l].d = (l % 2 ? a : a + along(rng) * (b - a)) - base.o;
+        } else {
+          rays[l].d = base.d + Vec3f{jitter(rng), jitter(rng), jitter(rng)};
+        }
+      }
+      const int mask = static_cast<int>(rng() & 0xFF);
+      MeshBvhHit hits[8];
+      for (MeshBvhHit& h : hits) h.triangle = 12345;  // idle lanes must keep this
+      const int found = k.k.closest8(bvh, rays, mask, hits, k.stack.data());
+      EXPECT_EQ(found & ~mask, 0);
+      for (int l = 0; l < 8; ++l) {
+        if (!(mask >> l & 1)) {
+          EXPECT_EQ(hits[l].triangle, 12345u);
+          continue;
+        }
+        MeshBvhHit one, scalar;
+        const bool hit = k.closest(rays[l], one);
+        ASSERT_EQ(s.closest(rays[l], scalar), hit);
+        ASSERT_EQ((found >> l & 1) != 0, hit) << "packet " << i << " lane " << l;
+        if (!hit) continue;
+        ++packet_hits;
+        EXPECT_EQ(hits[l].t, one.t);
+        EXPECT_EQ(hits[l].b1, one.b1);
+        EXPECT_EQ(hits[l].b2, one.b2);
+        EXPECT_EQ(hits[l].triangle, one.triangle);
+        EXPECT_EQ(one.triangle, scalar.triangle);
+        EXPECT_EQ(one.t, scalar.t);
+      }
+      if (HasFailure()) return;
+    }
+    EXPECT_GT(packet_hits, 100);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllIsas, WideKernels, testing::ValuesIn(kAllIsas),
                          [](const testing::TestParamInfo<Isa>& info) {
                            return std::string(isa_name(info.param));

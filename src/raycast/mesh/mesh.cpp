@@ -344,6 +344,23 @@ bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
   return true;
 }
 
+int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits) {
+  const Mesh& m = *s.mesh;
+  MeshRay r[8];
+  double scale[8];
+  for (int l = 0; l < 8; ++l)
+    if (mask >> l & 1) r[l] = to_mesh_ray(rays[l], scale[l]);
+  MeshBvhHit h[8];
+  const int found = intersect_closest8(m.bvh, r, mask, h);
+  for (int l = 0; l < 8; ++l) {
+    if (!(found >> l & 1)) continue;
+    const double t = std::clamp(refine_hit(m, h[l], rays[l], scale[l]), rays[l].tmin, rays[l].tmax);
+    hits[l] = LocalHit{t, static_cast<std::int32_t>(h[l].source),
+                       static_cast<std::int32_t>(h[l].triangle), h[l].b1, h[l].b2};
+  }
+  return found;
+}
+
 bool occluded(const MeshShape& s, const Ray& ray) {
   double scale;
   return intersect_any(s.mesh->bvh, to_mesh_ray(ray, scale));

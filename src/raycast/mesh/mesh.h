@@ -89,6 +89,9 @@ struct MeshShape {
 Aabb bounds(const MeshShape& s);
 bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit);
 bool occluded(const MeshShape& s, const Ray& ray);
+/// intersect() of up to eight rays (rays[l] for each bit l of mask; each is_valid) traced as one
+/// packet: the same hits as one by one; returns the mask of the rays that hit.
+int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits);
 void spans(const MeshShape& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const MeshShape& s, const Ray& ray, const LocalHit& hit);
 bool contains(const MeshShape& s, const Vec3& p);

@@ -297,6 +297,12 @@ bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit) 
   return kernels().closest(bvh, ray, hit, stack.data());
 }
 
+int intersect_closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits) {
+  if (bvh.empty()) return 0;
+  Stack stack(bvh);
+  return kernels().closest8(bvh, rays, mask, hits, stack.data());
+}
+
 bool intersect_any(const MeshBvh& bvh, const MeshRay& ray) {
   if (bvh.empty()) return false;
   Stack stack(bvh);

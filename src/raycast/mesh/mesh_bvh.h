@@ -131,6 +131,9 @@ inline std::size_t traversal_stack_size(const MeshBvh& bvh) {
 bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit);
 /// Whether any triangle is hit with tmin <= t <= tmax; stops at the first found.
 bool intersect_any(const MeshBvh& bvh, const MeshRay& ray);
+/// The nearest hits of up to eight rays traced as one packet (rays[l] for each bit l of mask):
+/// the same hits as intersect_closest on each, bit for bit; returns the mask of those that hit.
+int intersect_closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits);
 /// Every triangle hit with tmin <= t <= tmax, in no particular order, appended to out.
 void intersect_every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out);
 

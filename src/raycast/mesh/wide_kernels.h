@@ -25,6 +25,11 @@ struct MeshKernels {
   bool (*any)(const MeshBvh& bvh, const MeshRay& ray, TraversalEntry* stack);
   void (*every)(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
                 TraversalEntry* stack);
+  /// The nearest hits of up to eight rays as one packet (rays[l] for each bit l of mask), the
+  /// same bit for bit as `closest` on each; returns the mask of the rays that hit. Rays that do
+  /// not share the watertight test's axis permutation are traced one by one.
+  int (*closest8)(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+                  TraversalEntry* stack);
 };
 
 /// The kernels of `isa`, or nullptr when this build or this CPU lacks it (isa_supported).

@@ -97,5 +97,5 @@ inline V8 select(M8 m, V8 a, V8 b) {
 
 namespace raycast {
 const MeshKernels kMeshKernelsScalar = {Isa::kScalar, kernels_scalar::closest, kernels_scalar::any,
-                                        kernels_scalar::every};
+                                        kernels_scalar::every, kernels_scalar::closest8};
 }  // namespace raycast

@@ -58,6 +58,6 @@ inline V8 select(M8 m, V8 x, V8 y) {
 
 namespace raycast {
 const MeshKernels kMeshKernelsSse4 = {Isa::kSse4, kernels_sse4::closest, kernels_sse4::any,
-                                      kernels_sse4::every};
+                                      kernels_sse4::every, kernels_sse4::closest8};
 }  // namespace raycast
 #endif

@@ -6,6 +6,8 @@
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
+// A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv) and
+// intersect_node16(...): its own node test with the same results (AVX-512: 16 lanes).
 // Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
 // with an add, so every ISA returns the same hits bit for bit (the tests compare them).
 
@@ -20,6 +22,7 @@ constexpr float kSlabNarrow = 2.0f - kSlabWiden;
 // 1 / d, so that the box test never multiplies 0 by infinity (the ray is first scaled so that
 // its largest component is in [1, 2)).
 constexpr float kMinDirection = 0x1p-64f;
+constexpr float kInfinityF = __builtin_huge_valf();
 
 // Per-ray constants of the box and triangle tests.
 struct RayData {
@@ -32,17 +35,22 @@ struct RayData {
   V8 sx, sy, sz;
   V8 okx, oky, okz;
   V8 tmin;
+#ifdef RAYCAST_KERNEL_NODE16
+  NodeRay16 node16;  // the kernel's own 16-lane node test (AVX-512)
+#endif
 };
 
 inline RayData prepare(const MeshRay& r) {
   RayData p;
   const float* o = &r.o.x;
   const float* d = &r.d.x;
+  float invs[3];
   for (int a = 0; a < 3; ++a) {
     p.o[a] = splat(o[a]);
     float da = d[a];
     if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
     const float inv = 1.0f / da;
+    invs[a] = inv;
     p.inv[a] = splat(inv);
     // WideNode::q bytes: lo_x 0, hi_x 8, lo_y 16, hi_y 24, lo_z 32, hi_z 40.
     p.near_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? 0 : kNodeWidth);
@@ -59,6 +67,11 @@ inline RayData prepare(const MeshRay& r) {
   p.oky = splat(o[w.ky]);
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
+#ifdef RAYCAST_KERNEL_NODE16
+  p.node16 = prepare_node16(o, invs);
+#else
+  (void)invs;
+#endif
   return p;
 }
 
@@ -66,6 +79,9 @@ inline RayData prepare(const MeshRay& r) {
 // The planes are dequantised exactly as the build checked them (origin + q * scale), then tested
 // as float planes.
 inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnear) {
+#ifdef RAYCAST_KERNEL_NODE16
+  return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
+#else
   const std::uint8_t* q = n.q[0];
   const V8 sx = splat(node_scale(n.exponent[0]));
   const V8 sy = splat(node_scale(n.exponent[1]));
@@ -86,6 +102,7 @@ inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnea
   const V8 widen = select(cmp_ge(far, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
   const V8 tfar = vmin(far * widen, tmax);
   return bits(cmp_le(tnear, tfar)) & n.used;
+#endif
 }
 
 // Lane results of a two-group triangle test: t, and the edge functions v, w and det = u + v + w.
@@ -259,7 +276,9 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
                              g,
                              static_cast<std::uint32_t>(l & 3)};
           if constexpr (Q == Query::kNearest) {
-            if (res.t[l] <= tmax_s) {
+            // Ties in t go to the smaller triangle index, so that the answer does not depend on
+            // the visiting order (packets visit leaves in another order).
+            if (res.t[l] < tmax_s || (res.t[l] == tmax_s && (!found || h.triangle < hit->triangle))) {
               tmax_s = res.t[l];
               *hit = h;
               found = true;
@@ -295,6 +314,218 @@ bool any(const MeshBvh& bvh, const MeshRay& ray, TraversalEntry* stack) {
 void every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
            TraversalEntry* stack) {
   traverse<Query::kAll>(bvh, ray, nullptr, &out, stack);
+}
+
+// ---- Packets: up to eight rays, one per lane ------------------------------------------------
+// Every lane does the operations of the single-ray query on its own ray, in the same order, so a
+// packet's hits are bit for bit the single rays' (the nearest hit is the least t, ties to the
+// least triangle index, whatever the visiting order). The rays must share the watertight test's
+// axis permutation (the caller falls back to single rays otherwise).
+
+struct PacketData {
+  V8 o[3], inv[3];
+  M8 positive[3];  // 1/d >= 0: the low plane is the near one
+  int kx, ky, kz;
+  V8 sx, sy, sz, okx, oky, okz, tmin;
+};
+
+// False when the active rays do not share one axis permutation.
+inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
+  alignas(32) float o[3][8], inv[3][8], sx[8], sy[8], sz[8], ok[3][8], tmin[8];
+  const int first = __builtin_ctz(mask);
+  for (int l = 0; l < 8; ++l) {
+    const MeshRay& r = rays[(mask >> l & 1) ? l : first];  // idle lanes copy an active ray
+    const float* ro = &r.o.x;
+    const float* rd = &r.d.x;
+    for (int a = 0; a < 3; ++a) {
+      o[a][l] = ro[a];
+      float da = rd[a];
+      if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
+      inv[a][l] = 1.0f / da;
+    }
+    const WatertightRay w = make_watertight_ray(r.o, r.d);
+    if (l > 0 && (w.kx != p.kx || w.ky != p.ky || w.kz != p.kz)) return false;
+    p.kx = w.kx;
+    p.ky = w.ky;
+    p.kz = w.kz;
+    sx[l] = w.sx;
+    sy[l] = w.sy;
+    sz[l] = w.sz;
+    ok[0][l] = ro[w.kx];
+    ok[1][l] = ro[w.ky];
+    ok[2][l] = ro[w.kz];
+    tmin[l] = r.tmin;
+  }
+  for (int a = 0; a < 3; ++a) {
+    p.o[a] = load8(o[a]);
+    p.inv[a] = load8(inv[a]);
+    p.positive[a] = cmp_ge(p.inv[a], splat(0.0f));
+  }
+  p.sx = load8(sx), p.sy = load8(sy), p.sz = load8(sz);
+  p.okx = load8(ok[0]), p.oky = load8(ok[1]), p.okz = load8(ok[2]);
+  p.tmin = load8(tmin);
+  return true;
+}
+
+// A node's 48 planes dequantised at once (origin + q * scale, as every node test does).
+struct NodePlanes {
+  alignas(32) float f[6][8];
+};
+
+inline void dequantise_node(const WideNode& n, NodePlanes& out) {
+  for (int a = 0; a < 3; ++a) {
+    const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
+    store8(out.f[2 * a], o + load8_u8(n.q[2 * a]) * s);
+    store8(out.f[2 * a + 1], o + load8_u8(n.q[2 * a + 1]) * s);
+  }
+}
+
+// Child c of a node against every lane: the single-ray slab test of that child, lane by lane.
+inline int packet_child(const NodePlanes& n, int c, const PacketData& p, V8 tmax, V8& tnear) {
+  V8 near[3], far[3];
+  for (int a = 0; a < 3; ++a) {
+    const V8 lo = (splat(n.f[2 * a][c]) - p.o[a]) * p.inv[a];
+    const V8 hi = (splat(n.f[2 * a + 1][c]) - p.o[a]) * p.inv[a];
+    near[a] = select(p.positive[a], lo, hi);
+    far[a] = select(p.positive[a], hi, lo);
+  }
+  tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
+  const V8 f = vmin(vmin(far[0], far[1]), far[2]);
+  const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
+  return bits(cmp_le(tnear, vmin(f * widen, tmax)));
+}
+
+// Triangle `lane` of group g against every lane's ray: the watertight test of intersect_pair.
+inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData& p, V8 tmax, V8& t,
+                           V8& v, V8& w, V8& det) {
+  const V8 a_kz = splat(g.v[0][p.kz][lane]) - p.okz;
+  const V8 b_kz = splat(g.v[1][p.kz][lane]) - p.okz;
+  const V8 c_kz = splat(g.v[2][p.kz][lane]) - p.okz;
+  const V8 ax = (splat(g.v[0][p.kx][lane]) - p.okx) - p.sx * a_kz;
+  const V8 ay = (splat(g.v[0][p.ky][lane]) - p.oky) - p.sy * a_kz;
+  const V8 bx = (splat(g.v[1][p.kx][lane]) - p.okx) - p.sx * b_kz;
+  const V8 by = (splat(g.v[1][p.ky][lane]) - p.oky) - p.sy * b_kz;
+  const V8 cx = (splat(g.v[2][p.kx][lane]) - p.okx) - p.sx * c_kz;
+  const V8 cy = (splat(g.v[2][p.ky][lane]) - p.oky) - p.sy * c_kz;
+  V8 u = cx * by - cy * bx;
+  v = ax * cy - ay * cx;
+  w = bx * ay - by * ax;
+  const V8 zero = splat(0.0f);
+  const int zero_mask = bits(mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero)));
+  if (zero_mask) {
+    alignas(32) float f[6][8], uu[8], vv[8], ww[8];
+    store8(f[0], ax), store8(f[1], ay), store8(f[2], bx);
+    store8(f[3], by), store8(f[4], cx), store8(f[5], cy);
+    store8(uu, u), store8(vv, v), store8(ww, w);
+    for (int l = 0; l < 8; ++l) {
+      if (!(zero_mask >> l & 1)) continue;
+      const double dax = f[0][l], day = f[1][l], dbx = f[2][l], dby = f[3][l], dcx = f[4][l],
+                   dcy = f[5][l];
+      uu[l] = static_cast<float>(dcx * dby - dcy * dbx);
+      vv[l] = static_cast<float>(dax * dcy - day * dcx);
+      ww[l] = static_cast<float>(dbx * day - dby * dax);
+    }
+    u = load8(uu);
+    v = load8(vv);
+    w = load8(ww);
+  }
+  const auto pos = mand(mand(cmp_ge(u, zero), cmp_ge(v, zero)), cmp_ge(w, zero));
+  const auto neg = mand(mand(cmp_le(u, zero), cmp_le(v, zero)), cmp_le(w, zero));
+  det = (u + v) + w;
+  const auto same_sign = mand(mor(pos, neg), cmp_ne(det, zero));
+  if (!bits(same_sign)) return 0;
+  const V8 az = p.sz * a_kz, bz = p.sz * b_kz, cz = p.sz * c_kz;
+  const V8 ts = (u * az + v * bz) + w * cz;
+  t = ts / det;
+  return bits(mand(same_sign, mand(cmp_ge(t, p.tmin), cmp_le(t, tmax))));
+}
+
+// The nearest hit of each ray of `mask` (bit l: rays[l] is traced); returns the lanes that hit.
+int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+             TraversalEntry* stack) {
+  if (bvh.empty() || !mask) return 0;
+  PacketData p;
+  if (!prepare_packet(rays, mask, p)) {  // incoherent: one ray at a time
+    int found = 0;
+    for (int l = 0; l < 8; ++l)
+      if ((mask >> l & 1) && traverse<Query::kNearest>(bvh, rays[l], &hits[l], nullptr, stack))
+        found |= 1 << l;
+    return found;
+  }
+  alignas(32) float tmax_s[8];
+  for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? rays[l].tmax : -kInfinityF;
+  V8 tmax = load8(tmax_s);
+  int found = 0;
+  int top = 0;
+  std::uint32_t ref = bvh.root;
+  for (;;) {
+    if (!(ref & kLeafBit)) {
+      const WideNode& node = bvh.nodes[ref];
+      NodePlanes planes;
+      dequantise_node(node, planes);
+      // Hit children with the least entry over their lanes, nearest pushed last.
+      const int base = top;
+      int used = node.used;
+      while (used) {
+        const int c = __builtin_ctz(used);
+        used &= used - 1;
+        V8 tn;
+        const int m = packet_child(planes, c, p, tmax, tn);
+        if (!m) continue;
+        alignas(32) float tnl[8];
+        store8(tnl, tn);
+        float least = kInfinityF;
+        for (int l = 0; l < 8; ++l)
+          if ((m >> l & 1) && tnl[l] < least) least = tnl[l];
+        const TraversalEntry e{node.child[c], least};
+        int j = top++;
+        while (j > base && stack[j - 1].tnear < e.tnear) {
+          stack[j] = stack[j - 1];
+          --j;
+        }
+        stack[j] = e;
+      }
+    } else {
+      const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
+      for (std::uint32_t gi = first; gi < end; ++gi) {
+        const TriangleGroup& g = bvh.groups[gi];
+        for (int k = 0; k < 4; ++k) {
+          if (g.id[k] == kNoTriangle) continue;
+          V8 t, v, w, det;
+          int m = packet_triangle(g, k, p, tmax, t, v, w, det);
+          if (!m) continue;
+          alignas(32) float tl[8], vl[8], wl[8], dl[8];
+          store8(tl, t), store8(vl, v), store8(wl, w), store8(dl, det);
+          while (m) {
+            const int l = __builtin_ctz(m);
+            m &= m - 1;
+            const bool lane_found = found >> l & 1;
+            if (tl[l] < tmax_s[l] ||
+                (tl[l] == tmax_s[l] && (!lane_found || g.id[k] < hits[l].triangle))) {
+              tmax_s[l] = tl[l];
+              hits[l] = MeshBvhHit{tl[l],   vl[l] / dl[l],
+                                   wl[l] / dl[l], g.id[k],
+                                   g.source[k], gi,
+                                   static_cast<std::uint32_t>(k)};
+              found |= 1 << l;
+            }
+          }
+          tmax = load8(tmax_s);
+        }
+      }
+    }
+    // Pop, skipping entries that every lane's nearest hit lies before.
+    float reach = tmax_s[0];
+    for (int l = 1; l < 8; ++l) reach = tmax_s[l] > reach ? tmax_s[l] : reach;
+    for (;;) {
+      if (top == 0) return found;
+      const TraversalEntry& e = stack[--top];
+      if (e.tnear <= reach) {
+        ref = e.ref;
+        break;
+      }
+    }
+  }
 }
 
 }  // namespace raycast::RAYCAST_KERNEL_NS

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "api/bench.h"
+#include "bench/bench.h"
 #include "mesh/mesh.h"
 
 namespace raycast {
@@ -42,6 +42,8 @@ class EmbreePeer {
   /// rtcIntersect1 / rtcOccluded1 over every ray, in parallel (tbb), writing one answer per ray.
   void intersect(std::span<const BenchRay> rays, std::span<PeerHit> out) const;
   void occluded(std::span<const BenchRay> rays, std::span<std::uint8_t> out) const;
+  /// rtcIntersect8 over consecutive groups of eight rays (the last one masked), coherent flag set.
+  void intersect8(std::span<const BenchRay> rays, std::span<PeerHit> out) const;
 
   static bool available();
 

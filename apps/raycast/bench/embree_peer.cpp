@@ -1,4 +1,4 @@
-#include "api/embree_peer.h"
+#include "bench/embree_peer.h"
 
 #include <sys/resource.h>
 
@@ -154,6 +154,53 @@ void EmbreePeer::occluded(std::span<const BenchRay> rays, std::span<std::uint8_t
                     });
 }
 
+void EmbreePeer::intersect8(std::span<const BenchRay> rays, std::span<PeerHit> out) const {
+  const std::size_t packets = (rays.size() + 7) / 8;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, packets, 128),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      RTCIntersectContext ctx;
+                      rtcInitIntersectContext(&ctx);
+                      ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+                      for (std::size_t p = r.begin(); p < r.end(); ++p) {
+                        alignas(32) int valid[8];
+                        alignas(32) RTCRayHit8 rh;
+                        for (int l = 0; l < 8; ++l) {
+                          const std::size_t i = p * 8 + l;
+                          valid[l] = i < rays.size() ? -1 : 0;
+                          const BenchRay& b = rays[i < rays.size() ? i : rays.size() - 1];
+                          rh.ray.org_x[l] = static_cast<float>(b.o.x);
+                          rh.ray.org_y[l] = static_cast<float>(b.o.y);
+                          rh.ray.org_z[l] = static_cast<float>(b.o.z);
+                          rh.ray.dir_x[l] = static_cast<float>(b.d.x);
+                          rh.ray.dir_y[l] = static_cast<float>(b.d.y);
+                          rh.ray.dir_z[l] = static_cast<float>(b.d.z);
+                          rh.ray.tnear[l] = static_cast<float>(b.tmin);
+                          rh.ray.tfar[l] = static_cast<float>(b.tmax);
+                          rh.ray.time[l] = 0;
+                          rh.ray.mask[l] = 0xFFFFFFFFu;
+                          rh.ray.id[l] = 0;
+                          rh.ray.flags[l] = 0;
+                          rh.hit.geomID[l] = RTC_INVALID_GEOMETRY_ID;
+                          rh.hit.primID[l] = RTC_INVALID_GEOMETRY_ID;
+                          rh.hit.instID[0][l] = RTC_INVALID_GEOMETRY_ID;
+                        }
+                        rtcIntersect8(valid, impl_->scene, &ctx, &rh);
+                        for (int l = 0; l < 8; ++l) {
+                          const std::size_t i = p * 8 + l;
+                          if (i >= rays.size()) break;
+                          if (rh.hit.geomID[l] == RTC_INVALID_GEOMETRY_ID) {
+                            out[i] = PeerHit{};
+                          } else {
+                            const Mesh& m = *impl_->meshes[rh.hit.geomID[l]];
+                            out[i] =
+                                PeerHit{rh.ray.tfar[l], static_cast<std::int32_t>(rh.hit.geomID[l]),
+                                        static_cast<std::int32_t>(m.source[rh.hit.primID[l]])};
+                          }
+                        }
+                      }
+                    });
+}
+
 #else
 
 struct EmbreePeer::Impl {};
@@ -168,6 +215,7 @@ std::size_t EmbreePeer::bytes() const { return 0; }
 bool EmbreePeer::available() { return false; }
 void EmbreePeer::intersect(std::span<const BenchRay>, std::span<PeerHit>) const {}
 void EmbreePeer::occluded(std::span<const BenchRay>, std::span<std::uint8_t>) const {}
+void EmbreePeer::intersect8(std::span<const BenchRay>, std::span<PeerHit>) const {}
 
 #endif
 

@@ -1,4 +1,4 @@
-#include "api/bench.h"
+#include "bench/bench.h"
 
 #include "accel/isa.h"
 
@@ -16,7 +16,7 @@
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
-#include "api/embree_peer.h"
+#include "bench/embree_peer.h"
 #include "geometry/spawn.h"
 #include "mesh/mesh_file.h"
 #include "mesh/procedural.h"
@@ -236,7 +236,39 @@ BenchResult run_bench(const BenchOptions& o) {
           ? incoherent_rays(box, static_cast<std::size_t>(o.width) * o.height)
           : primary_rays(box, o.width, o.height);
   std::vector<SceneHit> hits(rays.size());
+  // --packets: the one mesh of the scene traced in packets of eight consecutive rays.
+  const MeshShape* packet_mesh = nullptr;
+  if (o.packets) {
+    if (o.rays != BenchRays::kPrimary)
+      throw SceneError("--packets", 0, 0, "packets are for primary (coherent) rays only");
+    if (scene.objects.size() == 1 && !scene.objects[0].xf)
+      packet_mesh = std::get_if<MeshShape>(&scene.objects[0].shape);
+    if (!packet_mesh)
+      throw SceneError("--packets", 0, 0, "packets need a scene of one mesh without a transform");
+    r.packets = true;
+  }
+  auto trace_packets = [&](const std::vector<BenchRay>& rs, std::vector<SceneHit>& out) {
+    const std::size_t packets = (rs.size() + 7) / 8;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, packets, 128),
+                      [&](const tbb::blocked_range<std::size_t>& b) {
+                        for (std::size_t p = b.begin(); p < b.end(); ++p) {
+                          Ray ray[8];
+                          LocalHit local[8];
+                          int mask = 0;
+                          for (int l = 0; l < 8; ++l) {
+                            const std::size_t i = p * 8 + l;
+                            if (i >= rs.size()) break;
+                            ray[l] = Ray{rs[i].o, rs[i].d, rs[i].tmin, rs[i].tmax};
+                            if (is_valid(ray[l])) mask |= 1 << l;
+                          }
+                          const int found = intersect8(*packet_mesh, ray, mask, local);
+                          for (int l = 0; l < 8 && p * 8 + l < rs.size(); ++l)
+                            out[p * 8 + l] = found >> l & 1 ? SceneHit{local[l], 0} : SceneHit{};
+                        }
+                      });
+  };
   auto trace = [&](const std::vector<BenchRay>& rs, std::vector<SceneHit>& out) {
+    if (packet_mesh) return trace_packets(rs, out);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rs.size(), 1024),
                       [&](const tbb::blocked_range<std::size_t>& b) {
                         for (std::size_t i = b.begin(); i < b.end(); ++i) {
@@ -305,7 +337,14 @@ BenchResult run_bench(const BenchOptions& o) {
   } else {
     std::vector<PeerHit> eh(rays.size());
     embree_seconds = best_of(
-        o.repeat, [&] { peer.intersect(rays, eh); }, embree_cpu);
+        o.repeat,
+        [&] {
+          if (o.packets)
+            peer.intersect8(rays, eh);
+          else
+            peer.intersect(rays, eh);
+        },
+        embree_cpu);
     // The peer's geometry index is the position among the scene's meshes: map it back.
     std::vector<std::int32_t> object_of;
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
@@ -342,12 +381,13 @@ std::string format_bench(const BenchResult& r, bool json) {
                   "{\"what\": \"%s\", \"ray_kind\": \"%s\", \"triangles\": %llu, \"rays\": %llu, "
                   "\"hits\": %llu, "
                   "\"threads\": %d, \"raycast_build_ms\": %.3f, \"raycast_mrays\": %.4f, "
-                  "\"raycast_mrays_cpu\": %.4f, \"isa\": \"%s\", \"raycast_build_cpu_ms\": %.3f",
+                  "\"raycast_mrays_cpu\": %.4f, \"isa\": \"%s\", \"raycast_build_cpu_ms\": %.3f, "
+                  "\"packets\": %s",
                   json_escape(r.what).c_str(), r.ray_kind.c_str(),
                   static_cast<unsigned long long>(r.triangles),
                   static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
                   r.threads, r.raycast_build_ms, r.raycast_mrays, r.raycast_mrays_cpu,
-                  isa_name(active_isa()), r.raycast_build_cpu_ms);
+                  isa_name(active_isa()), r.raycast_build_cpu_ms, r.packets ? "true" : "false");
     out = buf;
     if (r.triangles > 0)  // else null: per triangle means nothing without triangles
       std::snprintf(buf, sizeof buf,
@@ -375,12 +415,13 @@ std::string format_bench(const BenchResult& r, bool json) {
     return out + "}\n";
   }
   std::snprintf(buf, sizeof buf,
-                "%s: %s (%llu triangles)\nrays: %s, %llu rays (%llu hit), %d threads, isa %s\n"
+                "%s: %s (%llu triangles)\nrays: %s%s, %llu rays (%llu hit), %d threads, isa %s\n"
                 "raycast: build %.1f ms, %.3f Mrays/s",
                 r.triangles > 0 ? "mesh" : "scene", r.what.c_str(),
                 static_cast<unsigned long long>(r.triangles), r.ray_kind.c_str(),
-                static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
-                r.threads, isa_name(active_isa()), r.raycast_build_ms, r.raycast_mrays);
+                r.packets ? " (packets of 8)" : "", static_cast<unsigned long long>(r.rays),
+                static_cast<unsigned long long>(r.hits), r.threads, isa_name(active_isa()),
+                r.raycast_build_ms, r.raycast_mrays);
   out = buf;
   // Bytes per triangle only mean something when there are triangles.
   if (r.triangles > 0) {

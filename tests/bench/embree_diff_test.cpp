@@ -1,8 +1,8 @@
 // Differential test against Embree 3 (only when the build has it): the same rays through both.
 #include <gtest/gtest.h>
 
-#include "api/bench.h"
-#include "api/embree_peer.h"
+#include "bench/bench.h"
+#include "bench/embree_peer.h"
 #include "mesh/procedural.h"
 
 namespace raycast {

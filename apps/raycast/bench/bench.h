@@ -17,9 +17,10 @@ struct BenchOptions {
   std::string procedural;  // NAME:TRIANGLES (sphere, forest)
   BenchRays rays = BenchRays::kPrimary;
   bool vs_embree = false;
-  int threads = 0;   // 0: all cores
-  int repeat = 3;    // tracing passes; the fastest counts
-  int width = 1024;  // primary rays: width x height pinhole camera
+  bool packets = false;  // primary rays in packets of 8 (rows of 8 pixels); Embree: rtcIntersect8
+  int threads = 0;       // 0: all cores
+  int repeat = 3;        // tracing passes; the fastest counts
+  int width = 1024;      // primary rays: width x height pinhole camera
   int height = 1024;
   MeshBvhConfig bvh;  // for --mesh and --procedural (tuning: leaf size, bins, traversal cost)
 };
@@ -33,6 +34,7 @@ struct BenchRay {
 struct BenchResult {
   std::string what;      // the mesh or scene
   std::string ray_kind;  // primary, incoherent, shadow
+  bool packets = false;
   std::uint64_t triangles = 0;
   std::uint64_t rays = 0;
   std::uint64_t hits = 0;
