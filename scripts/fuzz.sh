@@ -10,7 +10,7 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(loader_fuzz formula_fuzz mesh_fuzz rays_fuzz volume_fuzz pov_fuzz)
 
-cmake --preset asan >/dev/null
+cmake --preset asan >/dev/null 2>&1 || { rm -rf build/asan; cmake --preset asan >/dev/null; }
 cmake --build --preset asan -j "$(nproc)" --target "${targets[@]}"
 
 work=build/asan/fuzz/work

@@ -31,6 +31,10 @@ presets=("$@")
 [ ${#presets[@]} -eq 0 ] && presets=(release)
 jobs=$(nproc)
 for preset in "${presets[@]}"; do
-  cmake --preset "$preset" -DPYTHON_EXECUTABLE=/usr/bin/python3 >/dev/null
+  # A build directory configured by an older preset (another compiler) is configured afresh.
+  cmake --preset "$preset" -DPYTHON_EXECUTABLE=/usr/bin/python3 >/dev/null 2>&1 || {
+    rm -rf "build/$preset"
+    cmake --preset "$preset" -DPYTHON_EXECUTABLE=/usr/bin/python3 >/dev/null
+  }
   cmake --build --preset "$preset" -j "$jobs"
 done
