@@ -30,8 +30,8 @@ const char* const kFormulas[] = {
     "sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)",
     "(2 - cos(x)) * cos(z) + (y + sin(x)) * sin(z) + cos(x + z)",
     "(x^2 + 9/4*y^2 + z^2 - 1)^3 - x^2*z^3 - 9/80*y^2*z^3",
-    "sqrt(x^2 + y^2 + 1) - log(z + 5) + min(x, y) * max(y, z) / (2 + abs(z)) + tan(0.1 * x) + "
-    "pow(x^2 + 1, 0.5) + exp(-y) - 3",
+    ("sqrt(x^2 + y^2 + 1) - log(z + 5) + min(x, y) * max(y, z) / (2 + abs(z)) + tan(0.1 * x) + "
+     "pow(x^2 + 1, 0.5) + exp(-y) - 3"),
     "-x - (y - z) * 1e-3",
     "x*y - z*x + 0.5*y*y - 1 - x / (2 + z*z) + sqrt(abs(y))",
 };
