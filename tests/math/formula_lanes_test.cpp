@@ -8,19 +8,9 @@
 #include <random>
 
 #include "math/formula_lanes.h"
+#include "math/formula_lanes_kernels.h"
 
 namespace raycast {
-
-namespace lanes_w2 {
-void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
-                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi);
-}
-namespace lanes_w4 {
-void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
-                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi);
-}
 
 namespace {
 

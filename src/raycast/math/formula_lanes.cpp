@@ -1,22 +1,10 @@
 #include "math/formula_lanes.h"
+#include "math/formula_lanes_kernels.h"
 
 #include <cstdlib>
 #include <string_view>
 
 namespace raycast {
-
-// The kernels (math/formula_lanes_sse2.cpp, math/formula_lanes_avx2.cpp, both from
-// math/formula_lanes.inl): lanes [t[k], t[k + 1]] for k < W.
-namespace lanes_w2 {
-void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
-                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi);
-}
-namespace lanes_w4 {
-void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
-                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi);
-}
 
 namespace {
 

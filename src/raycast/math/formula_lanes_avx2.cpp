@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "math/formula.h"
+#include "math/formula_lanes_kernels.h"
 
 // The lane helpers pass vectors by value inside this file only: no ABI is involved.
 #pragma GCC diagnostic ignored "-Wpsabi"

@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "pov/parser.h"
+#include "scene/scene_file.h"
 
 namespace raycast::pov {
 
@@ -19,16 +17,8 @@ Imported import_pov_text(const std::string& text, const std::string& name, const
 }
 
 Imported import_pov_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw SceneError(path, 0, 0, "is a directory, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path, 0, 0, "cannot open the scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
-  const std::string dir = std::filesystem::path(path).parent_path().string();
-  return import_pov_text(ss.str(), path, dir.empty() ? "." : dir);
+  const SceneFileText file = read_scene_file(path);
+  return import_pov_text(file.text, path, file.dir);
 }
 
 bool is_pov_path(const std::string& path) {

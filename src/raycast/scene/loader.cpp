@@ -1,8 +1,6 @@
 #include "scene/loader.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -13,6 +11,7 @@
 #include "scene/prototype.h"
 #include "scene/read_materials.h"
 #include "scene/read_settings.h"
+#include "scene/scene_file.h"
 #include "scene/shape_parsers.h"
 #include "scene/yaml_prescan.h"
 #include "scene/yaml_reader.h"
@@ -340,16 +339,8 @@ Scene load_scene_file(const std::string& path, int frame) {
   }
   if (pov::is_pov_path(path))
     return load_pov_scene_file(path, frame);  // POV-Ray's language (docs/pov-import.md)
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw SceneError(path, 0, 0, "is a directory, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path, 0, 0, "cannot open the scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw SceneError(path, 0, 0, "cannot read the scene file");
-  const std::string dir = std::filesystem::path(path).parent_path().string();
-  return load_scene_text(ss.str(), path, dir.empty() ? "." : dir, frame);
+  const SceneFileText file = read_scene_file(path);
+  return load_scene_text(file.text, path, file.dir, frame);
 }
 
 }  // namespace raycast
