@@ -4,7 +4,7 @@
 
 #include <thread>
 
-#include "accel/isa.h"
+#include "math/isa.h"
 #include "commands.h"
 #include "scene/loader.h"
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 #include "../support/cli_runner.h"
-#include "accel/isa.h"
+#include "math/isa.h"
 
 namespace raycast {
 namespace {

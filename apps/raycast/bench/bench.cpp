@@ -1,6 +1,6 @@
 #include "bench/bench.h"
 
-#include "accel/isa.h"
+#include "math/isa.h"
 
 #include <sys/resource.h>
 #include <algorithm>

@@ -1,29 +1,15 @@
 #include "math/formula_lanes.h"
 #include "math/formula_lanes_kernels.h"
-
-#include <cstdlib>
-#include <string_view>
+#include "math/isa.h"
 
 namespace raycast {
 
 namespace {
 
-// Whether to run the 4-lane AVX2 kernel: the CPU has AVX2 and RAYCAST_ISA does not ask for a
-// narrower path (scalar, sse4). The math layer sits below accel/isa.h, so it asks the CPU itself;
-// both kernels give the same bits, only the speed differs.
+// The 4-lane kernel needs AVX2: taken when the engine's ISA (math/isa.h, which honours
+// RAYCAST_ISA) is AVX2 or wider; both kernels give the same bits, only the speed differs.
 bool use_avx2() {
-  static const bool wide = [] {
-#if defined(__x86_64__) && defined(__GNUC__)
-    if (const char* env = std::getenv("RAYCAST_ISA")) {
-      const std::string_view isa(env);
-      if (isa == "scalar" || isa == "sse4") return false;
-    }
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
-#else
-    return false;
-#endif
-  }();
+  static const bool wide = active_isa() >= Isa::kAvx2;
   return wide;
 }
 

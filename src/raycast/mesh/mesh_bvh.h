@@ -125,7 +125,7 @@ inline std::size_t traversal_stack_size(const MeshBvh& bvh) {
   return static_cast<std::size_t>(bvh.depth) * (kNodeWidth - 1) + 2;
 }
 
-/// The queries below run the kernels of active_isa() (accel/isa.h); mesh/wide_kernels.h gives
+/// The queries below run the kernels of active_isa() (math/isa.h); mesh/wide_kernels.h gives
 /// those of any ISA.
 /// Nearest hit with tmin <= t <= tmax (watertight test, float); false on a miss.
 bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit);

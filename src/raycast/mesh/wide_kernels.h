@@ -1,11 +1,11 @@
 #pragma once
 // The mesh traversal kernels of each instruction set, as a table of function pointers: one
 // traversal template (mesh/wide_traverse.inl) compiled once per ISA (mesh/wide_kernels_*.cpp)
-// and picked at run time (accel/isa.h; docs/architecture.md "ISA dispatch").
+// and picked at run time (math/isa.h; docs/architecture.md "ISA dispatch").
 #include <cstdint>
 #include <vector>
 
-#include "accel/isa.h"
+#include "math/isa.h"
 #include "mesh/mesh_bvh.h"
 
 namespace raycast {

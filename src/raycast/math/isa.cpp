@@ -1,4 +1,4 @@
-#include "accel/isa.h"
+#include "math/isa.h"
 
 #include <cstdio>
 #include <cstdlib>
