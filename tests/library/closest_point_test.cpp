@@ -131,6 +131,26 @@ TEST(MeshDistance, FarFromOrigin_EqualsBruteForce) {
   expect_same_as_brute_force(s, std::nullopt, points);
 }
 
+TEST(MeshDistance, CentreOfSphere_EqualsBruteForce) {
+  // Every leaf about equally near: the best-first walk's queue holds most of the tree.
+  const Soup s = sphere(60, 80, 1, {0, 0, 0});
+  expect_same_as_brute_force(s, std::nullopt, {{0, 0, 0}, {1e-9, 0, 0}, {0, 0, 1e-3}});
+}
+
+TEST(MeshDistance, HugeCoordinates_EqualsBruteForce) {
+  // A mesh scaled to 4e15 (beyond float's exact integers; squares near 1e32), and points 1e17
+  // away from a unit mesh.
+  std::mt19937 rng(7);
+  const Soup s = sphere(20, 30, 1, {0, 0, 0});
+  std::vector<Vec3> points = points_around(rng, s, 1.6, 400);
+  std::vector<Vec3> scaled;
+  for (const Vec3& p : points) scaled.push_back(4e15 * p);
+  expect_same_as_brute_force(s, Transform::scale({4e15, 4e15, 4e15}), scaled);
+  std::vector<Vec3> far;
+  for (int i = 0; i < 200; ++i) far.push_back(1e17 * points[static_cast<std::size_t>(i)]);
+  expect_same_as_brute_force(s, std::nullopt, far);
+}
+
 TEST(MeshDistance, FewTrianglesAndFarPoints_EqualsBruteForce) {
   std::mt19937 rng(5);
   for (int n : {1, 3, 4, 5, 9}) {

@@ -1,6 +1,7 @@
 #pragma once
 // Closest points on a triangle mesh: a 4-wide tree of oriented boxes over the triangles, walked
-// nearest box first and pruned by the distance to each box (docs/library.md "Distances").
+// nearest box first (best first) and pruned by the distance to each box (docs/library.md
+// "Distances").
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -35,17 +36,16 @@ class MeshDistance {
   const Aabb& box() const { return box_; }
   bool empty() const { return tris_.empty(); }
 
-  /// An oriented box per child: centre c, axes u, v = n x u (computed in double, mesh/
-  /// closest_point.cpp `third_axis`) and n, unit and orthogonal to float rounding, and
-  /// half-extents h, such that every point of the child's triangles is c + s_u u + s_v v + s_n n
-  /// with |s_k| <= h[k] for the exact reals stored (build slack covers the axes' rounding).
-  /// 208 bytes, 64-aligned: four cache lines per node.
+  /// An oriented box per child: centre c, axes u, v (n x u rounded to float) and n, unit and
+  /// orthogonal to float rounding, and half-extents h, such that every point of the child's
+  /// triangles is c + s_u u + s_v v + s_n n with |s_k| <= h[k] for the exact reals stored (build
+  /// slack covers the axes' rounding). 256 bytes, 64-aligned: four cache lines per node.
   struct alignas(64) Node {
     float c[3][4];
-    float u[3][4], n[3][4];  // [component][lane]
-    float h[3][4];           // along u, v, n
-    std::uint32_t ref[4];    // a node index, or the first triangle of a leaf
-    std::uint32_t count[4];  // 0 for a node, the leaf's triangle count, kNone for no child
+    float u[3][4], v[3][4], n[3][4];  // [component][lane]
+    float h[3][4];                    // along u, v, n
+    std::uint32_t ref[4];             // a node index, or the first triangle of a leaf
+    std::uint32_t count[4];           // 0 for a node, the leaf's triangle count, kNone for no child
   };
   static constexpr std::uint32_t kNone = 0xffffffffu;
 
