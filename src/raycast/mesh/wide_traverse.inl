@@ -2,7 +2,8 @@
 // includes: a mesh/wide_kernels_<isa>.cpp file includes it after its headers, inside its own
 // `#pragma GCC target` region, having defined RAYCAST_KERNEL_NS and, in that namespace, the lane
 // type V8 (8 floats) and its mask type M8 with:
-//   load8(p) (32-byte aligned), load8_u8(p) (8 bytes, converted to float), load44(a, b) (two 16-byte aligned halves), splat(x), store8(p, v),
+//   load8(p) (32-byte aligned), load8_u8(p) (8 bytes, converted to float), load44(a, b) (two
+//   16-byte aligned halves), splat(x), store8(p, v),
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
@@ -28,7 +29,7 @@ constexpr float kInfinityF = __builtin_huge_valf();
 struct RayData {
   V8 o[3];          // origin, broadcast
   V8 inv[3];        // 1 / d, broadcast
-  int near_off[3];  // byte offset of the near plane array of each axis in WideNode::q
+  int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis]
   int far_off[3];
   // Watertight test (Woop, Benthin and Wald 2013): permutation and shear.
   int kx, ky, kz;
@@ -52,9 +53,9 @@ inline RayData prepare(const MeshRay& r) {
     const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
-    // WideNode::q bytes: lo_x 0, hi_x 8, lo_y 16, hi_y 24, lo_z 32, hi_z 40.
-    p.near_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? 0 : kNodeWidth);
-    p.far_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? kNodeWidth : 0);
+    // WideNode::box[a]: the lo planes, then the hi planes.
+    p.near_off[a] = inv >= 0 ? 0 : kNodeWidth;
+    p.far_off[a] = inv >= 0 ? kNodeWidth : 0;
   }
   const WatertightRay w = make_watertight_ray(r.o, r.d);
   p.kx = w.kx;
@@ -76,23 +77,16 @@ inline RayData prepare(const MeshRay& r) {
 }
 
 // Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
-// The planes are dequantised exactly as the build checked them (origin + q * scale), then tested
-// as float planes.
 inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnear) {
 #ifdef RAYCAST_KERNEL_NODE16
   return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
 #else
-  const std::uint8_t* q = n.q[0];
-  const V8 sx = splat(node_scale(n.exponent[0]));
-  const V8 sy = splat(node_scale(n.exponent[1]));
-  const V8 sz = splat(node_scale(n.exponent[2]));
-  const V8 ox = splat(n.origin[0]), oy = splat(n.origin[1]), oz = splat(n.origin[2]);
-  const V8 nx = ((ox + load8_u8(q + p.near_off[0]) * sx) - p.o[0]) * p.inv[0];
-  const V8 ny = ((oy + load8_u8(q + p.near_off[1]) * sy) - p.o[1]) * p.inv[1];
-  const V8 nz = ((oz + load8_u8(q + p.near_off[2]) * sz) - p.o[2]) * p.inv[2];
-  const V8 fx = ((ox + load8_u8(q + p.far_off[0]) * sx) - p.o[0]) * p.inv[0];
-  const V8 fy = ((oy + load8_u8(q + p.far_off[1]) * sy) - p.o[1]) * p.inv[1];
-  const V8 fz = ((oz + load8_u8(q + p.far_off[2]) * sz) - p.o[2]) * p.inv[2];
+  const V8 nx = (load8(n.box[0] + p.near_off[0]) - p.o[0]) * p.inv[0];
+  const V8 ny = (load8(n.box[1] + p.near_off[1]) - p.o[1]) * p.inv[1];
+  const V8 nz = (load8(n.box[2] + p.near_off[2]) - p.o[2]) * p.inv[2];
+  const V8 fx = (load8(n.box[0] + p.far_off[0]) - p.o[0]) * p.inv[0];
+  const V8 fy = (load8(n.box[1] + p.far_off[1]) - p.o[1]) * p.inv[1];
+  const V8 fz = (load8(n.box[2] + p.far_off[2]) - p.o[2]) * p.inv[2];
   tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
   // Widen the far distance away from the near one: scale it up when it is positive, down when it
   // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
@@ -178,8 +172,8 @@ inline void prefetch_children(const MeshBvh& bvh, const WideNode& node, int mask
     const bool leaf = ref & kLeafBit;
     const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
                          : reinterpret_cast<const char*>(&bvh.nodes[ref]);
-    const int bytes =
-        leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup)) : 128;
+    const int bytes = leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup))
+                           : int(sizeof(WideNode));
     for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
   }
 }
@@ -278,7 +272,8 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
           if constexpr (Q == Query::kNearest) {
             // Ties in t go to the smaller triangle index, so that the answer does not depend on
             // the visiting order (packets visit leaves in another order).
-            if (res.t[l] < tmax_s || (res.t[l] == tmax_s && (!found || h.triangle < hit->triangle))) {
+            if (res.t[l] < tmax_s ||
+                (res.t[l] == tmax_s && (!found || h.triangle < hit->triangle))) {
               tmax_s = res.t[l];
               *hit = h;
               found = true;
@@ -367,16 +362,15 @@ inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
   return true;
 }
 
-// A node's 48 planes dequantised at once (origin + q * scale, as every node test does).
+// A node's 48 planes: f[2a] the lo planes of axis a, f[2a + 1] the hi planes.
 struct NodePlanes {
   alignas(32) float f[6][8];
 };
 
 inline void dequantise_node(const WideNode& n, NodePlanes& out) {
   for (int a = 0; a < 3; ++a) {
-    const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
-    store8(out.f[2 * a], o + load8_u8(n.q[2 * a]) * s);
-    store8(out.f[2 * a + 1], o + load8_u8(n.q[2 * a + 1]) * s);
+    store8(out.f[2 * a], load8(n.box[a]));
+    store8(out.f[2 * a + 1], load8(n.box[a] + kNodeWidth));
   }
 }
 
@@ -503,9 +497,12 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
             if (tl[l] < tmax_s[l] ||
                 (tl[l] == tmax_s[l] && (!lane_found || g.id[k] < hits[l].triangle))) {
               tmax_s[l] = tl[l];
-              hits[l] = MeshBvhHit{tl[l],   vl[l] / dl[l],
-                                   wl[l] / dl[l], g.id[k],
-                                   g.source[k], gi,
+              hits[l] = MeshBvhHit{tl[l],
+                                   vl[l] / dl[l],
+                                   wl[l] / dl[l],
+                                   g.id[k],
+                                   g.source[k],
+                                   gi,
                                    static_cast<std::uint32_t>(k)};
               found |= 1 << l;
             }
