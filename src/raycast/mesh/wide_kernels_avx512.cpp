@@ -91,11 +91,11 @@ inline int intersect_node16(const WideNode& n, const NodeRay16& r, V8 tmin, V8 t
       _mm512_max_ps(dx, dy), _mm512_mask_max_ps(dz, 0x00FF, dz, _mm512_castps256_ps512(tmin.v)));
   const __m256 near = _mm512_castps512_ps256(m);
   const __m256 neg_far = _mm512_extractf32x8_ps(m, 1);
-  // far * widen = (-far) * (-widen); far >= 0 exactly when -far <= 0.
-  const __m256 w =
-      _mm256_mask_blend_ps(_mm256_cmp_ps_mask(neg_far, _mm256_setzero_ps(), _CMP_LE_OQ),
-                           _mm256_set1_ps(-narrow), _mm256_set1_ps(-widen));
-  const __m256 tfar = _mm256_min_ps(_mm256_mul_ps(neg_far, w), tmax.v);
+  // far * widen = (-far) * (-widen), far * narrow = (-far) * (-narrow): the larger is the
+  // widened far distance whatever its sign, as in the generic test.
+  const __m256 tfar = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(neg_far, _mm256_set1_ps(-widen)),
+                                                  _mm256_mul_ps(neg_far, _mm256_set1_ps(-narrow))),
+                                    tmax.v);
   tnear = {near};
   return _mm256_cmp_ps_mask(near, tfar, _CMP_LE_OQ) & n.used;
 }

@@ -91,10 +91,11 @@ inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnea
   // Widen the far distance away from the near one: scale it up when it is positive, down when it
   // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
   // negative far distance up would shrink the interval and cull flat boxes (a mesh's
-  // axis-aligned face) behind the origin.
+  // axis-aligned face) behind the origin. The larger of far * widen and far * narrow is exactly
+  // that, whatever far's sign (two independent products and a max: a shorter dependency chain
+  // than choosing the factor from the sign first).
   const V8 far = vmin(vmin(fx, fy), fz);
-  const V8 widen = select(cmp_ge(far, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
-  const V8 tfar = vmin(far * widen, tmax);
+  const V8 tfar = vmin(vmax(far * splat(kSlabWiden), far * splat(kSlabNarrow)), tmax);
   return bits(cmp_le(tnear, tfar)) & n.used;
 #endif
 }
