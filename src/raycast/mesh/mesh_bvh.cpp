@@ -19,6 +19,51 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 constexpr float kMaxFloat = std::numeric_limits<float>::max();
 
+// Quantises the n child intervals [lo[i], hi[i]] of one axis (finite floats) to 8 bits relative
+// to their union: origin = the least lo, the smallest power-of-two scale whose 255 steps span
+// the union, then each lo rounded down and each hi rounded up in steps, checked against the
+// float dequantisation the traversal does (so that rounding of the sum can never shrink a box).
+// A scale too fine for some hi after that check is doubled and the axis redone.
+void quantise_axis(const float* lo, const float* hi, int n, float& origin, std::int8_t& exponent,
+                   std::uint8_t* qlo, std::uint8_t* qhi) {
+  float o = lo[0];
+  float top = hi[0];
+  for (int i = 1; i < n; ++i) {
+    o = std::min(o, lo[i]);
+    top = std::max(top, hi[i]);
+  }
+  const double extent = double(top) - double(o);
+  int e = -126;
+  if (extent > 0) {
+    int k = 0;
+    std::frexp(extent / 255, &k);  // 2^(k-1) <= extent / 255 < 2^k
+    e = std::clamp(k, -126, 127);
+  }
+  for (;; ++e) {
+    const float s = node_scale(e);
+    bool fits = true;
+    for (int i = 0; i < n && fits; ++i) {
+      double fl = std::floor((double(lo[i]) - o) / s);
+      int ql = static_cast<int>(std::clamp(fl, 0.0, 255.0));
+      while (ql > 0 && !(dequantise(o, s, static_cast<std::uint8_t>(ql)) <= lo[i])) --ql;
+      double ch = std::ceil((double(hi[i]) - o) / s);
+      int qh = static_cast<int>(std::clamp(ch, 0.0, 256.0));
+      while (qh <= 255 && !(dequantise(o, s, static_cast<std::uint8_t>(qh)) >= hi[i])) ++qh;
+      if (qh > 255) {
+        fits = false;
+        break;
+      }
+      qlo[i] = static_cast<std::uint8_t>(ql);
+      qhi[i] = static_cast<std::uint8_t>(qh);
+    }
+    // At 2^127 every q >= 2 dequantises to infinity, so the loop ends there at the latest.
+    if (fits || e >= 127) break;
+  }
+  for (int i = n; i < kNodeWidth; ++i) qlo[i] = qhi[i] = 0;
+  origin = o;
+  exponent = static_cast<std::int8_t>(e);
+}
+
 double half_area(const BvhFloatNode& n) {
   const double x = double(n.hi[0]) - n.lo[0], y = double(n.hi[1]) - n.lo[1],
                z = double(n.hi[2]) - n.lo[2];
@@ -51,7 +96,10 @@ class Collapser {
       out_.depth = 0;
       return;
     }
-    out_.nodes.reserve(bin_.nodes.size() / 2 + 1);
+    if (out_.quantised)
+      out_.qnodes.reserve(bin_.nodes.size() / 2 + 1);
+    else
+      out_.nodes.reserve(bin_.nodes.size() / 2 + 1);
     out_.root = collapse(0, 1);
   }
 
@@ -110,14 +158,17 @@ class Collapser {
       kids[best] = bin_.nodes[opened].first;
       kids[n++] = bin_.nodes[opened].first + 1;
     }
-    const std::uint32_t index = static_cast<std::uint32_t>(out_.nodes.size());
-    out_.nodes.emplace_back();
+    const std::uint32_t index =
+        static_cast<std::uint32_t>(out_.quantised ? out_.qnodes.size() : out_.nodes.size());
+    if (out_.quantised)
+      out_.qnodes.emplace_back();
+    else
+      out_.nodes.emplace_back();
     std::uint32_t refs[kNodeWidth] = {};
     for (int i = 0; i < n; ++i) {
       const BvhFloatNode& c = bin_.nodes[kids[i]];
       refs[i] = c.is_leaf() ? leaf_ref(kids[i]) : collapse(kids[i], depth + 1);
     }
-    WideNode& w = out_.nodes[index];
     float lo[3][kNodeWidth], hi[3][kNodeWidth];
     for (int i = 0; i < n; ++i) {
       // Binary node boxes are unions of float vertex coordinates; a side at the builder's clamp
@@ -128,12 +179,25 @@ class Collapser {
         hi[a][i] = b.hi[a] >= kBuildRefLimit ? kMaxFloat : b.hi[a];
       }
     }
+    const auto used = static_cast<std::uint8_t>((1u << n) - 1);
+    if (out_.quantised) {
+      QuantisedNode& w = out_.qnodes[index];
+      for (int a = 0; a < 3; ++a)
+        quantise_axis(lo[a], hi[a], n, w.origin[a], w.exponent[a], w.q[2 * a], w.q[2 * a + 1]);
+      w.used = used;
+      for (int i = 0; i < kNodeWidth; ++i) {
+        w.child[i] = i < n ? refs[i] : 0;
+        w.pad[i] = 0;
+      }
+      return index;
+    }
+    WideNode& w = out_.nodes[index];
     for (int a = 0; a < 3; ++a)
       for (int i = 0; i < kNodeWidth; ++i) {
         w.box[a][i] = i < n ? lo[a][i] : 0.0f;
         w.box[a][kNodeWidth + i] = i < n ? hi[a][i] : 0.0f;
       }
-    w.used = static_cast<std::uint8_t>((1u << n) - 1);
+    w.used = used;
     for (int i = 0; i < kNodeWidth; ++i) w.child[i] = i < n ? refs[i] : 0;
     for (std::uint8_t& b : w.pad) b = 0;
     return index;
@@ -178,6 +242,7 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
   bc.leaf_block = std::max(config.leaf_block, 1);
   bc.traversal_cost = config.traversal_cost;
   const FloatBvh binary = build_float_bvh_from_refs(std::move(refs), bc);
+  out.quantised = n > config.quantise_above;
   Collapser(binary, positions, triangles, source, out).run();
   return out;
 }
