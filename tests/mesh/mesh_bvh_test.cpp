@@ -121,27 +121,53 @@ TEST(MeshBvh, QuantisedBoxes_ExtremeScales_MatchBruteForce) {
     }
   for (const auto& p : soup.positions)
     ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
-  const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
-  for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
-    const auto& t = soup.triangles[i];
-    const Vec3f& a = soup.positions[t[0]];
-    const Vec3f& b = soup.positions[t[1]];
-    const Vec3f& c = soup.positions[t[2]];
-    const Vec3f centre = a * (1 / 3.0f) + b * (1 / 3.0f) + c * (1 / 3.0f);
-    const float reach = std::max({std::abs(a.x - b.x), std::abs(a.y - c.y), std::abs(b.z - c.z)});
-    for (int k = 0; k < 3; ++k) {
-      MeshRay r;
-      r.o = centre + Vec3f{u(rng), u(rng), u(rng)} * reach;
-      Vec3f d = centre - r.o;
-      const float m = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
-      if (!(m > 0)) continue;
-      r.d = d * (1.5f / m);  // largest component in [1, 2), as the mesh's ray conversion makes it
-      r.tmin = 0;
-      r.tmax = std::numeric_limits<float>::infinity();
-      check_against_brute_force(soup, bvh, r);
-      if (HasFatalFailure()) return;
+  for (const std::size_t quantise_above : {std::size_t(0), soup.triangles.size()}) {
+    MeshBvhConfig config;
+    config.quantise_above = quantise_above;  // quantised nodes, then float nodes
+    const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, config);
+    ASSERT_EQ(bvh.quantised, quantise_above == 0);
+    for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
+      const auto& t = soup.triangles[i];
+      const Vec3f& a = soup.positions[t[0]];
+      const Vec3f& b = soup.positions[t[1]];
+      const Vec3f& c = soup.positions[t[2]];
+      const Vec3f centre = a * (1 / 3.0f) + b * (1 / 3.0f) + c * (1 / 3.0f);
+      const float reach = std::max({std::abs(a.x - b.x), std::abs(a.y - c.y), std::abs(b.z - c.z)});
+      for (int k = 0; k < 3; ++k) {
+        MeshRay r;
+        r.o = centre + Vec3f{u(rng), u(rng), u(rng)} * reach;
+        Vec3f d = centre - r.o;
+        const float m = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+        if (!(m > 0)) continue;
+        r.d = d * (1.5f / m);  // largest component in [1, 2), as the mesh's ray conversion makes it
+        r.tmin = 0;
+        r.tmax = std::numeric_limits<float>::infinity();
+        check_against_brute_force(soup, bvh, r);
+        if (HasFatalFailure()) return;
+      }
     }
   }
+}
+
+// The node format follows the triangle count: quantised above MeshBvhConfig::quantise_above,
+// float up to it; exactly one of the two node arrays is filled.
+TEST(MeshBvh, NodeFormat_ChosenByTriangleCount) {
+  const TriangleSoup soup = make_octa_sphere(8);
+  const std::size_t n = soup.triangles.size();
+  MeshBvhConfig config;
+  config.quantise_above = n;
+  const MeshBvh small = build_mesh_bvh(soup.positions, soup.triangles, config);
+  EXPECT_FALSE(small.quantised);
+  EXPECT_FALSE(small.nodes.empty());
+  EXPECT_TRUE(small.qnodes.empty());
+  config.quantise_above = n - 1;
+  const MeshBvh large = build_mesh_bvh(soup.positions, soup.triangles, config);
+  EXPECT_TRUE(large.quantised);
+  EXPECT_TRUE(large.nodes.empty());
+  EXPECT_EQ(large.qnodes.size(), small.nodes.size());  // the same tree in the other format
+  EXPECT_EQ(large.depth, small.depth);
+  EXPECT_EQ(large.memory_bytes() + small.nodes.size() * (sizeof(WideNode) - sizeof(QuantisedNode)),
+            small.memory_bytes());
 }
 
 TEST(MeshBvh, Hits_ReportTheSourceIndexGivenToTheBuild) {

@@ -46,6 +46,14 @@ class WideKernels : public testing::TestWithParam<Isa> {
   const MeshKernels* kernels_ = nullptr;
 };
 
+// The build config for one of the two node formats (mesh/mesh_bvh.h), whatever the mesh size.
+MeshBvhConfig with_format(MeshBvhConfig c, bool quantised) {
+  c.quantise_above = quantised ? 0 : std::numeric_limits<std::size_t>::max();
+  return c;
+}
+
+constexpr bool kBothFormats[] = {false, true};
+
 // The nearest watertight hit by testing every triangle (ties: every triangle at that t).
 struct Brute {
   bool found = false;
@@ -123,11 +131,17 @@ TEST_P(WideKernels, RandomSoups_MatchBruteForceAndScalar) {
         random_soup(rng, 1 + static_cast<int>(rng() % 2000), 10, seed % 2 ? 0.5f : 3.0f);
     MeshBvhConfig config;
     config.max_leaf_size = 1 + static_cast<int>(seed % 16);
-    const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, config);
-    Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
-    for (int i = 0; i < 200; ++i) {
-      check_ray(k, s, soup, random_ray(rng, 10));
-      if (HasFatalFailure()) return;
+    for (const bool quantised : kBothFormats) {
+      SCOPED_TRACE(quantised ? "quantised nodes" : "float nodes");
+      const MeshBvh bvh =
+          build_mesh_bvh(soup.positions, soup.triangles, with_format(config, quantised));
+      ASSERT_EQ(bvh.quantised, quantised);
+      Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
+      std::mt19937 ray_rng(seed);
+      for (int i = 0; i < 200; ++i) {
+        check_ray(k, s, soup, random_ray(ray_rng, 10));
+        if (HasFatalFailure()) return;
+      }
     }
   }
 }
@@ -148,51 +162,57 @@ TEST_P(WideKernels, DegenerateAndNeedleTriangles_MatchBruteForceAndScalar) {
     add(a, b, a + (b - a) * 0.5f + Vec3f{0, 1e-6f, 0});               // needle, 1e-6 wide
     add(a * 1000.0f, b * 1000.0f, a * 1000.0f + Vec3f{0, 0, 1e-3f});  // long needle
   }
-  const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
-  Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
-  for (int i = 0; i < 400; ++i) {
-    MeshRay r = random_ray(rng, 1);
-    if (i % 2) {  // aim at a needle's or a degenerate triangle's vertex
-      const auto& t = soup.triangles[rng() % soup.triangles.size()];
-      r.d = soup.positions[t[rng() % 3]] - r.o;
-      r.tmin = 0;
-      r.tmax = kInf;
+  for (const bool quantised : kBothFormats) {
+    SCOPED_TRACE(quantised ? "quantised nodes" : "float nodes");
+    const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, with_format({}, quantised));
+    Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
+    for (int i = 0; i < 400; ++i) {
+      MeshRay r = random_ray(rng, 1);
+      if (i % 2) {  // aim at a needle's or a degenerate triangle's vertex
+        const auto& t = soup.triangles[rng() % soup.triangles.size()];
+        r.d = soup.positions[t[rng() % 3]] - r.o;
+        r.tmin = 0;
+        r.tmax = kInf;
+      }
+      check_ray(k, s, soup, r);
+      if (HasFatalFailure()) return;
     }
-    check_ray(k, s, soup, r);
-    if (HasFatalFailure()) return;
   }
 }
 
 TEST_P(WideKernels, NanAndInfiniteRays_NeverHitOrMatchScalar) {
   const TriangleSoup soup = make_octa_sphere(8);
-  const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
-  Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
-  const std::vector<MeshRay> nan_rays{
-      {{kNaN, 0, 0}, {1, 0, 0}, 0, kInf},     {{0, 0, 0}, {kNaN, 1, 0}, 0, kInf},
-      {{0, 0, 0}, {1, 0, 0}, kNaN, kInf},     {{0, 0, 0}, {1, 0, 0}, 0, kNaN},
-      {{kInf, 0, 0}, {-1, 0, 0}, 0, kInf},    {{0, 0, 0}, {0, 0, 0}, 0, kInf},
-      {{-kInf, kInf, 0}, {1, -1, 0}, 0, kInf}};
-  for (const MeshRay& r : nan_rays) {
-    SCOPED_TRACE(testing::Message() << "ray " << r.o.x << " " << r.o.y << " " << r.d.x << " "
-                                    << r.d.y << " " << r.tmin << " " << r.tmax);
-    MeshBvhHit h;
-    EXPECT_FALSE(k.closest(r, h));
-    EXPECT_FALSE(k.any(r));
-    EXPECT_TRUE(k.every(r).empty());
+  for (const bool quantised : kBothFormats) {
+    SCOPED_TRACE(quantised ? "quantised nodes" : "float nodes");
+    const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, with_format({}, quantised));
+    Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
+    const std::vector<MeshRay> nan_rays{
+        {{kNaN, 0, 0}, {1, 0, 0}, 0, kInf},     {{0, 0, 0}, {kNaN, 1, 0}, 0, kInf},
+        {{0, 0, 0}, {1, 0, 0}, kNaN, kInf},     {{0, 0, 0}, {1, 0, 0}, 0, kNaN},
+        {{kInf, 0, 0}, {-1, 0, 0}, 0, kInf},    {{0, 0, 0}, {0, 0, 0}, 0, kInf},
+        {{-kInf, kInf, 0}, {1, -1, 0}, 0, kInf}};
+    for (const MeshRay& r : nan_rays) {
+      SCOPED_TRACE(testing::Message() << "ray " << r.o.x << " " << r.o.y << " " << r.d.x << " "
+                                      << r.d.y << " " << r.tmin << " " << r.tmax);
+      MeshBvhHit h;
+      EXPECT_FALSE(k.closest(r, h));
+      EXPECT_FALSE(k.any(r));
+      EXPECT_TRUE(k.every(r).empty());
+    }
+    // An infinite direction (the engine scales directions before they get here): as scalar.
+    const MeshRay inf_dir{{0, 0, 0}, {kInf, 0, 0}, 0, kInf};
+    MeshBvhHit hi, hsi;
+    EXPECT_EQ(k.closest(inf_dir, hi), s.closest(inf_dir, hsi));
+    EXPECT_EQ(k.every(inf_dir), s.every(inf_dir));
+    // Infinite ray ranges with finite rays: the whole line, both directions.
+    const MeshRay line{{0.1f, 0.2f, 0}, {0, 0, 1}, -kInf, kInf};
+    MeshBvhHit h, hs;
+    ASSERT_TRUE(k.closest(line, h));
+    ASSERT_TRUE(s.closest(line, hs));
+    EXPECT_EQ(h.t, hs.t);
+    EXPECT_LT(h.t, 0);  // the nearest hit of the whole line is the one behind the origin
+    EXPECT_EQ(k.every(line).size(), 2u);
   }
-  // An infinite direction (the engine scales directions before they get here): as scalar.
-  const MeshRay inf_dir{{0, 0, 0}, {kInf, 0, 0}, 0, kInf};
-  MeshBvhHit hi, hsi;
-  EXPECT_EQ(k.closest(inf_dir, hi), s.closest(inf_dir, hsi));
-  EXPECT_EQ(k.every(inf_dir), s.every(inf_dir));
-  // Infinite ray ranges with finite rays: the whole line, both directions.
-  const MeshRay line{{0.1f, 0.2f, 0}, {0, 0, 1}, -kInf, kInf};
-  MeshBvhHit h, hs;
-  ASSERT_TRUE(k.closest(line, h));
-  ASSERT_TRUE(s.closest(line, hs));
-  EXPECT_EQ(h.t, hs.t);
-  EXPECT_LT(h.t, 0);  // the nearest hit of the whole line is the one behind the origin
-  EXPECT_EQ(k.every(line).size(), 2u);
 }
 
 // Rays from inside closed meshes at every scale aimed exactly at shared vertices and at points
@@ -202,32 +222,34 @@ TEST_P(WideKernels, ClosedMeshesAtEveryScale_RaysAtEdgesAndVertices_NeverMiss) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> along(0, 1), inside(-0.3f, 0.3f);
   int rays = 0, misses = 0;
-  for (float scale : {1e-6f, 1e-3f, 1.0f, 1e3f, 1e6f}) {
-    TriangleSoup soup = unit;
-    const Vec3f shift{0.37f * scale, -0.21f * scale, 3.1f * scale};
-    for (Vec3f& p : soup.positions) p = p * scale + shift;
-    const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
-    Kernels k{*kernels_, bvh};
-    for (int o = 0; o < 4; ++o) {
-      const Vec3f origin = shift + Vec3f{inside(rng), inside(rng), inside(rng)} * scale;
-      auto shoot = [&](const Vec3f& target) {
-        const MeshRay r{origin, target - origin, 0, kInf};
-        MeshBvhHit h;
-        misses += !k.closest(r, h);
-        misses += !k.any(r);
-        ++rays;
-      };
-      for (const Vec3f& p : soup.positions) shoot(p);
-      for (const auto& t : soup.triangles)
-        for (int e = 0; e < 3; ++e) {
-          const Vec3f a = soup.positions[t[e]], b = soup.positions[t[(e + 1) % 3]];
-          shoot(a + 0.5f * (b - a));
-          shoot(a + along(rng) * (b - a));
-        }
+  for (const bool quantised : kBothFormats)
+    for (float scale : {1e-6f, 1e-3f, 1.0f, 1e3f, 1e6f}) {
+      TriangleSoup soup = unit;
+      const Vec3f shift{0.37f * scale, -0.21f * scale, 3.1f * scale};
+      for (Vec3f& p : soup.positions) p = p * scale + shift;
+      const MeshBvh bvh =
+          build_mesh_bvh(soup.positions, soup.triangles, with_format({}, quantised));
+      Kernels k{*kernels_, bvh};
+      for (int o = 0; o < 4; ++o) {
+        const Vec3f origin = shift + Vec3f{inside(rng), inside(rng), inside(rng)} * scale;
+        auto shoot = [&](const Vec3f& target) {
+          const MeshRay r{origin, target - origin, 0, kInf};
+          MeshBvhHit h;
+          misses += !k.closest(r, h);
+          misses += !k.any(r);
+          ++rays;
+        };
+        for (const Vec3f& p : soup.positions) shoot(p);
+        for (const auto& t : soup.triangles)
+          for (int e = 0; e < 3; ++e) {
+            const Vec3f a = soup.positions[t[e]], b = soup.positions[t[(e + 1) % 3]];
+            shoot(a + 0.5f * (b - a));
+            shoot(a + along(rng) * (b - a));
+          }
+      }
     }
-  }
   EXPECT_EQ(misses, 0) << "of " << rays << " rays";
-  EXPECT_GT(rays, 20000);
+  EXPECT_GT(rays, 40000);
 }
 
 TEST_P(WideKernels, DeepTree_StackSizedFromDepth_EveryHitFound) {
@@ -242,14 +264,18 @@ TEST_P(WideKernels, DeepTree_StackSizedFromDepth_EveryHitFound) {
   }
   MeshBvhConfig config;
   config.max_leaf_size = 1;
-  const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, config);
-  Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
-  const MeshRay r{{2, 0, 0}, {-1, 0, 0}, 0, kInf};
-  EXPECT_EQ(k.every(r).size(), soup.triangles.size()) << "depth " << bvh.depth;
-  EXPECT_EQ(k.every(r), s.every(r));
-  MeshBvhHit h;
-  ASSERT_TRUE(k.closest(r, h));
-  EXPECT_EQ(h.triangle, 0u);
+  for (const bool quantised : kBothFormats) {
+    SCOPED_TRACE(quantised ? "quantised nodes" : "float nodes");
+    const MeshBvh bvh =
+        build_mesh_bvh(soup.positions, soup.triangles, with_format(config, quantised));
+    Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
+    const MeshRay r{{2, 0, 0}, {-1, 0, 0}, 0, kInf};
+    EXPECT_EQ(k.every(r).size(), soup.triangles.size()) << "depth " << bvh.depth;
+    EXPECT_EQ(k.every(r), s.every(r));
+    MeshBvhHit h;
+    ASSERT_TRUE(k.closest(r, h));
+    EXPECT_EQ(h.triangle, 0u);
+  }
 }
 
 // Packets of eight rays under random masks give every active ray exactly its single-ray hit (t,
@@ -260,13 +286,15 @@ TEST_P(WideKernels, PacketsWithMixedMasks_EqualSingleRays) {
   std::mt19937 rng(23);
   std::uniform_real_distribution<float> jitter(-0.05f, 0.05f), along(0, 1);
   const TriangleSoup sphere = make_octa_sphere(12);
-  for (int mesh = 0; mesh < 3; ++mesh) {
-    SCOPED_TRACE("mesh " + std::to_string(mesh));
+  for (int run = 0; run < 6; ++run) {  // three meshes, each with both node formats
+    const int mesh = run % 3;
+    SCOPED_TRACE("mesh " + std::to_string(mesh) + (run < 3 ? ", float" : ", quantised"));
     const TriangleSoup soup =
         mesh == 0 ? sphere : random_soup(rng, 1500, 3, mesh == 1 ? 0.3f : 1.5f);
     MeshBvhConfig config;
     config.max_leaf_size = mesh == 2 ? 3 : 8;
-    const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, config);
+    const MeshBvh bvh =
+        build_mesh_bvh(soup.positions, soup.triangles, with_format(config, run >= 3));
     Kernels k{*kernels_, bvh}, s{kMeshKernelsScalar, bvh};
     int packet_hits = 0;
     for (int i = 0; i < 300; ++i) {

@@ -96,7 +96,10 @@ class Collapser {
       out_.depth = 0;
       return;
     }
-    out_.nodes.reserve(bin_.nodes.size() / 2 + 1);
+    if (out_.quantised)
+      out_.qnodes.reserve(bin_.nodes.size() / 2 + 1);
+    else
+      out_.nodes.reserve(bin_.nodes.size() / 2 + 1);
     out_.root = collapse(0, 1);
   }
 
@@ -155,14 +158,17 @@ class Collapser {
       kids[best] = bin_.nodes[opened].first;
       kids[n++] = bin_.nodes[opened].first + 1;
     }
-    const std::uint32_t index = static_cast<std::uint32_t>(out_.nodes.size());
-    out_.nodes.emplace_back();
+    const std::uint32_t index =
+        static_cast<std::uint32_t>(out_.quantised ? out_.qnodes.size() : out_.nodes.size());
+    if (out_.quantised)
+      out_.qnodes.emplace_back();
+    else
+      out_.nodes.emplace_back();
     std::uint32_t refs[kNodeWidth] = {};
     for (int i = 0; i < n; ++i) {
       const BvhFloatNode& c = bin_.nodes[kids[i]];
       refs[i] = c.is_leaf() ? leaf_ref(kids[i]) : collapse(kids[i], depth + 1);
     }
-    WideNode& w = out_.nodes[index];
     float lo[3][kNodeWidth], hi[3][kNodeWidth];
     for (int i = 0; i < n; ++i) {
       // Binary node boxes are unions of float vertex coordinates; a side at the builder's clamp
@@ -173,13 +179,27 @@ class Collapser {
         hi[a][i] = b.hi[a] >= kBuildRefLimit ? kMaxFloat : b.hi[a];
       }
     }
-    for (int a = 0; a < 3; ++a)
-      quantise_axis(lo[a], hi[a], n, w.origin[a], w.exponent[a], w.q[2 * a], w.q[2 * a + 1]);
-    w.used = static_cast<std::uint8_t>((1u << n) - 1);
-    for (int i = 0; i < kNodeWidth; ++i) {
-      w.child[i] = i < n ? refs[i] : 0;
-      w.pad[i] = 0;
+    const auto used = static_cast<std::uint8_t>((1u << n) - 1);
+    if (out_.quantised) {
+      QuantisedNode& w = out_.qnodes[index];
+      for (int a = 0; a < 3; ++a)
+        quantise_axis(lo[a], hi[a], n, w.origin[a], w.exponent[a], w.q[2 * a], w.q[2 * a + 1]);
+      w.used = used;
+      for (int i = 0; i < kNodeWidth; ++i) {
+        w.child[i] = i < n ? refs[i] : 0;
+        w.pad[i] = 0;
+      }
+      return index;
     }
+    WideNode& w = out_.nodes[index];
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < kNodeWidth; ++i) {
+        w.box[a][i] = i < n ? lo[a][i] : 0.0f;
+        w.box[a][kNodeWidth + i] = i < n ? hi[a][i] : 0.0f;
+      }
+    w.used = used;
+    for (int i = 0; i < kNodeWidth; ++i) w.child[i] = i < n ? refs[i] : 0;
+    for (std::uint8_t& b : w.pad) b = 0;
     return index;
   }
 
@@ -222,6 +242,7 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
   bc.leaf_block = std::max(config.leaf_block, 1);
   bc.traversal_cost = config.traversal_cost;
   const FloatBvh binary = build_float_bvh_from_refs(std::move(refs), bc);
+  out.quantised = n > config.quantise_above;
   Collapser(binary, positions, triangles, source, out).run();
   return out;
 }

@@ -17,16 +17,33 @@ namespace raycast {
 
 inline constexpr int kNodeWidth = 8;
 
+// Two node formats with the same child references, chosen per mesh by its size
+// (MeshBvhConfig::quantise_above; docs/performance-mesh.md, session 5: float nodes trace faster
+// on the 1M meshes, quantised ones on the 10M sphere's incoherent rays, where memory traffic
+// dominates). A child reference is an inner node's index, or (bit 31 set) a leaf: bits 0-28 the
+// first triangle group, bits 29-30 the group count minus 1. An unused slot has its bit clear in
+// `used` and reference 0.
+
+/// A node with up to 8 children, 256 bytes (four cache lines): the child boxes in float, one
+/// 64-byte line per axis holding [lo of the eight children | hi of the eight children] (the
+/// AVX-512 node test reads an axis in one load; the 8-lane tests read the near and the far half),
+/// then the eight child references and the mask of the used children (unused planes are 0).
+struct alignas(64) WideNode {
+  float box[3][2 * kNodeWidth];
+  std::uint32_t child[kNodeWidth];
+  std::uint8_t used;
+  std::uint8_t pad[31];
+};
+static_assert(sizeof(WideNode) == 256);
+
 /// A node with up to 8 children, 128 bytes (two cache lines), its child boxes quantised to 8 bits
 /// relative to the node (Ylitie, Karras and Laine 2017). The first line holds all the box test
 /// reads: q[plane][child] for the planes lo_x, hi_x, lo_y, hi_y, lo_z, hi_z (48 bytes), the
-/// node's origin, one power-of-two scale exponent per axis, and a mask of the used children. A
+/// node's origin, one power-of-two scale exponent per axis, and the mask of the used children. A
 /// child's plane on axis a is dequantise(origin[a], node_scale(exponent[a]), q) in float, the same
 /// on every ISA; the build picks each q so that this box holds the child's float box. The second
-/// line: the eight child references, then padding. A child reference is an inner node's index,
-/// or (bit 31 set) a leaf: bits 0-28 the first triangle group, bits 29-30 the group count minus 1.
-/// An unused slot has its bit clear in `used` and reference 0.
-struct alignas(64) WideNode {
+/// line: the eight child references, then padding.
+struct alignas(64) QuantisedNode {
   std::uint8_t q[6][kNodeWidth];
   float origin[3];
   std::int8_t exponent[3];
@@ -34,7 +51,7 @@ struct alignas(64) WideNode {
   std::uint32_t child[kNodeWidth];
   std::uint32_t pad[kNodeWidth];
 };
-static_assert(sizeof(WideNode) == 128);
+static_assert(sizeof(QuantisedNode) == 128);
 
 /// 2^e for e in [-126, 127] (a normal float), from its bits.
 inline float node_scale(int e) {
@@ -70,17 +87,24 @@ struct MeshBvhConfig {
   int max_leaf_size = 8;  // triangles per leaf (at most 4 groups of 4)
   int leaf_block = 4;     // the SAH counts leaf cost per group of this many triangles
   double traversal_cost = 1.0;
+  // Meshes of more triangles than this get quantised nodes, smaller ones float nodes (measured:
+  // float wins at 1M, quantised at 10M; the threshold in between is not measured more finely).
+  std::size_t quantise_above = 4'000'000;
 };
 
 struct MeshBvh {
-  BuildVector<WideNode> nodes;        // nodes[0] is the root when there is any triangle
+  BuildVector<WideNode> nodes;        // float nodes, or none when quantised: nodes[0] is the
+                                      // root when the root is not a leaf
+  BuildVector<QuantisedNode> qnodes;  // quantised nodes (the mesh's other format), the same way
   BuildVector<TriangleGroup> groups;  // leaf data, permuted to leaf order (resize leaves them
                                       // uninitialised: the build's parallel pass writes them)
   std::uint32_t root = 0;             // a child reference: node 0, or a single leaf
   int depth = 0;                      // deepest node level (the root is level 1)
+  bool quantised = false;             // which of nodes / qnodes the tree uses
   bool empty() const { return groups.empty(); }
   std::size_t memory_bytes() const {
-    return nodes.size() * sizeof(WideNode) + groups.size() * sizeof(TriangleGroup);
+    return nodes.size() * sizeof(WideNode) + qnodes.size() * sizeof(QuantisedNode) +
+           groups.size() * sizeof(TriangleGroup);
   }
 };
 

@@ -1,6 +1,7 @@
 // The AVX2 mesh kernels: eight lanes in one 256-bit register.
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "mesh/triangle.h"

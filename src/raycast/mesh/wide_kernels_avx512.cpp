@@ -2,6 +2,7 @@
 // mask registers (32 vector registers, no movemask).
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "mesh/triangle.h"
@@ -52,10 +53,11 @@ inline int bits(M8 m) { return m; }
 inline V8 select(M8 m, V8 x, V8 y) { return {_mm256_mask_blend_ps(m, y.v, x.v)}; }
 
 // The node test on 16 lanes (RAYCAST_KERNEL_NODE16 in mesh/wide_traverse.inl): one axis's
-// sixteen planes [lo x 8 | hi x 8] per register, so a node is three widening loads and three
-// dequantisations instead of six. The lane operations and their operand order are those of the
-// generic test (far distances negated, which commutes with IEEE rounding and with min/max), so
-// the hits stay bit for bit those of the other ISAs.
+// sixteen planes [lo x 8 | hi x 8] per register, so a node is three loads (and, quantised, three
+// dequantisations) instead of six. The lane
+// operations and their operand order are those of the generic test (far distances negated, which
+// commutes with IEEE rounding and with min/max), so the hits stay bit for bit those of the other
+// ISAs.
 struct NodeRay16 {
   __m512 o[3];      // the origin, broadcast
   __m512 mul[3];    // [1/d x 8 | -1/d x 8]
@@ -74,17 +76,25 @@ inline NodeRay16 prepare_node16(const float* o, const float* inv) {
   return r;
 }
 
-// (plane - o) * (+-1/d) of one axis's sixteen planes, near planes in lanes 0-7.
-inline __m512 axis_distances16(const WideNode& n, const NodeRay16& r, int a) {
+// One axis's sixteen planes [lo x 8 | hi x 8]: as stored, or dequantised.
+inline __m512 axis_planes16(const WideNode& n, int a) { return _mm512_load_ps(n.box[a]); }
+inline __m512 axis_planes16(const QuantisedNode& n, int a) {
   const __m512 q = _mm512_cvtepi32_ps(
       _mm512_cvtepu8_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(n.q[2 * a]))));
-  const __m512 plane = _mm512_add_ps(_mm512_set1_ps(n.origin[a]),
-                                     _mm512_mul_ps(q, _mm512_set1_ps(node_scale(n.exponent[a]))));
+  return _mm512_add_ps(_mm512_set1_ps(n.origin[a]),
+                       _mm512_mul_ps(q, _mm512_set1_ps(node_scale(n.exponent[a]))));
+}
+
+// (plane - o) * (+-1/d) of one axis's sixteen planes, near planes in lanes 0-7.
+template <class Node>
+inline __m512 axis_distances16(const Node& n, const NodeRay16& r, int a) {
+  const __m512 plane = axis_planes16(n, a);
   return _mm512_mul_ps(_mm512_permutexvar_ps(r.perm[a], _mm512_sub_ps(plane, r.o[a])), r.mul[a]);
 }
 
 // The slab test of mesh/wide_traverse.inl's intersect_node, same results.
-inline int intersect_node16(const WideNode& n, const NodeRay16& r, V8 tmin, V8 tmax, V8& tnear,
+template <class Node>
+inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax, V8& tnear,
                             float widen, float narrow) {
   const __m512 dx = axis_distances16(n, r, 0);
   const __m512 dy = axis_distances16(n, r, 1);
@@ -94,11 +104,11 @@ inline int intersect_node16(const WideNode& n, const NodeRay16& r, V8 tmin, V8 t
       _mm512_max_ps(dx, dy), _mm512_mask_max_ps(dz, 0x00FF, dz, _mm512_castps256_ps512(tmin.v)));
   const __m256 near = _mm512_castps512_ps256(m);
   const __m256 neg_far = _mm512_extractf32x8_ps(m, 1);
-  // far * widen = (-far) * (-widen); far >= 0 exactly when -far <= 0.
-  const __m256 w =
-      _mm256_mask_blend_ps(_mm256_cmp_ps_mask(neg_far, _mm256_setzero_ps(), _CMP_LE_OQ),
-                           _mm256_set1_ps(-narrow), _mm256_set1_ps(-widen));
-  const __m256 tfar = _mm256_min_ps(_mm256_mul_ps(neg_far, w), tmax.v);
+  // far * widen = (-far) * (-widen), far * narrow = (-far) * (-narrow): the larger is the
+  // widened far distance whatever its sign, as in the generic test.
+  const __m256 tfar = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(neg_far, _mm256_set1_ps(-widen)),
+                                                  _mm256_mul_ps(neg_far, _mm256_set1_ps(-narrow))),
+                                    tmax.v);
   tnear = {near};
   return _mm256_cmp_ps_mask(near, tfar, _CMP_LE_OQ) & n.used;
 }

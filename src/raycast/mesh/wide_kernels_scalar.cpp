@@ -2,6 +2,7 @@
 // are tested against).
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "mesh/triangle.h"

@@ -1,6 +1,7 @@
 // The SSE4.2 mesh kernels: eight lanes as two 4-wide registers.
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "mesh/triangle.h"

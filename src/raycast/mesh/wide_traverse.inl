@@ -2,12 +2,14 @@
 // includes: a mesh/wide_kernels_<isa>.cpp file includes it after its headers, inside its own
 // `#pragma GCC target` region, having defined RAYCAST_KERNEL_NS and, in that namespace, the lane
 // type V8 (8 floats) and its mask type M8 with:
-//   load8(p) (32-byte aligned), load8_u8(p) (8 bytes, converted to float), load44(a, b) (two 16-byte aligned halves), splat(x), store8(p, v),
+//   load8(p) (32-byte aligned), load8_u8(p) (8 bytes, converted to float), load44(a, b) (two
+//   16-byte aligned halves), splat(x), store8(p, v),
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
 // A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv) and
-// intersect_node16(...): its own node test with the same results (AVX-512: 16 lanes).
+// intersect_node16(node, ...) for both node formats: its own node test with the same results
+// (AVX-512: 16 lanes).
 // Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
 // with an add, so every ISA returns the same hits bit for bit (the tests compare them).
 
@@ -28,8 +30,8 @@ constexpr float kInfinityF = __builtin_huge_valf();
 struct RayData {
   V8 o[3];          // origin, broadcast
   V8 inv[3];        // 1 / d, broadcast
-  int near_off[3];  // byte offset of the near plane array of each axis in WideNode::q
-  int far_off[3];
+  int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis] (and in
+  int far_off[3];   // an axis's two rows of QuantisedNode::q)
   // Watertight test (Woop, Benthin and Wald 2013): permutation and shear.
   int kx, ky, kz;
   V8 sx, sy, sz;
@@ -52,9 +54,9 @@ inline RayData prepare(const MeshRay& r) {
     const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
-    // WideNode::q bytes: lo_x 0, hi_x 8, lo_y 16, hi_y 24, lo_z 32, hi_z 40.
-    p.near_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? 0 : kNodeWidth);
-    p.far_off[a] = a * 2 * kNodeWidth + (inv >= 0 ? kNodeWidth : 0);
+    // WideNode::box[a] and QuantisedNode::q[2a], q[2a + 1]: the lo planes, then the hi planes.
+    p.near_off[a] = inv >= 0 ? 0 : kNodeWidth;
+    p.far_off[a] = inv >= 0 ? kNodeWidth : 0;
   }
   const WatertightRay w = make_watertight_ray(r.o, r.d);
   p.kx = w.kx;
@@ -75,32 +77,52 @@ inline RayData prepare(const MeshRay& r) {
   return p;
 }
 
+// The node arrays of the two formats (mesh/mesh_bvh.h).
+template <class Node>
+const Node* node_array(const MeshBvh& bvh) {
+  if constexpr (std::is_same_v<Node, WideNode>)
+    return bvh.nodes.data();
+  else
+    return bvh.qnodes.data();
+}
+
+// The near and far distances of a node's eight children on each axis: float planes as stored.
+inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
+  for (int a = 0; a < 3; ++a) {
+    d[a] = (load8(n.box[a] + p.near_off[a]) - p.o[a]) * p.inv[a];
+    d[3 + a] = (load8(n.box[a] + p.far_off[a]) - p.o[a]) * p.inv[a];
+  }
+}
+
+// The same for quantised planes, dequantised exactly as the build checked them
+// (origin + q * scale).
+inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
+  const std::uint8_t* q = n.q[0];
+  for (int a = 0; a < 3; ++a) {
+    const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
+    d[a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.near_off[a]) * s) - p.o[a]) * p.inv[a];
+    d[3 + a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.far_off[a]) * s) - p.o[a]) * p.inv[a];
+  }
+}
+
 // Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
-// The planes are dequantised exactly as the build checked them (origin + q * scale), then tested
-// as float planes.
-inline int intersect_node(const WideNode& n, const RayData& p, V8 tmax, V8& tnear) {
+template <class Node>
+inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
 #ifdef RAYCAST_KERNEL_NODE16
   return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
 #else
-  const std::uint8_t* q = n.q[0];
-  const V8 sx = splat(node_scale(n.exponent[0]));
-  const V8 sy = splat(node_scale(n.exponent[1]));
-  const V8 sz = splat(node_scale(n.exponent[2]));
-  const V8 ox = splat(n.origin[0]), oy = splat(n.origin[1]), oz = splat(n.origin[2]);
-  const V8 nx = ((ox + load8_u8(q + p.near_off[0]) * sx) - p.o[0]) * p.inv[0];
-  const V8 ny = ((oy + load8_u8(q + p.near_off[1]) * sy) - p.o[1]) * p.inv[1];
-  const V8 nz = ((oz + load8_u8(q + p.near_off[2]) * sz) - p.o[2]) * p.inv[2];
-  const V8 fx = ((ox + load8_u8(q + p.far_off[0]) * sx) - p.o[0]) * p.inv[0];
-  const V8 fy = ((oy + load8_u8(q + p.far_off[1]) * sy) - p.o[1]) * p.inv[1];
-  const V8 fz = ((oz + load8_u8(q + p.far_off[2]) * sz) - p.o[2]) * p.inv[2];
+  V8 d[6];
+  node_distances(n, p, d);
+  const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
   tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
   // Widen the far distance away from the near one: scale it up when it is positive, down when it
   // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
   // negative far distance up would shrink the interval and cull flat boxes (a mesh's
-  // axis-aligned face) behind the origin.
+  // axis-aligned face) behind the origin. The larger of far * widen and far * narrow is exactly
+  // that, whatever far's sign (two independent products and a max: a shorter dependency chain
+  // than choosing the factor from the sign first).
   const V8 far = vmin(vmin(fx, fy), fz);
-  const V8 widen = select(cmp_ge(far, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
-  const V8 tfar = vmin(far * widen, tmax);
+  const V8 tfar = vmin(vmax(far * splat(kSlabWiden), far * splat(kSlabNarrow)), tmax);
   return bits(cmp_le(tnear, tfar)) & n.used;
 #endif
 }
@@ -171,22 +193,24 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
 
 // Starts loading every hit child (a node's two cache lines, or all of a leaf's groups) at once,
 // so that the memory latency of siblings overlaps instead of adding up.
-inline void prefetch_children(const MeshBvh& bvh, const WideNode& node, int mask) {
+template <class Node>
+inline void prefetch_children(const MeshBvh& bvh, const Node& node, int mask) {
   while (mask) {
     const std::uint32_t ref = node.child[__builtin_ctz(mask)];
     mask &= mask - 1;
     const bool leaf = ref & kLeafBit;
     const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
-                         : reinterpret_cast<const char*>(&bvh.nodes[ref]);
-    const int bytes =
-        leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup)) : 128;
+                         : reinterpret_cast<const char*>(node_array<Node>(bvh) + ref);
+    const int bytes = leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup))
+                           : int(sizeof(Node));
     for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
   }
 }
 
 // Ordered descent: pushes the hit children except the nearest (farthest first, so that they pop
 // nearest first) with their entry distances, and returns the nearest.
-inline std::uint32_t order_children(const WideNode& node, int mask, V8 tn, TraversalEntry* stack,
+template <class Node>
+inline std::uint32_t order_children(const Node& node, int mask, V8 tn, TraversalEntry* stack,
                                     int& top) {
   const int first = __builtin_ctz(mask);
   mask &= mask - 1;
@@ -226,10 +250,11 @@ enum class Query { kNearest, kAny, kAll };
 // The one traversal of the three queries (the shape of madmann91/bvh's intersect<IsAnyHit>):
 // nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
 // first hit (kAny), or every hit appended to `out` (kAll).
-template <Query Q>
+template <Query Q, class Node>
 bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
               TraversalEntry* stack) {
   if (bvh.empty()) return false;
+  const Node* nodes = node_array<Node>(bvh);
   const RayData p = prepare(ray);
   float tmax_s = ray.tmax;
   V8 tmax = splat(tmax_s);
@@ -239,7 +264,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   std::uint32_t ref = bvh.root;
   for (;;) {
     if (!(ref & kLeafBit)) {
-      const WideNode& node = bvh.nodes[ref];
+      const Node& node = nodes[ref];
       V8 tn;
       int mask = intersect_node(node, p, tmax, tn);
       if (mask) {
@@ -278,7 +303,8 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
           if constexpr (Q == Query::kNearest) {
             // Ties in t go to the smaller triangle index, so that the answer does not depend on
             // the visiting order (packets visit leaves in another order).
-            if (res.t[l] < tmax_s || (res.t[l] == tmax_s && (!found || h.triangle < hit->triangle))) {
+            if (res.t[l] < tmax_s ||
+                (res.t[l] == tmax_s && (!found || h.triangle < hit->triangle))) {
               tmax_s = res.t[l];
               *hit = h;
               found = true;
@@ -303,17 +329,24 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   }
 }
 
+template <Query Q>
+bool traverse_any_format(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit,
+                         std::vector<MeshBvhHit>* out, TraversalEntry* stack) {
+  return bvh.quantised ? traverse<Q, QuantisedNode>(bvh, ray, hit, out, stack)
+                       : traverse<Q, WideNode>(bvh, ray, hit, out, stack);
+}
+
 bool closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit, TraversalEntry* stack) {
-  return traverse<Query::kNearest>(bvh, ray, &hit, nullptr, stack);
+  return traverse_any_format<Query::kNearest>(bvh, ray, &hit, nullptr, stack);
 }
 
 bool any(const MeshBvh& bvh, const MeshRay& ray, TraversalEntry* stack) {
-  return traverse<Query::kAny>(bvh, ray, nullptr, nullptr, stack);
+  return traverse_any_format<Query::kAny>(bvh, ray, nullptr, nullptr, stack);
 }
 
 void every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
            TraversalEntry* stack) {
-  traverse<Query::kAll>(bvh, ray, nullptr, &out, stack);
+  traverse_any_format<Query::kAll>(bvh, ray, nullptr, &out, stack);
 }
 
 // ---- Packets: up to eight rays, one per lane ------------------------------------------------
@@ -367,16 +400,23 @@ inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
   return true;
 }
 
-// A node's 48 planes dequantised at once (origin + q * scale, as every node test does).
+// A node's 48 planes: f[2a] the lo planes of axis a, f[2a + 1] the hi planes.
 struct NodePlanes {
   alignas(32) float f[6][8];
 };
 
-inline void dequantise_node(const WideNode& n, NodePlanes& out) {
+inline void dequantise_node(const QuantisedNode& n, NodePlanes& out) {
   for (int a = 0; a < 3; ++a) {
     const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
     store8(out.f[2 * a], o + load8_u8(n.q[2 * a]) * s);
     store8(out.f[2 * a + 1], o + load8_u8(n.q[2 * a + 1]) * s);
+  }
+}
+
+inline void dequantise_node(const WideNode& n, NodePlanes& out) {
+  for (int a = 0; a < 3; ++a) {
+    store8(out.f[2 * a], load8(n.box[a]));
+    store8(out.f[2 * a + 1], load8(n.box[a] + kNodeWidth));
   }
 }
 
@@ -441,14 +481,16 @@ inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData& p
 }
 
 // The nearest hit of each ray of `mask` (bit l: rays[l] is traced); returns the lanes that hit.
-int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
-             TraversalEntry* stack) {
+template <class Node>
+int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+                    TraversalEntry* stack) {
   if (bvh.empty() || !mask) return 0;
   PacketData p;
   if (!prepare_packet(rays, mask, p)) {  // incoherent: one ray at a time
     int found = 0;
     for (int l = 0; l < 8; ++l)
-      if ((mask >> l & 1) && traverse<Query::kNearest>(bvh, rays[l], &hits[l], nullptr, stack))
+      if ((mask >> l & 1) &&
+          traverse<Query::kNearest, Node>(bvh, rays[l], &hits[l], nullptr, stack))
         found |= 1 << l;
     return found;
   }
@@ -460,7 +502,7 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
   std::uint32_t ref = bvh.root;
   for (;;) {
     if (!(ref & kLeafBit)) {
-      const WideNode& node = bvh.nodes[ref];
+      const Node& node = node_array<Node>(bvh)[ref];
       NodePlanes planes;
       dequantise_node(node, planes);
       // Hit children with the least entry over their lanes, nearest pushed last.
@@ -503,9 +545,12 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
             if (tl[l] < tmax_s[l] ||
                 (tl[l] == tmax_s[l] && (!lane_found || g.id[k] < hits[l].triangle))) {
               tmax_s[l] = tl[l];
-              hits[l] = MeshBvhHit{tl[l],   vl[l] / dl[l],
-                                   wl[l] / dl[l], g.id[k],
-                                   g.source[k], gi,
+              hits[l] = MeshBvhHit{tl[l],
+                                   vl[l] / dl[l],
+                                   wl[l] / dl[l],
+                                   g.id[k],
+                                   g.source[k],
+                                   gi,
                                    static_cast<std::uint32_t>(k)};
               found |= 1 << l;
             }
@@ -526,6 +571,12 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
       }
     }
   }
+}
+
+int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+             TraversalEntry* stack) {
+  return bvh.quantised ? closest8_format<QuantisedNode>(bvh, rays, mask, hits, stack)
+                       : closest8_format<WideNode>(bvh, rays, mask, hits, stack);
 }
 
 }  // namespace raycast::RAYCAST_KERNEL_NS
