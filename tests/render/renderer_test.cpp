@@ -6,6 +6,7 @@
 #include <set>
 #include <vector>
 
+#include "render/camera.h"
 #include "render/integrator.h"
 #include "render/renderer.h"
 #include "scene/demo_scene.h"
@@ -57,6 +58,31 @@ TEST(Render, Determinism_OneAndTwoThreadsGiveIdenticalImages) {
   EXPECT_EQ(one.rays, two.rays);
   EXPECT_EQ(one.threads, 1);
   EXPECT_GE(one.rays, 40u * 30u * 3u);  // at least the primary rays
+}
+
+// One sample per pixel takes a shorter path in the pixel loop: it must give, bit for bit, the
+// general rule's sample (the pixel centre, the pixel's own generator) traced by the integrator.
+TEST(Render, OneSample_IsTheIntegratorsValueAtEachPixelCentre) {
+  const Scene scene = load_demo_scene();
+  RenderOptions options;
+  options.width = 24;
+  options.height = 18;
+  options.spp = 1;
+  options.progress = false;
+  const Image image = render(scene, options);
+  const Camera camera(camera_or_default(scene), options.width, options.height);
+  const Integrator integrator(scene, render_mode(scene, options));
+  double x_offset, y_offset;
+  sample_offset(0, 1, 0.5, 0.5, x_offset, y_offset);
+  for (int y = 0; y < options.height; ++y)
+    for (int x = 0; x < options.width; ++x) {
+      SampleState state{Rng::for_pixel(x, y, scene.render.seed), 0};
+      const Vec3f expected(integrator.li(camera.ray(x + x_offset, y + y_offset), state));
+      const std::size_t i = 3 * (std::size_t(y) * options.width + x);
+      ASSERT_EQ(image.rgb[i], expected.x) << x << "," << y;
+      ASSERT_EQ(image.rgb[i + 1], expected.y) << x << "," << y;
+      ASSERT_EQ(image.rgb[i + 2], expected.z) << x << "," << y;
+    }
 }
 
 TEST(Render, Overrides_SetSizeAndSamples) {

@@ -87,18 +87,20 @@ FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_h
   first.x1 = std::min(full_width, wx0 + w + 1);
   first.y1 = std::min(full_height, wy0 + h + 1);
   first.values.resize(std::size_t(first.x1 - first.x0) * std::size_t(first.y1 - first.y0));
+  first.shown.resize(first.values.size());
+  // The displayed values are computed in the same parallel rows (not in a serial pass after).
   for_rows(first.y1 - first.y0, counters, nullptr, [&](int row, Counters& c) {
     const int y = first.y0 + row;
     for (int x = first.x0; x < first.x1; ++x) {
       SampleState state{Rng::for_pixel(x, y, seed), 0};
-      first.values[first.index(x, y)] = sample(x + 0.5, y + 0.5, state);
+      const Color value = sample(x + 0.5, y + 0.5, state);
+      first.values[first.index(x, y)] = value;
+      first.shown[first.index(x, y)] = display(value);
       c.rays += state.rays;
       ++c.samples;
     }
     if (row_done && y >= wy0 && y < wy0 + h) row_done();
   });
-  first.shown.resize(first.values.size());
-  std::transform(first.values.begin(), first.values.end(), first.shown.begin(), display);
   return first;
 }
 

@@ -135,8 +135,11 @@ Color Integrator::light_term(const Vec3& n, const Vec3& v, const Vec3& l, const 
                              const Material& m, const Color& c) const {
   const double nl = dot(n, l);
   const Vec3 r = 2 * nl * n - l;
-  const double highlight =
-      m.specular > 0 ? m.specular * std::pow(std::max(0.0, dot(r, v)), m.shininess) : 0;
+  // pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
+  const double rv = dot(r, v);
+  const double highlight = m.specular > 0 && (rv > 0 || !(m.shininess > 0))
+                               ? m.specular * std::pow(std::max(0.0, rv), m.shininess)
+                               : 0;
   return mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
 }
 

@@ -144,34 +144,39 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
 
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = process_cpu_seconds();
-  tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
-                    [&](const auto& range) {
-                      std::uint64_t& counter = rays.local();
-                      for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
-                        for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
-                          if (options.cancel && options.cancel->load(std::memory_order_relaxed))
-                            return;
-                          const int y1 = std::min(rect.y1, rect.y0 + (ty + 1) * kTileSize);
-                          const int x1 = std::min(rect.x1, rect.x0 + (tx + 1) * kTileSize);
-                          for (int y = rect.y0 + ty * kTileSize; y < y1; ++y) {
-                            for (int x = rect.x0 + tx * kTileSize; x < x1; ++x) {
-                              SampleState state{Rng::for_pixel(x, y, seed), 0};
-                              Color sum{0, 0, 0};
-                              for (int k = 0; k < spp; ++k) {
-                                double ox, oy;
-                                const double jx = spp > 1 ? state.rng.uniform() : 0.5;
-                                const double jy = spp > 1 ? state.rng.uniform() : 0.5;
-                                sample_offset(k, spp, jx, jy, ox, oy);
-                                sum += integrator.li(camera.ray(x + ox, y + oy), state);
-                              }
-                              image.set(x - rect.x0, y - rect.y0, Vec3f(sum / double(spp)));
-                              counter += state.rays;
-                            }
-                          }
-                          progress.advance();
-                        }
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1), [&](const auto& range) {
+        std::uint64_t& counter = rays.local();
+        for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
+          for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+            if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
+            const int y1 = std::min(rect.y1, rect.y0 + (ty + 1) * kTileSize);
+            const int x1 = std::min(rect.x1, rect.x0 + (tx + 1) * kTileSize);
+            for (int y = rect.y0 + ty * kTileSize; y < y1; ++y) {
+              for (int x = rect.x0 + tx * kTileSize; x < x1; ++x) {
+                SampleState state{Rng::for_pixel(x, y, seed), 0};
+                if (spp == 1) {  // the centre, as sample_offset gives for n = 1
+                  image.set(x - rect.x0, y - rect.y0,
+                            Vec3f(integrator.li(camera.ray(x + 0.5, y + 0.5), state)));
+                  counter += state.rays;
+                  continue;
+                }
+                Color sum{0, 0, 0};
+                for (int k = 0; k < spp; ++k) {
+                  double ox, oy;
+                  const double jx = spp > 1 ? state.rng.uniform() : 0.5;
+                  const double jy = spp > 1 ? state.rng.uniform() : 0.5;
+                  sample_offset(k, spp, jx, jy, ox, oy);
+                  sum += integrator.li(camera.ray(x + ox, y + oy), state);
+                }
+                image.set(x - rect.x0, y - rect.y0, Vec3f(sum / double(spp)));
+                counter += state.rays;
+              }
+            }
+            progress.advance();
+          }
+        }
+      });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu_seconds = process_cpu_seconds() - cpu_start;

@@ -28,8 +28,10 @@ void ObjectSet::build(std::span<const Object> objects) {
     return;
   }
   boxes_.clear();
+  // One object per leaf: its own box is the last test before its shape's (a leaf of four tested
+  // each object's shape on a hit of the leaf's box; docs/performance-render.md, round 5).
   BvhBuildConfig config;
-  config.max_leaf_size = 4;
+  config.max_leaf_size = 1;
   bvh_ = build_bvh(boxes, centres, config);
 }
 
