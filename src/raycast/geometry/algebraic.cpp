@@ -98,9 +98,17 @@ Vec3 polished_point(const Algebraic& s, const Ray& ray, const LocalHit& hit, lon
   }
   long double t = t0;
   if ((flo < 0) != (fhi < 0)) {
-    for (int k = 0; k < kExtendedBisections; ++k) {
-      const long double m = 0.5L * (lo + hi);
-      if (m <= lo || m >= hi) break;  // lo and hi are adjacent: no step can shrink the bracket
+    // Regula falsi with the Illinois correction (the end kept twice in a row has its value
+    // halved), and a bisection whenever two such steps in a row have not halved the bracket:
+    // superlinear on a simple root, never slower than bisection by more than a factor 3.
+    int kept = 0;  // +1: lo kept by the last step, -1: hi kept
+    int since_halved = 0;
+    long double width_before = hi - lo;
+    for (int k = 0; k < 3 * kExtendedBisections; ++k) {
+      const long double mid = 0.5L * (lo + hi);
+      if (mid <= lo || mid >= hi) break;  // lo and hi are adjacent: no step can shrink the bracket
+      long double m = lo - flo * (hi - lo) / (fhi - flo);
+      if (since_halved >= 2 || !(m > lo && m < hi)) m = mid;
       const long double fm = f(m);
       if (fm == 0) {
         lo = hi = m;
@@ -109,8 +117,19 @@ Vec3 polished_point(const Algebraic& s, const Ray& ray, const LocalHit& hit, lon
       if ((fm < 0) == (flo < 0)) {
         lo = m;
         flo = fm;
+        if (kept == -1) fhi *= 0.5L;
+        kept = -1;
       } else {
         hi = m;
+        fhi = fm;
+        if (kept == 1) flo *= 0.5L;
+        kept = 1;
+      }
+      if (hi - lo <= 0.5L * width_before) {
+        width_before = hi - lo;
+        since_halved = 0;
+      } else {
+        ++since_halved;
       }
     }
     t = 0.5L * (lo + hi);
