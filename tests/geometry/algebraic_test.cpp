@@ -301,6 +301,49 @@ TEST(Algebraic, GrazingSphere_NoMissJustInside) {
   }
 }
 
+// occluded takes a short cut (a certain sign change of f between tmin, plus the largest root
+// error, and tmax proves a hit); it must answer exactly as intersect does: on random segments
+// through the heart and two linked tori (degree 8), closed and open, and on shadow rays leaving a
+// hit on the surface itself (which must not see their own surface).
+TEST(Algebraic, Occluded_AgreesWithIntersectOnSegmentsAndShadowRays) {
+  const char* kTori =
+      "((x^2 + y^2 + z^2 + 0.84)^2 - 4*(x^2 + y^2)) * "
+      "(((x-1)^2 + y^2 + z^2 + 0.84)^2 - 4*((x-1)^2 + z^2))";
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  int hits = 0, shadow_cases = 0;
+  for (const bool open : {false, true}) {
+    for (const auto& [text, box] : {std::pair{kHeart, Aabb{{-1.5, -1, -1.5}, {1.5, 1, 1.5}}},
+                                    std::pair{kTori, Aabb{{-1.5, -1.5, -1.5}, {2.5, 1.5, 1.5}}}}) {
+      const Algebraic s = make_algebraic(text, box, open);
+      for (int i = 0; i < 1500; ++i) {
+        const Vec3 o{3 * u(rng), 3 * u(rng), 3 * u(rng)};
+        const Vec3 target{1.2 * u(rng), 0.8 * u(rng), 1.2 * u(rng)};
+        Ray r{o, target - o};
+        r.tmin = unit(rng) < 0.3 ? 0 : 0.6 * unit(rng);
+        r.tmax = unit(rng) < 0.3 ? kInfinity : r.tmin + 2 * unit(rng);
+        LocalHit h;
+        const bool hit = intersect(s, r, h);
+        hits += hit;
+        ASSERT_EQ(occluded(s, r), hit) << "open " << open << " ray " << i;
+        if (!hit || h.part != 0) continue;
+        // A shadow ray from the hit towards a random light, as the integrator spawns it (tmin 0
+        // at a point on the surface).
+        const Vec3 p = r.at(h.t);
+        const Vec3 light{4 * u(rng), 4 * u(rng), 4 * u(rng)};
+        for (const double tmax : {1.0, 0.5, 0.01}) {
+          const Ray sr{p, light - p, 0, tmax};
+          LocalHit sh;
+          ASSERT_EQ(occluded(s, sr), intersect(s, sr, sh)) << "open " << open << " shadow " << i;
+          ++shadow_cases;
+        }
+      }
+    }
+  }
+  EXPECT_GT(hits, 1000);
+  EXPECT_GT(shadow_cases, 3000);
+}
+
 TEST(Algebraic, MakeAlgebraic_RejectsBadInput) {
   EXPECT_THROW(make_algebraic("x^2 - 1", Aabb{{0, 0, 0}, {0, 1, 1}}), std::invalid_argument);
   EXPECT_THROW(make_algebraic("2 + 3", kUnitBox), ExpressionError);

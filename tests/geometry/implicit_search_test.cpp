@@ -188,3 +188,46 @@ TEST(ImplicitSearch, NearDoubleRootsAtTrigExtremum_AllFoundNoneInvented) {
 
 }  // namespace
 }  // namespace raycast
+
+namespace raycast {
+namespace {
+
+// occluded searches as intersect does but skips refining the root it finds: on random segments
+// (tmin and tmax inside the box) through the gyroid, the seed's sin/cos surface and a thin sphere
+// shell, open and closed, and on shadow rays leaving their hits, it must answer as intersect.
+TEST(ImplicitSearch, Occluded_AgreesWithIntersectOnSegmentsAndShadowRays) {
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  int hits = 0, shadows = 0;
+  for (const char* f : {"sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)",
+                        "(2 - cos(x)) * cos(z) + (y + sin(x)) * sin(z) + cos(x + z)",
+                        "(x^2 + y^2 + z^2 - 4)^2 - 1e-6"}) {
+    for (const bool open : {true, false}) {
+      const Implicit s = make_implicit(f, Aabb{{-3, -3, -3}, {3, 3, 3}}, open);
+      for (int i = 0; i < 300; ++i) {
+        const Vec3 o{5 * u(rng), 5 * u(rng), 5 * u(rng)};
+        const Vec3 target{2 * u(rng), 2 * u(rng), 2 * u(rng)};
+        Ray r{o, target - o};
+        r.tmin = unit(rng) < 0.3 ? 0 : 0.8 * unit(rng);
+        r.tmax = unit(rng) < 0.3 ? kInfinity : r.tmin + 0.5 * unit(rng);
+        LocalHit h;
+        const bool hit = intersect(s, r, h);
+        hits += hit;
+        ASSERT_EQ(occluded(s, r), hit) << f << " ray " << i;
+        if (!hit) continue;
+        const Vec3 p = r.at(h.t), light{6 * u(rng), 6 * u(rng), 6 * u(rng)};
+        for (const double tmax : {1.0, 0.1, 0.01}) {
+          const Ray sr{p + 1e-9 * (light - p), light - p, 0, tmax};
+          LocalHit sh;
+          ASSERT_EQ(occluded(s, sr), intersect(s, sr, sh)) << f << " shadow " << i;
+          ++shadows;
+        }
+      }
+    }
+  }
+  EXPECT_GT(hits, 600);
+  EXPECT_GT(shadows, 1800);
+}
+
+}  // namespace
+}  // namespace raycast

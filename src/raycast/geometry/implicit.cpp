@@ -60,13 +60,18 @@ double refine(const Implicit& s, const Ray& ray, double a, double b, double fa, 
   return x;
 }
 
+// What find_roots looks for: every root, the first one, or whether there is any (the search
+// stops at the first sign change without refining it: roots[0] is then only within its piece).
+enum class Want { kAll, kFirst, kAny };
+
 // The roots of f along the ray in [lo, hi], in increasing order, into roots (at most max_roots);
-// with first_only the search stops at the first. Returns the count. A piece is split in
+// see Want. Returns the count. A piece is split in
 // kFormulaLanes parts evaluated in one pass (run_lanes); parts whose inclusion excludes 0 are
 // dropped, the others kept in order on a stack, each settled by its ends' signs once f is
 // monotone on it (or it is too small to split) and split again otherwise.
-int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool first_only,
-               double* roots, int max_roots) {
+int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want want, double* roots,
+               int max_roots) {
+  const bool first_only = want != Want::kAll;
   constexpr int W = kFormulaLanes;
   struct Piece {
     double a, b;
@@ -133,7 +138,7 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, bool fir
     } else if (std::isnan(fa) || std::isnan(fb) || negative(fa) == negative(fb)) {
       return false;
     } else {
-      t = refine(s, ray, a, b, fa, fb);
+      t = want == Want::kAny ? a : refine(s, ray, a, b, fa, fb);
     }
     if (count == 0 || t > roots[count - 1]) roots[count++] = t;
     return first_only;
@@ -166,38 +171,43 @@ double evaluate(const Implicit& s, const Vec3& p) { return run<double>(s.f, p.x,
 
 Aabb bounds(const Implicit& s) { return s.box; }
 
-bool intersect(const Implicit& s, const Ray& ray, LocalHit& hit) {
+namespace {
+
+// intersect, and occluded when hit is null (the same answer: the same pieces searched in the same
+// order, only the root's refinement skipped).
+bool first_hit(const Implicit& s, const Ray& ray, LocalHit* hit) {
   BoxChord c;
   if (!box_chord(s.box, ray, c)) return false;
   const double lo = std::max(c.t0, ray.tmin), hi = std::min(c.t1, ray.tmax);
   if (!(lo <= hi)) return false;
   const bool closed = !s.open;
   if (closed && lo == c.t0 && negative(f_at(s, ray, c.t0))) {
-    hit = LocalHit{c.t0, -1, kFacePart + c.face0, 0, 0};
+    if (hit) *hit = LocalHit{c.t0, -1, kFacePart + c.face0, 0, 0};
     return true;
   }
   double t;
-  if (find_roots(s, ray, lo, hi, true, &t, 1) == 1) {
-    hit = LocalHit{t, -1, kCurvedPart, 0, 0};
+  if (find_roots(s, ray, lo, hi, hit ? Want::kFirst : Want::kAny, &t, 1) == 1) {
+    if (hit) *hit = LocalHit{t, -1, kCurvedPart, 0, 0};
     return true;
   }
   if (closed && hi == c.t1 && negative(f_at(s, ray, c.t1))) {
-    hit = LocalHit{c.t1, -1, kFacePart + c.face1, 0, 0};
+    if (hit) *hit = LocalHit{c.t1, -1, kFacePart + c.face1, 0, 0};
     return true;
   }
   return false;
 }
 
-bool occluded(const Implicit& s, const Ray& ray) {
-  LocalHit h;
-  return intersect(s, ray, h);
-}
+}  // namespace
+
+bool intersect(const Implicit& s, const Ray& ray, LocalHit& hit) { return first_hit(s, ray, &hit); }
+
+bool occluded(const Implicit& s, const Ray& ray) { return first_hit(s, ray, nullptr); }
 
 void spans(const Implicit& s, const Ray& ray, SpanList& out) {
   BoxChord c;
   if (!box_chord(s.box, ray, c)) return;
   double roots[kMaxImplicitRoots], errors[kMaxImplicitRoots] = {};
-  const int n = find_roots(s, ray, c.t0, c.t1, false, roots, kMaxImplicitRoots);
+  const int n = find_roots(s, ray, c.t0, c.t1, Want::kAll, roots, kMaxImplicitRoots);
   chord_spans(
       c, roots, errors, n, !s.open, [&](double t) { return negative(f_at(s, ray, t)); }, out);
 }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "math/bernstein.h"
 #include "math/float_error.h"
 
 namespace raycast {
@@ -148,6 +149,70 @@ int roots_in(const Polynomial& p, double lo, double hi, double* out) {
   return count;
 }
 
+// The Bernstein isolation gives up (and the derivative sequence decides) past this many halvings
+// of the interval, or this many halvings in all per degree.
+constexpr int kBernsteinMaxDepth = 12;
+constexpr int kBernsteinSplitsPerDegree = 4;
+
+// The roots of p in [lo, hi] (lo < hi) when Descartes' rule of signs on the Bernstein form of
+// halvings of [lo, hi] settles every piece: none in a piece whose coefficients allow no sign
+// change; exactly one, simple, where they allow one and the piece's ends have certain opposite
+// signs (refined as above). -1 when a piece stays unsettled within the caps (roots closer than
+// the caps resolve, a multiple root, a root at an end or at a halving point): the caller then
+// runs the derivative sequence on the whole interval, so those cases keep its behaviour.
+int bernstein_roots(const Polynomial& p, double lo, double hi, double* out) {
+  const int n = p.degree;
+  const double w = (hi - lo) * (1 + 4 * kMachineEpsilon);  // covers [lo, hi] despite rounding
+  struct Piece {
+    double a, b;
+    int depth;
+    BernsteinForm f;
+  };
+  Piece stack[kBernsteinMaxDepth + 2];  // depth first, left halves first: one right half per level
+  int top = 0, count = 0, splits = 0;
+  stack[0] = {lo, lo + w, 0, bernstein_form(p, lo, w)};
+  while (top >= 0) {
+    Piece& piece = stack[top];
+    const BernsteinForm& f = piece.f;
+    const int changes = max_sign_changes(f);
+    if (changes == 0) {
+      --top;
+      continue;
+    }
+    const double f0 = f.b[0], fn = f.b[n];
+    if (changes == 1 && std::abs(f0) > f.e[0] && std::abs(fn) > f.e[n]) {
+      if (!same_sign(f0, fn)) {
+        if (count == n) return -1;
+        double t = refine_root(p, piece.a, piece.b, f0, fn);
+        if (t > hi) {
+          // The piece reaches past hi by the rounding of w: the root counts if p(hi) is within
+          // its rounding of 0 or already has the far end's sign.
+          double err;
+          const double fh = evaluate(p, hi, err);
+          if (std::abs(fh) > err && same_sign(fh, f0)) return count;
+          t = hi;
+        }
+        if (count == 0 || t > out[count - 1]) out[count++] = t;
+      }
+      --top;
+      continue;
+    }
+    if (piece.depth >= kBernsteinMaxDepth || ++splits > kBernsteinSplitsPerDegree * n) return -1;
+    // The right half replaces the piece, the left one goes on top of it.
+    const double a = piece.a, m = 0.5 * (a + piece.b);
+    const int depth = piece.depth + 1;
+    Piece& left = stack[top + 1];
+    bernstein_halves(f, left.f, piece.f);
+    piece.a = m;
+    piece.depth = depth;
+    left.a = a;
+    left.b = m;
+    left.depth = depth;
+    ++top;
+  }
+  return count;
+}
+
 // Fujiwara's bound on the magnitude of every complex root, 2 max |c_{n-i} / c_n|^(1/i) (the
 // constant term's ratio halved), rounded up to powers of two so that no pow() is needed.
 double root_bound(const Polynomial& p) {
@@ -214,8 +279,8 @@ int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots)
     lo = scale2(lo, -se);
     hi = scale2(hi, -se);
   }
-  if (certainly_no_root(p, lo, hi)) return 0;
-  const int n = roots_in(p, lo, hi, roots);
+  int n = p.degree >= 3 && lo < hi ? bernstein_roots(p, lo, hi, roots) : -1;
+  if (n < 0) n = certainly_no_root(p, lo, hi) ? 0 : roots_in(p, lo, hi, roots);
   for (int i = 0; i < n; ++i) roots[i] = scale2(roots[i], se);
   return n;
 }
