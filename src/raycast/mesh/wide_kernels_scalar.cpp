@@ -1,5 +1,6 @@
 // The portable mesh kernels: plain C++ lanes (any architecture; the reference the SIMD paths
 // are tested against).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -92,6 +93,7 @@ inline V8 select(M8 m, V8 a, V8 b) {
 }  // namespace raycast::kernels_scalar
 
 #define RAYCAST_KERNEL_NS kernels_scalar
+#include "mesh/packet_traverse.inl"
 #include "mesh/wide_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 

@@ -1,4 +1,5 @@
 // The SSE4.2 mesh kernels: eight lanes as two 4-wide registers.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -51,6 +52,7 @@ inline V8 select(M8 m, V8 x, V8 y) {
 }  // namespace raycast::kernels_sse4
 
 #define RAYCAST_KERNEL_NS kernels_sse4
+#include "mesh/packet_traverse.inl"
 #include "mesh/wide_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 

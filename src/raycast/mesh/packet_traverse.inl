@@ -1,0 +1,331 @@
+// The packet traversal of up to eight rays (MeshKernels::closest8), written once and compiled once
+// per instruction set: a mesh/wide_kernels_<isa>.cpp file includes it right after
+// mesh/wide_traverse.inl (same lane type V8, same namespace, and it calls that file's single-ray
+// traversal for the rays it does not trace as a packet).
+//
+// Inner nodes are tested once for the whole packet, against the interval bounds of its rays
+// (least and greatest origin and inverse direction per axis over the active lanes): a child that
+// any lane's own slab test would enter passes this test (below), so the packet visits every leaf
+// each of its rays would. In a leaf, every lane does the single-ray triangle test on its own ray
+// with its own nearest hit so far, so a lane's hit is bit for bit the single ray's (the nearest hit
+// is the least t, ties to the least triangle index, whatever the visiting order).
+
+namespace raycast::RAYCAST_KERNEL_NS {
+
+// Per-lane constants of the watertight triangle test, and the packet's interval bounds.
+struct PacketData {
+  V8 o[3], inv[3];  // per lane, for the single-ray slab test
+  M8 positive[3];   // 1/d >= 0 (the same in every lane)
+  int kx, ky, kz;
+  V8 sx, sy, sz, okx, oky, okz, tmin;
+  // Interval bounds per axis: the origin bound that gives the least entry (o_near) and the
+  // greatest exit (o_far), the least and greatest 1/d, byte offsets of the near and far planes.
+  V8 o_near[3], o_far[3], inv_lo[3], inv_hi[3];
+  int near_off[3], far_off[3];
+  V8 tmin_lo;  // least tmin
+  // Each lane's watertight constants, for the leaves tested one ray at a time.
+  alignas(32) float lane_s[3][8], lane_ok[3][8], lane_tmin[8];
+};
+
+// Fills `p` for the rays of `mask`; false when they cannot go as one packet: another axis
+// permutation of the watertight test, a direction sign that differs between lanes, or a ray that
+// is not finite.
+inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
+  alignas(32) float o[3][8], inv[3][8];
+  float* sx = p.lane_s[0];
+  float* sy = p.lane_s[1];
+  float* sz = p.lane_s[2];
+  float(&ok)[3][8] = p.lane_ok;
+  float* tmin = p.lane_tmin;
+  const int first = __builtin_ctz(mask);
+  float olo[3], ohi[3], ilo[3], ihi[3], tmin_lo = rays[first].tmin;
+  for (int a = 0; a < 3; ++a) {
+    olo[a] = ohi[a] = (&rays[first].o.x)[a];
+    ilo[a] = kInfinityF;
+    ihi[a] = -kInfinityF;
+  }
+  for (int l = 0; l < 8; ++l) {
+    const bool active = mask >> l & 1;
+    const MeshRay& r = rays[active ? l : first];  // idle lanes copy an active ray
+    const float* ro = &r.o.x;
+    const float* rd = &r.d.x;
+    const WatertightRay w = make_watertight_ray(r.o, r.d);
+    if (l > 0 && (w.kx != p.kx || w.ky != p.ky || w.kz != p.kz)) return false;
+    p.kx = w.kx;
+    p.ky = w.ky;
+    p.kz = w.kz;
+    sx[l] = w.sx;
+    sy[l] = w.sy;
+    sz[l] = w.sz;
+    ok[0][l] = ro[w.kx];
+    ok[1][l] = ro[w.ky];
+    ok[2][l] = ro[w.kz];
+    tmin[l] = r.tmin;
+    for (int a = 0; a < 3; ++a) {
+      float da = rd[a];
+      if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
+      o[a][l] = ro[a];
+      inv[a][l] = 1.0f / da;  // as the single-ray test computes it
+    }
+    if (!active) continue;
+    if (!(std::abs(r.tmin) <= kInfinityF) || std::isnan(r.tmax)) return false;
+    tmin_lo = std::min(tmin_lo, r.tmin);
+    for (int a = 0; a < 3; ++a) {
+      if (!(std::abs(ro[a]) < kInfinityF) || !(std::abs(rd[a]) < kInfinityF)) return false;
+      olo[a] = std::min(olo[a], ro[a]);
+      ohi[a] = std::max(ohi[a], ro[a]);
+      ilo[a] = std::min(ilo[a], inv[a][l]);
+      ihi[a] = std::max(ihi[a], inv[a][l]);
+    }
+  }
+  for (int a = 0; a < 3; ++a) {
+    if ((ilo[a] < 0) != (ihi[a] < 0)) return false;  // lanes disagree on the near plane
+    const bool positive = ilo[a] >= 0;
+    // Entry (plane - o) * inv is least for the greatest origin when 1/d > 0, the least origin
+    // when 1/d < 0; the exit is greatest for the opposite bound.
+    p.o_near[a] = splat(positive ? ohi[a] : olo[a]);
+    p.o_far[a] = splat(positive ? olo[a] : ohi[a]);
+    p.o[a] = load8(o[a]);
+    p.inv[a] = load8(inv[a]);
+    p.positive[a] = cmp_ge(p.inv[a], splat(0.0f));
+    p.inv_lo[a] = splat(ilo[a]);
+    p.inv_hi[a] = splat(ihi[a]);
+    p.near_off[a] = a * 2 * kNodeWidth + (positive ? 0 : kNodeWidth);
+    p.far_off[a] = a * 2 * kNodeWidth + (positive ? kNodeWidth : 0);
+  }
+  p.tmin_lo = splat(tmin_lo);
+  p.sx = load8(sx), p.sy = load8(sy), p.sz = load8(sz);
+  p.okx = load8(ok[0]), p.oky = load8(ok[1]), p.okz = load8(ok[2]);
+  p.tmin = load8(tmin);
+  return true;
+}
+
+// The packet's slab test of the eight children: the children that some lane may enter before
+// `reach` (the greatest nearest hit so far over the lanes), and a lower bound of every lane's
+// entry distance. Conservative with rounding: a lane's entry is round(round(plane - o) * inv),
+// and rounding is monotonic, so putting the interval's extreme origin in the subtraction and
+// taking the least of the two products with the extreme inverses (the product is monotonic in
+// 1/d, whose sign all lanes share) bounds it from below; the exit likewise from above, and the
+// widening of the exit is monotonic too.
+inline int packet_node(const WideNode& n, const PacketData& p, V8 reach, V8& tnear) {
+  const std::uint8_t* q = n.q[0];
+  V8 near[3], far[3];
+  for (int a = 0; a < 3; ++a) {
+    const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
+    const V8 dn = (o + load8_u8(q + p.near_off[a]) * s) - p.o_near[a];
+    const V8 df = (o + load8_u8(q + p.far_off[a]) * s) - p.o_far[a];
+    near[a] = vmin(dn * p.inv_lo[a], dn * p.inv_hi[a]);
+    far[a] = vmax(df * p.inv_lo[a], df * p.inv_hi[a]);
+  }
+  tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin_lo));
+  const V8 f = vmin(vmin(far[0], far[1]), far[2]);
+  const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
+  return bits(cmp_le(tnear, vmin(f * widen, reach))) & n.used;
+}
+
+// Child c of a node against every lane: the single-ray slab test of that child, lane by lane
+// (the planes dequantised as the node tests do: origin + q * scale, one rounding each).
+inline int packet_child(const WideNode& n, int c, const PacketData& p, V8 tmax) {
+  V8 near[3], far[3];
+  for (int a = 0; a < 3; ++a) {
+    const float s = node_scale(n.exponent[a]);
+    const V8 lo = (splat(n.origin[a] + float(n.q[2 * a][c]) * s) - p.o[a]) * p.inv[a];
+    const V8 hi = (splat(n.origin[a] + float(n.q[2 * a + 1][c]) * s) - p.o[a]) * p.inv[a];
+    near[a] = select(p.positive[a], lo, hi);
+    far[a] = select(p.positive[a], hi, lo);
+  }
+  const V8 tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
+  const V8 f = vmin(vmin(far[0], far[1]), far[2]);
+  const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
+  return bits(cmp_le(tnear, vmin(f * widen, tmax)));
+}
+
+// Triangle `lane` of group g against every lane's ray: the watertight test of intersect_pair.
+inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData& p, V8 tmax, V8& t,
+                           V8& v, V8& w, V8& det) {
+  const V8 a_kz = splat(g.v[0][p.kz][lane]) - p.okz;
+  const V8 b_kz = splat(g.v[1][p.kz][lane]) - p.okz;
+  const V8 c_kz = splat(g.v[2][p.kz][lane]) - p.okz;
+  const V8 ax = (splat(g.v[0][p.kx][lane]) - p.okx) - p.sx * a_kz;
+  const V8 ay = (splat(g.v[0][p.ky][lane]) - p.oky) - p.sy * a_kz;
+  const V8 bx = (splat(g.v[1][p.kx][lane]) - p.okx) - p.sx * b_kz;
+  const V8 by = (splat(g.v[1][p.ky][lane]) - p.oky) - p.sy * b_kz;
+  const V8 cx = (splat(g.v[2][p.kx][lane]) - p.okx) - p.sx * c_kz;
+  const V8 cy = (splat(g.v[2][p.ky][lane]) - p.oky) - p.sy * c_kz;
+  V8 u = cx * by - cy * bx;
+  v = ax * cy - ay * cx;
+  w = bx * ay - by * ax;
+  const V8 zero = splat(0.0f);
+  const int zero_mask = bits(mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero)));
+  if (zero_mask) {
+    alignas(32) float f[6][8], uu[8], vv[8], ww[8];
+    store8(f[0], ax), store8(f[1], ay), store8(f[2], bx);
+    store8(f[3], by), store8(f[4], cx), store8(f[5], cy);
+    store8(uu, u), store8(vv, v), store8(ww, w);
+    for (int l = 0; l < 8; ++l) {
+      if (!(zero_mask >> l & 1)) continue;
+      const double dax = f[0][l], day = f[1][l], dbx = f[2][l], dby = f[3][l], dcx = f[4][l],
+                   dcy = f[5][l];
+      uu[l] = static_cast<float>(dcx * dby - dcy * dbx);
+      vv[l] = static_cast<float>(dax * dcy - day * dcx);
+      ww[l] = static_cast<float>(dbx * day - dby * dax);
+    }
+    u = load8(uu);
+    v = load8(vv);
+    w = load8(ww);
+  }
+  const auto pos = mand(mand(cmp_ge(u, zero), cmp_ge(v, zero)), cmp_ge(w, zero));
+  const auto neg = mand(mand(cmp_le(u, zero), cmp_le(v, zero)), cmp_le(w, zero));
+  det = (u + v) + w;
+  const auto same_sign = mand(mor(pos, neg), cmp_ne(det, zero));
+  if (!bits(same_sign)) return 0;
+  const V8 az = p.sz * a_kz, bz = p.sz * b_kz, cz = p.sz * c_kz;
+  const V8 ts = (u * az + v * bz) + w * cz;
+  t = ts / det;
+  return bits(mand(same_sign, mand(cmp_ge(t, p.tmin), cmp_le(t, tmax))));
+}
+
+// Keeps a lane's hit when it is nearer than its nearest so far, or as near with a smaller
+// triangle index (the single-ray rule).
+inline void keep_hit(int l, const MeshBvhHit& h, float* tmax_s, MeshBvhHit* hits, int& found) {
+  if (h.t < tmax_s[l] ||
+      (h.t == tmax_s[l] && (!(found >> l & 1) || h.triangle < hits[l].triangle))) {
+    tmax_s[l] = h.t;
+    hits[l] = h;
+    found |= 1 << l;
+  }
+}
+
+// A leaf's triangles one at a time against the lanes (the better order when many lanes enter it).
+inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
+                             const PacketData& p, int lanes, float* tmax_s, MeshBvhHit* hits,
+                             int& found) {
+  for (std::uint32_t gi = first; gi < end; ++gi) {
+    const TriangleGroup& g = bvh.groups[gi];
+    for (int k = 0; k < 4; ++k) {
+      if (g.id[k] == kNoTriangle) continue;
+      V8 t, v, w, det;
+      int m = packet_triangle(g, k, p, load8(tmax_s), t, v, w, det) & lanes;
+      if (!m) continue;
+      alignas(32) float tl[8], vl[8], wl[8], dl[8];
+      store8(tl, t), store8(vl, v), store8(wl, w), store8(dl, det);
+      while (m) {
+        const int l = __builtin_ctz(m);
+        m &= m - 1;
+        keep_hit(l,
+                 MeshBvhHit{tl[l], vl[l] / dl[l], wl[l] / dl[l], g.id[k], g.source[k], gi,
+                            static_cast<std::uint32_t>(k)},
+                 tmax_s, hits, found);
+      }
+    }
+  }
+}
+
+// A leaf's groups two at a time against one lane after another: the single-ray leaf test (the
+// better order when few lanes enter the leaf).
+inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
+                         const PacketData& p, int lanes, float* tmax_s, MeshBvhHit* hits,
+                         int& found) {
+  RayData r;  // only the triangle test's members are set
+  r.kx = p.kx;
+  r.ky = p.ky;
+  r.kz = p.kz;
+  PairResult res;
+  for (; lanes; lanes &= lanes - 1) {
+    const int l = __builtin_ctz(lanes);
+    r.sx = splat(p.lane_s[0][l]);
+    r.sy = splat(p.lane_s[1][l]);
+    r.sz = splat(p.lane_s[2][l]);
+    r.okx = splat(p.lane_ok[0][l]);
+    r.oky = splat(p.lane_ok[1][l]);
+    r.okz = splat(p.lane_ok[2][l]);
+    r.tmin = splat(p.lane_tmin[l]);
+    for (std::uint32_t gi = first; gi < end; gi += 2) {
+      const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
+      int m = intersect_pair(bvh.groups[gi], g1, r, splat(tmax_s[l]), res);
+      while (m) {
+        const int i = __builtin_ctz(m);
+        m &= m - 1;
+        const std::uint32_t g = gi + (i >> 2);
+        keep_hit(l,
+                 MeshBvhHit{res.t[i], res.v[i] / res.det[i], res.w[i] / res.det[i],
+                            bvh.groups[g].id[i & 3], bvh.groups[g].source[i & 3], g,
+                            static_cast<std::uint32_t>(i & 3)},
+                 tmax_s, hits, found);
+      }
+    }
+  }
+}
+
+// The nearest hit of each ray of `mask` (bit l: rays[l] is traced); returns the lanes that hit.
+int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+             PacketEntry* stack, TraversalEntry* single_stack) {
+  mask &= 0xFF;
+  if (bvh.empty() || !mask) return 0;
+  PacketData p;
+  if (!prepare_packet(rays, mask, p)) {  // not one packet: one ray at a time
+    int found = 0;
+    for (int l = 0; l < 8; ++l)
+      if ((mask >> l & 1) &&
+          traverse<Query::kNearest>(bvh, rays[l], &hits[l], nullptr, single_stack))
+        found |= 1 << l;
+    return found;
+  }
+  alignas(32) float tmax_s[8];
+  for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? rays[l].tmax : -kInfinityF;
+  V8 tmax = load8(tmax_s);
+  int found = 0;
+  int top = 0;
+  std::uint32_t ref = bvh.root;
+  int lanes = mask;
+  for (;;) {
+    if (!(ref & kLeafBit)) {
+      const WideNode& node = bvh.nodes[ref];
+      float reach_s = -kInfinityF;
+      for (int l = lanes; l; l &= l - 1) reach_s = std::max(reach_s, tmax_s[__builtin_ctz(l)]);
+      V8 tn;
+      int m = packet_node(node, p, splat(reach_s), tn);
+      if (m) {
+        // The lanes of each child the packet may enter, nearest child (by the packet's bound)
+        // popped first.
+        alignas(32) float tnl[8];
+        store8(tnl, tn);
+        const int base = top;
+        while (m) {
+          const int c = __builtin_ctz(m);
+          m &= m - 1;
+          const int lm = packet_child(node, c, p, tmax) & lanes;
+          if (!lm) continue;
+          prefetch_children(bvh, node, 1 << c);
+          const PacketEntry e{node.child[c], tnl[c], static_cast<std::uint32_t>(lm)};
+          int j = top++;
+          while (j > base && stack[j - 1].tnear < e.tnear) {
+            stack[j] = stack[j - 1];
+            --j;
+          }
+          stack[j] = e;
+        }
+      }
+    } else {
+      const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
+      if (__builtin_popcount(lanes) * int((end - first + 1) / 2) < 4 * int(end - first)) {
+        leaf_by_lane(bvh, first, end, p, lanes, tmax_s, hits, found);
+      } else {
+        leaf_by_triangle(bvh, first, end, p, lanes, tmax_s, hits, found);
+      }
+      tmax = load8(tmax_s);
+    }
+    // Pop; an entry keeps the lanes whose nearest hit so far is not before its entry bound.
+    for (;;) {
+      if (top == 0) return found;
+      const PacketEntry& e = stack[--top];
+      lanes = bits(cmp_ge(tmax, splat(e.tnear))) & static_cast<int>(e.lanes);
+      if (lanes) {
+        ref = e.ref;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace raycast::RAYCAST_KERNEL_NS
