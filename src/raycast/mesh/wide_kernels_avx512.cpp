@@ -108,8 +108,9 @@ inline int intersect_node16(const WideNode& n, const NodeRay16& r, V8 tmin, V8 t
 
 #define RAYCAST_KERNEL_NODE16 1
 #define RAYCAST_KERNEL_NS kernels_avx512
-#include "mesh/packet_traverse.inl"
 #include "mesh/wide_traverse.inl"
+// After the single-ray traversal, which it uses.
+#include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 #undef RAYCAST_KERNEL_NODE16
 

@@ -93,8 +93,9 @@ inline V8 select(M8 m, V8 a, V8 b) {
 }  // namespace raycast::kernels_scalar
 
 #define RAYCAST_KERNEL_NS kernels_scalar
-#include "mesh/packet_traverse.inl"
 #include "mesh/wide_traverse.inl"
+// After the single-ray traversal, which it uses.
+#include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 
 namespace raycast {

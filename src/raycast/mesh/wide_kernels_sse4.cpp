@@ -52,8 +52,9 @@ inline V8 select(M8 m, V8 x, V8 y) {
 }  // namespace raycast::kernels_sse4
 
 #define RAYCAST_KERNEL_NS kernels_sse4
-#include "mesh/packet_traverse.inl"
 #include "mesh/wide_traverse.inl"
+// After the single-ray traversal, which it uses.
+#include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 
 #pragma GCC pop_options
