@@ -16,88 +16,104 @@ namespace raycast::RAYCAST_KERNEL_NS {
 struct PacketData {
   V8 o[3], inv[3];  // per lane, for the single-ray slab test
   M8 positive[3];   // 1/d >= 0 (the same in every lane)
-  int kx, ky, kz;
-  V8 sx, sy, sz, okx, oky, okz, tmin;
+  V8 tmin;
   // Interval bounds per axis: the origin bound that gives the least entry (o_near) and the
   // greatest exit (o_far), the least and greatest 1/d, byte offsets of the near and far planes.
   V8 o_near[3], o_far[3], inv_lo[3], inv_hi[3];
   int near_off[3], far_off[3];
   V8 tmin_lo;  // least tmin
-  // Each lane's watertight constants, for the leaves tested one ray at a time.
+  // The watertight test's constants, set by prepare_leaves when the packet reaches its first
+  // leaf (most packets of primary rays miss the mesh and never do): each lane's, and as lanes
+  // when every lane has the same axis permutation (`shared`).
+  bool leaves_ready = false, shared = false;
+  int lane_k[3][8];
   alignas(32) float lane_s[3][8], lane_ok[3][8], lane_tmin[8];
+  int kx, ky, kz;
+  V8 sx, sy, sz, okx, oky, okz;
 };
 
-// Fills `p` for the rays of `mask`; false when they cannot go as one packet: another axis
-// permutation of the watertight test, a direction sign that differs between lanes, or a ray that
-// is not finite.
+// Fills `p` for the rays of `mask`; false when they cannot go as one packet: a direction sign
+// that differs between lanes, or a ray that is not finite. Idle lanes copy an active ray, so the
+// bounds over all eight lanes are those over the active ones.
 inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
-  alignas(32) float o[3][8], inv[3][8];
-  float* sx = p.lane_s[0];
-  float* sy = p.lane_s[1];
-  float* sz = p.lane_s[2];
-  float(&ok)[3][8] = p.lane_ok;
-  float* tmin = p.lane_tmin;
+  alignas(32) float f[8][8];  // ox, oy, oz, dx, dy, dz, tmin, tmax of each lane
   const int first = __builtin_ctz(mask);
-  float olo[3], ohi[3], ilo[3], ihi[3], tmin_lo = rays[first].tmin;
-  for (int a = 0; a < 3; ++a) {
-    olo[a] = ohi[a] = (&rays[first].o.x)[a];
-    ilo[a] = kInfinityF;
-    ihi[a] = -kInfinityF;
-  }
   for (int l = 0; l < 8; ++l) {
-    const bool active = mask >> l & 1;
-    const MeshRay& r = rays[active ? l : first];  // idle lanes copy an active ray
-    const float* ro = &r.o.x;
-    const float* rd = &r.d.x;
-    const WatertightRay w = make_watertight_ray(r.o, r.d);
-    if (l > 0 && (w.kx != p.kx || w.ky != p.ky || w.kz != p.kz)) return false;
-    p.kx = w.kx;
-    p.ky = w.ky;
-    p.kz = w.kz;
-    sx[l] = w.sx;
-    sy[l] = w.sy;
-    sz[l] = w.sz;
-    ok[0][l] = ro[w.kx];
-    ok[1][l] = ro[w.ky];
-    ok[2][l] = ro[w.kz];
-    tmin[l] = r.tmin;
-    for (int a = 0; a < 3; ++a) {
-      float da = rd[a];
-      if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
-      o[a][l] = ro[a];
-      inv[a][l] = 1.0f / da;  // as the single-ray test computes it
-    }
-    if (!active) continue;
-    if (!(std::abs(r.tmin) <= kInfinityF) || std::isnan(r.tmax)) return false;
-    tmin_lo = std::min(tmin_lo, r.tmin);
-    for (int a = 0; a < 3; ++a) {
-      if (!(std::abs(ro[a]) < kInfinityF) || !(std::abs(rd[a]) < kInfinityF)) return false;
-      olo[a] = std::min(olo[a], ro[a]);
-      ohi[a] = std::max(ohi[a], ro[a]);
-      ilo[a] = std::min(ilo[a], inv[a][l]);
-      ihi[a] = std::max(ihi[a], inv[a][l]);
-    }
+    const MeshRay& r = rays[(mask >> l & 1) ? l : first];
+    f[0][l] = r.o.x, f[1][l] = r.o.y, f[2][l] = r.o.z;
+    f[3][l] = r.d.x, f[4][l] = r.d.y, f[5][l] = r.d.z;
+    f[6][l] = r.tmin, f[7][l] = r.tmax;
   }
+  const V8 zero = splat(0.0f);
+  int finite = bits(cmp_eq(load8(f[6]), load8(f[6]))) & bits(cmp_eq(load8(f[7]), load8(f[7])));
+  for (int k = 0; k < 6; ++k) finite &= bits(cmp_eq(load8(f[k]) - load8(f[k]), zero));
+  if (finite != 0xFF) return false;
   for (int a = 0; a < 3; ++a) {
-    if ((ilo[a] < 0) != (ihi[a] < 0)) return false;  // lanes disagree on the near plane
-    const bool positive = ilo[a] >= 0;
+    // Tiny components are replaced as the single-ray test does (rare: fixed lane by lane).
+    const V8 d = load8(f[3 + a]);
+    const int small =
+        ~(bits(cmp_ge(d, splat(kMinDirection))) | bits(cmp_le(d, splat(-kMinDirection)))) & 0xFF;
+    for (int m = small; m; m &= m - 1) {
+      float& da = f[3 + a][__builtin_ctz(m)];
+      da = da < 0 ? -kMinDirection : kMinDirection;
+    }
+    p.o[a] = load8(f[a]);
+    p.inv[a] = splat(1.0f) / load8(f[3 + a]);  // as the single-ray test computes it
+    alignas(32) float inv[8];
+    store8(inv, p.inv[a]);
+    float olo = f[a][0], ohi = olo, ilo = inv[0], ihi = ilo;
+    for (int l = 1; l < 8; ++l) {
+      olo = std::min(olo, f[a][l]);
+      ohi = std::max(ohi, f[a][l]);
+      ilo = std::min(ilo, inv[l]);
+      ihi = std::max(ihi, inv[l]);
+    }
+    if ((ilo < 0) != (ihi < 0)) return false;  // lanes disagree on the near plane
+    const bool positive = ilo >= 0;
     // Entry (plane - o) * inv is least for the greatest origin when 1/d > 0, the least origin
     // when 1/d < 0; the exit is greatest for the opposite bound.
-    p.o_near[a] = splat(positive ? ohi[a] : olo[a]);
-    p.o_far[a] = splat(positive ? olo[a] : ohi[a]);
-    p.o[a] = load8(o[a]);
-    p.inv[a] = load8(inv[a]);
-    p.positive[a] = cmp_ge(p.inv[a], splat(0.0f));
-    p.inv_lo[a] = splat(ilo[a]);
-    p.inv_hi[a] = splat(ihi[a]);
+    p.o_near[a] = splat(positive ? ohi : olo);
+    p.o_far[a] = splat(positive ? olo : ohi);
+    p.positive[a] = cmp_ge(p.inv[a], zero);
+    p.inv_lo[a] = splat(ilo);
+    p.inv_hi[a] = splat(ihi);
     p.near_off[a] = a * 2 * kNodeWidth + (positive ? 0 : kNodeWidth);
     p.far_off[a] = a * 2 * kNodeWidth + (positive ? kNodeWidth : 0);
   }
+  float tmin_lo = f[6][0];
+  for (int l = 1; l < 8; ++l) tmin_lo = std::min(tmin_lo, f[6][l]);
+  for (int l = 0; l < 8; ++l) p.lane_tmin[l] = f[6][l];
   p.tmin_lo = splat(tmin_lo);
-  p.sx = load8(sx), p.sy = load8(sy), p.sz = load8(sz);
-  p.okx = load8(ok[0]), p.oky = load8(ok[1]), p.okz = load8(ok[2]);
-  p.tmin = load8(tmin);
+  p.tmin = load8(f[6]);
   return true;
+}
+
+// The watertight test's constants of every lane (idle lanes copy an active ray).
+inline void prepare_leaves(const MeshRay* rays, int mask, PacketData& p) {
+  const int first = __builtin_ctz(mask);
+  p.shared = true;
+  for (int l = 0; l < 8; ++l) {
+    const MeshRay& r = rays[(mask >> l & 1) ? l : first];
+    const float* ro = &r.o.x;
+    const WatertightRay w = make_watertight_ray(r.o, r.d);
+    p.lane_k[0][l] = w.kx;
+    p.lane_k[1][l] = w.ky;
+    p.lane_k[2][l] = w.kz;
+    p.shared =
+        p.shared && w.kx == p.lane_k[0][0] && w.ky == p.lane_k[1][0] && w.kz == p.lane_k[2][0];
+    p.lane_s[0][l] = w.sx;
+    p.lane_s[1][l] = w.sy;
+    p.lane_s[2][l] = w.sz;
+    p.lane_ok[0][l] = ro[w.kx];
+    p.lane_ok[1][l] = ro[w.ky];
+    p.lane_ok[2][l] = ro[w.kz];
+  }
+  p.kx = p.lane_k[0][0];
+  p.ky = p.lane_k[1][0];
+  p.kz = p.lane_k[2][0];
+  p.sx = load8(p.lane_s[0]), p.sy = load8(p.lane_s[1]), p.sz = load8(p.lane_s[2]);
+  p.okx = load8(p.lane_ok[0]), p.oky = load8(p.lane_ok[1]), p.okz = load8(p.lane_ok[2]);
+  p.leaves_ready = true;
 }
 
 // The packet's slab test of the eight children: the children that some lane may enter before
@@ -196,7 +212,8 @@ inline void keep_hit(int l, const MeshBvhHit& h, float* tmax_s, MeshBvhHit* hits
   }
 }
 
-// A leaf's triangles one at a time against the lanes (the better order when many lanes enter it).
+// A leaf's triangles one at a time against the lanes (the better order when many lanes enter
+// it; the lanes must share the axis permutation).
 inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
                              const PacketData& p, int lanes, float* tmax_s, MeshBvhHit* hits,
                              int& found) {
@@ -227,12 +244,12 @@ inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t 
                          const PacketData& p, int lanes, float* tmax_s, MeshBvhHit* hits,
                          int& found) {
   RayData r;  // only the triangle test's members are set
-  r.kx = p.kx;
-  r.ky = p.ky;
-  r.kz = p.kz;
   PairResult res;
   for (; lanes; lanes &= lanes - 1) {
     const int l = __builtin_ctz(lanes);
+    r.kx = p.lane_k[0][l];
+    r.ky = p.lane_k[1][l];
+    r.kz = p.lane_k[2][l];
     r.sx = splat(p.lane_s[0][l]);
     r.sy = splat(p.lane_s[1][l]);
     r.sz = splat(p.lane_s[2][l]);
@@ -308,7 +325,9 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
       }
     } else {
       const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
-      if (__builtin_popcount(lanes) * int((end - first + 1) / 2) < 4 * int(end - first)) {
+      if (!p.leaves_ready) prepare_leaves(rays, mask, p);
+      if (!p.shared ||
+          __builtin_popcount(lanes) * int((end - first + 1) / 2) < 4 * int(end - first)) {
         leaf_by_lane(bvh, first, end, p, lanes, tmax_s, hits, found);
       } else {
         leaf_by_triangle(bvh, first, end, p, lanes, tmax_s, hits, found);
