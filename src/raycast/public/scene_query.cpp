@@ -49,11 +49,6 @@ void for_each_ray(const RayArray& rays, F&& f) {
 }
 
 // The public record of a nearest-hit query's result.
-// Calls f(i, ray, found, hit) with the nearest hit of every ray of the array, in parallel,
-// coherent runs as packets.
-template <class F>
-void for_each_ray_nearest(const raycast::Scene& scene, const RayArray& rays, F&& f);
-
 SurfaceInfo answer(const raycast::Scene& scene, const raycast::Ray& ray, bool found,
                    const raycast::SceneHit& hit) {
   SurfaceInfo out;
@@ -92,6 +87,8 @@ void nearest_hits(const raycast::Scene& scene, std::size_t begin, std::size_t en
   for (std::size_t k = 0; k < n; ++k) f(begin + k, rays[k], found[k] != 0, hits[k]);
 }
 
+// Calls f(i, ray, found, hit) with the nearest hit of every ray of the array, in parallel,
+// coherent runs as packets.
 template <class F>
 void for_each_ray_nearest(const raycast::Scene& scene, const RayArray& rays, F&& f) {
   if (rays.count > 0 && rays.data == nullptr) throw std::invalid_argument("RayArray: data is null");
