@@ -15,7 +15,6 @@ namespace raycast::RAYCAST_KERNEL_NS {
 // Per-lane constants of the watertight triangle test, and the packet's interval bounds.
 struct PacketData {
   V8 o[3], inv[3];  // per lane, for the single-ray slab test
-  M8 positive[3];   // 1/d >= 0 (the same in every lane)
   V8 tmin;
   // Interval bounds per axis: the origin bound that gives the least entry (o_near) and the
   // greatest exit (o_far), the least and greatest 1/d, byte offsets of the near and far planes.
@@ -74,7 +73,6 @@ inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
     // when 1/d < 0; the exit is greatest for the opposite bound.
     p.o_near[a] = splat(positive ? ohi : olo);
     p.o_far[a] = splat(positive ? olo : ohi);
-    p.positive[a] = cmp_ge(p.inv[a], zero);
     p.inv_lo[a] = splat(ilo);
     p.inv_hi[a] = splat(ihi);
     p.near_off[a] = a * 2 * kNodeWidth + (positive ? 0 : kNodeWidth);
@@ -123,13 +121,24 @@ inline void prepare_leaves(const MeshRay* rays, int mask, PacketData& p) {
 // taking the least of the two products with the extreme inverses (the product is monotonic in
 // 1/d, whose sign all lanes share) bounds it from below; the exit likewise from above, and the
 // widening of the exit is monotonic too.
-inline int packet_node(const WideNode& n, const PacketData& p, V8 reach, V8& tnear) {
+// The dequantised near and far planes of a node's children (near: the plane a ray with the
+// packet's direction signs enters by), kept for the per-lane tests.
+struct NodePlanes {
+  alignas(32) float near[3][8];
+  alignas(32) float far[3][8];
+};
+
+inline int packet_node(const WideNode& n, const PacketData& p, V8 reach, V8& tnear,
+                       NodePlanes& planes) {
   const std::uint8_t* q = n.q[0];
   V8 near[3], far[3];
   for (int a = 0; a < 3; ++a) {
     const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
-    const V8 dn = (o + load8_u8(q + p.near_off[a]) * s) - p.o_near[a];
-    const V8 df = (o + load8_u8(q + p.far_off[a]) * s) - p.o_far[a];
+    const V8 pn = o + load8_u8(q + p.near_off[a]) * s, pf = o + load8_u8(q + p.far_off[a]) * s;
+    store8(planes.near[a], pn);
+    store8(planes.far[a], pf);
+    const V8 dn = pn - p.o_near[a];
+    const V8 df = pf - p.o_far[a];
     near[a] = vmin(dn * p.inv_lo[a], dn * p.inv_hi[a]);
     far[a] = vmax(df * p.inv_lo[a], df * p.inv_hi[a]);
   }
@@ -139,16 +148,14 @@ inline int packet_node(const WideNode& n, const PacketData& p, V8 reach, V8& tne
   return bits(cmp_le(tnear, vmin(f * widen, reach))) & n.used;
 }
 
-// Child c of a node against every lane: the single-ray slab test of that child, lane by lane
-// (the planes dequantised as the node tests do: origin + q * scale, one rounding each).
-inline int packet_child(const WideNode& n, int c, const PacketData& p, V8 tmax) {
+// Child c of a node against every lane: the single-ray slab test of that child, lane by lane, on
+// the planes packet_node dequantised (as every node test does: origin + q * scale). All lanes
+// share the direction signs, so the near plane is the same for every lane.
+inline int packet_child(const NodePlanes& n, int c, const PacketData& p, V8 tmax) {
   V8 near[3], far[3];
   for (int a = 0; a < 3; ++a) {
-    const float s = node_scale(n.exponent[a]);
-    const V8 lo = (splat(n.origin[a] + float(n.q[2 * a][c]) * s) - p.o[a]) * p.inv[a];
-    const V8 hi = (splat(n.origin[a] + float(n.q[2 * a + 1][c]) * s) - p.o[a]) * p.inv[a];
-    near[a] = select(p.positive[a], lo, hi);
-    far[a] = select(p.positive[a], hi, lo);
+    near[a] = (splat(n.near[a][c]) - p.o[a]) * p.inv[a];
+    far[a] = (splat(n.far[a][c]) - p.o[a]) * p.inv[a];
   }
   const V8 tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
   const V8 f = vmin(vmin(far[0], far[1]), far[2]);
@@ -301,7 +308,8 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
       float reach_s = -kInfinityF;
       for (int l = lanes; l; l &= l - 1) reach_s = std::max(reach_s, tmax_s[__builtin_ctz(l)]);
       V8 tn;
-      int m = packet_node(node, p, splat(reach_s), tn);
+      NodePlanes planes;
+      int m = packet_node(node, p, splat(reach_s), tn, planes);
       if (m) {
         // The lanes of each child the packet may enter, nearest child (by the packet's bound)
         // popped first.
@@ -311,7 +319,7 @@ int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits
         while (m) {
           const int c = __builtin_ctz(m);
           m &= m - 1;
-          const int lm = packet_child(node, c, p, tmax) & lanes;
+          const int lm = packet_child(planes, c, p, tmax) & lanes;
           if (!lm) continue;
           prefetch_children(bvh, node, 1 << c);
           const PacketEntry e{node.child[c], tnl[c], static_cast<std::uint32_t>(lm)};
