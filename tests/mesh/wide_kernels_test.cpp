@@ -315,7 +315,8 @@ TEST_P(WideKernels, PacketsWithMixedMasks_EqualSingleRays) {
       const int mask = static_cast<int>(rng() & 0xFF);
       MeshBvhHit hits[8];
       for (MeshBvhHit& h : hits) h.triangle = 12345;  // idle lanes must keep this
-      const int found = k.k.closest8(bvh, rays, mask, hits, k.stack.data());
+      std::vector<PacketEntry> packet_stack(traversal_stack_size(bvh));
+      const int found = k.k.closest8(bvh, rays, mask, hits, packet_stack.data(), k.stack.data());
       EXPECT_EQ(found & ~mask, 0);
       for (int l = 0; l < 8; ++l) {
         if (!(mask >> l & 1)) {

@@ -7,9 +7,11 @@
 #include <cstring>
 #include <istream>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "scene/ray_batch.h"
 #include "scene/scene_error.h"
 
 namespace raycast {
@@ -93,6 +95,21 @@ void answer(const Scene& scene, const Ray& ray, CastMode mode, Answer& a) {
       for (const Crossing& c : a.crossings)
         a.normals.push_back(scene.surface(ray, SceneHit{c.local, c.object}).n);
       break;
+  }
+}
+
+// The nearest hits of rays[begin, end): as answer() one by one, with coherent runs of rays
+// traced as packets (scene/ray_batch.h).
+void answer_nearest(const Scene& scene, const std::vector<Ray>& rays, std::size_t begin,
+                    std::size_t end, std::vector<Answer>& answers) {
+  const std::size_t n = end - begin;
+  std::vector<SceneHit> hits(n);
+  std::vector<std::uint8_t> found(n);
+  intersect_batch(scene, std::span(rays).subspan(begin, n), hits, found);
+  for (std::size_t k = 0; k < n; ++k) {
+    Answer& a = answers[begin + k];
+    a.hit = hits[k];
+    if (found[k]) a.surface = scene.surface(rays[begin + k], a.hit);
   }
 }
 
@@ -196,6 +213,8 @@ void run_cast(const Scene& scene, std::istream& in, std::ostream& out, const Cas
     answers.resize(rays.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 256),
                       [&](const tbb::blocked_range<std::size_t>& range) {
+                        if (opt.mode == CastMode::kNearest)
+                          return answer_nearest(scene, rays, range.begin(), range.end(), answers);
                         for (std::size_t i = range.begin(); i != range.end(); ++i)
                           answer(scene, rays[i], opt.mode, answers[i]);
                       });

@@ -321,7 +321,15 @@ bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit) 
 int intersect_closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits) {
   if (bvh.empty()) return 0;
   Stack stack(bvh);
-  return kernels().closest8(bvh, rays, mask, hits, stack.data());
+  constexpr std::size_t kLocal = 128 * (kNodeWidth - 1) + 2;  // depth 128 without the heap
+  std::vector<PacketEntry> heap;
+  PacketEntry local[kLocal];
+  PacketEntry* packet_stack = local;
+  if (traversal_stack_size(bvh) > kLocal) {
+    heap.resize(traversal_stack_size(bvh));
+    packet_stack = heap.data();
+  }
+  return kernels().closest8(bvh, rays, mask, hits, packet_stack, stack.data());
 }
 
 bool intersect_any(const MeshBvh& bvh, const MeshRay& ray) {

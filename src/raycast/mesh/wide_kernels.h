@@ -16,6 +16,14 @@ struct TraversalEntry {
   float tnear;
 };
 
+/// One packet traversal stack entry: a child reference, a lower bound of the entry distances of
+/// its rays, and the lanes (rays) that enter it.
+struct PacketEntry {
+  std::uint32_t ref;
+  float tnear;
+  std::uint32_t lanes;
+};
+
 /// The three queries of one ISA. `stack` has room for traversal_stack_size(bvh) entries. The
 /// results are bit for bit the same on every ISA (same float operations in the same order, no
 /// fused multiply-add): only the order of `every`'s hits may differ.
@@ -26,10 +34,11 @@ struct MeshKernels {
   void (*every)(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
                 TraversalEntry* stack);
   /// The nearest hits of up to eight rays as one packet (rays[l] for each bit l of mask), the
-  /// same bit for bit as `closest` on each; returns the mask of the rays that hit. Rays that do
-  /// not share the watertight test's axis permutation are traced one by one.
+  /// same bit for bit as `closest` on each; returns the mask of the rays that hit. Rays that
+  /// cannot go as one packet (mesh/packet_traverse.inl) are traced one by one. `stack` and
+  /// `single_stack` each have room for traversal_stack_size(bvh) entries.
   int (*closest8)(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
-                  TraversalEntry* stack);
+                  PacketEntry* stack, TraversalEntry* single_stack);
 };
 
 /// The kernels of `isa`, or nullptr when this build or this CPU lacks it (isa_supported).

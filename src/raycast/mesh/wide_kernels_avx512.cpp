@@ -1,5 +1,6 @@
 // The AVX-512 mesh kernels: eight lanes in one 256-bit register with AVX-512VL, comparisons into
 // mask registers (32 vector registers, no movemask).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -118,6 +119,8 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 #define RAYCAST_KERNEL_NODE16 1
 #define RAYCAST_KERNEL_NS kernels_avx512
 #include "mesh/wide_traverse.inl"
+// After the single-ray traversal, which it uses.
+#include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 #undef RAYCAST_KERNEL_NODE16
 

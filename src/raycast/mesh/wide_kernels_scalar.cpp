@@ -1,5 +1,6 @@
 // The portable mesh kernels: plain C++ lanes (any architecture; the reference the SIMD paths
 // are tested against).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -94,6 +95,8 @@ inline V8 select(M8 m, V8 a, V8 b) {
 
 #define RAYCAST_KERNEL_NS kernels_scalar
 #include "mesh/wide_traverse.inl"
+// After the single-ray traversal, which it uses.
+#include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 
 namespace raycast {

@@ -1,4 +1,5 @@
 // The SSE4.2 mesh kernels: eight lanes as two 4-wide registers.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -53,6 +54,8 @@ inline V8 select(M8 m, V8 x, V8 y) {
 
 #define RAYCAST_KERNEL_NS kernels_sse4
 #include "mesh/wide_traverse.inl"
+// After the single-ray traversal, which it uses.
+#include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 
 #pragma GCC pop_options

@@ -5,8 +5,10 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "public/impl.h"
+#include "scene/ray_batch.h"
 
 namespace raycast::api {
 
@@ -46,10 +48,11 @@ void for_each_ray(const RayArray& rays, F&& f) {
     run(double{});
 }
 
-SurfaceInfo answer(const raycast::Scene& scene, const raycast::Ray& ray) {
+// The public record of a nearest-hit query's result.
+SurfaceInfo answer(const raycast::Scene& scene, const raycast::Ray& ray, bool found,
+                   const raycast::SceneHit& hit) {
   SurfaceInfo out;
-  raycast::SceneHit hit;
-  if (!scene.intersect(ray, hit)) {
+  if (!found) {
     out.point = out.normal = {kNaN, kNaN, kNaN};
     out.uv = {kNaN, kNaN};
     return out;
@@ -62,6 +65,46 @@ SurfaceInfo answer(const raycast::Scene& scene, const raycast::Ray& ray) {
   out.object = scene.objects[hit.object].entry;
   out.primitive = hit.local.prim;
   return out;
+}
+
+SurfaceInfo answer(const raycast::Scene& scene, const raycast::Ray& ray) {
+  raycast::SceneHit hit;
+  const bool found = scene.intersect(ray, hit);
+  return answer(scene, ray, found, hit);
+}
+
+// The nearest hits of rays [begin, end) of a batch, coherent runs as packets
+// (scene/ray_batch.h): f(i, ray, found, hit) for each.
+template <class RayAt, class F>
+void nearest_hits(const raycast::Scene& scene, std::size_t begin, std::size_t end, RayAt&& ray_at,
+                  F&& f) {
+  const std::size_t n = end - begin;
+  std::vector<raycast::Ray> rays(n);
+  for (std::size_t k = 0; k < n; ++k) rays[k] = ray_at(begin + k);
+  std::vector<raycast::SceneHit> hits(n);
+  std::vector<std::uint8_t> found(n);
+  raycast::intersect_batch(scene, rays, hits, found);
+  for (std::size_t k = 0; k < n; ++k) f(begin + k, rays[k], found[k] != 0, hits[k]);
+}
+
+// Calls f(i, ray, found, hit) with the nearest hit of every ray of the array, in parallel,
+// coherent runs as packets.
+template <class F>
+void for_each_ray_nearest(const raycast::Scene& scene, const RayArray& rays, F&& f) {
+  if (rays.count > 0 && rays.data == nullptr) throw std::invalid_argument("RayArray: data is null");
+  auto run = [&](auto tag) {
+    using T = decltype(tag);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.count, kGrain),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        nearest_hits(
+                            scene, r.begin(), r.end(),
+                            [&](std::size_t i) { return ray_at<T>(rays, i); }, f);
+                      });
+  };
+  if (rays.type == RayArray::Type::kFloat32)
+    run(float{});
+  else
+    run(double{});
 }
 
 }  // namespace
@@ -119,39 +162,43 @@ void Scene::intersect(std::span<const Ray> rays, std::span<SurfaceInfo> out) con
   const raycast::Scene& scene = ready().scene;
   if (out.size() != rays.size())
     throw std::invalid_argument("raycast::Scene::intersect: out must have one entry per ray");
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kGrain),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        out[i] = answer(scene, to_engine(rays[i]));
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, rays.size(), kGrain),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        nearest_hits(
+            scene, r.begin(), r.end(), [&](std::size_t i) { return to_engine(rays[i]); },
+            [&](std::size_t i, const raycast::Ray& ray, bool found, const raycast::SceneHit& hit) {
+              out[i] = answer(scene, ray, found, hit);
+            });
+      });
 }
 
 void Scene::intersect(const RayArray& rays, const HitColumns& out) const {
   const raycast::Scene& scene = ready().scene;
   const bool need_surface = out.point || out.normal || out.uv;
-  for_each_ray(rays, [&](std::size_t i, const raycast::Ray& ray) {
-    raycast::SceneHit hit;
-    const bool found = scene.intersect(ray, hit);
-    if (out.t) out.t[i] = found ? hit.local.t : std::numeric_limits<double>::infinity();
-    if (out.object) out.object[i] = found ? scene.objects[hit.object].entry : kNoObject;
-    if (out.primitive) out.primitive[i] = found ? hit.local.prim : -1;
-    if (!need_surface) return;
-    raycast::SurfaceInfo s;
-    if (found) {
-      s = scene.surface(ray, hit);
-    } else {
-      s.p = s.n = {kNaN, kNaN, kNaN};
-      s.u = s.v = kNaN;
-    }
-    if (out.point)
-      for (int k = 0; k < 3; ++k) out.point[3 * i + k] = s.p[k];
-    if (out.normal)
-      for (int k = 0; k < 3; ++k) out.normal[3 * i + k] = s.n[k];
-    if (out.uv) {
-      out.uv[2 * i] = s.u;
-      out.uv[2 * i + 1] = s.v;
-    }
-  });
+  for_each_ray_nearest(
+      scene, rays,
+      [&](std::size_t i, const raycast::Ray& ray, bool found, const raycast::SceneHit& hit) {
+        if (out.t) out.t[i] = found ? hit.local.t : std::numeric_limits<double>::infinity();
+        if (out.object) out.object[i] = found ? scene.objects[hit.object].entry : kNoObject;
+        if (out.primitive) out.primitive[i] = found ? hit.local.prim : -1;
+        if (!need_surface) return;
+        raycast::SurfaceInfo s;
+        if (found) {
+          s = scene.surface(ray, hit);
+        } else {
+          s.p = s.n = {kNaN, kNaN, kNaN};
+          s.u = s.v = kNaN;
+        }
+        if (out.point)
+          for (int k = 0; k < 3; ++k) out.point[3 * i + k] = s.p[k];
+        if (out.normal)
+          for (int k = 0; k < 3; ++k) out.normal[3 * i + k] = s.n[k];
+        if (out.uv) {
+          out.uv[2 * i] = s.u;
+          out.uv[2 * i + 1] = s.v;
+        }
+      });
 }
 
 void Scene::occluded(std::span<const Ray> rays, std::span<std::uint8_t> out) const {

@@ -1,0 +1,379 @@
+// The packet traversal of up to eight rays (MeshKernels::closest8), written once and compiled once
+// per instruction set: a mesh/wide_kernels_<isa>.cpp file includes it right after
+// mesh/wide_traverse.inl (same lane type V8, same namespace, and it calls that file's single-ray
+// traversal for the rays it does not trace as a packet).
+//
+// Inner nodes are tested once for the whole packet, against the interval bounds of its rays
+// (least and greatest origin and inverse direction per axis over the active lanes): a child that
+// any lane's own slab test would enter passes this test (below), so the packet visits every leaf
+// each of its rays would. In a leaf, every lane does the single-ray triangle test on its own ray
+// with its own nearest hit so far, so a lane's hit is bit for bit the single ray's (the nearest hit
+// is the least t, ties to the least triangle index, whatever the visiting order).
+
+namespace raycast::RAYCAST_KERNEL_NS {
+
+// Per-lane constants of the watertight triangle test, and the packet's interval bounds.
+struct PacketData {
+  V8 o[3], inv[3];  // per lane, for the single-ray slab test
+  V8 tmin;
+  // Interval bounds per axis: the origin bound that gives the least entry (o_near) and the
+  // greatest exit (o_far), the least and greatest 1/d, byte offsets of the near and far planes.
+  V8 o_near[3], o_far[3], inv_lo[3], inv_hi[3];
+  int near_off[3], far_off[3];
+  V8 tmin_lo;  // least tmin
+  // The watertight test's constants, set by prepare_leaves when the packet reaches its first
+  // leaf (most packets of primary rays miss the mesh and never do): each lane's, and as lanes
+  // when every lane has the same axis permutation (`shared`).
+  bool leaves_ready = false, shared = false;
+  int lane_k[3][8];
+  alignas(32) float lane_s[3][8], lane_ok[3][8], lane_tmin[8];
+  int kx, ky, kz;
+  V8 sx, sy, sz, okx, oky, okz;
+};
+
+// Fills `p` for the rays of `mask`; false when they cannot go as one packet: a direction sign
+// that differs between lanes, or a ray that is not finite. Idle lanes copy an active ray, so the
+// bounds over all eight lanes are those over the active ones.
+inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
+  alignas(32) float f[8][8];  // ox, oy, oz, dx, dy, dz, tmin, tmax of each lane
+  const int first = __builtin_ctz(mask);
+  for (int l = 0; l < 8; ++l) {
+    const MeshRay& r = rays[(mask >> l & 1) ? l : first];
+    f[0][l] = r.o.x, f[1][l] = r.o.y, f[2][l] = r.o.z;
+    f[3][l] = r.d.x, f[4][l] = r.d.y, f[5][l] = r.d.z;
+    f[6][l] = r.tmin, f[7][l] = r.tmax;
+  }
+  const V8 zero = splat(0.0f);
+  int finite = bits(cmp_eq(load8(f[6]), load8(f[6]))) & bits(cmp_eq(load8(f[7]), load8(f[7])));
+  for (int k = 0; k < 6; ++k) finite &= bits(cmp_eq(load8(f[k]) - load8(f[k]), zero));
+  if (finite != 0xFF) return false;
+  for (int a = 0; a < 3; ++a) {
+    // Tiny components are replaced as the single-ray test does (rare: fixed lane by lane).
+    const V8 d = load8(f[3 + a]);
+    const int small =
+        ~(bits(cmp_ge(d, splat(kMinDirection))) | bits(cmp_le(d, splat(-kMinDirection)))) & 0xFF;
+    for (int m = small; m; m &= m - 1) {
+      float& da = f[3 + a][__builtin_ctz(m)];
+      da = da < 0 ? -kMinDirection : kMinDirection;
+    }
+    p.o[a] = load8(f[a]);
+    p.inv[a] = splat(1.0f) / load8(f[3 + a]);  // as the single-ray test computes it
+    alignas(32) float inv[8];
+    store8(inv, p.inv[a]);
+    float olo = f[a][0], ohi = olo, ilo = inv[0], ihi = ilo;
+    for (int l = 1; l < 8; ++l) {
+      olo = std::min(olo, f[a][l]);
+      ohi = std::max(ohi, f[a][l]);
+      ilo = std::min(ilo, inv[l]);
+      ihi = std::max(ihi, inv[l]);
+    }
+    if ((ilo < 0) != (ihi < 0)) return false;  // lanes disagree on the near plane
+    const bool positive = ilo >= 0;
+    // Entry (plane - o) * inv is least for the greatest origin when 1/d > 0, the least origin
+    // when 1/d < 0; the exit is greatest for the opposite bound.
+    p.o_near[a] = splat(positive ? ohi : olo);
+    p.o_far[a] = splat(positive ? olo : ohi);
+    p.inv_lo[a] = splat(ilo);
+    p.inv_hi[a] = splat(ihi);
+    p.near_off[a] = a * 2 * kNodeWidth + (positive ? 0 : kNodeWidth);
+    p.far_off[a] = a * 2 * kNodeWidth + (positive ? kNodeWidth : 0);
+  }
+  float tmin_lo = f[6][0];
+  for (int l = 1; l < 8; ++l) tmin_lo = std::min(tmin_lo, f[6][l]);
+  for (int l = 0; l < 8; ++l) p.lane_tmin[l] = f[6][l];
+  p.tmin_lo = splat(tmin_lo);
+  p.tmin = load8(f[6]);
+  return true;
+}
+
+// The watertight test's constants of every lane (idle lanes copy an active ray).
+inline void prepare_leaves(const MeshRay* rays, int mask, PacketData& p) {
+  const int first = __builtin_ctz(mask);
+  p.shared = true;
+  for (int l = 0; l < 8; ++l) {
+    const MeshRay& r = rays[(mask >> l & 1) ? l : first];
+    const float* ro = &r.o.x;
+    const WatertightRay w = make_watertight_ray(r.o, r.d);
+    p.lane_k[0][l] = w.kx;
+    p.lane_k[1][l] = w.ky;
+    p.lane_k[2][l] = w.kz;
+    p.shared =
+        p.shared && w.kx == p.lane_k[0][0] && w.ky == p.lane_k[1][0] && w.kz == p.lane_k[2][0];
+    p.lane_s[0][l] = w.sx;
+    p.lane_s[1][l] = w.sy;
+    p.lane_s[2][l] = w.sz;
+    p.lane_ok[0][l] = ro[w.kx];
+    p.lane_ok[1][l] = ro[w.ky];
+    p.lane_ok[2][l] = ro[w.kz];
+  }
+  p.kx = p.lane_k[0][0];
+  p.ky = p.lane_k[1][0];
+  p.kz = p.lane_k[2][0];
+  p.sx = load8(p.lane_s[0]), p.sy = load8(p.lane_s[1]), p.sz = load8(p.lane_s[2]);
+  p.okx = load8(p.lane_ok[0]), p.oky = load8(p.lane_ok[1]), p.okz = load8(p.lane_ok[2]);
+  p.leaves_ready = true;
+}
+
+// The packet's slab test of the eight children: the children that some lane may enter before
+// `reach` (the greatest nearest hit so far over the lanes), and a lower bound of every lane's
+// entry distance. Conservative with rounding: a lane's entry is round(round(plane - o) * inv),
+// and rounding is monotonic, so putting the interval's extreme origin in the subtraction and
+// taking the least of the two products with the extreme inverses (the product is monotonic in
+// 1/d, whose sign all lanes share) bounds it from below; the exit likewise from above, and the
+// widening of the exit is monotonic too.
+// The near and far planes of a node's children (near: the plane a ray with the
+// packet's direction signs enters by), kept for the per-lane tests.
+struct NodePlanes {
+  alignas(32) float near[3][8];
+  alignas(32) float far[3][8];
+};
+
+// The near and far planes of axis a of a node's eight children, as every node test reads them:
+// float nodes directly, quantised nodes dequantised (origin + q * scale).
+inline void node_planes(const WideNode& n, int a, const PacketData& p, V8& pn, V8& pf) {
+  pn = load8(n.box[0] + p.near_off[a]);
+  pf = load8(n.box[0] + p.far_off[a]);
+}
+
+inline void node_planes(const QuantisedNode& n, int a, const PacketData& p, V8& pn, V8& pf) {
+  const std::uint8_t* q = n.q[0];
+  const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
+  pn = o + load8_u8(q + p.near_off[a]) * s;
+  pf = o + load8_u8(q + p.far_off[a]) * s;
+}
+
+template <class Node>
+inline int packet_node(const Node& n, const PacketData& p, V8 reach, V8& tnear,
+                       NodePlanes& planes) {
+  V8 near[3], far[3];
+  for (int a = 0; a < 3; ++a) {
+    V8 pn, pf;
+    node_planes(n, a, p, pn, pf);
+    store8(planes.near[a], pn);
+    store8(planes.far[a], pf);
+    const V8 dn = pn - p.o_near[a];
+    const V8 df = pf - p.o_far[a];
+    near[a] = vmin(dn * p.inv_lo[a], dn * p.inv_hi[a]);
+    far[a] = vmax(df * p.inv_lo[a], df * p.inv_hi[a]);
+  }
+  tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin_lo));
+  const V8 f = vmin(vmin(far[0], far[1]), far[2]);
+  const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
+  return bits(cmp_le(tnear, vmin(f * widen, reach))) & n.used;
+}
+
+// Child c of a node against every lane: the single-ray slab test of that child, lane by lane, on
+// the planes packet_node read (node_planes: as every node test reads them). All lanes
+// share the direction signs, so the near plane is the same for every lane.
+inline int packet_child(const NodePlanes& n, int c, const PacketData& p, V8 tmax) {
+  V8 near[3], far[3];
+  for (int a = 0; a < 3; ++a) {
+    near[a] = (splat(n.near[a][c]) - p.o[a]) * p.inv[a];
+    far[a] = (splat(n.far[a][c]) - p.o[a]) * p.inv[a];
+  }
+  const V8 tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
+  const V8 f = vmin(vmin(far[0], far[1]), far[2]);
+  const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
+  return bits(cmp_le(tnear, vmin(f * widen, tmax)));
+}
+
+// Triangle `lane` of group g against every lane's ray: the watertight test of intersect_pair.
+inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData& p, V8 tmax, V8& t,
+                           V8& v, V8& w, V8& det) {
+  const V8 a_kz = splat(g.v[0][p.kz][lane]) - p.okz;
+  const V8 b_kz = splat(g.v[1][p.kz][lane]) - p.okz;
+  const V8 c_kz = splat(g.v[2][p.kz][lane]) - p.okz;
+  const V8 ax = (splat(g.v[0][p.kx][lane]) - p.okx) - p.sx * a_kz;
+  const V8 ay = (splat(g.v[0][p.ky][lane]) - p.oky) - p.sy * a_kz;
+  const V8 bx = (splat(g.v[1][p.kx][lane]) - p.okx) - p.sx * b_kz;
+  const V8 by = (splat(g.v[1][p.ky][lane]) - p.oky) - p.sy * b_kz;
+  const V8 cx = (splat(g.v[2][p.kx][lane]) - p.okx) - p.sx * c_kz;
+  const V8 cy = (splat(g.v[2][p.ky][lane]) - p.oky) - p.sy * c_kz;
+  V8 u = cx * by - cy * bx;
+  v = ax * cy - ay * cx;
+  w = bx * ay - by * ax;
+  const V8 zero = splat(0.0f);
+  const int zero_mask = bits(mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero)));
+  if (zero_mask) {
+    alignas(32) float f[6][8], uu[8], vv[8], ww[8];
+    store8(f[0], ax), store8(f[1], ay), store8(f[2], bx);
+    store8(f[3], by), store8(f[4], cx), store8(f[5], cy);
+    store8(uu, u), store8(vv, v), store8(ww, w);
+    for (int l = 0; l < 8; ++l) {
+      if (!(zero_mask >> l & 1)) continue;
+      const double dax = f[0][l], day = f[1][l], dbx = f[2][l], dby = f[3][l], dcx = f[4][l],
+                   dcy = f[5][l];
+      uu[l] = static_cast<float>(dcx * dby - dcy * dbx);
+      vv[l] = static_cast<float>(dax * dcy - day * dcx);
+      ww[l] = static_cast<float>(dbx * day - dby * dax);
+    }
+    u = load8(uu);
+    v = load8(vv);
+    w = load8(ww);
+  }
+  const auto pos = mand(mand(cmp_ge(u, zero), cmp_ge(v, zero)), cmp_ge(w, zero));
+  const auto neg = mand(mand(cmp_le(u, zero), cmp_le(v, zero)), cmp_le(w, zero));
+  det = (u + v) + w;
+  const auto same_sign = mand(mor(pos, neg), cmp_ne(det, zero));
+  if (!bits(same_sign)) return 0;
+  const V8 az = p.sz * a_kz, bz = p.sz * b_kz, cz = p.sz * c_kz;
+  const V8 ts = (u * az + v * bz) + w * cz;
+  t = ts / det;
+  return bits(mand(same_sign, mand(cmp_ge(t, p.tmin), cmp_le(t, tmax))));
+}
+
+// Keeps a lane's hit when it is nearer than its nearest so far, or as near with a smaller
+// triangle index (the single-ray rule).
+inline void keep_hit(int l, const MeshBvhHit& h, float* tmax_s, MeshBvhHit* hits, int& found) {
+  if (h.t < tmax_s[l] ||
+      (h.t == tmax_s[l] && (!(found >> l & 1) || h.triangle < hits[l].triangle))) {
+    tmax_s[l] = h.t;
+    hits[l] = h;
+    found |= 1 << l;
+  }
+}
+
+// A leaf's triangles one at a time against the lanes (the better order when many lanes enter
+// it; the lanes must share the axis permutation).
+inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
+                             const PacketData& p, int lanes, float* tmax_s, MeshBvhHit* hits,
+                             int& found) {
+  for (std::uint32_t gi = first; gi < end; ++gi) {
+    const TriangleGroup& g = bvh.groups[gi];
+    for (int k = 0; k < 4; ++k) {
+      if (g.id[k] == kNoTriangle) continue;
+      V8 t, v, w, det;
+      int m = packet_triangle(g, k, p, load8(tmax_s), t, v, w, det) & lanes;
+      if (!m) continue;
+      alignas(32) float tl[8], vl[8], wl[8], dl[8];
+      store8(tl, t), store8(vl, v), store8(wl, w), store8(dl, det);
+      while (m) {
+        const int l = __builtin_ctz(m);
+        m &= m - 1;
+        keep_hit(l,
+                 MeshBvhHit{tl[l], vl[l] / dl[l], wl[l] / dl[l], g.id[k], g.source[k], gi,
+                            static_cast<std::uint32_t>(k)},
+                 tmax_s, hits, found);
+      }
+    }
+  }
+}
+
+// A leaf's groups two at a time against one lane after another: the single-ray leaf test (the
+// better order when few lanes enter the leaf).
+inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
+                         const PacketData& p, int lanes, float* tmax_s, MeshBvhHit* hits,
+                         int& found) {
+  RayData r;  // only the triangle test's members are set
+  PairResult res;
+  for (; lanes; lanes &= lanes - 1) {
+    const int l = __builtin_ctz(lanes);
+    r.kx = p.lane_k[0][l];
+    r.ky = p.lane_k[1][l];
+    r.kz = p.lane_k[2][l];
+    r.sx = splat(p.lane_s[0][l]);
+    r.sy = splat(p.lane_s[1][l]);
+    r.sz = splat(p.lane_s[2][l]);
+    r.okx = splat(p.lane_ok[0][l]);
+    r.oky = splat(p.lane_ok[1][l]);
+    r.okz = splat(p.lane_ok[2][l]);
+    r.tmin = splat(p.lane_tmin[l]);
+    for (std::uint32_t gi = first; gi < end; gi += 2) {
+      const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
+      int m = intersect_pair(bvh.groups[gi], g1, r, splat(tmax_s[l]), res);
+      while (m) {
+        const int i = __builtin_ctz(m);
+        m &= m - 1;
+        const std::uint32_t g = gi + (i >> 2);
+        keep_hit(l,
+                 MeshBvhHit{res.t[i], res.v[i] / res.det[i], res.w[i] / res.det[i],
+                            bvh.groups[g].id[i & 3], bvh.groups[g].source[i & 3], g,
+                            static_cast<std::uint32_t>(i & 3)},
+                 tmax_s, hits, found);
+      }
+    }
+  }
+}
+
+// The nearest hit of each ray of `mask` (bit l: rays[l] is traced); returns the lanes that hit.
+template <class Node>
+int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+                    PacketEntry* stack, TraversalEntry* single_stack) {
+  mask &= 0xFF;
+  if (bvh.empty() || !mask) return 0;
+  PacketData p;
+  if (!prepare_packet(rays, mask, p)) {  // not one packet: one ray at a time
+    int found = 0;
+    for (int l = 0; l < 8; ++l)
+      if ((mask >> l & 1) &&
+          traverse<Query::kNearest, Node>(bvh, rays[l], &hits[l], nullptr, single_stack))
+        found |= 1 << l;
+    return found;
+  }
+  alignas(32) float tmax_s[8];
+  for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? rays[l].tmax : -kInfinityF;
+  V8 tmax = load8(tmax_s);
+  int found = 0;
+  int top = 0;
+  std::uint32_t ref = bvh.root;
+  int lanes = mask;
+  for (;;) {
+    if (!(ref & kLeafBit)) {
+      const Node& node = node_array<Node>(bvh)[ref];
+      float reach_s = -kInfinityF;
+      for (int l = lanes; l; l &= l - 1) reach_s = std::max(reach_s, tmax_s[__builtin_ctz(l)]);
+      V8 tn;
+      NodePlanes planes;
+      int m = packet_node(node, p, splat(reach_s), tn, planes);
+      if (m) {
+        // The lanes of each child the packet may enter, nearest child (by the packet's bound)
+        // popped first.
+        alignas(32) float tnl[8];
+        store8(tnl, tn);
+        const int base = top;
+        while (m) {
+          const int c = __builtin_ctz(m);
+          m &= m - 1;
+          const int lm = packet_child(planes, c, p, tmax) & lanes;
+          if (!lm) continue;
+          prefetch_children(bvh, node, 1 << c);
+          const PacketEntry e{node.child[c], tnl[c], static_cast<std::uint32_t>(lm)};
+          int j = top++;
+          while (j > base && stack[j - 1].tnear < e.tnear) {
+            stack[j] = stack[j - 1];
+            --j;
+          }
+          stack[j] = e;
+        }
+      }
+    } else {
+      const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
+      if (!p.leaves_ready) prepare_leaves(rays, mask, p);
+      if (!p.shared ||
+          __builtin_popcount(lanes) * int((end - first + 1) / 2) < 4 * int(end - first)) {
+        leaf_by_lane(bvh, first, end, p, lanes, tmax_s, hits, found);
+      } else {
+        leaf_by_triangle(bvh, first, end, p, lanes, tmax_s, hits, found);
+      }
+      tmax = load8(tmax_s);
+    }
+    // Pop; an entry keeps the lanes whose nearest hit so far is not before its entry bound.
+    for (;;) {
+      if (top == 0) return found;
+      const PacketEntry& e = stack[--top];
+      lanes = bits(cmp_ge(tmax, splat(e.tnear))) & static_cast<int>(e.lanes);
+      if (lanes) {
+        ref = e.ref;
+        break;
+      }
+    }
+  }
+}
+
+int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+             PacketEntry* stack, TraversalEntry* single_stack) {
+  return bvh.quantised ? closest8_format<QuantisedNode>(bvh, rays, mask, hits, stack, single_stack)
+                       : closest8_format<WideNode>(bvh, rays, mask, hits, stack, single_stack);
+}
+
+}  // namespace raycast::RAYCAST_KERNEL_NS

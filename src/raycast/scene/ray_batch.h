@@ -1,0 +1,22 @@
+#pragma once
+// Nearest hits of a batch of rays, through the mesh packet kernel where the rays are coherent
+// (docs/performance-mesh.md "Issue 8, fourth session").
+#include <cstdint>
+#include <span>
+
+#include "scene/scene.h"
+
+namespace raycast {
+
+/// Whether rays[0..n) (n <= 8) may go as one packet: the same direction octant, origins within
+/// `extent` / 32 of each other and unit directions within 1/16 of each other on every axis.
+bool coherent_rays(const Ray* rays, int n, double extent);
+
+/// hits[i] and found[i] exactly as `found[i] = scene.intersect(rays[i], hits[i])` from a
+/// default SceneHit gives them. In a scene of one mesh without a transform, each run of eight
+/// coherent rays (coherent_rays) is traced as one packet (mesh/packet_traverse.inl, bit for bit
+/// the single-ray answers); every other ray alone. Serial: callers split big batches.
+void intersect_batch(const Scene& scene, std::span<const Ray> rays, std::span<SceneHit> hits,
+                     std::span<std::uint8_t> found);
+
+}  // namespace raycast
