@@ -130,16 +130,20 @@ struct NodePlanes {
 
 // The near and far planes of axis a of a node's eight children, as every node test reads them:
 // float nodes directly, quantised nodes dequantised (origin + q * scale).
+// near_off[a] / far_off[a] count from the node's first plane row (a * 2 * kNodeWidth, plus
+// kNodeWidth for the hi planes); each read stays inside its own row's array.
+inline int plane_row(int off) { return off / kNodeWidth; }         // 2a (lo) or 2a + 1 (hi)
+inline int plane_half(int off) { return off % (2 * kNodeWidth); }  // 0 (lo) or kNodeWidth (hi)
+
 inline void node_planes(const WideNode& n, int a, const PacketData& p, V8& pn, V8& pf) {
-  pn = load8(n.box[0] + p.near_off[a]);
-  pf = load8(n.box[0] + p.far_off[a]);
+  pn = load8(n.box[a] + plane_half(p.near_off[a]));
+  pf = load8(n.box[a] + plane_half(p.far_off[a]));
 }
 
 inline void node_planes(const QuantisedNode& n, int a, const PacketData& p, V8& pn, V8& pf) {
-  const std::uint8_t* q = n.q[0];
   const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
-  pn = o + load8_u8(q + p.near_off[a]) * s;
-  pf = o + load8_u8(q + p.far_off[a]) * s;
+  pn = o + load8_u8(n.q[plane_row(p.near_off[a])]) * s;
+  pf = o + load8_u8(n.q[plane_row(p.far_off[a])]) * s;
 }
 
 template <class Node>
