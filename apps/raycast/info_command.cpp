@@ -4,8 +4,8 @@
 
 #include <thread>
 
-#include "math/isa.h"
 #include "commands.h"
+#include "math/isa.h"
 #include "scene/loader.h"
 
 namespace raycast::cli {

@@ -17,7 +17,8 @@ struct PacketData {
   V8 o[3], inv[3];  // per lane, for the single-ray slab test
   V8 tmin;
   // Interval bounds per axis: the origin bound that gives the least entry (o_near) and the
-  // greatest exit (o_far), the least and greatest 1/d, byte offsets of the near and far planes.
+  // greatest exit (o_far), the least and greatest 1/d, and which half of an axis's planes
+  // ([lo x 8 | hi x 8]) is near and which far: 0 or kNodeWidth, as in the single-ray test.
   V8 o_near[3], o_far[3], inv_lo[3], inv_hi[3];
   int near_off[3], far_off[3];
   V8 tmin_lo;  // least tmin
@@ -75,8 +76,8 @@ inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
     p.o_far[a] = splat(positive ? olo : ohi);
     p.inv_lo[a] = splat(ilo);
     p.inv_hi[a] = splat(ihi);
-    p.near_off[a] = a * 2 * kNodeWidth + (positive ? 0 : kNodeWidth);
-    p.far_off[a] = a * 2 * kNodeWidth + (positive ? kNodeWidth : 0);
+    p.near_off[a] = positive ? 0 : kNodeWidth;
+    p.far_off[a] = positive ? kNodeWidth : 0;
   }
   float tmin_lo = f[6][0];
   for (int l = 1; l < 8; ++l) tmin_lo = std::min(tmin_lo, f[6][l]);
@@ -130,20 +131,15 @@ struct NodePlanes {
 
 // The near and far planes of axis a of a node's eight children, as every node test reads them:
 // float nodes directly, quantised nodes dequantised (origin + q * scale).
-// near_off[a] / far_off[a] count from the node's first plane row (a * 2 * kNodeWidth, plus
-// kNodeWidth for the hi planes); each read stays inside its own row's array.
-inline int plane_row(int off) { return off / kNodeWidth; }         // 2a (lo) or 2a + 1 (hi)
-inline int plane_half(int off) { return off % (2 * kNodeWidth); }  // 0 (lo) or kNodeWidth (hi)
-
 inline void node_planes(const WideNode& n, int a, const PacketData& p, V8& pn, V8& pf) {
-  pn = load8(n.box[a] + plane_half(p.near_off[a]));
-  pf = load8(n.box[a] + plane_half(p.far_off[a]));
+  pn = load8(n.box[a] + p.near_off[a]);
+  pf = load8(n.box[a] + p.far_off[a]);
 }
 
 inline void node_planes(const QuantisedNode& n, int a, const PacketData& p, V8& pn, V8& pf) {
   const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
-  pn = o + load8_u8(n.q[plane_row(p.near_off[a])]) * s;
-  pf = o + load8_u8(n.q[plane_row(p.far_off[a])]) * s;
+  pn = o + load8_u8(n.q[2 * a + p.near_off[a] / kNodeWidth]) * s;
+  pf = o + load8_u8(n.q[2 * a + p.far_off[a] / kNodeWidth]) * s;
 }
 
 template <class Node>
