@@ -334,8 +334,11 @@ namespace {
 
 MeshRay to_mesh_ray(const Ray& ray, double& scale) { return convert_ray(ray, scale); }
 
-double refine_t(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& o, const Vec3& d,
-                double t_float) {
+namespace {
+
+// refine_t's body, inlined into refine_hit (the call passed five vectors through memory).
+[[gnu::always_inline]] inline double plane_t(const Vec3& v0, const Vec3& v1, const Vec3& v2,
+                                             const Vec3& o, const Vec3& d, double t_float) {
   const Vec3 n = cross(v1 - v0, v2 - v0);
   const double dn = dot(d, n);
   if (dn == 0) return t_float;  // the ray runs in the plane: keep the float test's answer
@@ -343,11 +346,18 @@ double refine_t(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& o, c
   return std::isfinite(t) ? t : t_float;
 }
 
+}  // namespace
+
+double refine_t(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& o, const Vec3& d,
+                double t_float) {
+  return plane_t(v0, v1, v2, o, d, t_float);
+}
+
 namespace {
 
 double refine_hit(const Mesh& m, const MeshBvhHit& h, const Ray& ray, double scale) {
-  return refine_t(Vec3(hit_vertex(m.bvh, h, 0)), Vec3(hit_vertex(m.bvh, h, 1)),
-                  Vec3(hit_vertex(m.bvh, h, 2)), ray.o, ray.d, h.t * scale);
+  return plane_t(Vec3(hit_vertex(m.bvh, h, 0)), Vec3(hit_vertex(m.bvh, h, 1)),
+                 Vec3(hit_vertex(m.bvh, h, 2)), ray.o, ray.d, h.t * scale);
 }
 
 }  // namespace
