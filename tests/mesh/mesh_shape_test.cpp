@@ -1,6 +1,9 @@
 // The mesh as a shape: hits in double, prim numbering, normals, spans, degenerate input.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "geometry/spawn.h"
@@ -69,6 +72,61 @@ TEST(MeshShape, HugeAndTinyDirections_GiveTInUnitsOfD) {
     ASSERT_TRUE(intersect(s, Ray{{0.5, 0.5, -1}, {0, 0, scale}}, h)) << scale;
     EXPECT_NEAR(h.t * scale, 1.0, 1e-12) << scale;
   }
+}
+
+// The float ray's [tmin, tmax] is the double one rounded outwards: the nearest float at or below
+// tmin and at or above tmax (std::nextafter's answer where the cast rounded the wrong way),
+// including zeros, tiny values, values beyond the float range and infinities.
+TEST(MeshShape, ToMeshRay_RoundsTheIntervalOutwards) {
+  const double kMax = std::numeric_limits<float>::max();
+  const double kInf = std::numeric_limits<double>::infinity();
+  std::vector<double> xs{0.0,  -0.0,  1e-50,      -1e-50,      1e-40, -1e-40, 0.1,   -0.1,
+                         1.0,  -1.0,  kMax,       -kMax,       1e39,  -1e39,  1e300, -1e300,
+                         kInf, -kInf, 1.5 * kMax, -1.5 * kMax, 3e-45, -3e-45};
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> mantissa(-1, 1);
+  std::uniform_int_distribution<int> exponent(-160, 140);
+  for (int i = 0; i < 2000; ++i) xs.push_back(std::ldexp(mantissa(rng), exponent(rng)));
+  auto down = [](double x) {
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+  };
+  auto up = [](double x) {
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+  };
+  for (double x : xs) {
+    Ray ray{{0.25, -3, 7}, {1.5, -0.75, 0.5}};  // scale 1: t unchanged
+    ray.tmin = ray.tmax = x;
+    double scale = 0;
+    const MeshRay r = to_mesh_ray(ray, scale);
+    EXPECT_EQ(scale, 1.0);
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(r.tmin), std::bit_cast<std::uint32_t>(down(x))) << x;
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(r.tmax), std::bit_cast<std::uint32_t>(up(x))) << x;
+    EXPECT_LE(static_cast<double>(r.tmin), x);
+    EXPECT_GE(static_cast<double>(r.tmax), x);
+  }
+}
+
+// Directions of every size and sign scale by the power of two that brings the largest component
+// into [1, 2); the scaled direction is exact.
+TEST(MeshShape, ToMeshRay_ScalesDirectionByAPowerOfTwo) {
+  for (double mag : {1e-300, 1e-30, 0.3, 1.0, 1.999, 2.0, 1e30, 1e300, 1.7e308})
+    for (int axis = 0; axis < 3; ++axis)
+      for (double sign : {1.0, -1.0}) {
+        Vec3 d{0.25 * mag, -0.125 * mag, 0.0625 * mag};
+        d[axis] = sign * mag;
+        double scale = 0;
+        const MeshRay r = to_mesh_ray(Ray{{1, 2, 3}, d}, scale);
+        const double m =
+            std::max(std::abs(d.x * scale), std::max(std::abs(d.y * scale), std::abs(d.z * scale)));
+        EXPECT_GE(m, 1.0) << mag;
+        EXPECT_LT(m, 2.0) << mag;
+        EXPECT_EQ(std::ilogb(scale), -std::ilogb(mag)) << mag;
+        EXPECT_EQ(r.d[axis], static_cast<float>(sign * mag * scale)) << mag;
+      }
 }
 
 TEST(MeshShape, PrimIsTheInputIndex_WhenDegenerateTrianglesAreDropped) {

@@ -51,8 +51,14 @@ inline Aabb overlap(const Aabb& a, const Aabb& b) { return {max(a.lo, b.lo), min
 /// unbounded on every axis that an infinite extent can reach.
 Aabb transform_bounds(const Transform& xf, const Aabb& b);
 
-/// 1 / d per component; a zero component gives +-inf, which the slab test expects.
-inline Vec3 reciprocal(const Vec3& d) { return {1.0 / d.x, 1.0 / d.y, 1.0 / d.z}; }
+/// 1 / d per component; a zero component gives +-inf, which the slab test expects. x and y in one
+/// packed division: the same correctly rounded quotients as scalar ones, one division fewer on the
+/// per-ray path (three divsd were 11% of a one-object scene's ray).
+inline Vec3 reciprocal(const Vec3& d) {
+  using V2 = double __attribute__((vector_size(16)));
+  const V2 q = V2{1.0, 1.0} / V2{d.x, d.y};
+  return {q[0], q[1], 1.0 / d.z};
+}
 
 /// Slab test (Kay and Kajiya 1986): the entry is the largest of the per-axis entries, the exit the
 /// smallest of the exits; a hit when entry <= exit and [entry, exit] meets [tmin, tmax]. The near
