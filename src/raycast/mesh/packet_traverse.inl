@@ -15,14 +15,13 @@ namespace raycast::RAYCAST_KERNEL_NS {
 // Per-lane constants of the watertight triangle test, and the packet's interval bounds.
 struct PacketData {
   V8 o[3], inv[3];  // per lane, for the single-ray slab test
-  V8 tmin;          // per lane (the triangle test)
-  V8 node_tmin;     // cull_below(tmin) per lane (the node tests; wide_traverse.inl)
+  V8 tmin;
   // Interval bounds per axis: the origin bound that gives the least entry (o_near) and the
   // greatest exit (o_far), the least and greatest 1/d, and which half of an axis's planes
   // ([lo x 8 | hi x 8]) is near and which far: 0 or kNodeWidth, as in the single-ray test.
   V8 o_near[3], o_far[3], inv_lo[3], inv_hi[3];
   int near_off[3], far_off[3];
-  V8 tmin_lo;  // cull_below(least tmin)
+  V8 tmin_lo;  // least tmin
   // The watertight test's constants, set by prepare_leaves when the packet reaches its first
   // leaf (most packets of primary rays miss the mesh and never do): each lane's, and as lanes
   // when every lane has the same axis permutation (`shared`).
@@ -83,9 +82,8 @@ inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
   float tmin_lo = f[6][0];
   for (int l = 1; l < 8; ++l) tmin_lo = std::min(tmin_lo, f[6][l]);
   for (int l = 0; l < 8; ++l) p.lane_tmin[l] = f[6][l];
-  p.tmin_lo = splat(cull_below(tmin_lo));  // the node tests' bounds (wide_traverse.inl)
+  p.tmin_lo = splat(tmin_lo);
   p.tmin = load8(f[6]);
-  p.node_tmin = cull_below(p.tmin);
   return true;
 }
 
@@ -173,7 +171,7 @@ inline int packet_child(const NodePlanes& n, int c, const PacketData& p, V8 tmax
     near[a] = (splat(n.near[a][c]) - p.o[a]) * p.inv[a];
     far[a] = (splat(n.far[a][c]) - p.o[a]) * p.inv[a];
   }
-  const V8 tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.node_tmin));
+  const V8 tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
   const V8 f = vmin(vmin(far[0], far[1]), far[2]);
   const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
   return bits(cmp_le(tnear, vmin(f * widen, tmax)));
@@ -314,7 +312,7 @@ int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHi
   }
   alignas(32) float tmax_s[8];
   for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? rays[l].tmax : -kInfinityF;
-  V8 tmax = cull_above(load8(tmax_s));  // the node tests' and the stack's bounds per lane
+  V8 tmax = load8(tmax_s);
   int found = 0;
   int top = 0;
   std::uint32_t ref = bvh.root;
@@ -324,7 +322,6 @@ int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHi
       const Node& node = node_array<Node>(bvh)[ref];
       float reach_s = -kInfinityF;
       for (int l = lanes; l; l &= l - 1) reach_s = std::max(reach_s, tmax_s[__builtin_ctz(l)]);
-      reach_s = cull_above(reach_s);
       V8 tn;
       NodePlanes planes;
       int m = packet_node(node, p, splat(reach_s), tn, planes);
@@ -358,7 +355,7 @@ int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHi
       } else {
         leaf_by_triangle(bvh, first, end, p, lanes, tmax_s, hits, found);
       }
-      tmax = cull_above(load8(tmax_s));
+      tmax = load8(tmax_s);
     }
     // Pop; an entry keeps the lanes whose nearest hit so far is not before its entry bound.
     for (;;) {

@@ -25,9 +25,8 @@ struct PacketEntry {
 };
 
 /// The three queries of one ISA. `stack` has room for traversal_stack_size(bvh) entries. The
-/// results are bit for bit the same on every ISA (the triangle test's float operations in the
-/// same order, no fused multiply-add; a node test that never culls a box the others visit): only
-/// the order of `every`'s hits may differ.
+/// results are bit for bit the same on every ISA (same float operations in the same order, no
+/// fused multiply-add): only the order of `every`'s hits may differ.
 struct MeshKernels {
   Isa isa;
   bool (*closest)(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit, TraversalEntry* stack);

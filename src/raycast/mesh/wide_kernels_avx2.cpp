@@ -12,8 +12,7 @@
 #include <immintrin.h>
 
 // Everything below (and nothing in the headers above) is compiled for AVX2. No FMA contraction:
-// the build is ISO C++ (-ffp-contract=off), and the kernels must match the other ISAs bit for bit;
-// the only fma is the node test's explicit one, made conservative (mesh/wide_traverse.inl).
+// the build is ISO C++ (-ffp-contract=off), and the kernels must match the other ISAs bit for bit.
 #pragma GCC push_options
 #pragma GCC target("avx2,fma,bmi,bmi2,popcnt")
 
@@ -50,18 +49,14 @@ inline M8 mand(M8 x, M8 y) { return {_mm256_and_ps(x.m, y.m)}; }
 inline M8 mor(M8 x, M8 y) { return {_mm256_or_ps(x.m, y.m)}; }
 inline int bits(M8 m) { return _mm256_movemask_ps(m.m); }
 inline V8 select(M8 m, V8 x, V8 y) { return {_mm256_blendv_ps(y.v, x.v, m.m)}; }
-// Only the node test uses it (FusedSlab in mesh/wide_traverse.inl).
-inline V8 fmadd(V8 a, V8 b, V8 c) { return {_mm256_fmadd_ps(a.v, b.v, c.v)}; }
 
 }  // namespace raycast::kernels_avx2
 
-#define RAYCAST_KERNEL_FMA 1
 #define RAYCAST_KERNEL_NS kernels_avx2
 #include "mesh/wide_traverse.inl"
 // After the single-ray traversal, which it uses.
 #include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
-#undef RAYCAST_KERNEL_FMA
 
 #pragma GCC pop_options
 

@@ -13,8 +13,7 @@
 #include <immintrin.h>
 
 // Everything below (and nothing in the headers above) is compiled for AVX-512 (F, VL, DQ, BW).
-// No FMA contraction: the build is ISO C++ (-ffp-contract=off); the only fma is the node test's
-// explicit one, made conservative (mesh/wide_traverse.inl, FusedSlab).
+// No FMA contraction: the build is ISO C++ (-ffp-contract=off).
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512vl,avx512dq,avx512bw,avx2,fma,bmi,bmi2,popcnt")
 // GCC 12's 512-bit intrinsics start from _mm512_undefined_ps(), which -Wmaybe-uninitialized
@@ -64,13 +63,9 @@ struct NodeRay16 {
   __m512 o[3];      // the origin, broadcast
   __m512 mul[3];    // [1/d x 8 | -1/d x 8]
   __m512i perm[3];  // puts the near planes in lanes 0-7: the halves swapped when 1/d < 0
-  // The fused test (FusedSlab in mesh/wide_traverse.inl):
-  __m512 bias[3];     // [-q x 8 | q x 8], q = fl(o * 1/d)
-  __m512 scale;       // [1 - 16u x 8 | 1 + 16u x 8]
-  __m512 neg_margin;  // -A
 };
 
-inline NodeRay16 prepare_node16(const float* o, const float* inv, const float* q, float margin) {
+inline NodeRay16 prepare_node16(const float* o, const float* inv) {
   NodeRay16 r;
   const __m512i same = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   const __m512i swap = _mm512_setr_epi32(8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7);
@@ -78,10 +73,7 @@ inline NodeRay16 prepare_node16(const float* o, const float* inv, const float* q
     r.o[a] = _mm512_set1_ps(o[a]);
     r.mul[a] = _mm512_insertf32x8(_mm512_set1_ps(inv[a]), _mm256_set1_ps(-inv[a]), 1);
     r.perm[a] = inv[a] >= 0 ? same : swap;
-    r.bias[a] = _mm512_insertf32x8(_mm512_set1_ps(-q[a]), _mm256_set1_ps(q[a]), 1);
   }
-  r.scale = _mm512_insertf32x8(_mm512_set1_ps(1.0f - 0x1p-20f), _mm256_set1_ps(1.0f + 0x1p-20f), 1);
-  r.neg_margin = _mm512_set1_ps(-margin);
   return r;
 }
 
@@ -122,31 +114,8 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
   return _mm256_cmp_ps_mask(near, tfar, _CMP_LE_OQ) & n.used;
 }
 
-// The fused test of mesh/wide_traverse.inl (FusedSlab) on sixteen lanes: fma(plane, +-1/d, -+q)
-// gives [t_near | -t_far] exactly negated (rounding is symmetric), the max over the axes (and
-// tmin) gives [near | -far], and one fma applies L to the near half and -U(far) =
-// fl(-far * (1 + 16u) - A) to the other.
-template <class Node>
-inline int intersect_node16_fused(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax, V8& tnear) {
-  __m512 d[3];
-  for (int a = 0; a < 3; ++a)
-    d[a] =
-        _mm512_fmadd_ps(_mm512_permutexvar_ps(r.perm[a], axis_planes16(n, a)), r.mul[a], r.bias[a]);
-  const __m512 m =
-      _mm512_max_ps(_mm512_max_ps(d[0], d[1]),
-                    _mm512_mask_max_ps(d[2], 0x00FF, d[2], _mm512_castps256_ps512(tmin.v)));
-  const __m512 w = _mm512_fmadd_ps(m, r.scale, r.neg_margin);
-  const __m256 near = _mm512_castps512_ps256(w);
-  const __m256 far = _mm256_xor_ps(_mm512_extractf32x8_ps(w, 1), _mm256_set1_ps(-0.0f));
-  tnear = {near};
-  return _mm256_cmp_ps_mask(near, _mm256_min_ps(far, tmax.v), _CMP_LE_OQ) & n.used;
-}
-
-inline V8 fmadd(V8 a, V8 b, V8 c) { return {_mm256_fmadd_ps(a.v, b.v, c.v)}; }
-
 }  // namespace raycast::kernels_avx512
 
-#define RAYCAST_KERNEL_FMA 1
 #define RAYCAST_KERNEL_NODE16 1
 #define RAYCAST_KERNEL_NS kernels_avx512
 #include "mesh/wide_traverse.inl"
@@ -154,7 +123,6 @@ inline V8 fmadd(V8 a, V8 b, V8 c) { return {_mm256_fmadd_ps(a.v, b.v, c.v)}; }
 #include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 #undef RAYCAST_KERNEL_NODE16
-#undef RAYCAST_KERNEL_FMA
 
 #pragma GCC diagnostic pop
 #pragma GCC pop_options

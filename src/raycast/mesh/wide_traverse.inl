@@ -7,14 +7,11 @@
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
-// A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, q) and
-// intersect_node16(node, ...), intersect_node16_fused(node, ...) for both node formats: its own
-// node tests with the same results (AVX-512: 16 lanes).
-// A kernel with fused multiply-add defines RAYCAST_KERNEL_FMA and fmadd(a, b, c) (a * b + c,
-// rounded once): its node test then uses the fused slab test below, which never culls a box that
-// the unfused test visits (so the hits are the same; see FusedSlab).
-// The triangle test and the unfused node test are one IEEE single-precision operation per lane
-// operation, never fused, so every ISA returns the same hits bit for bit (the tests compare them).
+// A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv) and
+// intersect_node16(node, ...) for both node formats: its own node test with the same results
+// (AVX-512: 16 lanes).
+// Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
+// with an add, so every ISA returns the same hits bit for bit (the tests compare them).
 
 namespace raycast::RAYCAST_KERNEL_NS {
 
@@ -29,46 +26,6 @@ constexpr float kSlabNarrow = 2.0f - kSlabWiden;
 constexpr float kMinDirection = 0x1p-64f;
 constexpr float kInfinityF = __builtin_huge_valf();
 
-// Culling margin (so that ties resolve the same whatever the node test): the nearest hit is the
-// least t, ties to the least triangle index. A box whose computed entry lies a rounding above the
-// current hit's t may still hold a triangle at that same t (a ray through a shared vertex or
-// edge on the box's face), and whether it is culled would then depend on the node test's
-// rounding. So boxes are culled against bounds moved outwards by 2^-16 relative (cull_above(tmax)
-// for the entry and the stack, cull_below(tmin) for the exit), far more than either node test's
-// rounding (~1e-7) and the triangle test's error at such points: every node test then visits
-// every box holding a candidate, and the answer is the same on every ISA and in packets.
-constexpr float kCullWiden = 1.0f + 0x1p-16f;
-constexpr float kCullNarrow = 1.0f - 0x1p-16f;
-// t moved up (down) by 2^-16 relative; infinities stay, NaN stays NaN.
-inline float cull_above(float t) { return std::max(t * kCullWiden, t * kCullNarrow); }
-inline float cull_below(float t) { return std::min(t * kCullWiden, t * kCullNarrow); }
-inline V8 cull_above(V8 t) { return vmax(t * splat(kCullWiden), t * splat(kCullNarrow)); }
-inline V8 cull_below(V8 t) { return vmin(t * splat(kCullWiden), t * splat(kCullNarrow)); }
-
-// The fused slab test (kernels with FMA): t = fma(plane, inv, -q) with q = o * inv rounded once
-// per ray, against the unfused s = (plane - o) * inv of the other ISAs. Let tau = (plane - o) *
-// inv exactly (the same rounded inv in both), u = 2^-24 and eta = 2^-149 (an underflow's error).
-// Then |s - tau| <= 2.1u|tau| + 2eta and, as q = o * inv + e with |e| <= (u|q| + eta) / (1 - u),
-// |t - tau| <= u|tau| + B with B = 1.1u|q| + 3eta. So s >= t - 3.2u|t| - 1.01B - 2eta and
-// s <= t + 3.2u|t| + 1.01B + 2eta. The near distance is lowered and the far one raised with one
-// fma each: L(x) = fl(x * (1 - 16u) - A), U(x) = fl(x * (1 + 16u) + A), A = 2u max|q| + 2^-140
-// (A >= 1.13u|q| + 8eta with room for its own rounding). Then, with every rounding counted:
-// - L(t) <= s for t >= 0 (L(t) <= t(1 - 15u) - A(1 - u) + eta), and L(x) < 0 for x < 0. As L is
-//   monotonic and tmin >= 0, L(max(near_t, tmin)) <= max(near_s, tmin): never above the unfused
-//   entry distance.
-// - U(t) >= fl(s * kSlabWiden) >= the unfused widened exit whenever s >= 0 (a negative unfused
-//   exit culls the box there anyway: its entry is >= tmin >= 0); for t < 0 that needs
-//   |t| <= B + 2.2eta, covered by A. U is monotonic, so min over the axes keeps the bound.
-// So every box the unfused test visits is visited (a few more may be, by up to ~1e-6 relative):
-// the triangle test decides the hits, and ties go to the smaller triangle index in either
-// order, so the answers stay bit for bit those of the other ISAs. The test is used only when
-// tmin >= 0 and every |q| <= 2^100 (false for NaN: no overflow in q, A or the products).
-constexpr float kFusedLower = 1.0f - 0x1p-20f;
-constexpr float kFusedUpper = 1.0f + 0x1p-20f;
-constexpr float kFusedMaxQ = 0x1p100f;
-constexpr float kFusedMarginScale = 0x1p-23f;  // 2u
-constexpr float kFusedMarginFloor = 0x1p-140f;
-
 // Per-ray constants of the box and triangle tests.
 struct RayData {
   V8 o[3];          // origin, broadcast
@@ -80,11 +37,6 @@ struct RayData {
   V8 sx, sy, sz;
   V8 okx, oky, okz;
   V8 tmin;
-  V8 node_tmin;   // cull_below(tmin): the node tests' lower bound
-  bool fused;     // the fused node test applies (tmin >= 0, |q| <= kFusedMaxQ)
-  V8 neg_q[3];    // -fl(o * inv), broadcast (fused test)
-  V8 margin;      // A of FusedSlab, broadcast
-  V8 neg_margin;  // -A
 #ifdef RAYCAST_KERNEL_NODE16
   NodeRay16 node16;  // the kernel's own 16-lane node test (AVX-512)
 #endif
@@ -94,9 +46,7 @@ inline RayData prepare(const MeshRay& r) {
   RayData p;
   const float* o = &r.o.x;
   const float* d = &r.d.x;
-  float invs[3], qs[3];
-  float max_q = 0.0f;
-  bool finite_q = true;
+  float invs[3];
   for (int a = 0; a < 3; ++a) {
     p.o[a] = splat(o[a]);
     float da = d[a];
@@ -104,10 +54,6 @@ inline RayData prepare(const MeshRay& r) {
     const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
-    qs[a] = o[a] * inv;
-    p.neg_q[a] = splat(-qs[a]);
-    finite_q = finite_q && std::abs(qs[a]) <= kFusedMaxQ;
-    max_q = std::max(max_q, std::abs(qs[a]));
     // WideNode::box[a] and QuantisedNode::q[2a], q[2a + 1]: the lo planes, then the hi planes.
     p.near_off[a] = inv >= 0 ? 0 : kNodeWidth;
     p.far_off[a] = inv >= 0 ? kNodeWidth : 0;
@@ -123,13 +69,8 @@ inline RayData prepare(const MeshRay& r) {
   p.oky = splat(o[w.ky]);
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
-  p.node_tmin = splat(cull_below(r.tmin));
-  p.fused = finite_q && r.tmin >= 0.0f;  // then node_tmin >= 0 too
-  const float margin = max_q * kFusedMarginScale + kFusedMarginFloor;
-  p.margin = splat(margin);
-  p.neg_margin = splat(-margin);
 #ifdef RAYCAST_KERNEL_NODE16
-  p.node16 = prepare_node16(o, invs, qs, margin);
+  p.node16 = prepare_node16(o, invs);
 #else
   (void)invs;
 #endif
@@ -164,60 +105,16 @@ inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
   }
 }
 
-#ifdef RAYCAST_KERNEL_FMA
-// A plane's (or a dequantised plane's) fused distance t = fma(plane, inv, -q) (FusedSlab).
-inline V8 fused_distance(const float* planes, V8 inv, V8 neg_q) {
-  return fmadd(load8(planes), inv, neg_q);
-}
-inline V8 fused_distance(V8 planes, V8 inv, V8 neg_q) { return fmadd(planes, inv, neg_q); }
-
-inline void node_distances_fused(const WideNode& n, const RayData& p, V8 d[6]) {
-  for (int a = 0; a < 3; ++a) {
-    d[a] = fused_distance(n.box[a] + p.near_off[a], p.inv[a], p.neg_q[a]);
-    d[3 + a] = fused_distance(n.box[a] + p.far_off[a], p.inv[a], p.neg_q[a]);
-  }
-}
-
-// The planes dequantised exactly as the unfused test does (origin + q * scale, not fused).
-inline void node_distances_fused(const QuantisedNode& n, const RayData& p, V8 d[6]) {
-  const std::uint8_t* q = n.q[0];
-  for (int a = 0; a < 3; ++a) {
-    const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
-    d[a] = fused_distance(o + load8_u8(q + 2 * kNodeWidth * a + p.near_off[a]) * s, p.inv[a],
-                          p.neg_q[a]);
-    d[3 + a] = fused_distance(o + load8_u8(q + 2 * kNodeWidth * a + p.far_off[a]) * s, p.inv[a],
-                              p.neg_q[a]);
-  }
-}
-#endif
-
-// Slab test of the eight children against [node_tmin, tmax] (tmax: cull_above of the nearest hit
-// so far): the hit mask and the entry distances.
-// Fused: the FMA test of FusedSlab (only when p.fused), visiting every box the other one does.
-template <bool Fused, class Node>
+// Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
+template <class Node>
 inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
-#ifdef RAYCAST_KERNEL_FMA
-  if constexpr (Fused) {
 #ifdef RAYCAST_KERNEL_NODE16
-    return intersect_node16_fused(n, p.node16, p.node_tmin, tmax, tnear);
-#else
-    V8 d[6];
-    node_distances_fused(n, p, d);
-    const V8 near = vmax(vmax(d[0], d[1]), vmax(d[2], p.node_tmin));
-    const V8 far = vmin(vmin(d[3], d[4]), d[5]);
-    tnear = fmadd(near, splat(kFusedLower), p.neg_margin);
-    const V8 tfar = vmin(fmadd(far, splat(kFusedUpper), p.margin), tmax);
-    return bits(cmp_le(tnear, tfar)) & n.used;
-#endif
-  }
-#endif
-#ifdef RAYCAST_KERNEL_NODE16
-  return intersect_node16(n, p.node16, p.node_tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
+  return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
 #else
   V8 d[6];
   node_distances(n, p, d);
   const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
-  tnear = vmax(vmax(nx, ny), vmax(nz, p.node_tmin));
+  tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
   // Widen the far distance away from the near one: scale it up when it is positive, down when it
   // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
   // negative far distance up would shrink the interval and cull flat boxes (a mesh's
@@ -352,14 +249,15 @@ enum class Query { kNearest, kAny, kAll };
 
 // The one traversal of the three queries (the shape of madmann91/bvh's intersect<IsAnyHit>):
 // nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
-// first hit (kAny), or every hit appended to `out` (kAll). Fused: the node test of FusedSlab.
-template <Query Q, class Node, bool Fused>
-bool walk(const MeshBvh& bvh, const MeshRay& ray, const RayData& p, MeshBvhHit* hit,
-          std::vector<MeshBvhHit>* out, TraversalEntry* stack) {
+// first hit (kAny), or every hit appended to `out` (kAll).
+template <Query Q, class Node>
+bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+              TraversalEntry* stack) {
+  if (bvh.empty()) return false;
   const Node* nodes = node_array<Node>(bvh);
+  const RayData p = prepare(ray);
   float tmax_s = ray.tmax;
-  float cull_s = cull_above(tmax_s);  // the node tests' and the stack's bound
-  V8 tmax = splat(cull_s);
+  V8 tmax = splat(tmax_s);
   int top = 0;
   bool found = false;
   PairResult res;
@@ -368,7 +266,7 @@ bool walk(const MeshBvh& bvh, const MeshRay& ray, const RayData& p, MeshBvhHit* 
     if (!(ref & kLeafBit)) {
       const Node& node = nodes[ref];
       V8 tn;
-      int mask = intersect_node<Fused>(node, p, tmax, tn);
+      int mask = intersect_node(node, p, tmax, tn);
       if (mask) {
         prefetch_children(bvh, node, mask);
         if constexpr (Q == Query::kNearest) {
@@ -416,33 +314,19 @@ bool walk(const MeshBvh& bvh, const MeshRay& ray, const RayData& p, MeshBvhHit* 
             found = true;
           }
         }
-        if constexpr (Q == Query::kNearest) {
-          cull_s = cull_above(tmax_s);
-          tmax = splat(cull_s);
-        }
+        if constexpr (Q == Query::kNearest) tmax = splat(tmax_s);
       }
     }
     // Pop, skipping entries whose entry point lies past the current nearest hit.
     for (;;) {
       if (top == 0) return found;
       const TraversalEntry& e = stack[--top];
-      if (Q != Query::kNearest || e.tnear <= cull_s) {
+      if (Q != Query::kNearest || e.tnear <= tmax_s) {
         ref = e.ref;
         break;
       }
     }
   }
-}
-
-template <Query Q, class Node>
-bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
-              TraversalEntry* stack) {
-  if (bvh.empty()) return false;
-  const RayData p = prepare(ray);
-#ifdef RAYCAST_KERNEL_FMA
-  if (p.fused) return walk<Q, Node, true>(bvh, ray, p, hit, out, stack);
-#endif
-  return walk<Q, Node, false>(bvh, ray, p, hit, out, stack);
 }
 
 template <Query Q>
