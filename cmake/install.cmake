@@ -46,11 +46,8 @@ set(raycast_deps "find_dependency(yaml-cpp)\nfind_dependency(TBB)\nfind_dependen
 if(TARGET OpenEXR::OpenEXR)
   string(APPEND raycast_deps "find_dependency(OpenEXR CONFIG)\n")
 endif()
-if(TARGET assimp::assimp)
-  string(APPEND raycast_deps "find_dependency(assimp CONFIG)\n")
-endif()
-# OpenVDB is read by a plugin (lib/raycast/libraycast_openvdb.so), loaded at run time: users
-# link nothing of it.
+# OpenVDB and assimp are read by plugins (lib/raycast/libraycast_{openvdb,assimp}.so), loaded at
+# run time: users link nothing of them.
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/raycastConfig.cmake.in
   ${PROJECT_BINARY_DIR}/raycastConfig.cmake INSTALL_DESTINATION ${raycast_cmake_dir})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake
@@ -61,9 +58,6 @@ install(FILES ${PROJECT_BINARY_DIR}/raycastConfig.cmake
 set(raycast_pc_requires "yaml-cpp tbb libpng")
 if(TARGET OpenEXR::OpenEXR)
   string(APPEND raycast_pc_requires " OpenEXR")
-endif()
-if(TARGET assimp::assimp)
-  string(APPEND raycast_pc_requires " assimp")
 endif()
 set(raycast_pc_extra "")
 foreach(lib ${CMAKE_DL_LIBS})  # the plugin loader (io/plugin_library.cpp)
