@@ -43,10 +43,7 @@ install(EXPORT raycastTargets NAMESPACE raycast:: DESTINATION ${raycast_cmake_di
 
 # The config finds what the static libraries link against.
 set(raycast_deps "find_dependency(yaml-cpp)\nfind_dependency(TBB)\nfind_dependency(PNG)\n")
-if(TARGET OpenEXR::OpenEXR)
-  string(APPEND raycast_deps "find_dependency(OpenEXR CONFIG)\n")
-endif()
-# OpenVDB and assimp are read by plugins (lib/raycast/libraycast_{openvdb,assimp}.so), loaded at
+# OpenVDB, assimp and OpenEXR are used through plugins (lib/raycast/libraycast_*.so), loaded at
 # run time: users link nothing of them.
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/raycastConfig.cmake.in
   ${PROJECT_BINARY_DIR}/raycastConfig.cmake INSTALL_DESTINATION ${raycast_cmake_dir})
@@ -56,9 +53,6 @@ install(FILES ${PROJECT_BINARY_DIR}/raycastConfig.cmake
   ${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake DESTINATION ${raycast_cmake_dir})
 
 set(raycast_pc_requires "yaml-cpp tbb libpng")
-if(TARGET OpenEXR::OpenEXR)
-  string(APPEND raycast_pc_requires " OpenEXR")
-endif()
 set(raycast_pc_extra "")
 foreach(lib ${CMAKE_DL_LIBS})  # the plugin loader (io/plugin_library.cpp)
   string(APPEND raycast_pc_extra " -l${lib}")

@@ -35,6 +35,7 @@ TEST(Plugins, CommandsWithoutAGridOrGltf_LoadNeither) {
   EXPECT_EQ(run.err.find("libopenvdb"), std::string::npos);
   EXPECT_EQ(run.err.find("libraycast_openvdb"), std::string::npos);
   EXPECT_EQ(run.err.find("libassimp"), std::string::npos);
+  EXPECT_EQ(run.err.find("libOpenEXR"), std::string::npos);
 }
 
 #if RAYCAST_HAVE_OPENVDB
