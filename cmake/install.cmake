@@ -43,18 +43,8 @@ install(EXPORT raycastTargets NAMESPACE raycast:: DESTINATION ${raycast_cmake_di
 
 # The config finds what the static libraries link against.
 set(raycast_deps "find_dependency(yaml-cpp)\nfind_dependency(TBB)\nfind_dependency(PNG)\n")
-if(TARGET OpenEXR::OpenEXR)
-  string(APPEND raycast_deps "find_dependency(OpenEXR CONFIG)\n")
-endif()
-if(TARGET assimp::assimp)
-  string(APPEND raycast_deps "find_dependency(assimp CONFIG)\n")
-endif()
-if(TARGET raycast::openvdb)  # volume/ links OpenVDB: the same imported target for users
-  string(APPEND raycast_deps "if(NOT TARGET raycast::openvdb)\n"
-    "  add_library(raycast::openvdb INTERFACE IMPORTED)\n"
-    "  set_target_properties(raycast::openvdb PROPERTIES INTERFACE_LINK_LIBRARIES \"${RAYCAST_OPENVDB_LIBRARY};${RAYCAST_IMATH_LIBRARY};TBB::tbb\")\n"
-    "endif()\n")
-endif()
+# OpenVDB, assimp and OpenEXR are used through plugins (lib/raycast/libraycast_*.so), loaded at
+# run time: users link nothing of them.
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/raycastConfig.cmake.in
   ${PROJECT_BINARY_DIR}/raycastConfig.cmake INSTALL_DESTINATION ${raycast_cmake_dir})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake
@@ -63,16 +53,9 @@ install(FILES ${PROJECT_BINARY_DIR}/raycastConfig.cmake
   ${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake DESTINATION ${raycast_cmake_dir})
 
 set(raycast_pc_requires "yaml-cpp tbb libpng")
-if(TARGET OpenEXR::OpenEXR)
-  string(APPEND raycast_pc_requires " OpenEXR")
-endif()
-if(TARGET assimp::assimp)
-  string(APPEND raycast_pc_requires " assimp")
-endif()
 set(raycast_pc_extra "")
-if(TARGET raycast::openvdb)
-  string(APPEND raycast_pc_requires " Imath")
-  string(APPEND raycast_pc_extra " -lopenvdb")
-endif()
+foreach(lib ${CMAKE_DL_LIBS})  # the plugin loader (io/plugin_library.cpp)
+  string(APPEND raycast_pc_extra " -l${lib}")
+endforeach()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/raycast.pc.in ${PROJECT_BINARY_DIR}/raycast.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/raycast.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -1,12 +1,8 @@
 #include "io/image.h"
 
 #if RAYCAST_HAVE_OPENEXR
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfOutputFile.h>
-
-#include <exception>
+#include "io/exr_plugin_abi.h"
+#include "io/plugin_library.h"
 #endif
 
 namespace raycast {
@@ -15,27 +11,15 @@ namespace raycast {
 
 bool have_exr() { return true; }
 
+// Through the OpenEXR plugin, loaded on the first .exr written (io/plugin_library.h).
 void save_exr(const Image& image, const std::string& path) {
-  if (image.width <= 0 || image.height <= 0)
-    throw ImageError(path + ": cannot write an empty image");
-  try {
-    Imf::Header header(image.width, image.height);
-    header.compression() = Imf::ZIP_COMPRESSION;
-    const char* names[3] = {"R", "G", "B"};
-    for (const char* name : names) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    Imf::FrameBuffer frame;
-    const std::size_t x_stride = 3 * sizeof(float);
-    const std::size_t y_stride = x_stride * std::size_t(image.width);
-    // The slices point into our buffer; OpenEXR only reads through them.
-    char* base = reinterpret_cast<char*>(const_cast<float*>(image.rgb.data()));
-    for (int c = 0; c < 3; ++c)
-      frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), x_stride, y_stride));
-    Imf::OutputFile file(path.c_str(), header);
-    file.setFrameBuffer(frame);
-    file.writePixels(image.height);
-  } catch (const std::exception& e) {
-    throw ImageError(path + ": cannot write EXR: " + e.what());
-  }
+  std::string why_not;
+  void* entry = plugin_symbol("libraycast_openexr.so", "raycast_openexr_plugin", why_not);
+  if (!entry) throw ImageError(path + ": cannot write EXR: " + why_not);
+  const ExrPlugin* plugin = reinterpret_cast<const ExrPlugin* (*)()>(entry)();
+  if (!plugin || plugin->abi_version != kExrPluginAbiVersion)
+    throw ImageError(path + ": the plugin libraycast_openexr.so is from another build of raycast");
+  plugin->save(image, path);
 }
 
 #else

@@ -10,9 +10,8 @@
 #include "mesh/stl_file.h"
 
 #ifdef RAYCAST_HAVE_ASSIMP
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-#include <assimp/Importer.hpp>
+#include "io/plugin_library.h"
+#include "mesh/assimp_plugin_abi.h"
 #endif
 
 namespace raycast {
@@ -25,60 +24,16 @@ std::string lower(std::string s) {
 }
 
 #ifdef RAYCAST_HAVE_ASSIMP
+// glTF/GLB through the assimp plugin, loaded on the first such file (io/plugin_library.h).
 MeshFileData read_with_assimp(const std::string& path) {
-  Assimp::Importer importer;
-  // Vertices are joined only after checking them: JoinIdenticalVertices merges a NaN vertex into
-  // another one, which silently turned `v 1 nan 0` into a degenerate triangle.
-  const unsigned flags = aiProcess_Triangulate | aiProcess_PreTransformVertices |
-                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
-  const aiScene* scene = importer.ReadFile(path, flags);
-  auto fail = [&] {
-    std::string why = importer.GetErrorString();
-    if (why.empty()) why = "unknown reason";
-    throw MeshFileError("cannot read the mesh: " + why);
-  };
-  if (!scene) fail();
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* mesh = scene->mMeshes[m];
-    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-      const aiVector3D& p = mesh->mVertices[v];
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw MeshFileError("a vertex is not finite: (" + std::to_string(p.x) + ", " +
-                            std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
-    }
-  }
-  scene = importer.ApplyPostProcessing(aiProcess_JoinIdenticalVertices);
-  if (!scene) fail();
-  MeshFileData out;
-  bool all_normals = true;
-  std::size_t triangle_meshes = 0;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* mesh = scene->mMeshes[m];
-    if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-    ++triangle_meshes;
-    const auto base = static_cast<std::uint32_t>(out.soup.positions.size());
-    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-      const aiVector3D& p = mesh->mVertices[v];
-      out.soup.positions.push_back({p.x, p.y, p.z});
-    }
-    if (mesh->HasNormals()) {
-      for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-        const aiVector3D& n = mesh->mNormals[v];
-        out.normals.push_back({n.x, n.y, n.z});
-      }
-    } else {
-      all_normals = false;
-    }
-    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-      const aiFace& face = mesh->mFaces[f];
-      if (face.mNumIndices != 3) continue;
-      out.soup.triangles.push_back(
-          {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
-    }
-  }
-  if (triangle_meshes == 0) throw MeshFileError("the file holds no triangles");
-  if (!all_normals) out.normals.clear();
-  return out;
+  std::string why_not;
+  void* entry = plugin_symbol("libraycast_assimp.so", "raycast_assimp_plugin", why_not);
+  const AssimpPlugin* plugin =
+      entry ? reinterpret_cast<const AssimpPlugin* (*)()>(entry)() : nullptr;
+  if (!entry) throw MeshFileError("cannot read " + path + ": " + why_not);
+  if (!plugin || plugin->abi_version != kAssimpPluginAbiVersion)
+    throw MeshFileError("the plugin libraycast_assimp.so is from another build of raycast");
+  return plugin->read(path);
 }
 #endif
 

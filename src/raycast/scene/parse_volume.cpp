@@ -105,10 +105,7 @@ ShapeVariant from_grid(Fields& f) {
       throw as_scene_error(e);
     }
   } else if (ext == ".vdb") {
-    if (!vdb_supported())
-      f.fail("grid", f.name("grid") +
-                         ": this build of raycast cannot read OpenVDB files (built without "
-                         "libopenvdb-dev; docs/iso-surfaces.md)");
+    if (!vdb_supported()) f.fail("grid", f.name("grid") + ": " + vdb_unsupported_reason());
     const std::string name = f.has("name") ? f.string("name") : std::string();
     try {
       grid = read_vdb_grid(path, name);

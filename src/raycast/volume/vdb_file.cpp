@@ -1,95 +1,56 @@
 #include "volume/vdb_file.h"
 
-#include "volume/volume_error.h"
-
-#if RAYCAST_HAVE_OPENVDB
-#include <openvdb/io/File.h>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/Dense.h>
-
-#include <mutex>
-#endif
+#include "io/plugin_library.h"
+#include "volume/vdb_plugin_abi.h"
 
 namespace raycast {
+namespace {
 
-#if !RAYCAST_HAVE_OPENVDB
+#if RAYCAST_HAVE_OPENVDB
+// The plugin, or nullptr with the reason: loaded once, on first use (io/plugin_library.h).
+const VdbPlugin* plugin(std::string& why_not) {
+  void* entry = plugin_symbol("libraycast_openvdb.so", "raycast_openvdb_plugin", why_not);
+  if (!entry) return nullptr;
+  const VdbPlugin* p = reinterpret_cast<const VdbPlugin* (*)()>(entry)();
+  if (!p || p->abi_version != kVdbPluginAbiVersion) {
+    why_not = "the plugin libraycast_openvdb.so is from another build of raycast";
+    return nullptr;
+  }
+  return p;
+}
+#endif
 
-bool vdb_supported() { return false; }
+}  // namespace
 
-ScalarGrid read_vdb_grid(const std::string&, const std::string&) {
-  throw std::logic_error("this build of raycast cannot read OpenVDB files");
+bool vdb_supported() {
+#if RAYCAST_HAVE_OPENVDB
+  std::string why_not;
+  return plugin(why_not) != nullptr;
+#else
+  return false;
+#endif
 }
 
+std::string vdb_unsupported_reason() {
+#if RAYCAST_HAVE_OPENVDB
+  std::string why_not;
+  plugin(why_not);
+  return why_not;
 #else
-
-bool vdb_supported() { return true; }
+  return "this build of raycast cannot read OpenVDB files (built without libopenvdb-dev; "
+         "docs/iso-surfaces.md)";
+#endif
+}
 
 ScalarGrid read_vdb_grid(const std::string& path, const std::string& name) {
-  static std::once_flag initialised;
-  std::call_once(initialised, [] { openvdb::initialize(); });
-  openvdb::GridBase::Ptr base;
-  std::string names;
-  try {
-    openvdb::io::File file(path);
-    file.open(false);  // no delayed loading: the file is read now, errors surface here
-    std::string only;
-    int floats = 0;
-    for (auto it = file.beginName(); it != file.endName(); ++it) {
-      names += (names.empty() ? "'" : ", '") + it.gridName() + "'";
-      if (name.empty() && file.readGridMetadata(it.gridName())->isType<openvdb::FloatGrid>())
-        only = it.gridName(), ++floats;
-    }
-    if (name.empty() && floats != 1)
-      throw VdbGridError(path + " holds " + (floats ? "several float grids" : "no float grid") +
-                         (names.empty() ? std::string() : " (grids: " + names + ")") +
-                         (floats ? ": say which with name:" : ""));
-    const std::string wanted = name.empty() ? only : name;
-    if (!file.hasGrid(wanted))
-      throw VdbGridError(
-          path + " has no grid named '" + wanted + "'" +
-          (names.empty() ? std::string(" (it holds no grids)") : " (grids: " + names + ")"));
-    base = file.readGrid(wanted);
-    file.close();
-  } catch (const openvdb::Exception& e) {
-    throw VolumeFileError(path, 1, 1, std::string("not a readable OpenVDB file: ") + e.what());
-  }
-  const auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
-  if (!grid)
-    throw VdbGridError("grid '" + base->getName() + "' of " + path + " holds " + base->valueType() +
-                       " values; an iso-surface needs a float grid");
-  const openvdb::math::Transform& xf = grid->transform();
-  if (!xf.isLinear())
-    throw VdbGridError("grid '" + base->getName() + "' of " + path +
-                       " has a non-linear (frustum) transform; only axis-aligned voxels are "
-                       "supported");
-  const openvdb::math::Mat4d m = xf.baseMap()->getAffineMap()->getMat4();
-  bool axis_aligned = true;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) axis_aligned = axis_aligned && (r == c || m(r, c) == 0);
-  if (!axis_aligned)
-    throw VdbGridError("grid '" + base->getName() + "' of " + path +
-                       " has a rotated or sheared transform; only axis-aligned "
-                       "voxels are supported");
-  openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
-  if (box.empty())
-    throw VdbGridError("grid '" + base->getName() + "' of " + path + " has no active voxels");
-  box.expand(1);
-  const openvdb::Coord dim = box.dim();
-  check_grid_fits({std::uint64_t(dim.x()), std::uint64_t(dim.y()), std::uint64_t(dim.z())});
-  ScalarGrid out;
-  out.n = {dim.x(), dim.y(), dim.z()};
-  if (!(m(0, 0) > 0 && m(1, 1) > 0 && m(2, 2) > 0))
-    throw VdbGridError("grid '" + base->getName() + "' of " + path +
-                       " mirrors an axis; only positive voxel sizes are supported");
-  const openvdb::Vec3d lo = xf.indexToWorld(box.min());
-  out.lo = {lo.x(), lo.y(), lo.z()};
-  out.cell = {m(0, 0), m(1, 1), m(2, 2)};
-  out.v.resize(std::size_t(dim.x()) * std::size_t(dim.y()) * std::size_t(dim.z()));
-  openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ> dense(box, out.v.data());
-  openvdb::tools::copyToDense(*grid, dense);
-  return out;
-}
-
+#if RAYCAST_HAVE_OPENVDB
+  std::string why_not;
+  if (const VdbPlugin* p = plugin(why_not)) return p->read(path, name, check_grid_fits);
+  throw std::logic_error(why_not);
+#else
+  (void)path, (void)name;
+  throw std::logic_error(vdb_unsupported_reason());
 #endif
+}
 
 }  // namespace raycast

@@ -1,6 +1,7 @@
 #pragma once
 // OpenVDB float grids as iso-surface input (docs/iso-surfaces.md "From a grid"). Optional at build
-// time like Embree: compiled in when libopenvdb-dev was found (CMake option RAYCAST_OPENVDB).
+// time like Embree: built when libopenvdb-dev was found (CMake option RAYCAST_OPENVDB), as the
+// plugin libraycast_openvdb.so, loaded on the first .vdb read (io/plugin_library.h).
 #include <stdexcept>
 #include <string>
 
@@ -8,8 +9,11 @@
 
 namespace raycast {
 
-/// Whether this build reads OpenVDB files.
+/// Whether this build reads OpenVDB files (built with them and the plugin loads).
 bool vdb_supported();
+
+/// Why not, when !vdb_supported(): a sentence for the user.
+std::string vdb_unsupported_reason();
 
 /// A problem with the grid asked for rather than with the file: no grid of that name (the
 /// message lists the file's grids), not a float grid, a rotated or sheared or non-linear
