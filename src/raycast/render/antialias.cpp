@@ -178,10 +178,12 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0};
             const int middle = n % 2 ? n * n / 2 : -1;
-            for (int k = 0; k < n * n; ++k) {
-              const double jx = state.rng.uniform(), jy = state.rng.uniform();
-              sum += k == middle ? value
-                                 : sample(x + ((k % n) + jx) / n, y + ((k / n) + jy) / n, state);
+            // Stratum k = j n + i (row j, column i), in that order: no division per sample.
+            for (int j = 0, k = 0; j < n; ++j) {
+              for (int i = 0; i < n; ++i, ++k) {
+                const double jx = state.rng.uniform(), jy = state.rng.uniform();
+                sum += k == middle ? value : sample(x + (i + jx) / n, y + (j + jy) / n, state);
+              }
             }
             value = sum / double(n * n);
             c.rays += state.rays;
