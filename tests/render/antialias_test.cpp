@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,79 @@ TEST(ColourDistance, SumOfClampedChannelDifferences) {
   EXPECT_EQ(colour_distance({0.2, 0.2, 0.2}, {0.2, 0.2, 0.2}), 0);
   EXPECT_EQ(colour_distance({3, -1, 0.5}, {1, 0, 0.5}), 0);  // clamped to [0, 1] first
   EXPECT_EQ(colour_distance({0, 0, 0}, {2, 2, 2}), 3);
+}
+
+TEST(ColourDistance, EqualsTheDisplayedCodesDividedBy255) {
+  // The displayed value is each channel's 8-bit sRGB code divided by 255, bit for bit.
+  std::uint64_t h = 1;
+  auto next = [&] {
+    h = h * 6364136223846793005ull + 1442695040888963407ull;
+    return double(h >> 11) * 0x1p-53 * 1.2 - 0.1;  // in [-0.1, 1.1): both clamps too
+  };
+  for (int i = 0; i < 2000; ++i) {
+    const Color a{next(), next(), next()}, b{next(), next(), next()};
+    double want = 0;
+    for (int c = 0; c < 3; ++c)
+      want += std::abs(double(linear_to_srgb8(float(a[c]))) / 255.0 -
+                       double(linear_to_srgb8(float(b[c]))) / 255.0);
+    ASSERT_EQ(colour_distance(a, b), want) << i;
+  }
+}
+
+TEST(Antialias, Method1_RefinesExactlyThePixelsThatDifferFromANeighbour) {
+  // A 9 x 7 picture of blocks of different grey levels (and a window of it): the refined pixels
+  // are those whose centre value differs from one of its four neighbours' (inside the picture)
+  // by more than the threshold, found here by brute force; each takes its 3 x 3 strata in order,
+  // one jittered sample per stratum (the middle one is the centre sample).
+  auto grey = [](double x, double y) {
+    const int cell = int(std::floor(x / 3)) + 2 * int(std::floor(y / 2));
+    const double g = (cell % 4) * 0.25;
+    return Color{g, g, g};
+  };
+  const int w = 9, h = 7;
+  const double threshold = 0.3;
+  std::vector<bool> want(w * h, false);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Color c = grey(x + 0.5, y + 0.5);
+      const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
+      for (int k = 0; k < 4; ++k) {
+        const int nx = x + dx[k], ny = y + dy[k];
+        if (nx >= 0 && ny >= 0 && nx < w && ny < h &&
+            colour_distance(c, grey(nx + 0.5, ny + 0.5)) > threshold)
+          want[y * w + x] = true;
+      }
+    }
+  for (const RasterWindow window : {RasterWindow{}, RasterWindow{2, 1, w, h}}) {
+    const int iw = window.full_width ? 5 : w, ih = window.full_height ? 4 : h;
+    std::vector<std::vector<std::pair<double, double>>> calls(w * h);
+    const RasterSampler sample = [&](double x, double y, SampleState& state) {
+      ++state.rays;
+      calls[int(y) * w + int(x)].emplace_back(x, y);
+      return grey(x, y);
+    };
+    Image image(iw, ih);
+    AdaptiveStats stats;
+    render_adaptive({AntialiasMethod::kNeighbour, threshold, 3}, 1, sample, image, stats, nullptr,
+                    window);
+    int refined = 0;
+    for (int y = window.y0; y < window.y0 + ih; ++y)
+      for (int x = window.x0; x < window.x0 + iw; ++x) {
+        const auto& c = calls[y * w + x];
+        EXPECT_EQ(c.size(), want[y * w + x] ? 9u : 1u) << x << "," << y;
+        refined += want[y * w + x];
+        if (c.size() != 9) continue;
+        for (int k = 1; k < 9; ++k) {  // c[0] is the centre; then the strata, the middle skipped
+          const int s = k <= 4 ? k - 1 : k;
+          EXPECT_EQ(int(std::floor((c[k].first - x) * 3)), s % 3) << x << "," << y << "," << k;
+          EXPECT_EQ(int(std::floor((c[k].second - y) * 3)), s / 3) << x << "," << y << "," << k;
+        }
+      }
+    EXPECT_GT(refined, 0);
+    std::uint64_t ring = 0;  // the first pass also samples the one-pixel ring around a window
+    for (const auto& c : calls) ring += !c.empty();
+    EXPECT_EQ(stats.samples, ring + 8u * std::uint64_t(refined));
+  }
 }
 
 TEST(Antialias, EveryMethod_OneAndTwoThreadsGiveIdenticalImages) {

@@ -113,6 +113,35 @@ objects:
   expect_color(integrator.shadow({0, 0, 0}, {1, 0, 0}, true, state), {1, 1, 1}, 0);
 }
 
+TEST(Whitted, ShadowThroughPlainTexturedAndOpaqueObjects_EachByItsOwnRule) {
+  // The three cases the integrator sorts objects into once per frame: an untextured transmissive
+  // sphere filters by transmission * colour, a textured one by transmission * its albedo at the
+  // crossing (the checker's even cell at x = y = 0), an opaque one blocks.
+  const Scene scene = load_scene_text(R"(
+materials:
+  plain: {color: [0.8, 0.6, 0.4], transmission: 0.5}
+  textured: {texture: {checker: {colors: [[0.5, 0.25, 1], [1, 1, 1]], scale: 100}}, transmission: 0.5}
+  opaque: {color: [1, 1, 1]}
+objects:
+  - sphere: {center: [0, 0, 2], radius: 0.5}
+    material: plain
+  - sphere: {center: [0, 0, 5], radius: 0.5}
+    material: textured
+  - sphere: {center: [0, 0, 8], radius: 0.5}
+    material: opaque
+)");
+  const Integrator integrator(scene, RenderMode::kWhitted);
+  SampleState state{Rng(1), 0};
+  const Vec3 plain = 0.5 * Vec3{0.8, 0.6, 0.4}, textured = 0.5 * Vec3{0.5, 0.25, 1};
+  expect_color(integrator.shadow({0, 0, 0}, {0, 0, 3.5}, false, state), plain, 1e-15);
+  expect_color(integrator.shadow({0, 0, 3.5}, {0, 0, 6.5}, false, state), textured, 1e-15);
+  expect_color(integrator.shadow({0, 0, 0}, {0, 0, 6.5}, false, state), mul(plain, textured),
+               1e-15);
+  expect_color(integrator.shadow({0, 0, 0}, {0, 0, 10}, false, state), {0, 0, 0}, 0);
+  expect_color(integrator.shadow({0, 0, 6.5}, {0, 0, 1}, true, state), {0, 0, 0}, 0);
+  expect_color(integrator.shadow({0, 0, 9}, {0, 0, 1}, true, state), {1, 1, 1}, 0);
+}
+
 TEST(Whitted, LightBehindTheSurface_ContributesNothing) {
   std::string text = kSphereScene;
   text.replace(text.find("position: [3, 0, 5]"), 19, "position: [0, 0, -5]");

@@ -22,11 +22,19 @@ struct Counters {
 
 double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 
+/// code / 255.0 for every 8-bit code (the same quotients, divided once).
+struct CodeValues {
+  double of[256];
+  CodeValues() {
+    for (int i = 0; i < 256; ++i) of[i] = double(i) / 255.0;
+  }
+};
+const CodeValues kCodeValues;
+
 /// The displayed value of a linear colour: its 8-bit sRGB codes / 255 (io/image.h).
 Color display(const Color& c) {
-  return Color{double(linear_to_srgb8(float(c.x))), double(linear_to_srgb8(float(c.y))),
-               double(linear_to_srgb8(float(c.z)))} /
-         255.0;
+  return {kCodeValues.of[linear_to_srgb8(float(c.x))], kCodeValues.of[linear_to_srgb8(float(c.y))],
+          kCodeValues.of[linear_to_srgb8(float(c.z))]};
 }
 
 double display_distance(const Color& a, const Color& b) {
@@ -62,14 +70,15 @@ struct FirstPass {
 /// than the threshold (POV-Ray's method 1 compares each pixel with its left and upper neighbours
 /// and refines both: the same set of pixels).
 bool differs(const FirstPass& first, int x, int y, double threshold) {
-  const Color& c = first.shown[first.index(x, y)];
-  const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
-  for (int k = 0; k < 4; ++k) {
-    const int nx = x + dx[k], ny = y + dy[k];
-    if (nx < 0 || ny < 0 || nx >= first.full_width || ny >= first.full_height) continue;
-    if (display_distance(c, first.shown[first.index(nx, ny)]) > threshold) return true;
-  }
-  return false;
+  const std::size_t i = first.index(x, y);
+  const Color* shown = first.shown.data();
+  const Color& c = shown[i];
+  const std::size_t row = std::size_t(first.x1 - first.x0);
+  // Left, right, up, down (in that order, as before), each inside the full picture.
+  if (x > 0 && display_distance(c, shown[i - 1]) > threshold) return true;
+  if (x + 1 < first.full_width && display_distance(c, shown[i + 1]) > threshold) return true;
+  if (y > 0 && display_distance(c, shown[i - row]) > threshold) return true;
+  return y + 1 < first.full_height && display_distance(c, shown[i + row]) > threshold;
 }
 
 /// The first pass of methods 1 and variance: one sample through every pixel's centre, over the
@@ -169,10 +178,12 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0};
             const int middle = n % 2 ? n * n / 2 : -1;
-            for (int k = 0; k < n * n; ++k) {
-              const double jx = state.rng.uniform(), jy = state.rng.uniform();
-              sum += k == middle ? value
-                                 : sample(x + ((k % n) + jx) / n, y + ((k / n) + jy) / n, state);
+            // Stratum k = j n + i (row j, column i), in that order: no division per sample.
+            for (int j = 0, k = 0; j < n; ++j) {
+              for (int i = 0; i < n; ++i, ++k) {
+                const double jx = state.rng.uniform(), jy = state.rng.uniform();
+                sum += k == middle ? value : sample(x + (i + jx) / n, y + (j + jy) / n, state);
+              }
             }
             value = sum / double(n * n);
             c.rays += state.rays;

@@ -39,10 +39,36 @@ Color id_color(int entry) {
 
 Integrator::Integrator(const Scene& scene, RenderMode mode)
     : scene_(scene), mode_(mode), textures_(load_textures(scene)) {
-  for (const Material& m : scene.materials) any_transmissive_ |= m.transmission > 0;
+  for (const Material& m : scene.materials) {
+    any_transmissive_ |= m.transmission > 0;
+    filters_.push_back(m.transmission * m.color);
+  }
+  for (const Light& light : scene.lights) emitted_.push_back(light.emitted());
+  objects_.reserve(scene.objects.size());
+  for (const Object& o : scene.objects) {
+    ObjectFacts f;
+    const bool composite =
+        std::holds_alternative<CsgShape>(o.shape) || std::holds_alternative<InstanceShape>(o.shape);
+    const std::size_t mi = std::size_t(std::max(o.material, 0));
+    f.material = composite ? -1 : std::int32_t(mi);
+    const auto* mesh = std::get_if<MeshShape>(&o.shape);
+    f.terminator = mesh && mesh->mesh && !mesh->mesh->normals.empty();
+    if (composite) {
+      f.shadow = ObjectFacts::kWalk;
+    } else if (mi < scene.materials.size()) {
+      const Material& m = scene.materials[mi];
+      const bool textured = m.has_checker || (mi < textures_.size() && textures_[mi]);
+      f.shadow = !(m.transmission > 0) ? ObjectFacts::kOpaque
+                 : textured            ? ObjectFacts::kWalk
+                                       : ObjectFacts::kFilter;
+    }
+    objects_.push_back(f);
+  }
 }
 
 std::size_t Integrator::material_index(const SceneHit& hit) const {
+  const std::int32_t known = objects_[std::size_t(hit.object)].material;
+  if (known >= 0) return std::size_t(known);
   const int m = material_of(scene_.objects[hit.object], hit.local);
   return m >= 0 ? std::size_t(m) : 0;
 }
@@ -89,15 +115,23 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
   // The material is resolved once per hit (CSG and instances search their parts for it).
   const std::size_t mi = material_index(hit);
-  const SurfaceInfo si = scene_.surface(ray, hit, needs(mi));
+  const Object& object = scene_.objects[hit.object];
+  const SurfaceInfo si = raycast::surface(object, ray, hit.local, needs(mi));
   const Material& m = scene_.materials[mi];
-  const Color c = albedo(scene_, textures_, ray, hit, si, mi);
+  // A plain colour needs no look-up (albedo() would return it).
+  const Color c = m.has_checker || needs(mi) == SurfaceNeeds::kAll
+                      ? albedo(scene_, textures_, ray, hit, si, mi)
+                      : m.color;
   const Vec3 wi = normalize(ray.d);
   const bool outside = dot(wi, si.n) < 0;
   const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer
   const Vec3 v = -wi;
-  // Shadow rays leaving on the shading normal's side of a smooth mesh start from Hanika's point.
-  const SurfaceInfo lit = terminator_origin(scene_.objects[hit.object], hit.local, si);
+  // Shadow rays leaving on the shading normal's side of a smooth mesh start from Hanika's point
+  // (for any other object terminator_origin returns si itself: no copy).
+  SurfaceInfo moved;
+  const bool terminator = objects_[std::size_t(hit.object)].terminator;
+  if (terminator) moved = terminator_origin(object, hit.local, si);
+  const SurfaceInfo& lit = terminator ? moved : si;
   Color result = m.ambient * mul(scene_.render.ambient, c) + direct(si, lit, n, v, m, c, state);
   if (depth >= scene_.render.max_depth) return result;
 
@@ -131,18 +165,6 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   return result;
 }
 
-Color Integrator::light_term(const Vec3& n, const Vec3& v, const Vec3& l, const Color& e,
-                             const Material& m, const Color& c) const {
-  const double nl = dot(n, l);
-  const Vec3 r = 2 * nl * n - l;
-  // pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
-  const double rv = dot(r, v);
-  const double highlight = m.specular > 0 && (rv > 0 || !(m.shininess > 0))
-                               ? m.specular * std::pow(std::max(0.0, rv), m.shininess)
-                               : 0;
-  return mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
-}
-
 Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n,
                          const Vec3& v, const Material& m, const Color& c,
                          SampleState& state) const {
@@ -150,18 +172,27 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
   if (m.diffuse <= 0 && m.specular <= 0) return sum;
   // One light direction l towards `target` (a point, or a direction when at infinity).
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
-    if (!(dot(n, l) > 0) || max_component(e) <= 0) return;
+    const double nl = dot(n, l);
+    if (!(nl > 0) || max_component(e) <= 0) return;
+    // Diffuse and Phong highlight: e * (kd nl C + ks max(0, r.v)^shininess), r = l mirrored
+    // about n. pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
+    const Vec3 r = 2 * nl * n - l;
+    const double rv = dot(r, v);
+    const double highlight = m.specular > 0 && (rv > 0 || !(m.shininess > 0))
+                                 ? m.specular * std::pow(std::max(0.0, rv), m.shininess)
+                                 : 0;
+    const Color term = mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
-    const Color term = light_term(n, v, l, e, m, c);
     if (!(max_component(term) > 0)) return;
     const SurfaceInfo& from = dot(l, si.shading_n) > 0 ? lit : si;
-    const Color visibility = shadow(offset_ray_origin(from, l), target, at_infinity, state);
-    if (max_component(visibility) <= 0) return;
-    sum += mul(visibility, term);
+    const Color seen = visibility(offset_ray_origin(from, l), target, at_infinity, state);
+    if (max_component(seen) <= 0) return;
+    sum += mul(seen, term);
   };
-  for (const Light& light : scene_.lights) {
-    const Color emitted = light.emitted();
+  for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+    const Light& light = scene_.lights[li];
+    const Color& emitted = emitted_[li];
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:
@@ -216,6 +247,11 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
                          SampleState& state) const {
+  return visibility(from, to, to_infinity, state);
+}
+
+inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,
+                                    SampleState& state) const {
   const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
   ++state.rays;
   if (!any_transmissive_) return scene_.occluded(segment) ? Color{0, 0, 0} : Color{1, 1, 1};
@@ -231,19 +267,15 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
 
 bool Integrator::filter(std::uint32_t index, const Ray& segment, Color& through) const {
   const Object& object = scene_.objects[index];
-  const bool composite = std::holds_alternative<CsgShape>(object.shape) ||
-                         std::holds_alternative<InstanceShape>(object.shape);
-  if (!composite) {
-    const Material& m = scene_.materials[object.material >= 0 ? object.material : 0];
-    const bool textured =
-        m.has_checker || (std::size_t(std::max(object.material, 0)) < textures_.size() &&
-                          textures_[std::size_t(std::max(object.material, 0))]);
-    if (!(m.transmission > 0) || !textured) {
-      if (!occluded(object, segment)) return true;
-      if (!(m.transmission > 0)) return false;
-      through = mul(through, m.transmission * m.color);
-      return max_component(through) > 0;
-    }
+  const ObjectFacts& facts = objects_[index];
+  const bool composite = facts.material < 0;
+  // An opaque object blocks wherever it crosses; an untextured transmissive one filters by its
+  // material's transmission * color once.
+  if (facts.shadow == ObjectFacts::kOpaque) return !occluded(object, segment);
+  if (facts.shadow == ObjectFacts::kFilter) {
+    if (!occluded(object, segment)) return true;
+    through = mul(through, filters_[std::size_t(facts.material)]);
+    return max_component(through) > 0;
   }
   // The object's crossings in order: the first opaque one blocks; the first transmissive one
   // gives the filter colour (its albedo at that crossing).

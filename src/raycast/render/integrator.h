@@ -56,12 +56,23 @@ class Integrator {
   /// (render/terminator.h), the others from si.
   Color direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
                const Material& m, const Color& c, SampleState& state) const;
-  Color light_term(const Vec3& n, const Vec3& v, const Vec3& l, const Color& e, const Material& m,
-                   const Color& c) const;
+  /// shadow() without the call: the query the shading makes for every light.
+  Color visibility(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
+
+  /// What the shading asks of each scene object, worked out once per frame (the same answers
+  /// the per-hit look-ups would give).
+  struct ObjectFacts {
+    std::int32_t material = 0;  // its material index; -1 for CSG and instances (per part)
+    bool terminator = false;    // a smooth mesh: shadow rays may start from terminator_origin
+    enum Shadow : std::uint8_t { kOpaque, kFilter, kWalk } shadow = kOpaque;  // filter()'s case
+  };
 
   const Scene& scene_;
   RenderMode mode_;
   std::vector<std::shared_ptr<const ImageTexture>> textures_;
+  std::vector<ObjectFacts> objects_;  // by index in scene.objects
+  std::vector<Color> filters_;        // by material: transmission * color (shadow filter)
+  std::vector<Color> emitted_;        // by light: Light::emitted()
   bool any_transmissive_ = false;
 };
 

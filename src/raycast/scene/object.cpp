@@ -1,6 +1,7 @@
 #include "scene/object.h"
 
 #include <cmath>
+#include <cstring>
 
 #include "scene/csg_tree.h"
 #include "scene/prototype.h"
@@ -67,8 +68,10 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, Surfac
       e[i] += (1 + gamma(3)) * (std::abs(m[i][0]) * back.x + std::abs(m[i][1]) * back.y +
                                 std::abs(m[i][2]) * back.z);
     si.p_error = e;
+    // Most shapes' shading normal is their geometric one, bit for bit: carried once.
+    const bool same = std::memcmp(&si.shading_n, &si.n, sizeof si.n) == 0;
     si.n = normalize(o.xf->normal(si.n));
-    si.shading_n = normalize(o.xf->normal(si.shading_n));
+    si.shading_n = same ? si.n : normalize(o.xf->normal(si.shading_n));
   }
   if (hit.flip) {
     si.n = -si.n;
