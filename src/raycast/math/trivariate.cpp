@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <string>
 
 namespace raycast {
@@ -13,6 +14,8 @@ using Key = int;  // i * kStride^2 + j * kStride + k
 constexpr int kStride = kMaxPolynomialDegree + 1;
 // The deepest stack of polynomials line code may use (deeper formulas use the expanded terms).
 constexpr int kMaxLineStack = 24;
+// Saved common subexpressions of line code (more are recomputed where they occur).
+constexpr int kMaxLineSlots = 8;
 using Sparse = std::map<Key, double>;
 
 int degree_of(const Sparse& p) {
@@ -119,21 +122,68 @@ class Expander {
 };
 
 // The formula's tree as LineOp code, and the multiplications one run of it costs (each
-// operation on the actual degrees). The tree was already checked by the Expander.
+// operation on the actual degrees). The tree was already checked by the Expander. A subtree
+// written twice or more (same operations on the same constants and variables) that is neither a
+// constant nor a bare variable is computed at its first occurrence, stored, and loaded at the
+// others.
 class LineCompiler {
  public:
-  explicit LineCompiler(const Expression& e) : e_(e) {}
+  explicit LineCompiler(const Expression& e) : e_(e), keys_(e.nodes.size()) {
+    for (std::size_t i = 0; i < e.nodes.size(); ++i) keys_[i] = key_of(static_cast<int>(i));
+    if (e.root >= 0) count_uses(e.root);
+  }
   // Emits the node; returns its degree.
   int emit(int index, std::vector<Trivariate::LineOp>& code, int depth = 0) {
+    using Op = Trivariate::LineOp;
+    const std::string& key = keys_[index];
+    const bool shareable = uses_[key] >= 2 && !is_leaf(index);
+    if (shareable) {
+      if (const auto it = saved_.find(key); it != saved_.end()) {
+        code.push_back({Op::kLoad, it->second.first, 0});
+        max_stack = std::max(max_stack, depth + 1);
+        return it->second.second;
+      }
+    }
     const int degree = emit_node(index, code, depth);
     max_degree = std::max(max_degree, degree);
     max_stack = std::max(max_stack, depth + 1);
+    const int slot = static_cast<int>(saved_.size());
+    if (shareable && degree > 0 && slot < kMaxLineSlots) {
+      code.push_back({Op::kStore, slot, 0});
+      saved_[key] = {slot, degree};
+    }
     return degree;
   }
   long cost = 0;
   int max_degree = 0, max_stack = 0;
 
  private:
+  // A structural key: equal keys, equal subtrees (constants by their bits).
+  std::string key_of(int index) const {
+    const ExprNode& n = e_.nodes[index];
+    std::string k = std::to_string(static_cast<int>(n.op));
+    if (n.op == ExprOp::kConst) {
+      std::ostringstream v;
+      v << std::hexfloat << n.value;
+      k += v.str();
+    }
+    if (n.a >= 0) k += "(" + keys_[n.a] + ")";
+    if (n.b >= 0) k += "(" + keys_[n.b] + ")";
+    return k;
+  }
+  // How often each subtree is emitted: a repeat is loaded, so its own subtrees are not counted
+  // again.
+  void count_uses(int index) {
+    const ExprNode& n = e_.nodes[index];
+    if (uses_[keys_[index]]++ > 0) return;
+    if (n.a >= 0) count_uses(n.a);
+    if (n.b >= 0) count_uses(n.b);
+  }
+  bool is_leaf(int index) const {
+    const ExprOp op = e_.nodes[index].op;
+    return op == ExprOp::kConst || op == ExprOp::kX || op == ExprOp::kY || op == ExprOp::kZ;
+  }
+
   int emit_node(int index, std::vector<Trivariate::LineOp>& code, int depth) {
     using Op = Trivariate::LineOp;
     const ExprNode& n = e_.nodes[index];
@@ -186,6 +236,9 @@ class LineCompiler {
   }
 
   const Expression& e_;
+  std::vector<std::string> keys_;
+  std::map<std::string, int> uses_;
+  std::map<std::string, std::pair<int, int>> saved_;  // key -> (slot, degree)
 };
 
 // Multiplications of restrict_expanded_to_line on f.
@@ -340,7 +393,7 @@ struct LinePoly {
 
 Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
   using Op = Trivariate::LineOp;
-  LinePoly s[kMaxLineStack];
+  LinePoly s[kMaxLineStack], saved[kMaxLineSlots];
   int top = -1;
   for (const Op& in : f.line_code) {
     switch (in.kind) {
@@ -384,6 +437,14 @@ Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3&
       }
       case Op::kNeg:
         for (int k = 0; k <= s[top].degree; ++k) s[top].c[k] = -s[top].c[k];
+        break;
+      case Op::kStore:
+        saved[in.n].degree = s[top].degree;
+        for (int k = 0; k <= s[top].degree; ++k) saved[in.n].c[k] = s[top].c[k];
+        break;
+      case Op::kLoad:
+        s[++top].degree = saved[in.n].degree;
+        for (int k = 0; k <= saved[in.n].degree; ++k) s[top].c[k] = saved[in.n].c[k];
         break;
       case Op::kDiv:
         for (int k = 0; k <= s[top].degree; ++k) s[top].c[k] /= in.value;
