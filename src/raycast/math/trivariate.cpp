@@ -1,10 +1,12 @@
 #include "math/trivariate.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace raycast {
 
@@ -391,6 +393,44 @@ struct LinePoly {
 };
 }  // namespace
 
+namespace {
+// a[0..DA+DB] = a[0..DA] * b[0..DB] with the loops unrolled for the degrees: the sums of
+// multiply_into in the same order (so the same bits), without its loop overhead.
+template <int DA, int DB>
+void multiply_fixed(double* a, const double* b) {
+  double r[DA + DB + 1] = {};
+  for (int i = 0; i <= DA; ++i)
+    for (int j = 0; j <= DB; ++j) r[i + j] += a[i] * b[j];
+  for (int k = 0; k <= DA + DB; ++k) a[k] = r[k];
+}
+
+// Products of degrees up to kFixedDegree each (the heart's and the tori's are) by table.
+constexpr int kFixedDegree = 8;
+using MultiplyFixed = void (*)(double*, const double*);
+template <int DA, int... DB>
+constexpr std::array<MultiplyFixed, sizeof...(DB)> multiply_row(std::integer_sequence<int, DB...>) {
+  return {&multiply_fixed<DA, DB>...};
+}
+template <int... DA>
+constexpr std::array<std::array<MultiplyFixed, kFixedDegree + 1>, sizeof...(DA)> multiply_table(
+    std::integer_sequence<int, DA...>) {
+  return {multiply_row<DA>(std::make_integer_sequence<int, kFixedDegree + 1>())...};
+}
+constexpr auto kMultiplyFixed = multiply_table(std::make_integer_sequence<int, kFixedDegree + 1>());
+
+// a = a * b (a.degree + b.degree <= kMaxPolynomialDegree).
+void multiply_line(LinePoly& a, const double* b, int db) {
+  if (a.degree <= kFixedDegree && db <= kFixedDegree) {
+    kMultiplyFixed[a.degree][db](a.c, b);
+  } else {
+    double r[kStride];
+    multiply_into(a.c, a.degree, b, db, r);
+    for (int k = 0; k <= a.degree + db; ++k) a.c[k] = r[k];
+  }
+  a.degree += db;
+}
+}  // namespace
+
 Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
   using Op = Trivariate::LineOp;
   LinePoly s[kMaxLineStack], saved[kMaxLineSlots];
@@ -427,10 +467,7 @@ Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3&
           a.degree = b.degree;
           for (int k = 0; k <= b.degree; ++k) a.c[k] = c * b.c[k];
         } else {
-          double r[kStride];
-          multiply_into(a.c, a.degree, b.c, b.degree, r);
-          a.degree += b.degree;
-          for (int k = 0; k <= a.degree; ++k) a.c[k] = r[k];
+          multiply_line(a, b.c, b.degree);
         }
         --top;
         break;
@@ -456,14 +493,10 @@ Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3&
           a.c[0] = 1;
           break;
         }
-        double base[kStride], r[kStride];
+        double base[kStride];
         const int db = a.degree;
         for (int k = 0; k <= db; ++k) base[k] = a.c[k];
-        for (int m = 1; m < in.n; ++m) {  // a = a * base, n - 1 times
-          multiply_into(a.c, a.degree, base, db, r);
-          a.degree += db;
-          for (int k = 0; k <= a.degree; ++k) a.c[k] = r[k];
-        }
+        for (int m = 1; m < in.n; ++m) multiply_line(a, base, db);  // a = a * base, n - 1 times
         break;
       }
     }
