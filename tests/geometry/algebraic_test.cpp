@@ -92,6 +92,100 @@ TEST(Algebraic, RestrictionFromTheFormula_MatchesExpandedAndLongDouble) {
   }
 }
 
+// The ray's polynomial by walking the formula's tree, every subtree computed where it occurs
+// (no common subexpression saved), with the line code's arithmetic: a constant factor scales, a
+// product is the double loop in (i, j) order, a power multiplies the base in n - 1 times.
+std::vector<double> tree_line(const Expression& e, int index, const Vec3& o, const Vec3& d) {
+  const ExprNode& n = e.nodes[index];
+  auto mul = [](const std::vector<double>& a, const std::vector<double>& b) {
+    if (b.size() == 1) {
+      std::vector<double> r = a;
+      for (double& c : r) c *= b[0];
+      return r;
+    }
+    if (a.size() == 1) {
+      std::vector<double> r = b;
+      for (double& c : r) c = a[0] * c;
+      return r;
+    }
+    std::vector<double> r(a.size() + b.size() - 1, 0.0);
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
+    return r;
+  };
+  switch (n.op) {
+    case ExprOp::kConst:
+      return {n.value};
+    case ExprOp::kX:
+    case ExprOp::kY:
+    case ExprOp::kZ: {
+      const int v = static_cast<int>(n.op) - static_cast<int>(ExprOp::kX);
+      return {o[v], d[v]};
+    }
+    case ExprOp::kAdd:
+    case ExprOp::kSub: {
+      std::vector<double> a = tree_line(e, n.a, o, d);
+      const std::vector<double> b = tree_line(e, n.b, o, d);
+      const double sign = n.op == ExprOp::kAdd ? 1 : -1;
+      if (a.size() < b.size()) a.resize(b.size(), 0.0);
+      for (std::size_t k = 0; k < b.size(); ++k) a[k] += sign * b[k];
+      return a;
+    }
+    case ExprOp::kMul: {
+      const auto a = tree_line(e, n.a, o, d), b = tree_line(e, n.b, o, d);
+      if (a.size() == 1 && b.size() == 1) return {a[0] * b[0]};
+      return mul(a, b);
+    }
+    case ExprOp::kDiv: {
+      std::vector<double> a = tree_line(e, n.a, o, d);
+      const double v = tree_line(e, n.b, o, d)[0];
+      for (double& c : a) c /= v;
+      return a;
+    }
+    case ExprOp::kPow: {
+      const auto base = tree_line(e, n.a, o, d);
+      const int p = static_cast<int>(tree_line(e, n.b, o, d)[0]);
+      std::vector<double> r = base;
+      for (int k = 1; k < p; ++k) r = mul(r, base);
+      return r;
+    }
+    default:
+      ADD_FAILURE() << "operation not in the test formulas";
+      return {};
+  }
+}
+
+// Common subexpressions (the heart's x^2, y^2, z^3; the tori's x^2, y^2, z^2, (x-1)^2) are
+// computed once in the line code: it must say so (kStore, kLoad), and its polynomial must be the
+// tree's, bit for bit, on random rays (the saved copy is the value computed anew).
+TEST(Algebraic, LineCodeCommonSubexpressions_BitEqualToTheTreeWalk) {
+  const char* const kTwoTori =
+      "((x^2 + y^2 + z^2 + 0.84)^2 - 4*(x^2 + y^2)) * (((x-1)^2 + y^2 + z^2 + 0.84)^2 - "
+      "4*((x-1)^2 + z^2))";
+  for (const char* text : {kHeart, kTwoTori}) {
+    SCOPED_TRACE(text);
+    const Trivariate f = expand_polynomial(text);
+    ASSERT_TRUE(f.line_code_cheaper);
+    int stores = 0, loads = 0;
+    for (const auto& op : f.line_code) {
+      stores += op.kind == Trivariate::LineOp::kStore;
+      loads += op.kind == Trivariate::LineOp::kLoad;
+    }
+    EXPECT_GE(stores, 3);
+    EXPECT_GE(loads, stores);
+    const Expression e = parse_expression(text);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 200; ++i) {
+      const Vec3 o{1.5 * u(rng), 1.5 * u(rng), 1.5 * u(rng)}, d{u(rng), u(rng), u(rng)};
+      const Polynomial a = restrict_code_to_line(f, o, d);
+      const std::vector<double> want = tree_line(e, e.root, o, d);
+      ASSERT_EQ(a.degree, static_cast<int>(want.size()) - 1);
+      for (int k = 0; k <= a.degree; ++k) ASSERT_EQ(a.c[k], want[k]) << "coefficient " << k;
+    }
+  }
+}
+
 TEST(Algebraic, ExtendedEvaluation_MatchesTheHeartInLongDouble) {
   // The extended-precision value and gradient (tabled powers) against the heart written out by
   // hand in long double and its gradient by central differences, at random points.

@@ -1,9 +1,12 @@
 #include "math/trivariate.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <string>
+#include <utility>
 
 namespace raycast {
 
@@ -13,6 +16,8 @@ using Key = int;  // i * kStride^2 + j * kStride + k
 constexpr int kStride = kMaxPolynomialDegree + 1;
 // The deepest stack of polynomials line code may use (deeper formulas use the expanded terms).
 constexpr int kMaxLineStack = 24;
+// Saved common subexpressions of line code (more are recomputed where they occur).
+constexpr int kMaxLineSlots = 8;
 using Sparse = std::map<Key, double>;
 
 int degree_of(const Sparse& p) {
@@ -119,21 +124,68 @@ class Expander {
 };
 
 // The formula's tree as LineOp code, and the multiplications one run of it costs (each
-// operation on the actual degrees). The tree was already checked by the Expander.
+// operation on the actual degrees). The tree was already checked by the Expander. A subtree
+// written twice or more (same operations on the same constants and variables) that is neither a
+// constant nor a bare variable is computed at its first occurrence, stored, and loaded at the
+// others.
 class LineCompiler {
  public:
-  explicit LineCompiler(const Expression& e) : e_(e) {}
+  explicit LineCompiler(const Expression& e) : e_(e), keys_(e.nodes.size()) {
+    for (std::size_t i = 0; i < e.nodes.size(); ++i) keys_[i] = key_of(static_cast<int>(i));
+    if (e.root >= 0) count_uses(e.root);
+  }
   // Emits the node; returns its degree.
   int emit(int index, std::vector<Trivariate::LineOp>& code, int depth = 0) {
+    using Op = Trivariate::LineOp;
+    const std::string& key = keys_[index];
+    const bool shareable = uses_[key] >= 2 && !is_leaf(index);
+    if (shareable) {
+      if (const auto it = saved_.find(key); it != saved_.end()) {
+        code.push_back({Op::kLoad, it->second.first, 0});
+        max_stack = std::max(max_stack, depth + 1);
+        return it->second.second;
+      }
+    }
     const int degree = emit_node(index, code, depth);
     max_degree = std::max(max_degree, degree);
     max_stack = std::max(max_stack, depth + 1);
+    const int slot = static_cast<int>(saved_.size());
+    if (shareable && degree > 0 && slot < kMaxLineSlots) {
+      code.push_back({Op::kStore, slot, 0});
+      saved_[key] = {slot, degree};
+    }
     return degree;
   }
   long cost = 0;
   int max_degree = 0, max_stack = 0;
 
  private:
+  // A structural key: equal keys, equal subtrees (constants by their bits).
+  std::string key_of(int index) const {
+    const ExprNode& n = e_.nodes[index];
+    std::string k = std::to_string(static_cast<int>(n.op));
+    if (n.op == ExprOp::kConst) {
+      std::ostringstream v;
+      v << std::hexfloat << n.value;
+      k += v.str();
+    }
+    if (n.a >= 0) k += "(" + keys_[n.a] + ")";
+    if (n.b >= 0) k += "(" + keys_[n.b] + ")";
+    return k;
+  }
+  // How often each subtree is emitted: a repeat is loaded, so its own subtrees are not counted
+  // again.
+  void count_uses(int index) {
+    const ExprNode& n = e_.nodes[index];
+    if (uses_[keys_[index]]++ > 0) return;
+    if (n.a >= 0) count_uses(n.a);
+    if (n.b >= 0) count_uses(n.b);
+  }
+  bool is_leaf(int index) const {
+    const ExprOp op = e_.nodes[index].op;
+    return op == ExprOp::kConst || op == ExprOp::kX || op == ExprOp::kY || op == ExprOp::kZ;
+  }
+
   int emit_node(int index, std::vector<Trivariate::LineOp>& code, int depth) {
     using Op = Trivariate::LineOp;
     const ExprNode& n = e_.nodes[index];
@@ -186,6 +238,9 @@ class LineCompiler {
   }
 
   const Expression& e_;
+  std::vector<std::string> keys_;
+  std::map<std::string, int> uses_;
+  std::map<std::string, std::pair<int, int>> saved_;  // key -> (slot, degree)
 };
 
 // Multiplications of restrict_expanded_to_line on f.
@@ -338,9 +393,47 @@ struct LinePoly {
 };
 }  // namespace
 
+namespace {
+// a[0..DA+DB] = a[0..DA] * b[0..DB] with the loops unrolled for the degrees: the sums of
+// multiply_into in the same order (so the same bits), without its loop overhead.
+template <int DA, int DB>
+void multiply_fixed(double* a, const double* b) {
+  double r[DA + DB + 1] = {};
+  for (int i = 0; i <= DA; ++i)
+    for (int j = 0; j <= DB; ++j) r[i + j] += a[i] * b[j];
+  for (int k = 0; k <= DA + DB; ++k) a[k] = r[k];
+}
+
+// Products of degrees up to kFixedDegree each (the heart's and the tori's are) by table.
+constexpr int kFixedDegree = 8;
+using MultiplyFixed = void (*)(double*, const double*);
+template <int DA, int... DB>
+constexpr std::array<MultiplyFixed, sizeof...(DB)> multiply_row(std::integer_sequence<int, DB...>) {
+  return {&multiply_fixed<DA, DB>...};
+}
+template <int... DA>
+constexpr std::array<std::array<MultiplyFixed, kFixedDegree + 1>, sizeof...(DA)> multiply_table(
+    std::integer_sequence<int, DA...>) {
+  return {multiply_row<DA>(std::make_integer_sequence<int, kFixedDegree + 1>())...};
+}
+constexpr auto kMultiplyFixed = multiply_table(std::make_integer_sequence<int, kFixedDegree + 1>());
+
+// a = a * b (a.degree + b.degree <= kMaxPolynomialDegree).
+void multiply_line(LinePoly& a, const double* b, int db) {
+  if (a.degree <= kFixedDegree && db <= kFixedDegree) {
+    kMultiplyFixed[a.degree][db](a.c, b);
+  } else {
+    double r[kStride];
+    multiply_into(a.c, a.degree, b, db, r);
+    for (int k = 0; k <= a.degree + db; ++k) a.c[k] = r[k];
+  }
+  a.degree += db;
+}
+}  // namespace
+
 Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
   using Op = Trivariate::LineOp;
-  LinePoly s[kMaxLineStack];
+  LinePoly s[kMaxLineStack], saved[kMaxLineSlots];
   int top = -1;
   for (const Op& in : f.line_code) {
     switch (in.kind) {
@@ -374,16 +467,21 @@ Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3&
           a.degree = b.degree;
           for (int k = 0; k <= b.degree; ++k) a.c[k] = c * b.c[k];
         } else {
-          double r[kStride];
-          multiply_into(a.c, a.degree, b.c, b.degree, r);
-          a.degree += b.degree;
-          for (int k = 0; k <= a.degree; ++k) a.c[k] = r[k];
+          multiply_line(a, b.c, b.degree);
         }
         --top;
         break;
       }
       case Op::kNeg:
         for (int k = 0; k <= s[top].degree; ++k) s[top].c[k] = -s[top].c[k];
+        break;
+      case Op::kStore:
+        saved[in.n].degree = s[top].degree;
+        for (int k = 0; k <= s[top].degree; ++k) saved[in.n].c[k] = s[top].c[k];
+        break;
+      case Op::kLoad:
+        s[++top].degree = saved[in.n].degree;
+        for (int k = 0; k <= saved[in.n].degree; ++k) s[top].c[k] = saved[in.n].c[k];
         break;
       case Op::kDiv:
         for (int k = 0; k <= s[top].degree; ++k) s[top].c[k] /= in.value;
@@ -395,14 +493,10 @@ Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3&
           a.c[0] = 1;
           break;
         }
-        double base[kStride], r[kStride];
+        double base[kStride];
         const int db = a.degree;
         for (int k = 0; k <= db; ++k) base[k] = a.c[k];
-        for (int m = 1; m < in.n; ++m) {  // a = a * base, n - 1 times
-          multiply_into(a.c, a.degree, base, db, r);
-          a.degree += db;
-          for (int k = 0; k <= a.degree; ++k) a.c[k] = r[k];
-        }
+        for (int m = 1; m < in.n; ++m) multiply_line(a, base, db);  // a = a * base, n - 1 times
         break;
       }
     }

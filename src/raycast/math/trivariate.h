@@ -21,10 +21,24 @@ struct Trivariate {
 
   /// The formula as written (before expansion), as postfix code over polynomials in t: when its
   /// products cost fewer multiplications than the expanded terms' (a product or power of sums,
-  /// like Taubin's heart or two tori multiplied), restrict_to_line runs this instead.
+  /// like Taubin's heart or two tori multiplied), restrict_to_line runs this instead. A
+  /// subexpression written more than once (the heart's x^2 and z^3) is computed once: kStore
+  /// keeps a copy of the top in a slot, kLoad pushes it again (the same coefficients, bit for bit,
+  /// as computing it anew).
   struct LineOp {
-    enum Kind : unsigned char { kConst, kVar, kAdd, kSub, kMul, kNeg, kDiv, kPow } kind;
-    int n = 0;         // kVar: 0, 1, 2 = x, y, z; kPow: the exponent
+    enum Kind : unsigned char {
+      kConst,
+      kVar,
+      kAdd,
+      kSub,
+      kMul,
+      kNeg,
+      kDiv,
+      kPow,
+      kStore,
+      kLoad
+    } kind;
+    int n = 0;         // kVar: 0, 1, 2 = x, y, z; kPow: the exponent; kStore, kLoad: the slot
     double value = 0;  // kConst: the value; kDiv: the constant divisor
   };
   std::vector<LineOp> line_code;
