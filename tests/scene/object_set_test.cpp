@@ -1,10 +1,13 @@
-// ObjectSet's walks against a brute-force loop over every object, on both of its paths: the
-// flat list (at most kFlatLimit bounded objects) and the BVH (more).
+// ObjectSet's walks against a brute-force loop over every object, on each of its paths: the flat
+// list of double boxes (fewer than kFloatBoxesFrom bounded objects), of float boxes four at a time
+// (up to kFlatLimit), and the BVH (more); random rays, rays parallel to the box slabs, and rays
+// with NaN or infinite directions.
 #include "scene/object_set.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <vector>
 
@@ -45,6 +48,13 @@ void check_against_brute_force(std::size_t bounded, bool flat) {
   for (int n = 0; n < 2000; ++n) {
     Ray ray = testing::random_ray(rng, 8, 5);
     if (n % 2 == 1) ray.tmax = rng.uniform(0.05, 1.2);  // a segment (|d| is in [0.1, 10])
+    if (n % 10 == 3) ray.d[n % 3] = 0;                  // parallel to a pair of slabs
+    if (n % 10 == 7) {                                  // along two axes, origin on a box face
+      ray.d[n % 3] = ray.d[(n + 1) % 3] = 0;
+      if (objects.size() > 1) ray.o[n % 3] = raycast::bounds(objects[1]).lo[n % 3];
+    }
+    if (n % 50 == 9) ray.d.y = std::numeric_limits<double>::quiet_NaN();
+    if (n % 50 == 19) ray.d.x = kInfinity;
     // Nearest: the smallest t over every object's own nearest hit.
     double best = kInfinity;
     std::set<std::uint32_t> crossed;
@@ -83,7 +93,15 @@ void check_against_brute_force(std::size_t bounded, bool flat) {
 }
 
 TEST(ObjectSet, FlatWalk_MatchesBruteForce) {
-  for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(3), ObjectSet::kFlatLimit})
+  for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(3)})
+    check_against_brute_force(n, true);
+}
+
+TEST(ObjectSet, FloatBoxWalk_MatchesBruteForce) {
+  static_assert(ObjectSet::kFloatBoxesFrom > 1 &&
+                ObjectSet::kFloatBoxesFrom < ObjectSet::kFlatLimit);
+  for (std::size_t n : {ObjectSet::kFloatBoxesFrom - 1, ObjectSet::kFloatBoxesFrom, std::size_t(8),
+                        std::size_t(9), ObjectSet::kFlatLimit})
     check_against_brute_force(n, true);
 }
 

@@ -14,22 +14,33 @@ namespace {
 // different spaces, so a few dozen roundings of the coordinates' magnitude separate them.
 constexpr double kCullSlack = gamma(16);
 
+// The ray as the culling test uses it: the slab planes chosen by the sign of d, and per axis the
+// rounding slack of the test, kCullSlack (2 M + |o|) |1 / d| with M the tree's largest
+// |coordinate| on that axis (a bound on every box's |lo| + |hi| + |o| term), made once per ray
+// instead of per box; not finite (d = 0 on that axis): no slack, as before.
+struct CullRay {
+  Vec3 o, inv_d;
+  double slack[3];
+  bool negative[3];
+  CullRay(const CsgTree& tree, const Ray& ray) : o(ray.o), inv_d(reciprocal(ray.d)) {
+    for (int a = 0; a < 3; ++a) {
+      const double s =
+          kCullSlack * (2 * tree.box_magnitude[a] + std::abs(o[a])) * std::abs(inv_d[a]);
+      slack[a] = std::isfinite(s) ? s : 0;
+      negative[a] = std::signbit(inv_d[a]);
+    }
+  }
+};
+
 // Whether the line o + t d may meet box b for some t in [lo, hi] (either may be infinite).
 // Conservative: each slab interval is widened by the rounding of its terms; a NaN from 0 * inf
 // leaves that axis unconstrained.
-bool box_meets(const Aabb& b, const Vec3& o, const Vec3& inv_d, double lo, double hi) {
+bool box_meets(const Aabb& b, const CullRay& r, double lo, double hi) {
   if (b.is_empty()) return false;
   double t0 = lo, t1 = hi;
   for (int a = 0; a < 3; ++a) {
-    double near = (b.lo[a] - o[a]) * inv_d[a];
-    double far = (b.hi[a] - o[a]) * inv_d[a];
-    if (near > far) std::swap(near, far);
-    const double slack =
-        kCullSlack * (std::abs(b.lo[a]) + std::abs(b.hi[a]) + std::abs(o[a])) * std::abs(inv_d[a]);
-    if (std::isfinite(slack)) {
-      near -= slack;
-      far += slack;
-    }
+    const double near = ((r.negative[a] ? b.hi[a] : b.lo[a]) - r.o[a]) * r.inv_d[a] - r.slack[a];
+    const double far = ((r.negative[a] ? b.lo[a] : b.hi[a]) - r.o[a]) * r.inv_d[a] + r.slack[a];
     t0 = near > t0 ? near : t0;
     t1 = far < t1 ? far : t1;
     if (t0 > t1) return false;
@@ -50,7 +61,7 @@ SpanList* scratch(std::size_t lists) {
 struct Evaluator {
   const CsgTree& tree;
   const Ray& ray;
-  Vec3 inv_d;
+  CullRay cull;
   SpanList* pool = nullptr;  // level L uses pool[2 L] and pool[2 L + 1]
 
   // The spans of operand `code` at tree level `level`, correct within [lo, hi] (and possibly
@@ -60,7 +71,7 @@ struct Evaluator {
     out.clear();
     if (code < 0) {
       const std::size_t leaf = static_cast<std::size_t>(-code - 1);
-      if (!box_meets(tree.leaf_boxes[leaf], ray.o, inv_d, lo, hi)) return;
+      if (!box_meets(tree.leaf_boxes[leaf], cull, lo, hi)) return;
       spans(tree.leaves[leaf], ray, out);
       const bool flip = tree.leaf_flipped[leaf] != 0;
       for (Span& s : out) {
@@ -70,7 +81,7 @@ struct Evaluator {
       return;
     }
     const CsgNode& node = tree.nodes[static_cast<std::size_t>(code)];
-    if (!box_meets(node.box, ray.o, inv_d, lo, hi)) return;
+    if (!box_meets(node.box, cull, lo, hi)) return;
     operand(node.operands[0], lo, hi, out, level + 1);
     SpanList& child = pool[2 * level];
     SpanList& merged = pool[2 * level + 1];
@@ -149,6 +160,16 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
     }
     node.box = box;
   }
+  for (int a = 0; a < 3; ++a) {
+    double m = 0;
+    auto grow = [&](const Aabb& b) {
+      for (double c : {b.lo[a], b.hi[a]})
+        if (std::isfinite(c)) m = std::max(m, std::abs(c));
+    };
+    for (const Aabb& b : tree.leaf_boxes) grow(b);
+    for (const CsgNode& node : tree.nodes) grow(node.box);
+    tree.box_magnitude[a] = m;
+  }
   // Levels, top-down (operands have larger indices than their node), to size the scratch lists.
   std::vector<std::size_t> level(tree.nodes.size(), 0);
   tree.depth = 0;
@@ -167,7 +188,7 @@ Aabb bounds(const CsgShape& s) { return s.tree->nodes[0].box; }
 bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
   SpanList* pool = scratch(2 * s.tree->depth + 3);
   SpanList& list = pool[2 * s.tree->depth + 2];
-  Evaluator{*s.tree, ray, reciprocal(ray.d), pool}.operand(0, ray.tmin, ray.tmax, list);
+  Evaluator{*s.tree, ray, CullRay(*s.tree, ray), pool}.operand(0, ray.tmin, ray.tmax, list);
   for (const Span& span : list) {
     for (const LocalHit* end : {&span.in, &span.out}) {
       if (end->part != kNoSurface && end->t >= ray.tmin && end->t <= ray.tmax) {
@@ -188,7 +209,7 @@ bool occluded(const CsgShape& s, const Ray& ray) {
 void spans(const CsgShape& s, const Ray& ray, SpanList& out) {
   SpanList* pool = scratch(2 * s.tree->depth + 3);
   SpanList& list = pool[2 * s.tree->depth + 2];
-  Evaluator{*s.tree, ray, reciprocal(ray.d), pool}.operand(0, -kInfinity, kInfinity, list);
+  Evaluator{*s.tree, ray, CullRay(*s.tree, ray), pool}.operand(0, -kInfinity, kInfinity, list);
   for (const Span& span : list) out.push_back(span);
 }
 
@@ -200,7 +221,7 @@ SurfaceInfo surface(const CsgShape& s, const Ray& ray, const LocalHit& hit) {
 
 bool contains(const CsgShape& s, const Vec3& p) {
   const Ray unused{};
-  return Evaluator{*s.tree, unused, {}}.contains(0, p);
+  return Evaluator{*s.tree, unused, CullRay(*s.tree, unused)}.contains(0, p);
 }
 
 int csg_material(const CsgShape& s, const LocalHit& hit) {

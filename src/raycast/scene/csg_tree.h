@@ -24,6 +24,9 @@ struct CsgTree {
   std::vector<char> leaf_flipped;  // set by finish_csg_tree: hits of the leaf start flipped
   std::vector<CsgNode> nodes;
   std::size_t depth = 0;  // operation levels below the root; set by finish_csg_tree
+  // Largest |coordinate| per axis over the finite sides of every node and leaf box, for the
+  // culling test's rounding slack; set by finish_csg_tree.
+  double box_magnitude[3] = {0, 0, 0};
 };
 
 inline std::int32_t csg_leaf_code(std::size_t leaf) { return -static_cast<std::int32_t>(leaf) - 1; }

@@ -1,5 +1,7 @@
 #include "scene/object_set.h"
 
+#include <algorithm>
+
 namespace raycast {
 
 void ObjectSet::build(std::span<const Object> objects) {
@@ -7,6 +9,7 @@ void ObjectSet::build(std::span<const Object> objects) {
   std::vector<Vec3> centres;
   bounded_.clear();
   unbounded_.clear();
+  groups_.clear();
   bounds_ = finite_bounds_ = Aabb{};
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const Aabb b = raycast::bounds(objects[i]);
@@ -23,11 +26,32 @@ void ObjectSet::build(std::span<const Object> objects) {
   }
   flat_ = bounded_.size() <= kFlatLimit;
   if (flat_) {
-    boxes_ = std::move(boxes);
     bvh_ = Bvh{};
+    if (boxes.size() < kFloatBoxesFrom) {
+      boxes_ = std::move(boxes);
+      return;
+    }
+    boxes_.clear();
+    groups_.resize((boxes.size() + 3) / 4);
+    for (std::size_t k = 0; k < groups_.size() * 4; ++k) {
+      Box4& g = groups_[k / 4];
+      const int lane = static_cast<int>(k % 4);
+      if (k < boxes.size())
+        set_box4_lane(g, lane, boxes[k]);
+      else
+        clear_box4_lane(g, lane);
+    }
+    const std::size_t last = boxes.size() % 4;
+    last_lanes_ = last == 0 ? 0xFu : (1u << last) - 1;
+    double magnitude[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a)
+      for (const Box4& g : groups_)
+        for (int row : {a, 3 + a})
+          for (float p : g.plane[row])
+            if (std::isfinite(p)) magnitude[a] = std::max(magnitude[a], double(std::abs(p)));
+    scale_ = make_box4_scale(magnitude);
     return;
   }
-  boxes_.clear();
   // One object per leaf: its own box is the last test before its shape's (a leaf of four tested
   // each object's shape on a hit of the leaf's box; docs/performance-render.md, round 5).
   BvhBuildConfig config;
@@ -35,34 +59,86 @@ void ObjectSet::build(std::span<const Object> objects) {
   bvh_ = build_bvh(boxes, centres, config);
 }
 
-bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
-                          std::int32_t& index) const {
-  Ray r = ray;
+namespace {
+
+// Tests object i on [tmin, r.tmax], lowering r.tmax to a hit; returns whether it found one.
+struct NearestTest {
+  std::span<const Object> objects;
+  Ray& r;
+  LocalHit& hit;
+  std::int32_t& index;
   bool found = false;
-  auto test = [&](std::uint32_t i, double& tmax) {
-    r.tmax = tmax;
+  bool operator()(std::uint32_t i) {
     LocalHit h;
-    if (raycast::intersect(objects[i], r, h) && h.t <= tmax) {
-      tmax = h.t;
+    if (raycast::intersect(objects[i], r, h) && h.t <= r.tmax) {
+      r.tmax = h.t;
       hit = h;
       index = static_cast<std::int32_t>(i);
       found = true;
+      return true;
     }
-  };
-  double tmax = ray.tmax;
-  for (std::uint32_t i : unbounded_) test(i, tmax);
-  if (flat_) {
-    const Vec3 inv_d = reciprocal(ray.d);
+    return false;
+  }
+};
+
+}  // namespace
+
+// The BVH walk on its own frame (its stack is 2 KB) so that the flat path does not carry it.
+[[gnu::noinline]] static void bvh_nearest(const Bvh& bvh, std::span<const std::uint32_t> bounded,
+                                          NearestTest& test) {
+  double tmax = test.r.tmax;
+  traverse_nearest(bvh, test.r.o, test.r.d, test.r.tmin, tmax, [&](std::uint32_t prim, double& t) {
+    test.r.tmax = t;
+    test(bounded[prim]);
+    t = test.r.tmax;
+  });
+}
+
+bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
+                          std::int32_t& index) const {
+  Ray r = ray;
+  NearestTest test{objects, r, hit, index};
+  for (std::uint32_t i : unbounded_) test(i);
+  if (!flat_) {
+    bvh_nearest(bvh_, bounded_, test);
+    return test.found;
+  }
+  if (bounded_.empty()) return test.found;
+  const Vec3 inv_d = reciprocal(ray.d);
+  if (bounded_.size() < kFloatBoxesFrom) {
     for (std::size_t k = 0; k < boxes_.size(); ++k) {
       double t_enter;
-      if (intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, tmax, t_enter))
-        test(bounded_[k], tmax);
+      if (intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, r.tmax, t_enter)) test(bounded_[k]);
     }
-    return found;
+    return test.found;
   }
-  traverse_nearest(bvh_, ray.o, ray.d, ray.tmin, tmax,
-                   [&](std::uint32_t prim, double& t) { test(bounded_[prim], t); });
-  return found;
+  // The boxes that may meet [tmin, tmax], then their objects nearest entry first (ties in index
+  // order), each while its entry is not beyond the tmax lowered by the hits found so far.
+  const Box4Ray br = make_box4_ray(ray, inv_d, scale_);
+  float tmax_up = float_up(r.tmax);
+  struct Candidate {
+    float t;
+    std::uint32_t k;
+  };
+  Candidate c[kFlatLimit];
+  std::size_t n = 0;
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    alignas(16) float t_enter[4];
+    unsigned mask = box4_hits(groups_[g], br, tmax_up, t_enter);
+    if (g + 1 == groups_.size()) mask &= last_lanes_;
+    for (; mask != 0; mask &= mask - 1) {
+      const int l = std::countr_zero(mask);
+      // Insertion by entry, after equal entries: the order is a function of the ray.
+      std::size_t at = n++;
+      for (; at > 0 && c[at - 1].t > t_enter[l]; --at) c[at] = c[at - 1];
+      c[at] = {t_enter[l], static_cast<std::uint32_t>(4 * g + static_cast<std::size_t>(l))};
+    }
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!box4_enters_before(c[j].t, tmax_up)) break;
+    if (test(bounded_[c[j].k])) tmax_up = float_up(r.tmax);
+  }
+  return test.found;
 }
 
 bool ObjectSet::occluded(std::span<const Object> objects, const Ray& ray) const {

@@ -2,12 +2,15 @@
 // A set of objects with a BVH over the bounded ones (unbounded ones, planes and the like, are
 // tried on every ray): the one implementation of the nearest / any / all walks over objects,
 // used by the scene's top level and by instance prototypes. A set of few bounded objects is
-// walked as a flat list of their boxes instead (docs/performance-render.md, round 4): the same
-// objects are tested, without the tree's stack and node boxes.
+// walked as a flat list of their boxes instead (docs/performance-render.md, rounds 4 and 6): their
+// boxes in float, four per SIMD test (accel/box4.h, conservative: the objects' own tests decide),
+// without the tree's stack and node boxes; a set of one bounded object tests its double box.
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "accel/box4.h"
 #include "accel/bvh.h"
 #include "accel/bvh_traverse.h"
 #include "scene/object.h"
@@ -53,32 +56,53 @@ class ObjectSet {
   const Aabb& bounds() const { return bounds_; }
   const Aabb& finite_bounds() const { return finite_bounds_; }
   std::size_t memory_bytes() const {
-    return bvh_.memory_bytes() + boxes_.capacity() * sizeof(Aabb) +
+    return bvh_.memory_bytes() + groups_.capacity() * sizeof(Box4) +
+           boxes_.capacity() * sizeof(Aabb) +
            (bounded_.capacity() + unbounded_.capacity()) * sizeof(std::uint32_t);
   }
 
   /// Sets of at most this many bounded objects are walked flat (no BVH); measured on the
-  /// benchmark scenes (docs/performance-render.md, round 4).
-  static constexpr std::size_t kFlatLimit = 8;
+  /// benchmark scenes (docs/performance-render.md, rounds 4 and 6).
+  static constexpr std::size_t kFlatLimit = 16;
+  /// Flat sets of at least this many bounded objects test their boxes four at a time in float
+  /// (accel/box4.h); fewer test each double box (the float test's per-ray set-up costs about
+  /// three double box tests; docs/performance-render.md, round 6).
+  static constexpr std::size_t kFloatBoxesFrom = 5;
 
  private:
-  /// visit(index) for each bounded object whose box meets the segment, in index order; stops
+  /// visit(index) for each bounded object whose box may meet the segment, in index order; stops
   /// when visit returns true (returned).
   template <class F>
   bool flat_any(const Ray& ray, F&& visit) const {
+    if (bounded_.empty()) return false;
     const Vec3 inv_d = reciprocal(ray.d);
-    for (std::size_t k = 0; k < boxes_.size(); ++k) {
-      double t_enter;
-      if (intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, ray.tmax, t_enter) &&
-          visit(bounded_[k]))
-        return true;
+    if (bounded_.size() < kFloatBoxesFrom) {
+      for (std::size_t k = 0; k < boxes_.size(); ++k) {
+        double t_enter;
+        if (intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, ray.tmax, t_enter) &&
+            visit(bounded_[k]))
+          return true;
+      }
+      return false;
+    }
+    const Box4Ray r = make_box4_ray(ray, inv_d, scale_);
+    const float tmax_up = float_up(ray.tmax);
+    for (std::size_t g = 0; g < groups_.size(); ++g) {
+      alignas(16) float t_enter[4];
+      unsigned mask = box4_hits(groups_[g], r, tmax_up, t_enter);
+      if (g + 1 == groups_.size()) mask &= last_lanes_;
+      for (; mask != 0; mask &= mask - 1)
+        if (visit(bounded_[4 * g + static_cast<std::size_t>(std::countr_zero(mask))])) return true;
     }
     return false;
   }
 
-  bool flat_ = false;                     // few bounded objects: boxes_ instead of bvh_
-  std::vector<Aabb> boxes_;               // flat_: the box of bounded_[k]
-  Bvh bvh_;                               // over the bounded objects
+  bool flat_ = false;         // few bounded objects: boxes_ or groups_, no bvh_
+  std::vector<Box4> groups_;  // flat_, from kFloatBoxesFrom: bounded_[4 g + l]'s box in lane l of g
+  unsigned last_lanes_ = 0;   // the lanes of the last group that hold a box
+  Box4Scale scale_{};         // from a bound on |coordinate| over groups_' planes
+  std::vector<Aabb> boxes_;   // flat_, fewer than kFloatBoxesFrom: bounded_[k]'s box
+  Bvh bvh_;                   // over the bounded objects
   std::vector<std::uint32_t> bounded_;    // bvh prim -> object index
   std::vector<std::uint32_t> unbounded_;  // objects tested on every ray
   Aabb bounds_, finite_bounds_;
