@@ -14,11 +14,9 @@ bool have_exr() { return true; }
 // Through the OpenEXR plugin, loaded on the first .exr written (io/plugin_library.h).
 void save_exr(const Image& image, const std::string& path) {
   std::string why_not;
-  void* entry = plugin_symbol("libraycast_openexr.so", "raycast_openexr_plugin", why_not);
-  if (!entry) throw ImageError(path + ": cannot write EXR: " + why_not);
-  const ExrPlugin* plugin = reinterpret_cast<const ExrPlugin* (*)()>(entry)();
-  if (!plugin || plugin->abi_version != kExrPluginAbiVersion)
-    throw ImageError(path + ": the plugin libraycast_openexr.so is from another build of raycast");
+  const ExrPlugin* plugin = load_plugin<ExrPlugin>(
+      "libraycast_openexr.so", "raycast_openexr_plugin", kExrPluginAbiVersion, why_not);
+  if (!plugin) throw ImageError(path + ": cannot write EXR: " + why_not);
   plugin->save(image, path);
 }
 

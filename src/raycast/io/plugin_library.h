@@ -14,4 +14,20 @@ namespace raycast {
 /// or the symbol is missing. Thread-safe.
 void* plugin_symbol(const std::string& file, const char* symbol, std::string& why_not);
 
+/// The interface table a plugin's entry point `entry` returns (a struct whose first member is
+/// `int abi_version`), or nullptr with `why_not` set when the plugin cannot be loaded or is from
+/// another build (its abi_version differs from `abi_version`).
+template <class Plugin>
+const Plugin* load_plugin(const std::string& file, const char* entry, int abi_version,
+                          std::string& why_not) {
+  void* address = plugin_symbol(file, entry, why_not);
+  if (!address) return nullptr;
+  const Plugin* plugin = reinterpret_cast<const Plugin* (*)()>(address)();
+  if (!plugin || plugin->abi_version != abi_version) {
+    why_not = "the plugin " + file + " is from another build of raycast";
+    return nullptr;
+  }
+  return plugin;
+}
+
 }  // namespace raycast

@@ -27,12 +27,9 @@ std::string lower(std::string s) {
 // glTF/GLB through the assimp plugin, loaded on the first such file (io/plugin_library.h).
 MeshFileData read_with_assimp(const std::string& path) {
   std::string why_not;
-  void* entry = plugin_symbol("libraycast_assimp.so", "raycast_assimp_plugin", why_not);
-  const AssimpPlugin* plugin =
-      entry ? reinterpret_cast<const AssimpPlugin* (*)()>(entry)() : nullptr;
-  if (!entry) throw MeshFileError("cannot read " + path + ": " + why_not);
-  if (!plugin || plugin->abi_version != kAssimpPluginAbiVersion)
-    throw MeshFileError("the plugin libraycast_assimp.so is from another build of raycast");
+  const AssimpPlugin* plugin = load_plugin<AssimpPlugin>(
+      "libraycast_assimp.so", "raycast_assimp_plugin", kAssimpPluginAbiVersion, why_not);
+  if (!plugin) throw MeshFileError("cannot read " + path + ": " + why_not);
   return plugin->read(path);
 }
 #endif

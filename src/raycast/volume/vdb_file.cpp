@@ -9,14 +9,8 @@ namespace {
 #if RAYCAST_HAVE_OPENVDB
 // The plugin, or nullptr with the reason: loaded once, on first use (io/plugin_library.h).
 const VdbPlugin* plugin(std::string& why_not) {
-  void* entry = plugin_symbol("libraycast_openvdb.so", "raycast_openvdb_plugin", why_not);
-  if (!entry) return nullptr;
-  const VdbPlugin* p = reinterpret_cast<const VdbPlugin* (*)()>(entry)();
-  if (!p || p->abi_version != kVdbPluginAbiVersion) {
-    why_not = "the plugin libraycast_openvdb.so is from another build of raycast";
-    return nullptr;
-  }
-  return p;
+  return load_plugin<VdbPlugin>("libraycast_openvdb.so", "raycast_openvdb_plugin",
+                                kVdbPluginAbiVersion, why_not);
 }
 #endif
 
