@@ -11,6 +11,8 @@
 #include <set>
 #include <vector>
 
+#include "mesh/mesh.h"
+#include "mesh/procedural.h"
 #include "support/random.h"
 
 namespace raycast {
@@ -108,6 +110,40 @@ TEST(ObjectSet, FloatBoxWalk_MatchesBruteForce) {
 TEST(ObjectSet, BvhWalk_MatchesBruteForce) {
   for (std::size_t n : {ObjectSet::kFlatLimit + 1, std::size_t(40)})
     check_against_brute_force(n, false);
+}
+
+// A set of one untransformed mesh takes its own short path (box, then the mesh): the same
+// answers as the general walk, which a second, far-away object forces on the same mesh.
+TEST(ObjectSet, SoleMesh_AnswersAsTheGeneralWalk) {
+  const TriangleSoup soup = make_octa_sphere(24, 1.0, {0.2, -0.1, 0.3});
+  Object mesh;
+  mesh.shape = MeshShape{make_mesh(soup.positions, soup.triangles)};
+  Object far;
+  far.shape = make_sphere({100, 100, 100}, 0.5);
+  const std::vector<Object> sole{mesh}, pair{mesh, far};
+  ObjectSet a, b;
+  a.build(sole);
+  b.build(pair);
+  testing::Rng rng(77);
+  int hits = 0;
+  for (int n = 0; n < 4000; ++n) {
+    Ray ray = testing::random_ray(rng, 3, 1.5);
+    if (n % 2 == 1) ray.tmax = rng.uniform(0.05, 3.0);
+    if (n % 10 == 3) ray.d[n % 3] = 0;
+    if (n % 50 == 9) ray.d.y = std::numeric_limits<double>::quiet_NaN();
+    LocalHit ha, hb;
+    std::int32_t ia = -1, ib = -1;
+    const bool fa = a.intersect(sole, ray, ha, ia), fb = b.intersect(pair, ray, hb, ib);
+    ASSERT_EQ(fa, fb) << n;
+    if (fa) {
+      ++hits;
+      EXPECT_EQ(ha.t, hb.t) << n;
+      EXPECT_EQ(ha.prim, hb.prim) << n;
+      EXPECT_EQ(ia, ib) << n;
+    }
+    EXPECT_EQ(a.occluded(sole, ray), b.occluded(pair, ray)) << n;
+  }
+  EXPECT_GT(hits, 400);  // the rays do reach the mesh
 }
 
 }  // namespace

@@ -25,6 +25,8 @@ void ObjectSet::build(std::span<const Object> objects) {
     }
   }
   flat_ = bounded_.size() <= kFlatLimit;
+  sole_mesh_ = bounded_.size() == 1 && unbounded_.empty() && !objects[bounded_[0]].xf &&
+               std::holds_alternative<MeshShape>(objects[bounded_[0]].shape);
   if (flat_) {
     bvh_ = Bvh{};
     if (boxes.size() < kFloatBoxesFrom) {
@@ -96,6 +98,14 @@ struct NearestTest {
 
 bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
                           std::int32_t& index) const {
+  if (sole_mesh_) {
+    double t_enter;  // the object's box first: rays that miss it cost less here than in the mesh
+    if (!intersect_slabs(boxes_[0], ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter) ||
+        !raycast::intersect(objects[bounded_[0]], ray, hit))
+      return false;
+    index = static_cast<std::int32_t>(bounded_[0]);
+    return true;
+  }
   Ray r = ray;
   NearestTest test{objects, r, hit, index};
   for (std::uint32_t i : unbounded_) test(i);
@@ -142,6 +152,11 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
 }
 
 bool ObjectSet::occluded(std::span<const Object> objects, const Ray& ray) const {
+  if (sole_mesh_) {
+    double t_enter;
+    return intersect_slabs(boxes_[0], ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter) &&
+           raycast::occluded(objects[bounded_[0]], ray);
+  }
   return any(ray, [&](std::uint32_t i) { return raycast::occluded(objects[i], ray); });
 }
 

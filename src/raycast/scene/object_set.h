@@ -97,7 +97,11 @@ class ObjectSet {
     return false;
   }
 
-  bool flat_ = false;         // few bounded objects: boxes_ or groups_, no bvh_
+  bool flat_ = false;  // few bounded objects: boxes_ or groups_, no bvh_
+  // The set is one untransformed mesh and nothing else (boxes_ holds its box): queries test the
+  // box and go straight to the mesh, without the general walk's set-up
+  // (docs/performance-mesh.md, session 6).
+  bool sole_mesh_ = false;
   std::vector<Box4> groups_;  // flat_, from kFloatBoxesFrom: bounded_[4 g + l]'s box in lane l of g
   unsigned last_lanes_ = 0;   // the lanes of the last group that hold a box
   Box4Scale scale_{};         // from a bound on |coordinate| over groups_' planes
