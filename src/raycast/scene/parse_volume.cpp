@@ -105,10 +105,11 @@ ShapeVariant from_grid(Fields& f) {
       throw as_scene_error(e);
     }
   } else if (ext == ".vdb") {
-    if (!vdb_supported()) f.fail("grid", f.name("grid") + ": " + vdb_unsupported_reason());
     const std::string name = f.has("name") ? f.string("name") : std::string();
     try {
       grid = read_vdb_grid(path, name);
+    } catch (const VdbUnsupportedError& e) {
+      f.fail("grid", f.name("grid") + ": " + e.what());
     } catch (const VolumeFileError& e) {
       throw as_scene_error(e);
     } catch (const VdbGridError& e) {

@@ -40,10 +40,10 @@ ScalarGrid read_vdb_grid(const std::string& path, const std::string& name) {
 #if RAYCAST_HAVE_OPENVDB
   std::string why_not;
   if (const VdbPlugin* p = plugin(why_not)) return p->read(path, name, check_grid_fits);
-  throw std::logic_error(why_not);
+  throw VdbUnsupportedError(why_not);
 #else
   (void)path, (void)name;
-  throw std::logic_error(vdb_unsupported_reason());
+  throw VdbUnsupportedError(vdb_unsupported_reason());
 #endif
 }
 
