@@ -31,15 +31,19 @@ struct CodeValues {
 };
 const CodeValues kCodeValues;
 
-/// The displayed value of a linear colour: its 8-bit sRGB codes / 255 (io/image.h).
-Color display(const Color& c) {
-  return {kCodeValues.of[linear_to_srgb8(float(c.x))], kCodeValues.of[linear_to_srgb8(float(c.y))],
-          kCodeValues.of[linear_to_srgb8(float(c.z))]};
+/// The displayed value of a linear colour: its 8-bit sRGB codes (io/image.h), as the bytes of one
+/// word (red lowest) so that a first pass keeps 4 bytes per pixel.
+std::uint32_t display_codes(const Color& c) {
+  return std::uint32_t(linear_to_srgb8(float(c.x))) |
+         std::uint32_t(linear_to_srgb8(float(c.y))) << 8 |
+         std::uint32_t(linear_to_srgb8(float(c.z))) << 16;
 }
 
-double display_distance(const Color& a, const Color& b) {
-  const Color d = a - b;
-  return std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+/// The distance of two displayed values: the sum over channels of |code difference| / 255.
+double display_distance(std::uint32_t a, std::uint32_t b) {
+  const double* of = kCodeValues.of;
+  return std::abs(of[a & 0xff] - of[b & 0xff]) +
+         std::abs(of[(a >> 8) & 0xff] - of[(b >> 8) & 0xff]) + std::abs(of[a >> 16] - of[b >> 16]);
 }
 
 /// Runs body(y, counters) for every row y in [0, rows) in parallel, then calls row_done.
@@ -55,12 +59,14 @@ void for_rows(int rows, tbb::enumerable_thread_specific<Counters>& counters,
   });
 }
 
-/// First-pass values over the pixels [x0, x1) x [y0, y1) of a full_width x full_height picture
-/// (a window and the one-pixel ring around it that neighbour tests read), indexed by full-image
-/// pixel coordinates.
+/// The displayed first-pass values over the pixels [x0, x1) x [y0, y1) of a full_width x
+/// full_height picture (a window and the one-pixel ring around it that neighbour tests read),
+/// indexed by full-image pixel coordinates. The values themselves go straight into the image:
+/// fresh memory is costly to touch (a page fault per 4 KiB), so the pass keeps 4 bytes per pixel
+/// beside the image rather than 48.
 struct FirstPass {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0, full_width = 0, full_height = 0;
-  std::vector<Color> values, shown;
+  std::vector<std::uint32_t> shown;
   std::size_t index(int x, int y) const {
     return std::size_t(y - y0) * std::size_t(x1 - x0) + std::size_t(x - x0);
   }
@@ -71,8 +77,8 @@ struct FirstPass {
 /// and refines both: the same set of pixels).
 bool differs(const FirstPass& first, int x, int y, double threshold) {
   const std::size_t i = first.index(x, y);
-  const Color* shown = first.shown.data();
-  const Color& c = shown[i];
+  const std::uint32_t* shown = first.shown.data();
+  const std::uint32_t c = shown[i];
   const std::size_t row = std::size_t(first.x1 - first.x0);
   // Left, right, up, down (in that order, as before), each inside the full picture.
   if (x > 0 && display_distance(c, shown[i - 1]) > threshold) return true;
@@ -82,10 +88,10 @@ bool differs(const FirstPass& first, int x, int y, double threshold) {
 }
 
 /// The first pass of methods 1 and variance: one sample through every pixel's centre, over the
-/// window (wx0, wy0, w x h) grown by one pixel inside the full picture; row_done for the
-/// window's rows only.
+/// window (wx0, wy0, w x h) grown by one pixel inside the full picture; the window's values go
+/// into `image` (pixel (wx0, wy0) at (0, 0)); row_done for the window's rows only.
 FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_height,
-                      unsigned seed, const RasterSampler& sample,
+                      unsigned seed, const RasterSampler& sample, Image& image,
                       tbb::enumerable_thread_specific<Counters>& counters,
                       const std::function<void()>& row_done) {
   FirstPass first;
@@ -95,16 +101,16 @@ FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_h
   first.y0 = std::max(0, wy0 - 1);
   first.x1 = std::min(full_width, wx0 + w + 1);
   first.y1 = std::min(full_height, wy0 + h + 1);
-  first.values.resize(std::size_t(first.x1 - first.x0) * std::size_t(first.y1 - first.y0));
-  first.shown.resize(first.values.size());
+  first.shown.resize(std::size_t(first.x1 - first.x0) * std::size_t(first.y1 - first.y0));
   // The displayed values are computed in the same parallel rows (not in a serial pass after).
   for_rows(first.y1 - first.y0, counters, nullptr, [&](int row, Counters& c) {
     const int y = first.y0 + row;
     for (int x = first.x0; x < first.x1; ++x) {
       SampleState state{Rng::for_pixel(x, y, seed), 0};
       const Color value = sample(x + 0.5, y + 0.5, state);
-      first.values[first.index(x, y)] = value;
-      first.shown[first.index(x, y)] = display(value);
+      first.shown[first.index(x, y)] = display_codes(value);
+      if (x >= wx0 && x < wx0 + w && y >= wy0 && y < wy0 + h)
+        image.set(x - wx0, y - wy0, Vec3f(value));
       c.rays += state.rays;
       ++c.samples;
     }
@@ -118,7 +124,8 @@ FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_h
 Color subdivide(double x0, double y0, double size, const Color c[4], int level,
                 const AntialiasSettings& aa, const RasterSampler& sample, SampleState& state,
                 std::uint64_t& samples) {
-  const Color shown[4] = {display(c[0]), display(c[1]), display(c[2]), display(c[3])};
+  const std::uint32_t shown[4] = {display_codes(c[0]), display_codes(c[1]), display_codes(c[2]),
+                                  display_codes(c[3])};
   double spread = 0;
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) spread = std::max(spread, display_distance(shown[i], shown[j]));
@@ -140,7 +147,7 @@ Color subdivide(double x0, double y0, double size, const Color c[4], int level,
 }  // namespace
 
 double colour_distance(const Color& a, const Color& b) {
-  return display_distance(display(a), display(b));
+  return display_distance(display_codes(a), display_codes(b));
 }
 
 void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
@@ -168,13 +175,14 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       // samples in place of its centre sample; with depth odd the middle stratum keeps the
       // centre sample (it lies in that stratum), so depth^2 - 1 new samples.
       const FirstPass first = centre_pass(x0, y0, width, height, full_width, full_height, seed,
-                                          sample, counters, row_done);
+                                          sample, image, counters, row_done);
       const int n = aa.depth;
       for_rows(height, counters, row_done, [&](int row, Counters& c) {
         const int y = y0 + row;
         for (int x = x0; x < x0 + width; ++x) {
-          Color value = first.values[first.index(x, y)];
           if (n > 1 && differs(first, x, y, aa.threshold)) {
+            // The centre sample as the first pass stored it (in float, as every pixel is kept).
+            const Color value(image.at(x - x0, row));
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0};
             const int middle = n % 2 ? n * n / 2 : -1;
@@ -185,11 +193,10 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
                 sum += k == middle ? value : sample(x + (i + jx) / n, y + (j + jy) / n, state);
               }
             }
-            value = sum / double(n * n);
+            image.set(x - x0, row, Vec3f(sum / double(n * n)));
             c.rays += state.rays;
             c.samples += std::uint64_t(n) * n - (middle >= 0);
           }
-          image.set(x - x0, row, Vec3f(value));
         }
       });
       break;
@@ -230,13 +237,12 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       // jittered) until the standard error of its mean is at most threshold / 4 in every
       // channel (after at least two rounds) or it has depth x depth samples (rounded up to 4).
       const FirstPass first = centre_pass(x0, y0, width, height, full_width, full_height, seed,
-                                          sample, counters, row_done);
+                                          sample, image, counters, row_done);
       const int most = std::max(8, (aa.depth * aa.depth + 3) / 4 * 4);
       const double target = aa.threshold / 4;
       for_rows(height, counters, row_done, [&](int row, Counters& c) {
         const int y = y0 + row;
         for (int x = x0; x < x0 + width; ++x) {
-          Color value = first.values[first.index(x, y)];
           if (differs(first, x, y, aa.threshold)) {
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0}, sum1{0, 0, 0}, sum2{0, 0, 0};  // values; clamped; squared
@@ -261,11 +267,10 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
               }
               if (worst <= target * target) break;
             }
-            value = sum / double(n);
+            image.set(x - x0, row, Vec3f(sum / double(n)));
             c.rays += state.rays;
             c.samples += std::uint64_t(n);
           }
-          image.set(x - x0, row, Vec3f(value));
         }
       });
       break;
