@@ -28,6 +28,7 @@ const char* const kFormulas[] = {
      "pow(x^2 + 1, 0.5) + exp(-y) - 3"),
     "-x - (y - z) * 1e-3",
     "x*y - z*x + 0.5*y*y - 1 - x / (2 + z*z) + sqrt(abs(y))",
+    "sin(x * y + 3) - cos(0.25 * z - x) * sin(2 * z) + cos(x * y * z)",
 };
 
 struct RaySetup {
@@ -46,12 +47,12 @@ RaySetup random_setup(std::mt19937& rng) {
   return s;
 }
 
-// Lanes compute sin/cos of a bare variable and whole powers their own way (tested for tightness);
-// every other operation as the one-interval evaluation, bit for bit.
+// Lanes compute sin and cos and whole powers their own way (tested for tightness); every other
+// operation as the one-interval evaluation, bit for bit.
 bool computed_alike(const Formula& f) {
   if (f.trig_vars != 0) return false;
   for (const Instruction& in : f.code)
-    if (in.op == Opcode::kPowInt) return false;
+    if (in.op == Opcode::kPowInt || in.op == Opcode::kSin || in.op == Opcode::kCos) return false;
   return true;
 }
 

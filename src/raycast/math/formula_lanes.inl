@@ -250,6 +250,49 @@ void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const do
   mul(-sin_x.hi, -sin_x.lo, x.dlo, x.dhi, cos_x.dlo, cos_x.dhi);
 }
 
+// sin (or cos) of lanes `a` whatever their argument: Interval's sin_cos lane by lane, with the
+// ends' sines and cosines from sincos_points (so each bound also moves out by kLaneSinCosError),
+// then the chain rule's product on all lanes.
+void sin_or_cos_lanes(Slot& a, bool want_sin) {
+  using interval_detail::hits_phase;
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  V s0, c0, s1, c1;
+  sincos_points(a.lo, s0, c0);
+  sincos_points(a.hi, s1, c1);
+  V rlo = splat(0), rhi = rlo, glo = rlo, ghi = rlo;  // the result; the derivative's factor
+  for (int k = 0; k < W; ++k) {
+    const Interval x{a.lo[k], a.hi[k]};
+    Interval si, ci;
+    if (x.is_empty()) {
+      si = ci = Interval::empty();
+    } else if (!(x.hi - x.lo < kTwoPi) || std::abs(x.lo) > 1e15 || std::abs(x.hi) > 1e15) {
+      si = ci = {-1, 1};
+    } else {
+      auto clamp = [](const Interval& r) {
+        return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
+      };
+      double lo = std::min(s0[k], s1[k]) - kLaneSinCosError;
+      double hi = std::max(s0[k], s1[k]) + kLaneSinCosError;
+      if (hits_phase(x.lo, x.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
+      if (hits_phase(x.lo, x.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
+      si = clamp(widen_ulps(lo, hi));
+      lo = std::min(c0[k], c1[k]) - kLaneSinCosError;
+      hi = std::max(c0[k], c1[k]) + kLaneSinCosError;
+      if (hits_phase(x.lo, x.hi, 0, kTwoPi)) hi = 1;
+      if (hits_phase(x.lo, x.hi, std::numbers::pi, kTwoPi)) lo = -1;
+      ci = clamp(widen_ulps(lo, hi));
+    }
+    const Interval r = want_sin ? si : ci, g = want_sin ? ci : -si;
+    rlo[k] = r.lo;
+    rhi[k] = r.hi;
+    glo[k] = g.lo;
+    ghi[k] = g.hi;
+  }
+  V dlo, dhi;
+  mul(glo, ghi, a.dlo, a.dhi, dlo, dhi);
+  a = {rlo, rhi, dlo, dhi};
+}
+
 // The operations without a lane form: each lane through Dual<Interval, 1>, as run() does.
 DualI unary(Opcode op, const DualI& a, int n) {
   switch (op) {
@@ -382,6 +425,10 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
         } else {
           for (int k = 0; k < W; ++k) set_lane(s[top], k, unary(in.op, lane(s[top], k), in.n));
         }
+        break;
+      case Opcode::kSin:
+      case Opcode::kCos:
+        sin_or_cos_lanes(s[top], in.op == Opcode::kSin);
         break;
       case Opcode::kDiv:
       case Opcode::kPow:
