@@ -202,8 +202,13 @@ void sincos_points(V x, V& s, V& c) {
   s = sneg ? -sv : sv;
   c = cneg ? -cv : cv;
   const M ok = vabs(x) <= splat(0x1p19);
-  for (int k = 0; k < W; ++k)
-    if (!ok[k]) interval_detail::sincos(x[k], &s[k], &c[k]);
+  for (int k = 0; k < W; ++k) {
+    if (ok[k]) continue;
+    double sk, ck;  // (a vector element has no address)
+    interval_detail::sincos(x[k], &sk, &ck);
+    s[k] = sk;
+    c[k] = ck;
+  }
 }
 
 // sin and cos of variable lanes `x` whose intervals run between the points p[k], p[k + 1]
