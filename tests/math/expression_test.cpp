@@ -87,3 +87,17 @@ TEST(Expression, RandomText_ParsesOrThrowsPositionedError) {
 
 }  // namespace
 }  // namespace raycast
+
+// Formula::continuous lets an any-hit search stop at two parts of certain opposite signs: it
+// must be false wherever f can jump or be undefined between them.
+TEST(Formula, Continuous_OnlyForFormulasDefinedAndContinuousEverywhere) {
+  for (const char* text :
+       {"sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)",
+        "(2 - cos(x)) * cos(z) + (y + sin(x)) * sin(z) + cos(x + z)", "x^2 + y^2 + z^2 - 1",
+        "abs(x) + min(y, z) - max(x, 2) + -x^3", "cos(x * y) + 1/2 * z", "x^0 + 3"})
+    EXPECT_TRUE(raycast::compile_formula(text).continuous) << text;
+  for (const char* text :
+       {"1 / x", "x / y + z", "x^-1 + y", "tan(x) + y", "sqrt(x) - y", "log(x + 2) - y",
+        "pow(x, 0.5) + y", "exp(x) - y", "x + 1/0", "sin(1 / x) + y"})
+    EXPECT_FALSE(raycast::compile_formula(text).continuous) << text;
+}

@@ -4,8 +4,12 @@
 // is), and the 2-lane and 4-lane kernels give the same bits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <random>
+#include <vector>
 
 #include "math/formula_lanes.h"
 #include "math/formula_lanes_kernels.h"
@@ -24,6 +28,7 @@ const char* const kFormulas[] = {
      "pow(x^2 + 1, 0.5) + exp(-y) - 3"),
     "-x - (y - z) * 1e-3",
     "x*y - z*x + 0.5*y*y - 1 - x / (2 + z*z) + sqrt(abs(y))",
+    "sin(x * y + 3) - cos(0.25 * z - x) * sin(2 * z) + cos(x * y * z)",
 };
 
 struct RaySetup {
@@ -42,12 +47,12 @@ RaySetup random_setup(std::mt19937& rng) {
   return s;
 }
 
-// Lanes compute sin/cos of a bare variable and whole powers their own way (tested for tightness);
-// every other operation as the one-interval evaluation, bit for bit.
+// Lanes compute sin and cos and whole powers their own way (tested for tightness); every other
+// operation as the one-interval evaluation, bit for bit.
 bool computed_alike(const Formula& f) {
   if (f.trig_vars != 0) return false;
   for (const Instruction& in : f.code)
-    if (in.op == Opcode::kPowInt) return false;
+    if (in.op == Opcode::kPowInt || in.op == Opcode::kSin || in.op == Opcode::kCos) return false;
   return true;
 }
 
@@ -152,4 +157,33 @@ TEST(FormulaLanes, TwoAndFourLaneKernelsAgree) {
 }
 
 }  // namespace
+// The lanes' own sin and cos (no libm) are within kLaneSinCosError of sinl and cosl, with a
+// margin: at multiples of pi/2 and pi/4 and next to them (the reduction's and the quadrants'
+// edges), at random points up to 2^19 (the reduction's range) and past it (libm).
+TEST(FormulaLanes, LaneSinCos_WithinItsErrorBound) {
+  std::mt19937 rng(7);
+  std::vector<double> xs = {0.0, -0.0, 1e-300, -1e-300, 0.5, 1, 2, 3, 4, 1e5, -1e5};
+  for (int k = -40000; k <= 40000; k += 7) {
+    for (const double base : {k * (std::numbers::pi / 2), k * (std::numbers::pi / 4)}) {
+      xs.push_back(base);
+      xs.push_back(std::nextafter(base, 1e300));
+      xs.push_back(std::nextafter(base, -1e300));
+    }
+  }
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 200000; ++i) xs.push_back(u(rng) * std::pow(2.0, 20 * std::abs(u(rng))));
+  double worst = 0;
+  for (const double x : xs) {
+    double s, c;
+    lane_sin_cos(x, &s, &c);
+    const long double xl = x;
+    const double es = static_cast<double>(std::abs(s - sinl(xl)));
+    const double ec = static_cast<double>(std::abs(c - cosl(xl)));
+    worst = std::max({worst, es, ec});
+    ASSERT_LE(es, 0.5 * kLaneSinCosError) << x;
+    ASSERT_LE(ec, 0.5 * kLaneSinCosError) << x;
+  }
+  std::printf("worst lane sin/cos error %.3g (bound %.3g)\n", worst, kLaneSinCosError);
+}
+
 }  // namespace raycast

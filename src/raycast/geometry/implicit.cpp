@@ -82,6 +82,10 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
   constexpr int kDepthStep = std::bit_width(static_cast<unsigned>(W)) - 1;
   Piece stack[W * (kImplicitMaxDepth / kDepthStep + 2)];
   int top = -1, count = 0, steps = 0;
+  // Bit 0: a part where f is certainly positive, bit 1: certainly negative. For Want::kAny on a
+  // continuous f, both prove a root between them (inside [lo, hi]): the search stops there.
+  unsigned signs_seen = 0;
+  const bool any_by_signs = want == Want::kAny && s.f.continuous;
   const double o[3] = {ray.o.x, ray.o.y, ray.o.z}, d[3] = {ray.d.x, ray.d.y, ray.d.z};
   // Splits [a, b] into W parts and pushes those that may hold a root, last first. False when
   // the parts' ends would not increase strictly (the piece is a few ulps wide).
@@ -108,7 +112,10 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
     run_lanes(s.f, o, d, t, f, &lt);
     steps += W;
     for (int k = W - 1; k >= 0; --k) {
-      if (!(f.lo[k] <= 0 && 0 <= f.hi[k])) continue;  // excludes 0, or empty (undefined)
+      if (!(f.lo[k] <= 0 && 0 <= f.hi[k])) {  // excludes 0, or empty (undefined)
+        if (f.lo[k] <= f.hi[k]) signs_seen |= f.hi[k] < 0 ? 2 : 1;
+        continue;
+      }
       const bool monotone = f.dlo[k] <= f.dhi[k] && (f.dlo[k] > 0 || f.dhi[k] < 0);
       Piece& p = stack[++top];
       p.a = t[k];
@@ -143,8 +150,16 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
     if (count == 0 || t > roots[count - 1]) roots[count++] = t;
     return first_only;
   };
+  auto proved_by_signs = [&] {
+    if (!any_by_signs || signs_seen != 3) return false;
+    roots[0] = lo;  // a root lies between two parts, somewhere in [lo, hi]
+    count = 1;
+    return true;
+  };
   if (!split(lo, hi, 0, nullptr) && settle(lo, hi)) return count;
+  if (proved_by_signs()) return count;
   while (top >= 0 && count < max_roots && steps <= kImplicitMaxSteps) {
+    if (proved_by_signs()) break;
     const Piece p = stack[top--];
     if (p.monotone || p.depth >= kImplicitMaxDepth || !split(p.a, p.b, p.depth, &p)) {
       if (settle(p.a, p.b)) break;

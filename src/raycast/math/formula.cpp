@@ -147,9 +147,46 @@ class Compiler {
 
 }  // namespace
 
+namespace {
+
+bool continuous_everywhere(const Formula& f) {
+  for (const Instruction& in : f.code) {
+    switch (in.op) {
+      case Opcode::kConst:
+        if (!std::isfinite(in.value)) return false;
+        break;
+      case Opcode::kPowInt:
+        if (in.n < 0) return false;
+        break;
+      case Opcode::kX:
+      case Opcode::kY:
+      case Opcode::kZ:
+      case Opcode::kAdd:
+      case Opcode::kSub:
+      case Opcode::kMul:
+      case Opcode::kNeg:
+      case Opcode::kSin:
+      case Opcode::kCos:
+      case Opcode::kAbs:
+      case Opcode::kMin:
+      case Opcode::kMax:
+      case Opcode::kSinVar:
+      case Opcode::kCosVar:
+        break;
+      default:  // division, tan (poles), sqrt, log, pow (domains), exp (overflow)
+        return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 Formula compile_formula(std::string_view text) {
   const Expression e = parse_expression(text);
-  return Compiler(e).compile();
+  Formula f = Compiler(e).compile();
+  f.continuous = continuous_everywhere(f);
+  return f;
 }
 
 }  // namespace raycast

@@ -53,6 +53,10 @@ struct Formula {
   std::vector<Instruction> code;
   int stack_size = 0;
   unsigned trig_vars = 0;
+  /// f is defined and continuous on all of R^3: its code holds only finite constants, the
+  /// variables, + - * and negation, whole powers >= 0, sin, cos, abs, min and max. Then two
+  /// points of a line where f has certain opposite signs enclose a root between them.
+  bool continuous = false;
 };
 
 /// sin(a) and cos(a) together, for every type run() takes (over Interval and Dual<Interval>, one

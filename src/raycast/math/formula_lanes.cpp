@@ -34,4 +34,6 @@ void run_lanes(const Formula& f, const double o[3], const double d[3],
 
 bool run_lanes_avx2() { return use_avx2(); }
 
+void lane_sin_cos(double x, double* s, double* c) { lanes_w2::sin_cos_point(x, s, c); }
+
 }  // namespace raycast

@@ -159,6 +159,58 @@ Interval widen_ulps(double lo, double hi) {
           hi + kSteps * (std::abs(hi) * 0x1p-52 + 0x1p-1074)};
 }
 
+// sin and cos of W points at once, each within kLaneSinCosError of the exact values (the bound
+// is derived in formula_lanes.h). Reduction by the nearest multiple n of pi/2 in three exact
+// steps (Cody and Waite: the first two parts of pi/2 have 33 bits each, so n * part is exact for
+// |n| < 2^20, and the first difference is exact by Sterbenz's lemma; the third part is the rest
+// to full precision), then Taylor polynomials on |r| <= 0.786
+// (sin to r^15, cos to r^16), then the quadrant. Lanes with |x| > 2^19 (or not finite) take
+// libm's sincos (within kLibmUlps ulps). Elementwise IEEE operations without contraction: the
+// same bits for every width.
+void sincos_points(V x, V& s, V& c) {
+  constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
+  constexpr double kPio2_1 = 0x1.921fb544p+0;  // 33 bits of pi/2, then the next 33, and so on
+  constexpr double kPio2_2 = 0x1.0b4611a6p-34;
+  constexpr double kPio2_3 = 0x1.3198a2e037073p-69;
+  constexpr double kRound = 0x1.8p52;  // adding it rounds |q| < 2^51 to a whole number
+  const V q = x * splat(kTwoOverPi) + splat(kRound);
+  const V n = q - splat(kRound);
+  const M quadrant = (M)q & 3;
+  const V r = ((x - n * splat(kPio2_1)) - n * splat(kPio2_2)) - n * splat(kPio2_3);
+  const V z = r * r;
+  // sin r = r + r z P(z), cos r = 1 - z / 2 + z^2 Q(z), Horner in z.
+  V p = splat(-1.0 / 1307674368000.0);
+  p = p * z + splat(1.0 / 6227020800.0);
+  p = p * z + splat(-1.0 / 39916800.0);
+  p = p * z + splat(1.0 / 362880.0);
+  p = p * z + splat(-1.0 / 5040.0);
+  p = p * z + splat(1.0 / 120.0);
+  p = p * z + splat(-1.0 / 6.0);
+  const V sr = r + (r * z) * p;
+  V qc = splat(1.0 / 20922789888000.0);
+  qc = qc * z + splat(-1.0 / 87178291200.0);
+  qc = qc * z + splat(1.0 / 479001600.0);
+  qc = qc * z + splat(-1.0 / 3628800.0);
+  qc = qc * z + splat(1.0 / 40320.0);
+  qc = qc * z + splat(-1.0 / 720.0);
+  qc = qc * z + splat(1.0 / 24.0);
+  const V cr = (splat(1.0) - splat(0.5) * z) + (z * z) * qc;
+  // x = n pi/2 + r: quadrant 1 swaps and negates the sine's source, 2 negates both, 3 the cosine.
+  const M odd = (quadrant & 1) != 0;
+  const V sv = odd ? cr : sr, cv = odd ? sr : cr;
+  const M sneg = (quadrant == 2) | (quadrant == 3), cneg = (quadrant == 1) | (quadrant == 2);
+  s = sneg ? -sv : sv;
+  c = cneg ? -cv : cv;
+  const M ok = vabs(x) <= splat(0x1p19);
+  for (int k = 0; k < W; ++k) {
+    if (ok[k]) continue;
+    double sk, ck;  // (a vector element has no address)
+    interval_detail::sincos(x[k], &sk, &ck);
+    s[k] = sk;
+    c[k] = ck;
+  }
+}
+
 // sin and cos of variable lanes `x` whose intervals run between the points p[k], p[k + 1]
 // (give or take the rounding of the intervals' ends), from sincos of those points.
 // s[j], c[j]: sin and cos of p[j].
@@ -176,7 +228,9 @@ void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const do
     } else {
       const double pmin = std::min(p[k], p[k + 1]), pmax = std::max(p[k], p[k + 1]);
       // Every point of a lies within e of [pmin, pmax] (e rounded up).
-      const double e = std::max({0.0, pmin - a.lo, a.hi - pmax}) * (1 + 0x1p-50) + 0x1p-1074;
+      // (s, c: within kLaneSinCosError of sin and cos of the points, or from libm.)
+      const double e =
+          std::max({0.0, pmin - a.lo, a.hi - pmax}) * (1 + 0x1p-50) + 0x1p-1074 + kLaneSinCosError;
       auto clamp = [](const Interval& r) {
         return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
       };
@@ -190,17 +244,58 @@ void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const do
       if (hits_phase(a.lo, a.hi, std::numbers::pi, kTwoPi)) lo = -1;
       ci = clamp(widen_ulps(lo, hi));
     }
-    const Interval dx{x.dlo[k], x.dhi[k]};
-    const Interval ds = ci * dx, dc = -si * dx;
     sin_x.lo[k] = si.lo;
     sin_x.hi[k] = si.hi;
-    sin_x.dlo[k] = ds.lo;
-    sin_x.dhi[k] = ds.hi;
     cos_x.lo[k] = ci.lo;
     cos_x.hi[k] = ci.hi;
-    cos_x.dlo[k] = dc.lo;
-    cos_x.dhi[k] = dc.hi;
   }
+  // The derivatives cos(x) x' and -sin(x) x' on all lanes at once (mul is Interval's operator*
+  // lane by lane, so the same bits as the one-interval form).
+  mul(cos_x.lo, cos_x.hi, x.dlo, x.dhi, sin_x.dlo, sin_x.dhi);
+  mul(-sin_x.hi, -sin_x.lo, x.dlo, x.dhi, cos_x.dlo, cos_x.dhi);
+}
+
+// sin (or cos) of lanes `a` whatever their argument: Interval's sin_cos lane by lane, with the
+// ends' sines and cosines from sincos_points (so each bound also moves out by kLaneSinCosError),
+// then the chain rule's product on all lanes.
+void sin_or_cos_lanes(Slot& a, bool want_sin) {
+  using interval_detail::hits_phase;
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  V s0, c0, s1, c1;
+  sincos_points(a.lo, s0, c0);
+  sincos_points(a.hi, s1, c1);
+  V rlo = splat(0), rhi = rlo, glo = rlo, ghi = rlo;  // the result; the derivative's factor
+  for (int k = 0; k < W; ++k) {
+    const Interval x{a.lo[k], a.hi[k]};
+    Interval si, ci;
+    if (x.is_empty()) {
+      si = ci = Interval::empty();
+    } else if (!(x.hi - x.lo < kTwoPi) || std::abs(x.lo) > 1e15 || std::abs(x.hi) > 1e15) {
+      si = ci = {-1, 1};
+    } else {
+      auto clamp = [](const Interval& r) {
+        return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
+      };
+      double lo = std::min(s0[k], s1[k]) - kLaneSinCosError;
+      double hi = std::max(s0[k], s1[k]) + kLaneSinCosError;
+      if (hits_phase(x.lo, x.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
+      if (hits_phase(x.lo, x.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
+      si = clamp(widen_ulps(lo, hi));
+      lo = std::min(c0[k], c1[k]) - kLaneSinCosError;
+      hi = std::max(c0[k], c1[k]) + kLaneSinCosError;
+      if (hits_phase(x.lo, x.hi, 0, kTwoPi)) hi = 1;
+      if (hits_phase(x.lo, x.hi, std::numbers::pi, kTwoPi)) lo = -1;
+      ci = clamp(widen_ulps(lo, hi));
+    }
+    const Interval r = want_sin ? si : ci, g = want_sin ? ci : -si;
+    rlo[k] = r.lo;
+    rhi[k] = r.hi;
+    glo[k] = g.lo;
+    ghi[k] = g.hi;
+  }
+  V dlo, dhi;
+  mul(glo, ghi, a.dlo, a.dhi, dlo, dhi);
+  a = {rlo, rhi, dlo, dhi};
 }
 
 // The operations without a lane form: each lane through Dual<Interval, 1>, as run() does.
@@ -243,6 +338,13 @@ DualI binary(Opcode op, const DualI& a, const DualI& b) {
 
 }  // namespace
 
+void sin_cos_point(double x, double* s, double* c) {
+  V sv, cv;
+  sincos_points(splat(x), sv, cv);
+  *s = sv[0];
+  *c = cv[0];
+}
+
 // The W lanes [t[k], t[k + 1]]: see run_lanes in formula_lanes.h. s[v], c[v] hold sin and cos of
 // variable v at the W + 1 points; the first (and the last) are given when first_known
 // (last_known), the others are computed here.
@@ -270,8 +372,18 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
       for (int j = 0; j <= W; ++j) p[j] = o[v] + t[j] * d[v];
       double* sv = s_of[v];
       double* cv = c_of[v];
-      for (int j = first_known ? 1 : 0; j <= (last_known ? W - 1 : W); ++j)
-        interval_detail::sincos(p[j], &sv[j], &cv[j]);
+      V x, sx, cx;
+      for (int j = 0; j < W; ++j) x[j] = p[j];
+      sincos_points(x, sx, cx);
+      for (int j = first_known ? 1 : 0; j < W; ++j) {
+        sv[j] = sx[j];
+        cv[j] = cx[j];
+      }
+      if (!last_known) {
+        sincos_points(splat(p[W]), sx, cx);
+        sv[W] = sx[0];
+        cv[W] = cx[0];
+      }
       sin_cos_var(var[v], p, sv, cv, sin_var[v], cos_var[v]);
     }
   }
@@ -318,6 +430,10 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
         } else {
           for (int k = 0; k < W; ++k) set_lane(s[top], k, unary(in.op, lane(s[top], k), in.n));
         }
+        break;
+      case Opcode::kSin:
+      case Opcode::kCos:
+        sin_or_cos_lanes(s[top], in.op == Opcode::kSin);
         break;
       case Opcode::kDiv:
       case Opcode::kPow:

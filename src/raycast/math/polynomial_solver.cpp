@@ -213,6 +213,13 @@ int bernstein_roots(const Polynomial& p, double lo, double hi, double* out) {
   return count;
 }
 
+// std::ilogb(x) without the libm call for normal x (the exponent field); others go to libm.
+int exponent_of(double x) {
+  const int biased = static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
+  if (biased == 0 || biased == 0x7ff) return std::ilogb(x);
+  return biased - 1023;
+}
+
 // Fujiwara's bound on the magnitude of every complex root, 2 max |c_{n-i} / c_n|^(1/i) (the
 // constant term's ratio halved), rounded up to powers of two so that no pow() is needed.
 double root_bound(const Polynomial& p) {
@@ -223,7 +230,7 @@ double root_bound(const Polynomial& p) {
     if (ratio == 0) continue;
     if (!std::isfinite(ratio)) return kInfinity;
     // ratio < 2^(ilogb + 1), so ratio^(1/i) < 2^ceil((ilogb + 1) / i).
-    const int k = std::ilogb(ratio) + 1;
+    const int k = exponent_of(ratio) + 1;
     const int root_exp = k >= 0 ? (k + i - 1) / i : -((-k) / i);
     e = std::max(e, root_exp);
   }
@@ -250,7 +257,7 @@ int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots)
   // Scale the coefficients so the largest is about 1 (exact: a power of two).
   double cmax = 0;
   for (int i = 0; i <= p.degree; ++i) cmax = std::max(cmax, std::abs(p.c[i]));
-  const int ce = std::ilogb(cmax);
+  const int ce = exponent_of(cmax);
   for (int i = 0; i <= p.degree; ++i) p.c[i] = scale2(p.c[i], -ce);
 
   // Clip the interval to the root bound, then scale the variable so the interval is about
@@ -266,13 +273,13 @@ int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots)
   }
   if (lo > hi) return 0;
   const double extent = std::max(std::abs(lo), std::abs(hi));
-  const int se = extent > 0 ? std::ilogb(extent) : 0;
+  const int se = extent > 0 ? exponent_of(extent) : 0;
   if (se != 0) {
     for (int i = 1; i <= p.degree; ++i) p.c[i] = scale2(p.c[i], se * i);
     cmax = 0;
     for (int i = 0; i <= p.degree; ++i) cmax = std::max(cmax, std::abs(p.c[i]));
     if (!std::isfinite(cmax) || cmax == 0) return 0;
-    const int ce2 = std::ilogb(cmax);
+    const int ce2 = exponent_of(cmax);
     for (int i = 0; i <= p.degree; ++i) p.c[i] = scale2(p.c[i], -ce2);
     p = trimmed(p);
     if (p.degree == 0) return 0;
