@@ -72,8 +72,7 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
         std::holds_alternative<CsgShape>(o.shape) || std::holds_alternative<InstanceShape>(o.shape);
     const std::size_t mi = std::size_t(std::max(o.material, 0));
     f.material = composite ? -1 : std::int32_t(mi);
-    const auto* mesh = std::get_if<MeshShape>(&o.shape);
-    f.terminator = mesh && mesh->mesh && !mesh->mesh->normals.empty();
+    f.terminator = has_terminator_origin(o);
     if (composite) {
       f.shadow = ObjectFacts::kWalk;
     } else if (mi < scene.materials.size()) {

@@ -64,7 +64,7 @@ class Integrator {
   /// the per-hit look-ups would give).
   struct ObjectFacts {
     std::int32_t material = 0;  // its material index; -1 for CSG and instances (per part)
-    bool terminator = false;    // a smooth mesh: shadow rays may start from terminator_origin
+    bool terminator = false;  // has_terminator_origin: shadow rays may start from terminator_origin
     enum Shadow : std::uint8_t { kOpaque, kFilter, kWalk } shadow = kOpaque;  // filter()'s case
   };
 
