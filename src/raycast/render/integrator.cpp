@@ -30,19 +30,6 @@ double spot_factor(const Light& light, const Vec3& from_light) {
   return x * x * (3 - 2 * x);
 }
 
-/// x^n for n >= 1 by repeated squaring: within a few ulps of std::pow(x, n) (one rounding per
-/// product, at most 2 log2(n) of them), a tenth of its instructions (docs/performance-render.md,
-/// round 7).
-double integer_power(double x, unsigned n) {
-  double result = 1;
-  for (;;) {
-    if (n & 1) result *= x;
-    n >>= 1;
-    if (n == 0) return result;
-    x *= x;
-  }
-}
-
 /// The Phong exponent as an integer when it is one in [1, 4096] (the common case), else 0.
 unsigned integer_exponent(double shininess) {
   return shininess >= 1 && shininess <= 4096 && shininess == std::floor(shininess)
