@@ -71,5 +71,25 @@ TEST(Reflect, MirrorsAboutTheNormal) {
   EXPECT_EQ(r, (Vec3{1, 2, 3}));
 }
 
+TEST(IntegerPower, WithinItsErrorBoundOfPow_AndExactWhereThePowerIs) {
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (unsigned n : {1u, 2u, 3u, 7u, 20u, 40u, 120u, 200u, 1000u, 4096u}) {
+    // (n + log2 n + 2) ulps relative (the bound of the header, plus pow's own ulp).
+    const double tolerance = (n + std::log2(double(n)) + 2) * 0x1p-52;
+    for (int k = 0; k < 2000; ++k) {
+      const double x = unit(gen);
+      const double expected = std::pow(x, double(n));
+      if (expected < 1e-290) continue;  // subnormal results have no relative bound
+      EXPECT_NEAR(integer_power(x, n), expected, tolerance * expected) << x << "^" << n;
+    }
+    EXPECT_EQ(integer_power(0.0, n), 0.0);
+    EXPECT_EQ(integer_power(1.0, n), 1.0);
+    EXPECT_EQ(integer_power(0.5, n), std::ldexp(1.0, -int(n)));  // powers of two are exact
+    EXPECT_EQ(integer_power(-1.0, n), n % 2 ? -1.0 : 1.0);
+  }
+  EXPECT_EQ(integer_power(3.0, 5), 243.0);  // small integer results are exact
+}
+
 }  // namespace
 }  // namespace raycast

@@ -65,16 +65,24 @@ void spans(const Plane& p, const Ray& ray, SpanList& out) {
     out.add(at, hi);
 }
 
-SurfaceInfo surface(const Plane& p, const Ray& ray, const LocalHit& hit) {
+SurfaceInfo surface_geometry(const Plane& p, const Ray& ray, const LocalHit& hit) {
   SurfaceInfo si;
   Vec3 q = ray.at(hit.t);
   // Project onto the plane: the remaining error is a few ulps of the coordinates.
   q -= (dot(p.n, q) - p.offset) * p.n;
   si.p = q;
-  si.p_error = gamma(6) * (abs(q) + abs(p.point));
+  // std::abs per component (an AND each; Vec3's abs compares and branches on the signs).
+  si.p_error =
+      gamma(6) * Vec3{std::abs(q.x) + std::abs(p.point.x), std::abs(q.y) + std::abs(p.point.y),
+                      std::abs(q.z) + std::abs(p.point.z)};
   si.n = p.n;
   si.shading_n = p.n;
-  const Vec3 rel = q - p.point;
+  return si;
+}
+
+SurfaceInfo surface(const Plane& p, const Ray& ray, const LocalHit& hit) {
+  SurfaceInfo si = surface_geometry(p, ray, hit);
+  const Vec3 rel = si.p - p.point;
   si.u = dot(rel, p.s);
   si.v = dot(rel, p.t);
   return si;

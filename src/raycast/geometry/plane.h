@@ -21,6 +21,8 @@ Aabb bounds(const Plane& p);
 bool intersect(const Plane& p, const Ray& ray, LocalHit& hit);
 void spans(const Plane& p, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Plane& p, const Ray& ray, const LocalHit& hit);
+/// surface() without (u, v) (left 0), for hits whose shading needs no parameters.
+SurfaceInfo surface_geometry(const Plane& p, const Ray& ray, const LocalHit& hit);
 bool contains(const Plane& p, const Vec3& q);
 inline bool is_closed(const Plane&) { return true; }
 

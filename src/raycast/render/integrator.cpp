@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "geometry/spawn.h"
 #include "render/optics.h"
@@ -29,6 +30,13 @@ double spot_factor(const Light& light, const Vec3& from_light) {
   return x * x * (3 - 2 * x);
 }
 
+/// The Phong exponent as an integer when it is one in [1, 4096] (the common case), else 0.
+unsigned integer_exponent(double shininess) {
+  return shininess >= 1 && shininess <= 4096 && shininess == std::floor(shininess)
+             ? static_cast<unsigned>(shininess)
+             : 0;
+}
+
 }  // namespace
 
 Color id_color(int entry) {
@@ -42,6 +50,7 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
   for (const Material& m : scene.materials) {
     any_transmissive_ |= m.transmission > 0;
     filters_.push_back(m.transmission * m.color);
+    exponents_.push_back(integer_exponent(m.shininess));
   }
   for (const Light& light : scene.lights) emitted_.push_back(light.emitted());
   objects_.reserve(scene.objects.size());
@@ -51,8 +60,7 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
         std::holds_alternative<CsgShape>(o.shape) || std::holds_alternative<InstanceShape>(o.shape);
     const std::size_t mi = std::size_t(std::max(o.material, 0));
     f.material = composite ? -1 : std::int32_t(mi);
-    const auto* mesh = std::get_if<MeshShape>(&o.shape);
-    f.terminator = mesh && mesh->mesh && !mesh->mesh->normals.empty();
+    f.terminator = has_terminator_origin(o);
     if (composite) {
       f.shadow = ObjectFacts::kWalk;
     } else if (mi < scene.materials.size()) {
@@ -128,11 +136,12 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   const Vec3 v = -wi;
   // Shadow rays leaving on the shading normal's side of a smooth mesh start from Hanika's point
   // (for any other object terminator_origin returns si itself: no copy).
-  SurfaceInfo moved;
-  const bool terminator = objects_[std::size_t(hit.object)].terminator;
-  if (terminator) moved = terminator_origin(object, hit.local, si);
-  const SurfaceInfo& lit = terminator ? moved : si;
-  Color result = m.ambient * mul(scene_.render.ambient, c) + direct(si, lit, n, v, m, c, state);
+  std::optional<SurfaceInfo> moved;  // no 120-byte initialisation per hit
+  if (objects_[std::size_t(hit.object)].terminator)
+    moved = terminator_origin(object, hit.local, si);
+  const SurfaceInfo& lit = moved ? *moved : si;
+  Color result = m.ambient * mul(scene_.render.ambient, c) +
+                 direct(si, lit, n, v, m, exponents_[mi], c, state);
   if (depth >= scene_.render.max_depth) return result;
 
   // Split between the mirror and the refracted ray (fixed weights, or exact Fresnel).
@@ -166,7 +175,7 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
 }
 
 Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n,
-                         const Vec3& v, const Material& m, const Color& c,
+                         const Vec3& v, const Material& m, unsigned exponent, const Color& c,
                          SampleState& state) const {
   Color sum{0, 0, 0};
   if (m.diffuse <= 0 && m.specular <= 0) return sum;
@@ -178,9 +187,11 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
     // about n. pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
     const Vec3 r = 2 * nl * n - l;
     const double rv = dot(r, v);
-    const double highlight = m.specular > 0 && (rv > 0 || !(m.shininess > 0))
-                                 ? m.specular * std::pow(std::max(0.0, rv), m.shininess)
-                                 : 0;
+    const double highlight =
+        m.specular > 0 && (rv > 0 || !(m.shininess > 0))
+            ? m.specular * (exponent > 0 ? integer_power(std::max(0.0, rv), exponent)
+                                         : std::pow(std::max(0.0, rv), m.shininess))
+            : 0;
     const Color term = mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.

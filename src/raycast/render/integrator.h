@@ -53,9 +53,10 @@ class Integrator {
   /// The index in scene.materials of the part hit (as Scene::material_of).
   std::size_t material_index(const SceneHit& hit) const;
   /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
-  /// (render/terminator.h), the others from si.
+  /// (render/terminator.h), the others from si. `exponent`: m.shininess as an integer (0: not
+  /// one, std::pow).
   Color direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
-               const Material& m, const Color& c, SampleState& state) const;
+               const Material& m, unsigned exponent, const Color& c, SampleState& state) const;
   /// shadow() without the call: the query the shading makes for every light.
   Color visibility(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
@@ -63,7 +64,7 @@ class Integrator {
   /// the per-hit look-ups would give).
   struct ObjectFacts {
     std::int32_t material = 0;  // its material index; -1 for CSG and instances (per part)
-    bool terminator = false;    // a smooth mesh: shadow rays may start from terminator_origin
+    bool terminator = false;  // has_terminator_origin: shadow rays may start from terminator_origin
     enum Shadow : std::uint8_t { kOpaque, kFilter, kWalk } shadow = kOpaque;  // filter()'s case
   };
 
@@ -73,6 +74,7 @@ class Integrator {
   std::vector<ObjectFacts> objects_;  // by index in scene.objects
   std::vector<Color> filters_;        // by material: transmission * color (shadow filter)
   std::vector<Color> emitted_;        // by light: Light::emitted()
+  std::vector<unsigned> exponents_;   // by material: integer Phong exponent, 0 for std::pow
   bool any_transmissive_ = false;
 };
 

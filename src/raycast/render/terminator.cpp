@@ -6,10 +6,14 @@
 
 namespace raycast {
 
-SurfaceInfo terminator_origin(const Object& o, const LocalHit& hit, const SurfaceInfo& si) {
+bool has_terminator_origin(const Object& o) {
   const auto* shape = std::get_if<MeshShape>(&o.shape);
-  if (!shape || !shape->mesh || shape->mesh->normals.empty() || hit.part < 0) return si;
-  const Mesh& m = *shape->mesh;
+  return shape && shape->mesh && !shape->mesh->normals.empty();
+}
+
+SurfaceInfo terminator_origin(const Object& o, const LocalHit& hit, const SurfaceInfo& si) {
+  if (!has_terminator_origin(o) || hit.part < 0) return si;
+  const Mesh& m = *std::get<MeshShape>(o.shape).mesh;
   const auto tri = static_cast<std::size_t>(hit.part);
   if (tri >= m.triangles.size()) return si;
   const auto& t = m.triangles[tri];

@@ -16,4 +16,8 @@ namespace raycast {
 /// move would go against the geometric normal's side, si is returned unchanged.
 SurfaceInfo terminator_origin(const Object& o, const LocalHit& hit, const SurfaceInfo& si);
 
+/// Whether terminator_origin may move a hit on o (o is a smooth mesh); for every other object it
+/// returns si itself, so callers may skip it.
+bool has_terminator_origin(const Object& o);
+
 }  // namespace raycast

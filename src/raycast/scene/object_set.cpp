@@ -99,8 +99,8 @@ struct NearestTest {
 bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
                           std::int32_t& index) const {
   if (sole_mesh_) {
-    double t_enter;  // the object's box first: rays that miss it cost less here than in the mesh
-    if (!intersect_slabs(boxes_[0], ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter) ||
+    // The object's box first: rays that miss it cost less here than in the mesh.
+    if (!box_meets(0, ray, reciprocal(ray.d), ray.tmax) ||
         !raycast::intersect(objects[bounded_[0]], ray, hit))
       return false;
     index = static_cast<std::int32_t>(bounded_[0]);
@@ -116,10 +116,8 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   if (bounded_.empty()) return test.found;
   const Vec3 inv_d = reciprocal(ray.d);
   if (bounded_.size() < kFloatBoxesFrom) {
-    for (std::size_t k = 0; k < boxes_.size(); ++k) {
-      double t_enter;
-      if (intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, r.tmax, t_enter)) test(bounded_[k]);
-    }
+    for (std::size_t k = 0; k < boxes_.size(); ++k)
+      if (box_meets(k, ray, inv_d, r.tmax)) test(bounded_[k]);
     return test.found;
   }
   // The boxes that may meet [tmin, tmax], then their objects nearest entry first (ties in index
@@ -132,18 +130,13 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   };
   Candidate c[kFlatLimit];
   std::size_t n = 0;
-  for (std::size_t g = 0; g < groups_.size(); ++g) {
-    alignas(16) float t_enter[4];
-    unsigned mask = box4_hits(groups_[g], br, tmax_up, t_enter);
-    if (g + 1 == groups_.size()) mask &= last_lanes_;
-    for (; mask != 0; mask &= mask - 1) {
-      const int l = std::countr_zero(mask);
-      // Insertion by entry, after equal entries: the order is a function of the ray.
-      std::size_t at = n++;
-      for (; at > 0 && c[at - 1].t > t_enter[l]; --at) c[at] = c[at - 1];
-      c[at] = {t_enter[l], static_cast<std::uint32_t>(4 * g + static_cast<std::size_t>(l))};
-    }
-  }
+  each_float_box(br, tmax_up, [&](std::size_t k, float t_enter) {
+    // Insertion by entry, after equal entries: the order is a function of the ray.
+    std::size_t at = n++;
+    for (; at > 0 && c[at - 1].t > t_enter; --at) c[at] = c[at - 1];
+    c[at] = {t_enter, static_cast<std::uint32_t>(k)};
+    return false;
+  });
   for (std::size_t j = 0; j < n; ++j) {
     if (!box4_enters_before(c[j].t, tmax_up)) break;
     if (test(bounded_[c[j].k])) tmax_up = float_up(r.tmax);
@@ -152,11 +145,9 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
 }
 
 bool ObjectSet::occluded(std::span<const Object> objects, const Ray& ray) const {
-  if (sole_mesh_) {
-    double t_enter;
-    return intersect_slabs(boxes_[0], ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter) &&
+  if (sole_mesh_)  // flat_any's walk of one box, without the visitor
+    return box_meets(0, ray, reciprocal(ray.d), ray.tmax) &&
            raycast::occluded(objects[bounded_[0]], ray);
-  }
   return any(ray, [&](std::uint32_t i) { return raycast::occluded(objects[i], ray); });
 }
 

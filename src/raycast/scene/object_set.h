@@ -77,22 +77,30 @@ class ObjectSet {
     if (bounded_.empty()) return false;
     const Vec3 inv_d = reciprocal(ray.d);
     if (bounded_.size() < kFloatBoxesFrom) {
-      for (std::size_t k = 0; k < boxes_.size(); ++k) {
-        double t_enter;
-        if (intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, ray.tmax, t_enter) &&
-            visit(bounded_[k]))
-          return true;
-      }
+      for (std::size_t k = 0; k < boxes_.size(); ++k)
+        if (box_meets(k, ray, inv_d, ray.tmax) && visit(bounded_[k])) return true;
       return false;
     }
-    const Box4Ray r = make_box4_ray(ray, inv_d, scale_);
-    const float tmax_up = float_up(ray.tmax);
+    return each_float_box(make_box4_ray(ray, inv_d, scale_), float_up(ray.tmax),
+                          [&](std::size_t k, float) { return visit(bounded_[k]); });
+  }
+  /// Whether boxes_[k] (double) meets the ray's segment [tmin, tmax].
+  bool box_meets(std::size_t k, const Ray& ray, const Vec3& inv_d, double tmax) const {
+    double t_enter;
+    return intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, tmax, t_enter);
+  }
+  /// f(k, t_enter) for each k whose box in groups_ (float) may meet the segment [r.tmin,
+  /// tmax_up], in index order, t_enter its entry; stops when f returns true (returned).
+  template <class F>
+  bool each_float_box(const Box4Ray& r, float tmax_up, F&& f) const {
     for (std::size_t g = 0; g < groups_.size(); ++g) {
       alignas(16) float t_enter[4];
       unsigned mask = box4_hits(groups_[g], r, tmax_up, t_enter);
       if (g + 1 == groups_.size()) mask &= last_lanes_;
-      for (; mask != 0; mask &= mask - 1)
-        if (visit(bounded_[4 * g + static_cast<std::size_t>(std::countr_zero(mask))])) return true;
+      for (; mask != 0; mask &= mask - 1) {
+        const int l = std::countr_zero(mask);
+        if (f(4 * g + static_cast<std::size_t>(l), t_enter[l])) return true;
+      }
     }
     return false;
   }
