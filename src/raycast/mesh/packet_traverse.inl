@@ -32,33 +32,109 @@ struct PacketData {
   V8 sx, sy, sz, okx, oky, okz;
 };
 
-// Fills `p` for the rays of `mask`; false when they cannot go as one packet: a direction sign
-// that differs between lanes, or a ray that is not finite. Idle lanes copy an active ray, so the
-// bounds over all eight lanes are those over the active ones.
-inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
-  alignas(32) float f[8][8];  // ox, oy, oz, dx, dy, dz, tmin, tmax of each lane
+// A packet's rays as lanes: ox, oy, oz, dx, dy, dz, tmin, tmax, each of eight lanes (idle lanes
+// hold a copy of an active ray).
+struct PacketRays {
+  alignas(64) float f[8][8];
+  MeshRay ray(int l) const {
+    return MeshRay{Vec3f{f[0][l], f[1][l], f[2][l]}, Vec3f{f[3][l], f[4][l], f[5][l]}, f[6][l],
+                   f[7][l]};
+  }
+};
+
+// The rays of `mask` as lanes; idle lanes copy the first active ray, so the bounds over all eight
+// lanes are those over the active ones.
+inline void gather_rays(const MeshRay* rays, int mask, PacketRays& pr) {
   const int first = __builtin_ctz(mask);
   for (int l = 0; l < 8; ++l) {
     const MeshRay& r = rays[(mask >> l & 1) ? l : first];
-    f[0][l] = r.o.x, f[1][l] = r.o.y, f[2][l] = r.o.z;
-    f[3][l] = r.d.x, f[4][l] = r.d.y, f[5][l] = r.d.z;
-    f[6][l] = r.tmin, f[7][l] = r.tmax;
+    pr.f[0][l] = r.o.x, pr.f[1][l] = r.o.y, pr.f[2][l] = r.o.z;
+    pr.f[3][l] = r.d.x, pr.f[4][l] = r.d.y, pr.f[5][l] = r.d.z;
+    pr.f[6][l] = r.tmin, pr.f[7][l] = r.tmax;
   }
+}
+
+// mesh.cpp's to_mesh_ray on the eight lanes at once (the same operations, so the same bits), for
+// the rays of `mask` (idle lanes copy the first active one): false, with nothing converted, when a
+// lane's largest |direction component| has an exponent outside to_mesh_ray's fast range (NaN and
+// infinite directions included; the caller converts those rays one by one). GCC vector types, so
+// each instruction set's file compiles it to its own widths (kept inside this one function, with
+// __builtin_bit_cast, so that no function passes or returns one: -Wpsabi).
+inline bool convert_rays(const Ray* rays, int mask, PacketRays& pr, double* scale) {
+  using D8 = double __attribute__((vector_size(64)));
+  using I64x8 = std::int64_t __attribute__((vector_size(64)));
+  using F8 = float __attribute__((vector_size(32)));
+  using I32x8 = std::int32_t __attribute__((vector_size(32)));
+  using U32x8 = std::uint32_t __attribute__((vector_size(32)));
+  alignas(64) double g[8][8];  // the rays' eight doubles, transposed
+  const int first = __builtin_ctz(mask);
+  for (int l = 0; l < 8; ++l) {
+    const Ray& r = rays[(mask >> l & 1) ? l : first];
+    g[0][l] = r.o.x, g[1][l] = r.o.y, g[2][l] = r.o.z;
+    g[3][l] = r.d.x, g[4][l] = r.d.y, g[5][l] = r.d.z;
+    g[6][l] = r.tmin, g[7][l] = r.tmax;
+  }
+  D8 v[8];
+  std::memcpy(v, g, sizeof g);
+  const I64x8 abs_bits = I64x8{} + 0x7FFFFFFFFFFFFFFFll;
+  const D8 ax = __builtin_bit_cast(D8, __builtin_bit_cast(I64x8, v[3]) & abs_bits);
+  const D8 ay = __builtin_bit_cast(D8, __builtin_bit_cast(I64x8, v[4]) & abs_bits);
+  const D8 az = __builtin_bit_cast(D8, __builtin_bit_cast(I64x8, v[5]) & abs_bits);
+  const D8 myz = ay < az ? az : ay;
+  const D8 m = ax < myz ? myz : ax;  // std::max(|dx|, std::max(|dy|, |dz|))
+  // Biased exponent E = e + 1023; to_mesh_ray's fast range -1022 < e < 1022 is 2 <= E <= 2044.
+  const I64x8 e = (__builtin_bit_cast(I64x8, m) >> 52) & 0x7FF;
+  const I64x8 out_of_range = (e < 2) | (e > 2044);
+  std::int64_t any_out = 0;
+  for (int l = 0; l < 8; ++l) any_out |= out_of_range[l];
+  if (any_out) return false;
+  const D8 sc = __builtin_bit_cast(D8, (2046 - e) << 52);  // 2^-e
+  const D8 inv = __builtin_bit_cast(D8, e << 52);          // 2^e
+  F8 out[8];
+  for (int k = 0; k < 3; ++k) {
+    out[k] = __builtin_convertvector(v[k], F8);
+    out[3 + k] = __builtin_convertvector(v[3 + k] * sc, F8);
+  }
+  // round_down(tmin * inv) and round_up(tmax * inv): the nearest float, moved one step down
+  // (up) when it lies above (below) the double; zero steps to the least subnormal of that side.
+  const D8 lo = v[6] * inv, hi = v[7] * inv;
+  const F8 flo = __builtin_convertvector(lo, F8), fhi = __builtin_convertvector(hi, F8);
+  const I32x8 below = __builtin_convertvector(__builtin_convertvector(flo, D8) > lo, I32x8);
+  const I32x8 above = __builtin_convertvector(__builtin_convertvector(fhi, D8) < hi, I32x8);
+  const U32x8 ulo = __builtin_bit_cast(U32x8, flo), uhi = __builtin_bit_cast(U32x8, fhi);
+  const I32x8 zero_lo = (ulo & 0x7FFFFFFFu) == 0, zero_hi = (uhi & 0x7FFFFFFFu) == 0;
+  const I32x8 neg_lo = __builtin_bit_cast(I32x8, ulo) < 0,
+              neg_hi = __builtin_bit_cast(I32x8, uhi) < 0;
+  const U32x8 lo_down = zero_lo ? U32x8{} + 0x80000001u : (neg_lo ? ulo + 1 : ulo - 1);
+  const U32x8 hi_up = zero_hi ? U32x8{} + 1u : (neg_hi ? uhi - 1 : uhi + 1);
+  out[6] = __builtin_bit_cast(F8, below ? lo_down : ulo);
+  out[7] = __builtin_bit_cast(F8, above ? hi_up : uhi);
+  std::memcpy(pr.f, out, sizeof out);
+  std::memcpy(scale, &sc, sizeof sc);
+  return true;
+}
+
+// Fills `p` for the lanes of `pr` (idle lanes hold an active ray); false when they cannot go as
+// one packet: a direction sign that differs between lanes, or a ray that is not finite.
+inline bool prepare_packet(const PacketRays& pr, PacketData& p) {
+  const auto& f = pr.f;
   const V8 zero = splat(0.0f);
   int finite = bits(cmp_eq(load8(f[6]), load8(f[6]))) & bits(cmp_eq(load8(f[7]), load8(f[7])));
   for (int k = 0; k < 6; ++k) finite &= bits(cmp_eq(load8(f[k]) - load8(f[k]), zero));
   if (finite != 0xFF) return false;
   for (int a = 0; a < 3; ++a) {
     // Tiny components are replaced as the single-ray test does (rare: fixed lane by lane).
-    const V8 d = load8(f[3 + a]);
+    alignas(32) float da[8];
+    std::memcpy(da, f[3 + a], sizeof da);
+    const V8 d = load8(da);
     const int small =
         ~(bits(cmp_ge(d, splat(kMinDirection))) | bits(cmp_le(d, splat(-kMinDirection)))) & 0xFF;
     for (int m = small; m; m &= m - 1) {
-      float& da = f[3 + a][__builtin_ctz(m)];
-      da = da < 0 ? -kMinDirection : kMinDirection;
+      float& x = da[__builtin_ctz(m)];
+      x = x < 0 ? -kMinDirection : kMinDirection;
     }
     p.o[a] = load8(f[a]);
-    p.inv[a] = splat(1.0f) / load8(f[3 + a]);  // as the single-ray test computes it
+    p.inv[a] = splat(1.0f) / load8(da);  // as the single-ray test computes it
     alignas(32) float inv[8];
     store8(inv, p.inv[a]);
     float olo = f[a][0], ohi = olo, ilo = inv[0], ihi = ilo;
@@ -88,11 +164,10 @@ inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
 }
 
 // The watertight test's constants of every lane (idle lanes copy an active ray).
-inline void prepare_leaves(const MeshRay* rays, int mask, PacketData& p) {
-  const int first = __builtin_ctz(mask);
+inline void prepare_leaves(const PacketRays& pr, PacketData& p) {
   p.shared = true;
   for (int l = 0; l < 8; ++l) {
-    const MeshRay& r = rays[(mask >> l & 1) ? l : first];
+    const MeshRay r = pr.ray(l);
     const float* ro = &r.o.x;
     const WatertightRay w = make_watertight_ray(r.o, r.d);
     p.lane_k[0][l] = w.kx;
@@ -295,23 +370,23 @@ inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t 
   }
 }
 
-// The nearest hit of each ray of `mask` (bit l: rays[l] is traced); returns the lanes that hit.
+// The nearest hit of each ray of `mask` (lane l of `pr` for each bit l); returns the lanes that
+// hit.
 template <class Node>
-int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+int closest8_format(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhHit* hits,
                     PacketEntry* stack, TraversalEntry* single_stack) {
-  mask &= 0xFF;
-  if (bvh.empty() || !mask) return 0;
   PacketData p;
-  if (!prepare_packet(rays, mask, p)) {  // not one packet: one ray at a time
+  if (!prepare_packet(pr, p)) {  // not one packet: one ray at a time
     int found = 0;
-    for (int l = 0; l < 8; ++l)
-      if ((mask >> l & 1) &&
-          traverse<Query::kNearest, Node>(bvh, rays[l], &hits[l], nullptr, single_stack))
-        found |= 1 << l;
+    for (int l = 0; l < 8; ++l) {
+      if (!(mask >> l & 1)) continue;
+      const MeshRay r = pr.ray(l);
+      if (traverse<Query::kNearest, Node>(bvh, r, &hits[l], nullptr, single_stack)) found |= 1 << l;
+    }
     return found;
   }
   alignas(32) float tmax_s[8];
-  for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? rays[l].tmax : -kInfinityF;
+  for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? pr.f[7][l] : -kInfinityF;
   V8 tmax = load8(tmax_s);
   int found = 0;
   int top = 0;
@@ -348,7 +423,7 @@ int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHi
       }
     } else {
       const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
-      if (!p.leaves_ready) prepare_leaves(rays, mask, p);
+      if (!p.leaves_ready) prepare_leaves(pr, p);
       if (!p.shared ||
           __builtin_popcount(lanes) * int((end - first + 1) / 2) < 4 * int(end - first)) {
         leaf_by_lane(bvh, first, end, p, lanes, tmax_s, hits, found);
@@ -370,10 +445,29 @@ int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHi
   }
 }
 
+inline int closest8_lanes(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhHit* hits,
+                          PacketEntry* stack, TraversalEntry* single_stack) {
+  return bvh.quantised ? closest8_format<QuantisedNode>(bvh, pr, mask, hits, stack, single_stack)
+                       : closest8_format<WideNode>(bvh, pr, mask, hits, stack, single_stack);
+}
+
 int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
              PacketEntry* stack, TraversalEntry* single_stack) {
-  return bvh.quantised ? closest8_format<QuantisedNode>(bvh, rays, mask, hits, stack, single_stack)
-                       : closest8_format<WideNode>(bvh, rays, mask, hits, stack, single_stack);
+  mask &= 0xFF;
+  if (bvh.empty() || !mask) return 0;
+  PacketRays pr;
+  gather_rays(rays, mask, pr);
+  return closest8_lanes(bvh, pr, mask, hits, stack, single_stack);
+}
+
+int closest8_rays(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit* hits, double* scale,
+                  PacketEntry* stack, TraversalEntry* single_stack) {
+  mask &= 0xFF;
+  if (!mask) return 0;
+  PacketRays pr;
+  if (!convert_rays(rays, mask, pr, scale)) return -1;
+  if (bvh.empty()) return 0;
+  return closest8_lanes(bvh, pr, mask, hits, stack, single_stack);
 }
 
 }  // namespace raycast::RAYCAST_KERNEL_NS
