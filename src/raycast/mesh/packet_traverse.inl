@@ -57,61 +57,79 @@ inline void gather_rays(const MeshRay* rays, int mask, PacketRays& pr) {
 // mesh.cpp's to_mesh_ray on the eight lanes at once (the same operations, so the same bits), for
 // the rays of `mask` (idle lanes copy the first active one): false, with nothing converted, when a
 // lane's largest |direction component| has an exponent outside to_mesh_ray's fast range (NaN and
-// infinite directions included; the caller converts those rays one by one). GCC vector types, so
-// each instruction set's file compiles it to its own widths (kept inside this one function, with
-// __builtin_bit_cast, so that no function passes or returns one: -Wpsabi).
+// infinite directions included; the caller converts those rays one by one). GCC vector types of
+// four lanes, so each instruction set's file compiles it to its own instructions (kept inside
+// this one function, with __builtin_bit_cast, so that no function passes or returns one: -Wpsabi);
+// only operations AVX2 has on 256 bits, so that GCC does not split them into scalars.
 inline bool convert_rays(const Ray* rays, int mask, PacketRays& pr, double* scale) {
-  using D8 = double __attribute__((vector_size(64)));
-  using I64x8 = std::int64_t __attribute__((vector_size(64)));
-  using F8 = float __attribute__((vector_size(32)));
-  using I32x8 = std::int32_t __attribute__((vector_size(32)));
-  using U32x8 = std::uint32_t __attribute__((vector_size(32)));
-  alignas(64) double g[8][8];  // the rays' eight doubles, transposed
+  using D4 = double __attribute__((vector_size(32)));
+  using I64x4 = std::int64_t __attribute__((vector_size(32)));
+  using F4 = float __attribute__((vector_size(16)));
+  using I32x4 = std::int32_t __attribute__((vector_size(16)));
+  using U32x4 = std::uint32_t __attribute__((vector_size(16)));
+  static_assert(sizeof(Ray) == 8 * sizeof(double), "a Ray is o, d, tmin, tmax: eight doubles");
   const int first = __builtin_ctz(mask);
-  for (int l = 0; l < 8; ++l) {
-    const Ray& r = rays[(mask >> l & 1) ? l : first];
-    g[0][l] = r.o.x, g[1][l] = r.o.y, g[2][l] = r.o.z;
-    g[3][l] = r.d.x, g[4][l] = r.d.y, g[5][l] = r.d.z;
-    g[6][l] = r.tmin, g[7][l] = r.tmax;
+  I64x4 out_of_range = {};
+  for (int h = 0; h < 8; h += 4) {
+    // Lanes h..h+3 as rows (ox oy oz dx | dy dz tmin tmax), transposed into v[0..7] by two 4x4
+    // shuffles.
+    D4 a[4], b[4];
+    for (int j = 0; j < 4; ++j) {
+      const double* r = &rays[(mask >> (h + j) & 1) ? h + j : first].o.x;
+      std::memcpy(&a[j], r, sizeof(D4));
+      std::memcpy(&b[j], r + 4, sizeof(D4));
+    }
+    D4 v[8];
+    for (int k = 0; k < 8; k += 4) {
+      const D4* m = k ? b : a;
+      const D4 t0 = __builtin_shufflevector(m[0], m[1], 0, 4, 2, 6);
+      const D4 t1 = __builtin_shufflevector(m[0], m[1], 1, 5, 3, 7);
+      const D4 t2 = __builtin_shufflevector(m[2], m[3], 0, 4, 2, 6);
+      const D4 t3 = __builtin_shufflevector(m[2], m[3], 1, 5, 3, 7);
+      v[k] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+      v[k + 1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+      v[k + 2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+      v[k + 3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+    }
+    // The biased exponent E of max(|dx|, |dy|, |dz|) is the greatest of the components' (the
+    // exponent field grows with the magnitude); to_mesh_ray's fast range -1022 < e < 1022 is
+    // 2 <= E <= 2044.
+    const I64x4 ex = (__builtin_bit_cast(I64x4, v[3]) >> 52) & 0x7FF;
+    const I64x4 ey = (__builtin_bit_cast(I64x4, v[4]) >> 52) & 0x7FF;
+    const I64x4 ez = (__builtin_bit_cast(I64x4, v[5]) >> 52) & 0x7FF;
+    const I64x4 exy = ex > ey ? ex : ey;
+    const I64x4 e = exy > ez ? exy : ez;
+    out_of_range |= (e < 2) | (e > 2044);
+    const D4 sc = __builtin_bit_cast(D4, (2046 - e) << 52);  // 2^-e
+    const D4 inv = __builtin_bit_cast(D4, e << 52);          // 2^e
+    F4 out[8];
+    for (int k = 0; k < 3; ++k) {
+      out[k] = __builtin_convertvector(v[k], F4);
+      out[3 + k] = __builtin_convertvector(v[3 + k] * sc, F4);
+    }
+    // round_down(tmin * inv) and round_up(tmax * inv): the nearest float, moved one step down
+    // (up) when it lies above (below) the double; zero steps to the least subnormal of that
+    // side. The double comparisons become float lanes through a conversion of -1 or 0.
+    const D4 lo = v[6] * inv, hi = v[7] * inv;
+    const F4 flo = __builtin_convertvector(lo, F4), fhi = __builtin_convertvector(hi, F4);
+    const D4 minus_one = D4{} - 1;
+    const F4 below_f =
+        __builtin_convertvector(__builtin_convertvector(flo, D4) > lo ? minus_one : D4{}, F4);
+    const F4 above_f =
+        __builtin_convertvector(__builtin_convertvector(fhi, D4) < hi ? minus_one : D4{}, F4);
+    const I32x4 below = below_f < 0, above = above_f < 0;
+    const U32x4 ulo = __builtin_bit_cast(U32x4, flo), uhi = __builtin_bit_cast(U32x4, fhi);
+    const I32x4 zero_lo = (ulo & 0x7FFFFFFFu) == 0, zero_hi = (uhi & 0x7FFFFFFFu) == 0;
+    const I32x4 neg_lo = __builtin_bit_cast(I32x4, ulo) < 0;
+    const I32x4 neg_hi = __builtin_bit_cast(I32x4, uhi) < 0;
+    const U32x4 lo_down = zero_lo ? U32x4{} + 0x80000001u : (neg_lo ? ulo + 1 : ulo - 1);
+    const U32x4 hi_up = zero_hi ? U32x4{} + 1u : (neg_hi ? uhi - 1 : uhi + 1);
+    out[6] = __builtin_bit_cast(F4, below ? lo_down : ulo);
+    out[7] = __builtin_bit_cast(F4, above ? hi_up : uhi);
+    for (int k = 0; k < 8; ++k) std::memcpy(&pr.f[k][h], &out[k], sizeof(F4));
+    std::memcpy(scale + h, &sc, sizeof sc);
   }
-  D8 v[8];
-  std::memcpy(v, g, sizeof g);
-  const I64x8 abs_bits = I64x8{} + 0x7FFFFFFFFFFFFFFFll;
-  const D8 ax = __builtin_bit_cast(D8, __builtin_bit_cast(I64x8, v[3]) & abs_bits);
-  const D8 ay = __builtin_bit_cast(D8, __builtin_bit_cast(I64x8, v[4]) & abs_bits);
-  const D8 az = __builtin_bit_cast(D8, __builtin_bit_cast(I64x8, v[5]) & abs_bits);
-  const D8 myz = ay < az ? az : ay;
-  const D8 m = ax < myz ? myz : ax;  // std::max(|dx|, std::max(|dy|, |dz|))
-  // Biased exponent E = e + 1023; to_mesh_ray's fast range -1022 < e < 1022 is 2 <= E <= 2044.
-  const I64x8 e = (__builtin_bit_cast(I64x8, m) >> 52) & 0x7FF;
-  const I64x8 out_of_range = (e < 2) | (e > 2044);
-  std::int64_t any_out = 0;
-  for (int l = 0; l < 8; ++l) any_out |= out_of_range[l];
-  if (any_out) return false;
-  const D8 sc = __builtin_bit_cast(D8, (2046 - e) << 52);  // 2^-e
-  const D8 inv = __builtin_bit_cast(D8, e << 52);          // 2^e
-  F8 out[8];
-  for (int k = 0; k < 3; ++k) {
-    out[k] = __builtin_convertvector(v[k], F8);
-    out[3 + k] = __builtin_convertvector(v[3 + k] * sc, F8);
-  }
-  // round_down(tmin * inv) and round_up(tmax * inv): the nearest float, moved one step down
-  // (up) when it lies above (below) the double; zero steps to the least subnormal of that side.
-  const D8 lo = v[6] * inv, hi = v[7] * inv;
-  const F8 flo = __builtin_convertvector(lo, F8), fhi = __builtin_convertvector(hi, F8);
-  const I32x8 below = __builtin_convertvector(__builtin_convertvector(flo, D8) > lo, I32x8);
-  const I32x8 above = __builtin_convertvector(__builtin_convertvector(fhi, D8) < hi, I32x8);
-  const U32x8 ulo = __builtin_bit_cast(U32x8, flo), uhi = __builtin_bit_cast(U32x8, fhi);
-  const I32x8 zero_lo = (ulo & 0x7FFFFFFFu) == 0, zero_hi = (uhi & 0x7FFFFFFFu) == 0;
-  const I32x8 neg_lo = __builtin_bit_cast(I32x8, ulo) < 0,
-              neg_hi = __builtin_bit_cast(I32x8, uhi) < 0;
-  const U32x8 lo_down = zero_lo ? U32x8{} + 0x80000001u : (neg_lo ? ulo + 1 : ulo - 1);
-  const U32x8 hi_up = zero_hi ? U32x8{} + 1u : (neg_hi ? uhi - 1 : uhi + 1);
-  out[6] = __builtin_bit_cast(F8, below ? lo_down : ulo);
-  out[7] = __builtin_bit_cast(F8, above ? hi_up : uhi);
-  std::memcpy(pr.f, out, sizeof out);
-  std::memcpy(scale, &sc, sizeof sc);
-  return true;
+  return !(out_of_range[0] | out_of_range[1] | out_of_range[2] | out_of_range[3]);
 }
 
 // Fills `p` for the lanes of `pr` (idle lanes hold an active ray); false when they cannot go as
