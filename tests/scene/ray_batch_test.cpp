@@ -76,15 +76,34 @@ void expect_batch_equals_single(const Scene& scene, const std::vector<Ray>& rays
 TEST(RayBatch, OneMesh_PacketsEqualSingleRays) {
   testing::Rng rng(8);
   const Scene scene = mesh_scene(1);
+  ASSERT_EQ(scene.sole_mesh(), 0);
   const std::vector<Ray> rays = mixed_rays(rng, make_octa_sphere(24, 0.05));
   // The camera rows do go as packets.
   EXPECT_TRUE(coherent_rays(rays.data(), 8, 2.0));
   expect_batch_equals_single(scene, rays);
 }
 
+TEST(RayBatch, MeshBesideAnEmptyBox_PacketsEqualSingleRays) {
+  // An object with an empty box (an empty mesh) first: the scene still takes the one-mesh path,
+  // whose hits name object 1.
+  testing::Rng rng(10);
+  Scene scene;
+  Object empty;
+  empty.shape = MeshShape{make_mesh({}, {})};
+  scene.objects.push_back(std::move(empty));
+  const TriangleSoup soup = make_octa_sphere(24, 0.05);
+  Object o;
+  o.shape = MeshShape{make_mesh(soup.positions, soup.triangles)};
+  scene.objects.push_back(std::move(o));
+  scene.build();
+  ASSERT_EQ(scene.sole_mesh(), 1);
+  expect_batch_equals_single(scene, mixed_rays(rng, soup));
+}
+
 TEST(RayBatch, TwoMeshes_SingleRaysEqual) {
   testing::Rng rng(9);
   const Scene scene = mesh_scene(2);
+  ASSERT_EQ(scene.sole_mesh(), -1);
   expect_batch_equals_single(scene, mixed_rays(rng, make_octa_sphere(24, 0.05)));
 }
 

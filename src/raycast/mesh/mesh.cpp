@@ -379,12 +379,17 @@ bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
 
 int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits) {
   const Mesh& m = *s.mesh;
-  MeshRay r[8];
   double scale[8];
-  for (int l = 0; l < 8; ++l)
-    if (mask >> l & 1) r[l] = convert_ray(rays[l], scale[l]);
   MeshBvhHit h[8];
-  const int found = intersect_closest8(m.bvh, r, mask, h);
+  // The lanes converted at once (same bits as convert_ray); one by one when a direction needs
+  // convert_ray's slow path.
+  int found = intersect_closest8(m.bvh, rays, mask, h, scale);
+  if (found < 0) {
+    MeshRay r[8];
+    for (int l = 0; l < 8; ++l)
+      if (mask >> l & 1) r[l] = convert_ray(rays[l], scale[l]);
+    found = intersect_closest8(m.bvh, r, mask, h);
+  }
   for (int l = 0; l < 8; ++l) {
     if (!(found >> l & 1)) continue;
     const double t = std::clamp(refine_hit(m, h[l], rays[l], scale[l]), rays[l].tmin, rays[l].tmax);

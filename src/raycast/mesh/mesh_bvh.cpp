@@ -318,8 +318,11 @@ bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit) 
   return kernels().closest(bvh, ray, hit, stack.data());
 }
 
-int intersect_closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits) {
-  if (bvh.empty()) return 0;
+namespace {
+
+// The packet stack (on the C++ stack up to depth 128) and the single-ray one of closest8.
+template <class F>
+int with_packet_stacks(const MeshBvh& bvh, F&& trace) {
   Stack stack(bvh);
   constexpr std::size_t kLocal = 128 * (kNodeWidth - 1) + 2;  // depth 128 without the heap
   std::vector<PacketEntry> heap;
@@ -329,7 +332,23 @@ int intersect_closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBv
     heap.resize(traversal_stack_size(bvh));
     packet_stack = heap.data();
   }
-  return kernels().closest8(bvh, rays, mask, hits, packet_stack, stack.data());
+  return trace(packet_stack, stack.data());
+}
+
+}  // namespace
+
+int intersect_closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits) {
+  if (bvh.empty()) return 0;
+  return with_packet_stacks(bvh, [&](PacketEntry* packet_stack, TraversalEntry* single_stack) {
+    return kernels().closest8(bvh, rays, mask, hits, packet_stack, single_stack);
+  });
+}
+
+int intersect_closest8(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit* hits,
+                       double* scale) {
+  return with_packet_stacks(bvh, [&](PacketEntry* packet_stack, TraversalEntry* single_stack) {
+    return kernels().closest8_rays(bvh, rays, mask, hits, scale, packet_stack, single_stack);
+  });
 }
 
 bool intersect_any(const MeshBvh& bvh, const MeshRay& ray) {

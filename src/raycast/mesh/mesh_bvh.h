@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "accel/bvh.h"
+#include "geometry/ray.h"
 #include "math/vec3.h"
 
 namespace raycast {
@@ -158,6 +159,11 @@ bool intersect_any(const MeshBvh& bvh, const MeshRay& ray);
 /// The nearest hits of up to eight rays traced as one packet (rays[l] for each bit l of mask):
 /// the same hits as intersect_closest on each, bit for bit; returns the mask of those that hit.
 int intersect_closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits);
+/// intersect_closest8 on the double rays of `mask` converted as to_mesh_ray (mesh/mesh.h) does,
+/// the conversion done on the lanes at once (scale[l]: to_mesh_ray's scale). -1, with nothing
+/// traced, when a ray needs to_mesh_ray's slow path (MeshKernels::closest8_rays).
+int intersect_closest8(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit* hits,
+                       double* scale);
 /// Every triangle hit with tmin <= t <= tmax, in no particular order, appended to out.
 void intersect_every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out);
 

@@ -32,33 +32,127 @@ struct PacketData {
   V8 sx, sy, sz, okx, oky, okz;
 };
 
-// Fills `p` for the rays of `mask`; false when they cannot go as one packet: a direction sign
-// that differs between lanes, or a ray that is not finite. Idle lanes copy an active ray, so the
-// bounds over all eight lanes are those over the active ones.
-inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
-  alignas(32) float f[8][8];  // ox, oy, oz, dx, dy, dz, tmin, tmax of each lane
+// A packet's rays as lanes: ox, oy, oz, dx, dy, dz, tmin, tmax, each of eight lanes (idle lanes
+// hold a copy of an active ray).
+struct PacketRays {
+  alignas(64) float f[8][8];
+  MeshRay ray(int l) const {
+    return MeshRay{Vec3f{f[0][l], f[1][l], f[2][l]}, Vec3f{f[3][l], f[4][l], f[5][l]}, f[6][l],
+                   f[7][l]};
+  }
+};
+
+// The rays of `mask` as lanes; idle lanes copy the first active ray, so the bounds over all eight
+// lanes are those over the active ones.
+inline void gather_rays(const MeshRay* rays, int mask, PacketRays& pr) {
   const int first = __builtin_ctz(mask);
   for (int l = 0; l < 8; ++l) {
     const MeshRay& r = rays[(mask >> l & 1) ? l : first];
-    f[0][l] = r.o.x, f[1][l] = r.o.y, f[2][l] = r.o.z;
-    f[3][l] = r.d.x, f[4][l] = r.d.y, f[5][l] = r.d.z;
-    f[6][l] = r.tmin, f[7][l] = r.tmax;
+    pr.f[0][l] = r.o.x, pr.f[1][l] = r.o.y, pr.f[2][l] = r.o.z;
+    pr.f[3][l] = r.d.x, pr.f[4][l] = r.d.y, pr.f[5][l] = r.d.z;
+    pr.f[6][l] = r.tmin, pr.f[7][l] = r.tmax;
   }
+}
+
+// mesh.cpp's to_mesh_ray on the eight lanes at once (the same operations, so the same bits), for
+// the rays of `mask` (idle lanes copy the first active one): false, with nothing converted, when a
+// lane's largest |direction component| has an exponent outside to_mesh_ray's fast range (NaN and
+// infinite directions included; the caller converts those rays one by one). GCC vector types of
+// four lanes, so each instruction set's file compiles it to its own instructions (kept inside
+// this one function, with __builtin_bit_cast, so that no function passes or returns one: -Wpsabi);
+// only operations AVX2 has on 256 bits, so that GCC does not split them into scalars.
+inline bool convert_rays(const Ray* rays, int mask, PacketRays& pr, double* scale) {
+  using D4 = double __attribute__((vector_size(32)));
+  using I64x4 = std::int64_t __attribute__((vector_size(32)));
+  using F4 = float __attribute__((vector_size(16)));
+  using I32x4 = std::int32_t __attribute__((vector_size(16)));
+  using U32x4 = std::uint32_t __attribute__((vector_size(16)));
+  static_assert(sizeof(Ray) == 8 * sizeof(double), "a Ray is o, d, tmin, tmax: eight doubles");
+  const int first = __builtin_ctz(mask);
+  I64x4 out_of_range = {};
+  for (int h = 0; h < 8; h += 4) {
+    // Lanes h..h+3 as rows (ox oy oz dx | dy dz tmin tmax), transposed into v[0..7] by two 4x4
+    // shuffles.
+    D4 a[4], b[4];
+    for (int j = 0; j < 4; ++j) {
+      const double* r = &rays[(mask >> (h + j) & 1) ? h + j : first].o.x;
+      std::memcpy(&a[j], r, sizeof(D4));
+      std::memcpy(&b[j], r + 4, sizeof(D4));
+    }
+    D4 v[8];
+    for (int k = 0; k < 8; k += 4) {
+      const D4* m = k ? b : a;
+      const D4 t0 = __builtin_shufflevector(m[0], m[1], 0, 4, 2, 6);
+      const D4 t1 = __builtin_shufflevector(m[0], m[1], 1, 5, 3, 7);
+      const D4 t2 = __builtin_shufflevector(m[2], m[3], 0, 4, 2, 6);
+      const D4 t3 = __builtin_shufflevector(m[2], m[3], 1, 5, 3, 7);
+      v[k] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+      v[k + 1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+      v[k + 2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+      v[k + 3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+    }
+    // The biased exponent E of max(|dx|, |dy|, |dz|) is the greatest of the components' (the
+    // exponent field grows with the magnitude); to_mesh_ray's fast range -1022 < e < 1022 is
+    // 2 <= E <= 2044.
+    const I64x4 ex = (__builtin_bit_cast(I64x4, v[3]) >> 52) & 0x7FF;
+    const I64x4 ey = (__builtin_bit_cast(I64x4, v[4]) >> 52) & 0x7FF;
+    const I64x4 ez = (__builtin_bit_cast(I64x4, v[5]) >> 52) & 0x7FF;
+    const I64x4 exy = ex > ey ? ex : ey;
+    const I64x4 e = exy > ez ? exy : ez;
+    out_of_range |= (e < 2) | (e > 2044);
+    const D4 sc = __builtin_bit_cast(D4, (2046 - e) << 52);  // 2^-e
+    const D4 inv = __builtin_bit_cast(D4, e << 52);          // 2^e
+    F4 out[8];
+    for (int k = 0; k < 3; ++k) {
+      out[k] = __builtin_convertvector(v[k], F4);
+      out[3 + k] = __builtin_convertvector(v[3 + k] * sc, F4);
+    }
+    // round_down(tmin * inv) and round_up(tmax * inv): the nearest float, moved one step down
+    // (up) when it lies above (below) the double; zero steps to the least subnormal of that
+    // side. The double comparisons become float lanes through a conversion of -1 or 0.
+    const D4 lo = v[6] * inv, hi = v[7] * inv;
+    const F4 flo = __builtin_convertvector(lo, F4), fhi = __builtin_convertvector(hi, F4);
+    const D4 minus_one = D4{} - 1;
+    const F4 below_f =
+        __builtin_convertvector(__builtin_convertvector(flo, D4) > lo ? minus_one : D4{}, F4);
+    const F4 above_f =
+        __builtin_convertvector(__builtin_convertvector(fhi, D4) < hi ? minus_one : D4{}, F4);
+    const I32x4 below = below_f < 0, above = above_f < 0;
+    const U32x4 ulo = __builtin_bit_cast(U32x4, flo), uhi = __builtin_bit_cast(U32x4, fhi);
+    const I32x4 zero_lo = (ulo & 0x7FFFFFFFu) == 0, zero_hi = (uhi & 0x7FFFFFFFu) == 0;
+    const I32x4 neg_lo = __builtin_bit_cast(I32x4, ulo) < 0;
+    const I32x4 neg_hi = __builtin_bit_cast(I32x4, uhi) < 0;
+    const U32x4 lo_down = zero_lo ? U32x4{} + 0x80000001u : (neg_lo ? ulo + 1 : ulo - 1);
+    const U32x4 hi_up = zero_hi ? U32x4{} + 1u : (neg_hi ? uhi - 1 : uhi + 1);
+    out[6] = __builtin_bit_cast(F4, below ? lo_down : ulo);
+    out[7] = __builtin_bit_cast(F4, above ? hi_up : uhi);
+    for (int k = 0; k < 8; ++k) std::memcpy(&pr.f[k][h], &out[k], sizeof(F4));
+    std::memcpy(scale + h, &sc, sizeof sc);
+  }
+  return !(out_of_range[0] | out_of_range[1] | out_of_range[2] | out_of_range[3]);
+}
+
+// Fills `p` for the lanes of `pr` (idle lanes hold an active ray); false when they cannot go as
+// one packet: a direction sign that differs between lanes, or a ray that is not finite.
+inline bool prepare_packet(const PacketRays& pr, PacketData& p) {
+  const auto& f = pr.f;
   const V8 zero = splat(0.0f);
   int finite = bits(cmp_eq(load8(f[6]), load8(f[6]))) & bits(cmp_eq(load8(f[7]), load8(f[7])));
   for (int k = 0; k < 6; ++k) finite &= bits(cmp_eq(load8(f[k]) - load8(f[k]), zero));
   if (finite != 0xFF) return false;
   for (int a = 0; a < 3; ++a) {
     // Tiny components are replaced as the single-ray test does (rare: fixed lane by lane).
-    const V8 d = load8(f[3 + a]);
+    alignas(32) float da[8];
+    std::memcpy(da, f[3 + a], sizeof da);
+    const V8 d = load8(da);
     const int small =
         ~(bits(cmp_ge(d, splat(kMinDirection))) | bits(cmp_le(d, splat(-kMinDirection)))) & 0xFF;
     for (int m = small; m; m &= m - 1) {
-      float& da = f[3 + a][__builtin_ctz(m)];
-      da = da < 0 ? -kMinDirection : kMinDirection;
+      float& x = da[__builtin_ctz(m)];
+      x = x < 0 ? -kMinDirection : kMinDirection;
     }
     p.o[a] = load8(f[a]);
-    p.inv[a] = splat(1.0f) / load8(f[3 + a]);  // as the single-ray test computes it
+    p.inv[a] = splat(1.0f) / load8(da);  // as the single-ray test computes it
     alignas(32) float inv[8];
     store8(inv, p.inv[a]);
     float olo = f[a][0], ohi = olo, ilo = inv[0], ihi = ilo;
@@ -88,11 +182,10 @@ inline bool prepare_packet(const MeshRay* rays, int mask, PacketData& p) {
 }
 
 // The watertight test's constants of every lane (idle lanes copy an active ray).
-inline void prepare_leaves(const MeshRay* rays, int mask, PacketData& p) {
-  const int first = __builtin_ctz(mask);
+inline void prepare_leaves(const PacketRays& pr, PacketData& p) {
   p.shared = true;
   for (int l = 0; l < 8; ++l) {
-    const MeshRay& r = rays[(mask >> l & 1) ? l : first];
+    const MeshRay r = pr.ray(l);
     const float* ro = &r.o.x;
     const WatertightRay w = make_watertight_ray(r.o, r.d);
     p.lane_k[0][l] = w.kx;
@@ -295,23 +388,23 @@ inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t 
   }
 }
 
-// The nearest hit of each ray of `mask` (bit l: rays[l] is traced); returns the lanes that hit.
+// The nearest hit of each ray of `mask` (lane l of `pr` for each bit l); returns the lanes that
+// hit.
 template <class Node>
-int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
+int closest8_format(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhHit* hits,
                     PacketEntry* stack, TraversalEntry* single_stack) {
-  mask &= 0xFF;
-  if (bvh.empty() || !mask) return 0;
   PacketData p;
-  if (!prepare_packet(rays, mask, p)) {  // not one packet: one ray at a time
+  if (!prepare_packet(pr, p)) {  // not one packet: one ray at a time
     int found = 0;
-    for (int l = 0; l < 8; ++l)
-      if ((mask >> l & 1) &&
-          traverse<Query::kNearest, Node>(bvh, rays[l], &hits[l], nullptr, single_stack))
-        found |= 1 << l;
+    for (int l = 0; l < 8; ++l) {
+      if (!(mask >> l & 1)) continue;
+      const MeshRay r = pr.ray(l);
+      if (traverse<Query::kNearest, Node>(bvh, r, &hits[l], nullptr, single_stack)) found |= 1 << l;
+    }
     return found;
   }
   alignas(32) float tmax_s[8];
-  for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? rays[l].tmax : -kInfinityF;
+  for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? pr.f[7][l] : -kInfinityF;
   V8 tmax = load8(tmax_s);
   int found = 0;
   int top = 0;
@@ -348,7 +441,7 @@ int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHi
       }
     } else {
       const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
-      if (!p.leaves_ready) prepare_leaves(rays, mask, p);
+      if (!p.leaves_ready) prepare_leaves(pr, p);
       if (!p.shared ||
           __builtin_popcount(lanes) * int((end - first + 1) / 2) < 4 * int(end - first)) {
         leaf_by_lane(bvh, first, end, p, lanes, tmax_s, hits, found);
@@ -370,10 +463,29 @@ int closest8_format(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHi
   }
 }
 
+inline int closest8_lanes(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhHit* hits,
+                          PacketEntry* stack, TraversalEntry* single_stack) {
+  return bvh.quantised ? closest8_format<QuantisedNode>(bvh, pr, mask, hits, stack, single_stack)
+                       : closest8_format<WideNode>(bvh, pr, mask, hits, stack, single_stack);
+}
+
 int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
              PacketEntry* stack, TraversalEntry* single_stack) {
-  return bvh.quantised ? closest8_format<QuantisedNode>(bvh, rays, mask, hits, stack, single_stack)
-                       : closest8_format<WideNode>(bvh, rays, mask, hits, stack, single_stack);
+  mask &= 0xFF;
+  if (bvh.empty() || !mask) return 0;
+  PacketRays pr;
+  gather_rays(rays, mask, pr);
+  return closest8_lanes(bvh, pr, mask, hits, stack, single_stack);
+}
+
+int closest8_rays(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit* hits, double* scale,
+                  PacketEntry* stack, TraversalEntry* single_stack) {
+  mask &= 0xFF;
+  if (!mask) return 0;
+  PacketRays pr;
+  if (!convert_rays(rays, mask, pr, scale)) return -1;
+  if (bvh.empty()) return 0;
+  return closest8_lanes(bvh, pr, mask, hits, stack, single_stack);
 }
 
 }  // namespace raycast::RAYCAST_KERNEL_NS

@@ -3,8 +3,10 @@
 // traversal template (mesh/wide_traverse.inl) compiled once per ISA (mesh/wide_kernels_*.cpp)
 // and picked at run time (math/isa.h; docs/architecture.md "ISA dispatch").
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
+#include "geometry/ray.h"
 #include "math/isa.h"
 #include "mesh/mesh_bvh.h"
 
@@ -39,6 +41,12 @@ struct MeshKernels {
   /// `single_stack` each have room for traversal_stack_size(bvh) entries.
   int (*closest8)(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
                   PacketEntry* stack, TraversalEntry* single_stack);
+  /// closest8 on the rays of `mask` converted as mesh.cpp's to_mesh_ray does (the same bits; its
+  /// power-of-two scale of each converted lane in scale[l]), the conversion done on the lanes at
+  /// once. Returns -1, with nothing traced, when a ray's direction is outside the conversion's
+  /// fast range (convert those one by one).
+  int (*closest8_rays)(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit* hits,
+                       double* scale, PacketEntry* stack, TraversalEntry* single_stack);
 };
 
 /// The kernels of `isa`, or nullptr when this build or this CPU lacks it (isa_supported).

@@ -61,7 +61,8 @@ inline V8 select(M8 m, V8 x, V8 y) { return {_mm256_blendv_ps(y.v, x.v, m.m)}; }
 #pragma GCC pop_options
 
 namespace raycast {
-const MeshKernels kMeshKernelsAvx2 = {Isa::kAvx2, kernels_avx2::closest, kernels_avx2::any,
-                                      kernels_avx2::every, kernels_avx2::closest8};
+const MeshKernels kMeshKernelsAvx2 = {
+    Isa::kAvx2,          kernels_avx2::closest,  kernels_avx2::any,
+    kernels_avx2::every, kernels_avx2::closest8, kernels_avx2::closest8_rays};
 }  // namespace raycast
 #endif

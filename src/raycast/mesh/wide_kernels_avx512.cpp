@@ -128,7 +128,8 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 #pragma GCC pop_options
 
 namespace raycast {
-const MeshKernels kMeshKernelsAvx512 = {Isa::kAvx512, kernels_avx512::closest, kernels_avx512::any,
-                                        kernels_avx512::every, kernels_avx512::closest8};
+const MeshKernels kMeshKernelsAvx512 = {
+    Isa::kAvx512,          kernels_avx512::closest,  kernels_avx512::any,
+    kernels_avx512::every, kernels_avx512::closest8, kernels_avx512::closest8_rays};
 }  // namespace raycast
 #endif

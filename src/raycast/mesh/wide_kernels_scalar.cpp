@@ -100,6 +100,7 @@ inline V8 select(M8 m, V8 a, V8 b) {
 #undef RAYCAST_KERNEL_NS
 
 namespace raycast {
-const MeshKernels kMeshKernelsScalar = {Isa::kScalar, kernels_scalar::closest, kernels_scalar::any,
-                                        kernels_scalar::every, kernels_scalar::closest8};
+const MeshKernels kMeshKernelsScalar = {
+    Isa::kScalar,          kernels_scalar::closest,  kernels_scalar::any,
+    kernels_scalar::every, kernels_scalar::closest8, kernels_scalar::closest8_rays};
 }  // namespace raycast

@@ -61,7 +61,8 @@ inline V8 select(M8 m, V8 x, V8 y) {
 #pragma GCC pop_options
 
 namespace raycast {
-const MeshKernels kMeshKernelsSse4 = {Isa::kSse4, kernels_sse4::closest, kernels_sse4::any,
-                                      kernels_sse4::every, kernels_sse4::closest8};
+const MeshKernels kMeshKernelsSse4 = {
+    Isa::kSse4,          kernels_sse4::closest,  kernels_sse4::any,
+    kernels_sse4::every, kernels_sse4::closest8, kernels_sse4::closest8_rays};
 }  // namespace raycast
 #endif

@@ -52,6 +52,11 @@ class ObjectSet {
                  [&](std::uint32_t prim) { visit(bounded_[prim]); });
   }
 
+  /// The index of the set's one object when it is an untransformed mesh and every other object's
+  /// box is empty (the queries' one-mesh path), else -1.
+  std::int32_t sole_mesh() const {
+    return sole_mesh_ ? static_cast<std::int32_t>(bounded_[0]) : -1;
+  }
   /// Bounds of every object, and of the bounded ones only.
   const Aabb& bounds() const { return bounds_; }
   const Aabb& finite_bounds() const { return finite_bounds_; }

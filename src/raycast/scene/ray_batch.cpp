@@ -8,16 +8,6 @@
 
 namespace raycast {
 
-namespace {
-
-// The scene's one untransformed mesh, or nullptr.
-const MeshShape* only_mesh(const Scene& scene) {
-  if (scene.objects.size() != 1 || scene.objects[0].xf) return nullptr;
-  return std::get_if<MeshShape>(&scene.objects[0].shape);
-}
-
-}  // namespace
-
 bool coherent_rays(const Ray* rays, int n, double extent) {
   const Vec3 u0 = rays[0].d / length(rays[0].d);
   const double max_gap = extent / 32, max_turn = 1.0 / 16;
@@ -35,7 +25,10 @@ bool coherent_rays(const Ray* rays, int n, double extent) {
 
 void intersect_batch(const Scene& scene, std::span<const Ray> rays, std::span<SceneHit> hits,
                      std::span<std::uint8_t> found) {
-  const MeshShape* mesh = only_mesh(scene);
+  // Packets where Scene::intersect takes its one-mesh path (the object's box, then the mesh).
+  const std::int32_t object = scene.sole_mesh();
+  const MeshShape* mesh =
+      object < 0 ? nullptr : std::get_if<MeshShape>(&scene.objects[object].shape);
   const double extent = mesh ? max_component(mesh->mesh->box.extent()) : 0;
   std::size_t i = 0;
   while (i < rays.size()) {
@@ -56,7 +49,7 @@ void intersect_batch(const Scene& scene, std::span<const Ray> rays, std::span<Sc
     const int hit = mask ? intersect8(*mesh, &rays[i], mask, local) : 0;
     for (int l = 0; l < n; ++l) {
       found[i + l] = hit >> l & 1;
-      hits[i + l] = found[i + l] ? SceneHit{local[l], 0} : SceneHit{};
+      hits[i + l] = found[i + l] ? SceneHit{local[l], object} : SceneHit{};
     }
     i += static_cast<std::size_t>(n);
   }

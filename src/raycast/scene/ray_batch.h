@@ -13,7 +13,8 @@ namespace raycast {
 bool coherent_rays(const Ray* rays, int n, double extent);
 
 /// hits[i] and found[i] exactly as `found[i] = scene.intersect(rays[i], hits[i])` from a
-/// default SceneHit gives them. In a scene of one mesh without a transform, each run of eight
+/// default SceneHit gives them. In a scene of one mesh without a transform (Scene::sole_mesh: other
+/// objects' boxes empty), each run of eight
 /// coherent rays (coherent_rays) is traced as one packet (mesh/packet_traverse.inl, bit for bit
 /// the single-ray answers); every other ray alone. Serial: callers split big batches.
 void intersect_batch(const Scene& scene, std::span<const Ray> rays, std::span<SceneHit> hits,

@@ -65,6 +65,9 @@ struct Scene {
   bool any_object(const Ray& ray, F&& visit) const {
     return is_valid(ray) && set_.any(ray, visit);
   }
+  /// The index of the scene's one untransformed mesh when every other object's box is empty
+  /// (ObjectSet::sole_mesh), else -1.
+  std::int32_t sole_mesh() const { return set_.sole_mesh(); }
   /// The full surface record of a hit found with this ray.
   SurfaceInfo surface(const Ray& ray, const SceneHit& hit,
                       SurfaceNeeds needs = SurfaceNeeds::kAll) const;
