@@ -364,15 +364,7 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
 
 Aabb bounds(const CsgShape& s) { return s.tree->nodes[0].box; }
 
-bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
-  const CsgTree& tree = *s.tree;
-  if (tree.formula.is_tree()) {
-    Gather g(tree, ray, scratch(tree.leaves.size()));
-    double lo = ray.tmin, hi = ray.tmax;
-    if (!g.operand(0, lo, hi)) return false;
-    if (!g.overflow)
-      return first_crossing(tree.formula, std::span(g.ends, g.count), ray.tmin, ray.tmax, hit);
-  }
+bool intersect_by_spans(const CsgShape& s, const Ray& ray, LocalHit& hit) {
   SpanList* pool = scratch(2 * s.tree->depth + 3);
   SpanList& list = pool[2 * s.tree->depth + 2];
   Evaluator{*s.tree, ray, CullRay(*s.tree, ray), pool}.operand(0, ray.tmin, ray.tmax, list);
@@ -386,6 +378,18 @@ bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
     if (span.out.t > ray.tmax) break;
   }
   return false;
+}
+
+bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
+  const CsgTree& tree = *s.tree;
+  if (tree.formula.is_tree()) {
+    Gather g(tree, ray, scratch(tree.leaves.size()));
+    double lo = ray.tmin, hi = ray.tmax;
+    if (!g.operand(0, lo, hi)) return false;
+    if (!g.overflow)
+      return first_crossing(tree.formula, std::span(g.ends, g.count), ray.tmin, ray.tmax, hit);
+  }
+  return intersect_by_spans(s, ray, hit);
 }
 
 bool occluded(const CsgShape& s, const Ray& ray) {
