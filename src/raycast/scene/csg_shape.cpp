@@ -23,7 +23,7 @@ struct CullRay {
   Vec3 o, inv_d;
   double slack[3];
   bool negative[3];
-  CullRay() = default;  // unused: a tree that tests no box
+  CullRay() = default;  // filled in before use
   CullRay(const CsgTree& tree, const Ray& ray) : o(ray.o), inv_d(reciprocal(ray.d)) {
     for (int a = 0; a < 3; ++a) {
       const double s =
@@ -129,14 +129,22 @@ struct Gather {
 
   const CsgTree& tree;
   const Ray& ray;
-  CullRay cull;
-  SpanList* lists;         // one per leaf
-  LeafEnd ends[kMaxEnds];  // left uninitialised: [0, count) is written before it is read
+  CullRay cull;  // made on the first box test
+  bool cull_ready = false;
+  SpanList* lists = nullptr;  // one per leaf, fetched by the first generic leaf
+  LeafEnd ends[kMaxEnds];     // left uninitialised: [0, count) is written before it is read
   std::size_t count = 0;
   bool overflow = false;  // more ends than kMaxEnds: the caller falls back to the evaluator
 
-  Gather(const CsgTree& t, const Ray& r, SpanList* l)
-      : tree(t), ray(r), cull(t.any_cull ? CullRay(t, r) : CullRay()), lists(l) {}
+  Gather(const CsgTree& t, const Ray& r) : tree(t), ray(r) {}
+
+  bool meets(const Aabb& box, double lo, double hi) {
+    if (!cull_ready) {
+      cull = CullRay(tree, ray);
+      cull_ready = true;
+    }
+    return box_meets(box, cull, lo, hi);
+  }
 
   // Appends one interval of `leaf`; false when it misses [lo, hi] (NaN ends count as meeting),
   // else grows the hull [elo, ehi] of the intervals that meet it.
@@ -191,6 +199,7 @@ struct Gather {
         break;
       }
       case CsgTree::LeafKind::kGeneric: {
+        if (!lists) lists = scratch(tree.leaves.size());
         SpanList& list = lists[leaf];
         list.clear();
         spans(object, ray, list);
@@ -217,12 +226,12 @@ struct Gather {
   bool operand(std::int32_t code, double& lo, double& hi) {
     if (code < 0) {
       const std::size_t leaf = static_cast<std::size_t>(-code - 1);
-      if (tree.leaf_cull[leaf] && !box_meets(tree.leaf_boxes[leaf], cull, lo, hi)) return false;
+      if (tree.leaf_cull[leaf] && !meets(tree.leaf_boxes[leaf], lo, hi)) return false;
       return leaf_ends(leaf, lo, hi);
     }
     const std::size_t k = static_cast<std::size_t>(code);
     const CsgNode& node = tree.nodes[k];
-    if (tree.node_cull[k] && !box_meets(node.box, cull, lo, hi)) return false;
+    if (tree.node_cull[k] && !meets(node.box, lo, hi)) return false;
     if (node.op == CsgOp::kUnion) {
       double ulo = kInfinity, uhi = -kInfinity;
       bool any = false;
@@ -353,9 +362,6 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
         (leaf ? tree.leaf_cull : tree.node_cull)[index] = 0;
     }
   }
-  tree.any_cull = false;
-  for (const char c : tree.leaf_cull) tree.any_cull = tree.any_cull || c;
-  for (const char c : tree.node_cull) tree.any_cull = tree.any_cull || c;
   tree.formula = CsgFormula{};
   for (const CsgNode& node : tree.nodes) tree.formula.add(node.op, node.operands);
   tree.formula.finish(tree.leaves.size(), tree.leaf_flipped);
@@ -383,7 +389,7 @@ bool intersect_by_spans(const CsgShape& s, const Ray& ray, LocalHit& hit) {
 bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
   const CsgTree& tree = *s.tree;
   if (tree.formula.is_tree()) {
-    Gather g(tree, ray, scratch(tree.leaves.size()));
+    Gather g(tree, ray);
     double lo = ray.tmin, hi = ray.tmax;
     if (!g.operand(0, lo, hi)) return false;
     if (!g.overflow)

@@ -36,7 +36,6 @@ struct CsgTree {
   enum class LeafKind : std::uint8_t { kGeneric, kSphere, kBox, kFrustum };
   std::vector<LeafKind> leaf_kind;
   std::vector<char> leaf_cull, node_cull;
-  bool any_cull = false;
 };
 
 inline std::int32_t csg_leaf_code(std::size_t leaf) { return -static_cast<std::int32_t>(leaf) - 1; }
