@@ -282,5 +282,48 @@ TEST(FirstCrossing, ExampleScene_IntersectEqualsTheCombinedLists) {
   EXPECT_GT(hits, 1000);
 }
 
+// More ends than the walk's buffer (40 spheres and 20 cylinders on one line, 60 leaves): the
+// span-list path answers, the same as intersect_by_spans.
+TEST(FirstCrossing, ManyEnds_FallBackToTheSpanLists) {
+  std::string yaml = "- difference:\n    - union:\n";
+  for (int i = 0; i < 40; ++i)
+    yaml += "        - sphere: {center: [" + std::to_string(i) + ", 0, 0], radius: 0.4}\n";
+  yaml += "    - union:\n";
+  for (int i = 0; i < 20; ++i)
+    yaml += "        - cylinder: {from: [" + std::to_string(i + 0.5) + ", -1, 0], to: [" +
+            std::to_string(i + 0.5) + ", 1, 0], radius: 0.05}\n";
+  const Scene scene = csg_test::scene_of(yaml);
+  const auto& csg = std::get<CsgShape>(scene.objects[0].shape);
+  for (const double tmin : {0.0, 10.0, 20.2, 38.9}) {
+    Ray ray{{-1, 0.01, 0}, {1, 0, 0}};
+    ray.tmin = tmin;
+    LocalHit want, got;
+    const bool expect = intersect_by_spans(csg, ray, want);
+    ASSERT_TRUE(expect);
+    ASSERT_TRUE(intersect(csg, ray, got));
+    EXPECT_EQ(got.t, want.t);
+    EXPECT_EQ(got.leaf, want.leaf);
+  }
+}
+
+// docs/csg.md: a ray tangent to a sphere inside CSG reports no hit (a result has no zero-length
+// interval). The span-list path passed a lone operand's list through uncombined and reported the
+// touching point; the walk does not.
+TEST(FirstCrossing, TangentToAnOperand_IsNoHit) {
+  const Scene scene = csg_test::scene_of(
+      "- union:\n"
+      "    - sphere: {radius: 1}\n"
+      "    - sphere: {center: [0, -9, 0], radius: 1}\n");
+  const auto& csg = std::get<CsgShape>(scene.objects[0].shape);
+  const Ray tangent{{-5, 1, 0}, {1, 0, 0}};  // the roots are exactly 5 and 5
+  LocalHit hit;
+  EXPECT_FALSE(intersect(csg, tangent, hit));
+  EXPECT_FALSE(occluded(csg, tangent));
+  EXPECT_TRUE(intersect_by_spans(csg, tangent, hit));  // the old answer, for the record
+  const Ray through{{-5, 0.5, 0}, {1, 0, 0}};
+  ASSERT_TRUE(intersect(csg, through, hit));
+  EXPECT_LT(hit.t, 5);
+}
+
 }  // namespace
 }  // namespace raycast

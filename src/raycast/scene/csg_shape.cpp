@@ -165,6 +165,10 @@ struct Gather {
     const auto index = static_cast<std::uint16_t>(leaf);
     double elo = kInfinity, ehi = -kInfinity;
     bool any = false;
+    if (tree.leaf_kind[leaf] != CsgTree::LeafKind::kGeneric && count + 4 > kMaxEnds) {
+      overflow = true;  // a leaf of these kinds adds at most 4 ends
+      return true;
+    }
     switch (tree.leaf_kind[leaf]) {
       case CsgTree::LeafKind::kSphere: {
         const Sphere& s = *std::get_if<Sphere>(&object.shape);
