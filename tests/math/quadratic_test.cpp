@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 
@@ -108,6 +111,70 @@ TEST(Quadratic, RandomRoots_RecoveredToRoundingError) {
     EXPECT_NEAR(t0, lo, tol) << "case " << i;
     EXPECT_NEAR(t1, hi, tol) << "case " << i;
   }
+}
+
+}  // namespace
+}  // namespace raycast
+
+namespace raycast {
+namespace {
+
+// solve_quadratic's power-of-two scaling by bits against frexp/ldexp (its slow path): the same
+// roots, bit for bit, over coefficients from 2^-1070 to 2^1020 with either sign.
+TEST(Quadratic, ScalingByBits_MatchesFrexpLdexp) {
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> ex(-1070, 1020), sign(0, 1), zero(0, 9);
+  std::uniform_real_distribution<double> mant(0.5, 1);
+  auto coefficient = [&]() {
+    if (zero(rng) == 0) return 0.0;
+    const double x = std::ldexp(mant(rng), ex(rng));
+    return sign(rng) ? -x : x;
+  };
+  // The solver as it was written with frexp and ldexp.
+  auto reference = [](double a, double b, double c, double& t0, double& t1) {
+    if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c)) return 0;
+    if (a == 0) {
+      if (b == 0) return 0;
+      t0 = t1 = -c / b;
+      return std::isfinite(t0) ? 1 : 0;
+    }
+    int e;
+    std::frexp(std::max({std::abs(a), std::abs(b), std::abs(c)}), &e);
+    a = std::ldexp(a, -e);
+    b = std::ldexp(b, -e);
+    c = std::ldexp(c, -e);
+    const double four_ac = 4 * a * c;
+    const double err = std::fma(-4 * a, c, four_ac);
+    const double disc = std::fma(b, b, -four_ac) + err;
+    if (disc < 0) return 0;
+    const double root = std::sqrt(disc);
+    const double q = b < 0 ? -0.5 * (b - root) : -0.5 * (b + root);
+    if (q == 0) {
+      t0 = t1 = 0;
+      return 2;
+    }
+    t0 = q / a;
+    t1 = c / q;
+    if (t0 > t1) std::swap(t0, t1);
+    return 2;
+  };
+  int solved = 0;
+  for (int i = 0; i < 200000; ++i) {
+    double a = coefficient(), b = coefficient(), c = coefficient();
+    if (i % 3 == 0) {  // close exponents: real roots are common
+      b = std::ldexp(mant(rng), std::ilogb(a == 0 ? 1.0 : a) + 1) * (sign(rng) ? 1 : -1);
+      c = a * mant(rng) * (sign(rng) ? 1 : -1);
+    }
+    if (a == 0) continue;
+    double t0 = 0, t1 = 0, r0 = 0, r1 = 0;
+    const int n = solve_quadratic(a, b, c, t0, t1);
+    ASSERT_EQ(n, reference(a, b, c, r0, r1)) << a << " " << b << " " << c;
+    if (n == 0) continue;
+    ++solved;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(t0), std::bit_cast<std::uint64_t>(r0));
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(t1), std::bit_cast<std::uint64_t>(r1));
+  }
+  EXPECT_GT(solved, 30000);
 }
 
 }  // namespace

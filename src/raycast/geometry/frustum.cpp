@@ -186,18 +186,21 @@ bool frustum_intersect(const Frustum& f, const Ray& ray, LocalHit& hit) {
   return false;
 }
 
+int frustum_solid_intervals(const Frustum& f, const Ray& ray, LineInterval out[2]) {
+  return solid_intervals(f, local_ray(f, ray), out);
+}
+
 void frustum_spans(const Frustum& f, const Ray& ray, SpanList& out) {
-  const Ray r = local_ray(f, ray);
   if (f.is_closed()) {
     LineInterval iv[2];
-    const int n = solid_intervals(f, r, iv);
+    const int n = frustum_solid_intervals(f, ray, iv);
     for (int i = 0; i < n; ++i)
       out.add(LocalHit{.t = iv[i].in.t, .part = iv[i].in.part},
               LocalHit{.t = iv[i].out.t, .part = iv[i].out.part});
     return;
   }
   LineEnd c[4];
-  const int n = open_crossings(f, r, c);
+  const int n = open_crossings(f, local_ray(f, ray), c);
   for (int i = 0; i < n; ++i) {
     const LocalHit h{c[i].t, -1, c[i].part, 0, 0};
     out.add(h, h);

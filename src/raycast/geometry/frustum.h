@@ -3,6 +3,7 @@
 // whose radius varies linearly, r(z) = r0 + k (z - z0) for z0 <= z <= z1, cut to
 // 0 <= phi <= phi_max, with optional disks (caps) at z0 and z1. An optional orthonormal frame
 // places it (the from/to forms). Cylinder and Cone (cylinder.h, cone.h) wrap it.
+#include "geometry/quadric_line.h"
 #include "geometry/shape.h"
 
 namespace raycast {
@@ -35,6 +36,9 @@ Frustum make_frustum(const Vec3& from, const Vec3& to, double r0, double r1, boo
 Aabb frustum_bounds(const Frustum& f);
 bool frustum_intersect(const Frustum& f, const Ray& ray, LocalHit& hit);
 void frustum_spans(const Frustum& f, const Ray& ray, SpanList& out);
+/// A closed frustum's intervals of the whole line (at most 2, sorted; the ends' parts as in
+/// frustum_spans, which makes its spans from these), without a span list: for CSG's walk.
+int frustum_solid_intervals(const Frustum& f, const Ray& ray, LineInterval out[2]);
 /// u = phi / phi_max (phi from ex, counter-clockwise about ez), v = (z - z0) / (z1 - z0).
 /// Side normals point away from the axis (as the closed solid's would), caps along -+ez.
 SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hit);

@@ -3,6 +3,7 @@
 // the clipping of such intervals to a range of t whose ends are other surfaces (box faces, caps).
 // Shared by the quadric, cylinder and cone.
 #include <cmath>
+#include <initializer_list>
 
 #include "geometry/hit.h"
 #include "math/quadratic.h"

@@ -1,7 +1,9 @@
 #include "math/quadratic.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace raycast {
@@ -15,11 +17,22 @@ int solve_quadratic(double a, double b, double c, double& t0, double& t1) {
   }
   // Scale by a power of two (exact, roots unchanged) so the largest coefficient is in [0.5, 1):
   // then b^2 and 4ac cannot overflow, which would turn the discriminant into NaN.
-  int e;
-  std::frexp(std::max({std::abs(a), std::abs(b), std::abs(c)}), &e);
-  a = std::ldexp(a, -e);
-  b = std::ldexp(b, -e);
-  c = std::ldexp(c, -e);
+  const double m = std::max({std::abs(a), std::abs(b), std::abs(c)});
+  if (m >= 0x1p-1000 && m < 0x1p1000) {
+    // The same scaling without the libm calls: frexp's exponent read from m's bits, and one
+    // multiplication by the exact power of two 2^-e (correctly rounded, as ldexp is).
+    const int e = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7ff) - 1022;
+    const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - e) << 52);
+    a *= scale;
+    b *= scale;
+    c *= scale;
+  } else {
+    int e;
+    std::frexp(m, &e);
+    a = std::ldexp(a, -e);
+    b = std::ldexp(b, -e);
+    c = std::ldexp(c, -e);
+  }
   // The discriminant with an fma keeps b^2 - 4ac accurate when the two terms nearly cancel.
   const double four_ac = 4 * a * c;
   const double err = std::fma(-4 * a, c, four_ac);  // rounding error of 4ac

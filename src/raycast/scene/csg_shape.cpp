@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "csg/first_crossing.h"
 #include "scene/csg_tree.h"
 
 namespace raycast {
@@ -22,6 +23,7 @@ struct CullRay {
   Vec3 o, inv_d;
   double slack[3];
   bool negative[3];
+  CullRay() = default;  // filled in before use
   CullRay(const CsgTree& tree, const Ray& ray) : o(ray.o), inv_d(reciprocal(ray.d)) {
     for (int a = 0; a < 3; ++a) {
       const double s =
@@ -118,6 +120,152 @@ struct Evaluator {
   }
 };
 
+// The leaves' span ends for first_crossing: each operand's spans where they may matter, with the
+// evaluator's short cuts (boxes, an intersection with an empty operand is empty, operands after
+// the first of an intersection or difference only matter where the first is) but no span lists
+// combined. A leaf left out is empty where the walk needs it, so the walk stays exact there.
+struct Gather {
+  static constexpr std::size_t kMaxEnds = 64;
+
+  const CsgTree& tree;
+  const Ray& ray;
+  CullRay cull;  // made on the first box test
+  bool cull_ready = false;
+  SpanList* lists = nullptr;  // one per leaf, fetched by the first generic leaf
+  LeafEnd ends[kMaxEnds];     // left uninitialised: [0, count) is written before it is read
+  std::size_t count = 0;
+  bool overflow = false;  // more ends than kMaxEnds: the caller falls back to the evaluator
+
+  Gather(const CsgTree& t, const Ray& r) : tree(t), ray(r) {}
+
+  bool meets(const Aabb& box, double lo, double hi) {
+    if (!cull_ready) {
+      cull = CullRay(tree, ray);
+      cull_ready = true;
+    }
+    return box_meets(box, cull, lo, hi);
+  }
+
+  // Appends one interval of `leaf`; false when it misses [lo, hi] (NaN ends count as meeting),
+  // else grows the hull [elo, ehi] of the intervals that meet it.
+  bool add(std::uint16_t leaf, double t0, int part0, const LocalHit* h0, double t1, int part1,
+           const LocalHit* h1, double lo, double hi, double& elo, double& ehi) {
+    ends[count++] = {t0, h0, part0, leaf, false};
+    ends[count++] = {t1, h1, part1, leaf, true};
+    if (t1 < lo || t0 > hi) return false;
+    elo = t0 < elo ? t0 : elo;
+    ehi = t1 > ehi ? t1 : ehi;
+    return true;
+  }
+
+  // The ends of leaf `leaf`; false when it is empty in [lo, hi], else [lo, hi] narrowed to the
+  // hull of its intervals there.
+  bool leaf_ends(std::size_t leaf, double& lo, double& hi) {
+    const Object& object = tree.leaves[leaf];
+    const auto index = static_cast<std::uint16_t>(leaf);
+    double elo = kInfinity, ehi = -kInfinity;
+    bool any = false;
+    if (tree.leaf_kind[leaf] != CsgTree::LeafKind::kGeneric && count + 4 > kMaxEnds) {
+      overflow = true;  // a leaf of these kinds adds at most 4 ends
+      return true;
+    }
+    switch (tree.leaf_kind[leaf]) {
+      case CsgTree::LeafKind::kSphere: {
+        const Sphere& s = *std::get_if<Sphere>(&object.shape);
+        const Ray r = to_object_space(object, ray);
+        const Vec3 o = r.o - s.center;
+        // Outside and moving away: both roots are negative (exact signs, see intersect(Sphere)),
+        // so a window from t >= 0 sees nothing.
+        if (lo >= 0 && dot(o, o) > s.radius * s.radius && dot(o, r.d) > 0) return false;
+        double t0, t1;
+        if (!sphere_line_roots(o, r.d, s.radius, t0, t1)) return false;
+        any = add(index, t0, 0, nullptr, t1, 1, nullptr, lo, hi, elo, ehi);
+        break;
+      }
+      case CsgTree::LeafKind::kBox: {
+        double t0, t1;
+        int f0, f1;
+        if (!box_line_interval(*std::get_if<Box>(&object.shape), to_object_space(object, ray), t0,
+                               f0, t1, f1))
+          return false;
+        any = add(index, t0, f0, nullptr, t1, f1, nullptr, lo, hi, elo, ehi);
+        break;
+      }
+      case CsgTree::LeafKind::kFrustum: {
+        const Frustum& f = std::holds_alternative<Cylinder>(object.shape)
+                               ? std::get_if<Cylinder>(&object.shape)->f
+                               : std::get_if<Cone>(&object.shape)->f;
+        LineInterval iv[2];
+        const int n = frustum_solid_intervals(f, to_object_space(object, ray), iv);
+        for (int i = 0; i < n; ++i)
+          any |= add(index, iv[i].in.t, iv[i].in.part, nullptr, iv[i].out.t, iv[i].out.part,
+                     nullptr, lo, hi, elo, ehi);
+        break;
+      }
+      case CsgTree::LeafKind::kGeneric: {
+        if (!lists) lists = scratch(tree.leaves.size());
+        SpanList& list = lists[leaf];
+        list.clear();
+        spans(object, ray, list);
+        if (count + 2 * list.size() > kMaxEnds) {
+          overflow = true;
+          return true;
+        }
+        for (const Span& span : list)
+          any |= add(index, span.in.t, span.in.part, &span.in, span.out.t, span.out.part, &span.out,
+                     lo, hi, elo, ehi);
+        break;
+      }
+    }
+    if (!any) return false;
+    if (elo <= ehi) {
+      lo = elo > lo ? elo : lo;
+      hi = ehi < hi ? ehi : hi;
+    }
+    return true;
+  }
+
+  // Gathers operand `code` for the window [lo, hi]; false when it is empty there, else [lo, hi]
+  // is narrowed to a hull of where it may be non-empty.
+  bool operand(std::int32_t code, double& lo, double& hi) {
+    if (code < 0) {
+      const std::size_t leaf = static_cast<std::size_t>(-code - 1);
+      if (tree.leaf_cull[leaf] && !meets(tree.leaf_boxes[leaf], lo, hi)) return false;
+      return leaf_ends(leaf, lo, hi);
+    }
+    const std::size_t k = static_cast<std::size_t>(code);
+    const CsgNode& node = tree.nodes[k];
+    if (tree.node_cull[k] && !meets(node.box, lo, hi)) return false;
+    if (node.op == CsgOp::kUnion) {
+      double ulo = kInfinity, uhi = -kInfinity;
+      bool any = false;
+      for (const std::int32_t c : node.operands) {
+        double wlo = lo, whi = hi;
+        if (!operand(c, wlo, whi)) continue;
+        any = true;
+        ulo = wlo < ulo ? wlo : ulo;
+        uhi = whi > uhi ? whi : uhi;
+      }
+      if (any && ulo <= uhi) {
+        lo = ulo;
+        hi = uhi;
+      }
+      return any;
+    }
+    if (!operand(node.operands[0], lo, hi)) return false;
+    for (std::size_t i = 1; i < node.operands.size() && !overflow; ++i) {
+      double wlo = lo, whi = hi;
+      const bool some = operand(node.operands[i], wlo, whi);
+      if (node.op == CsgOp::kIntersection) {
+        if (!some) return false;
+        lo = wlo;
+        hi = whi;
+      }
+    }
+    return true;
+  }
+};
+
 }  // namespace
 
 std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
@@ -180,12 +328,53 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
         level[static_cast<std::size_t>(code)] =
             std::max(level[static_cast<std::size_t>(code)], level[k] + 1);
   }
+  // Which boxes the walk tests. A leaf whose own interval test is as cheap as a box test is not
+  // culled; nor is an operand that gets its node's window and whose box contains its node's
+  // (the node's test passing implies its own), nor the root (the object's box is tested above).
+  tree.leaf_kind.assign(tree.leaves.size(), CsgTree::LeafKind::kGeneric);
+  for (std::size_t i = 0; i < tree.leaves.size(); ++i) {
+    const ShapeVariant& shape = tree.leaves[i].shape;
+    if (const auto* s = std::get_if<Sphere>(&shape); s && !s->is_partial())
+      tree.leaf_kind[i] = CsgTree::LeafKind::kSphere;
+    else if (std::holds_alternative<Box>(shape))
+      tree.leaf_kind[i] = CsgTree::LeafKind::kBox;
+    else if (const auto* c = std::get_if<Cylinder>(&shape); c && c->f.is_closed())
+      tree.leaf_kind[i] = CsgTree::LeafKind::kFrustum;
+    else if (const auto* c = std::get_if<Cone>(&shape); c && c->f.is_closed())
+      tree.leaf_kind[i] = CsgTree::LeafKind::kFrustum;
+  }
+  tree.leaf_cull.assign(tree.leaves.size(), 1);
+  tree.node_cull.assign(tree.nodes.size(), 1);
+  tree.node_cull[0] = 0;
+  for (std::size_t i = 0; i < tree.leaves.size(); ++i)
+    if (tree.leaf_kind[i] == CsgTree::LeafKind::kSphere ||
+        tree.leaf_kind[i] == CsgTree::LeafKind::kBox)
+      tree.leaf_cull[i] = 0;
+  auto contains_box = [](const Aabb& outer, const Aabb& inner) {
+    for (int a = 0; a < 3; ++a)
+      if (!(outer.lo[a] <= inner.lo[a] && outer.hi[a] >= inner.hi[a])) return false;
+    return true;
+  };
+  for (const CsgNode& node : tree.nodes) {
+    for (std::size_t i = 0; i < node.operands.size(); ++i) {
+      if (i > 0 && node.op != CsgOp::kUnion) continue;  // a narrower window than the node's
+      const std::int32_t code = node.operands[i];
+      const bool leaf = code < 0;
+      const std::size_t index =
+          leaf ? static_cast<std::size_t>(-code - 1) : static_cast<std::size_t>(code);
+      if (contains_box(leaf ? tree.leaf_boxes[index] : tree.nodes[index].box, node.box))
+        (leaf ? tree.leaf_cull : tree.node_cull)[index] = 0;
+    }
+  }
+  tree.formula = CsgFormula{};
+  for (const CsgNode& node : tree.nodes) tree.formula.add(node.op, node.operands);
+  tree.formula.finish(tree.leaves.size(), tree.leaf_flipped);
   return std::make_shared<const CsgTree>(std::move(tree));
 }
 
 Aabb bounds(const CsgShape& s) { return s.tree->nodes[0].box; }
 
-bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
+bool intersect_by_spans(const CsgShape& s, const Ray& ray, LocalHit& hit) {
   SpanList* pool = scratch(2 * s.tree->depth + 3);
   SpanList& list = pool[2 * s.tree->depth + 2];
   Evaluator{*s.tree, ray, CullRay(*s.tree, ray), pool}.operand(0, ray.tmin, ray.tmax, list);
@@ -199,6 +388,18 @@ bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
     if (span.out.t > ray.tmax) break;
   }
   return false;
+}
+
+bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
+  const CsgTree& tree = *s.tree;
+  if (tree.formula.is_tree()) {
+    Gather g(tree, ray);
+    double lo = ray.tmin, hi = ray.tmax;
+    if (!g.operand(0, lo, hi)) return false;
+    if (!g.overflow)
+      return first_crossing(tree.formula, std::span(g.ends, g.count), ray.tmin, ray.tmax, hit);
+  }
+  return intersect_by_spans(s, ray, hit);
 }
 
 bool occluded(const CsgShape& s, const Ray& ray) {

@@ -22,6 +22,10 @@ Aabb bounds(const CsgShape& s);
 /// (or the part of it where an intersection or difference can still be non-empty) are skipped.
 bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit);
 bool occluded(const CsgShape& s, const Ray& ray);
+/// intersect() by the span lists combined node by node (the first end of the final list in
+/// [tmin, tmax]), which intersect() itself uses only for trees its walk does not take (more than
+/// 64 leaves or ends); the reference its walk is tested against.
+bool intersect_by_spans(const CsgShape& s, const Ray& ray, LocalHit& hit);
 /// The final solid's spans over the whole line (so rays starting inside are right).
 void spans(const CsgShape& s, const Ray& ray, SpanList& out);
 /// The leaf's surface record, its normal not yet flipped (the enclosing Object flips by hit.flip).

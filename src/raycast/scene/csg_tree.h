@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "csg/csg_formula.h"
 #include "csg/span_ops.h"
 #include "scene/object.h"
 
@@ -27,6 +28,14 @@ struct CsgTree {
   // Largest |coordinate| per axis over the finite sides of every node and leaf box, for the
   // culling test's rounding slack; set by finish_csg_tree.
   double box_magnitude[3] = {0, 0, 0};
+  // The tree as a function of its leaves, for nearest-hit queries; set by finish_csg_tree.
+  CsgFormula formula;
+  // For the nearest-hit walk, set by finish_csg_tree: each leaf's kind (its intervals computed
+  // without a span list when not kGeneric), and whether a leaf's or node's box is worth testing
+  // (not when the test is as dear as the leaf's own, nor when it always passes).
+  enum class LeafKind : std::uint8_t { kGeneric, kSphere, kBox, kFrustum };
+  std::vector<LeafKind> leaf_kind;
+  std::vector<char> leaf_cull, node_cull;
 };
 
 inline std::int32_t csg_leaf_code(std::size_t leaf) { return -static_cast<std::int32_t>(leaf) - 1; }
