@@ -196,7 +196,8 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
 // finds an out-of-line copy free of side effects (__builtin_prefetch does not count) and deletes
 // the calls, so until session 7 no kernel prefetched at all (docs/performance-mesh.md).
 template <class Node>
-[[gnu::always_inline]] inline void prefetch_children(const MeshBvh& bvh, const Node& node, int mask) {
+[[gnu::always_inline]] inline void prefetch_children(const MeshBvh& bvh, const Node& node,
+                                                     int mask) {
   while (mask) {
     const std::uint32_t ref = node.child[__builtin_ctz(mask)];
     mask &= mask - 1;
