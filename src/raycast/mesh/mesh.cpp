@@ -355,7 +355,8 @@ double refine_t(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& o, c
 
 namespace {
 
-double refine_hit(const Mesh& m, const MeshBvhHit& h, const Ray& ray, double scale) {
+[[gnu::always_inline]] inline double refine_hit(const Mesh& m, const MeshBvhHit& h, const Ray& ray,
+                                                double scale) {
   return plane_t(Vec3(hit_vertex(m.bvh, h, 0)), Vec3(hit_vertex(m.bvh, h, 1)),
                  Vec3(hit_vertex(m.bvh, h, 2)), ray.o, ray.d, h.t * scale);
 }
@@ -364,17 +365,20 @@ double refine_hit(const Mesh& m, const MeshBvhHit& h, const Ray& ray, double sca
 
 Aabb bounds(const MeshShape& s) { return s.mesh->box; }
 
-bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
-  const Mesh& m = *s.mesh;
+bool intersect(const Mesh& m, const Ray& ray, LocalHit& hit) {
   double scale;
   const MeshRay r = convert_ray(ray, scale);
   MeshBvhHit h;
   if (!intersect_closest(m.bvh, r, h)) return false;
-  double t = refine_hit(m, h, ray, scale);
-  t = std::clamp(t, ray.tmin, ray.tmax);
+  // The double refinement and the record for the winning hit only.
+  const double t = std::clamp(refine_hit(m, h, ray, scale), ray.tmin, ray.tmax);
   hit = LocalHit{t, static_cast<std::int32_t>(h.source), static_cast<std::int32_t>(h.triangle),
                  h.b1, h.b2};
   return true;
+}
+
+bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
+  return intersect(*s.mesh, ray, hit);
 }
 
 int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits) {
@@ -399,10 +403,12 @@ int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits) {
   return found;
 }
 
-bool occluded(const MeshShape& s, const Ray& ray) {
+bool occluded(const Mesh& m, const Ray& ray) {
   double scale;
-  return intersect_any(s.mesh->bvh, convert_ray(ray, scale));  // inlined, as in intersect
+  return intersect_any(m.bvh, convert_ray(ray, scale));  // inlined, as in intersect
 }
+
+bool occluded(const MeshShape& s, const Ray& ray) { return occluded(*s.mesh, ray); }
 
 void spans(const MeshShape& s, const Ray& ray, SpanList& out) {
   const Mesh& m = *s.mesh;

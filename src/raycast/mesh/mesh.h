@@ -89,6 +89,10 @@ struct MeshShape {
 Aabb bounds(const MeshShape& s);
 bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit);
 bool occluded(const MeshShape& s, const Ray& ray);
+/// The same two queries on the mesh itself (MeshShape's call these), for a caller that holds
+/// the mesh: a scene of one untransformed mesh goes straight here (scene/scene.h).
+bool intersect(const Mesh& m, const Ray& ray, LocalHit& hit);
+bool occluded(const Mesh& m, const Ray& ray);
 /// intersect() of up to eight rays (rays[l] for each bit l of mask; each is_valid) traced as one
 /// packet: the same hits as one by one; returns the mask of the rays that hit.
 int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits);

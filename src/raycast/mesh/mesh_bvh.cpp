@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
@@ -256,21 +257,23 @@ class Stack {
  public:
   explicit Stack(const MeshBvh& bvh) {
     const std::size_t need = traversal_stack_size(bvh);
-    if (need > kLocal) {
-      heap_.resize(need);
-      data_ = heap_.data();
+    if (need > kLocal) [[unlikely]] {
+      heap_ = std::make_unique<TraversalEntry[]>(need);
+      data_ = heap_.get();
     }
   }
   TraversalEntry* data() { return data_; }
 
  private:
   static constexpr std::size_t kLocal = 128 * (kNodeWidth - 1) + 2;
+  // Uninitialised (the kernels write before they read); a unique_ptr rather than a vector: its
+  // construction and destruction cost a few instructions per query, a vector's a dozen or more.
   TraversalEntry local_[kLocal];
-  std::vector<TraversalEntry> heap_;
+  std::unique_ptr<TraversalEntry[]> heap_;
   TraversalEntry* data_ = local_;
 };
 
-const MeshKernels& kernels() {
+[[gnu::always_inline]] inline const MeshKernels& kernels() {
   static const MeshKernels& k = active_mesh_kernels();
   return k;
 }

@@ -5,22 +5,59 @@
 #include <cmath>
 #include <numbers>
 
+#include "mesh/mesh.h"
+
 namespace raycast {
 
 void Scene::build() {
   const auto start = std::chrono::steady_clock::now();
   set_.build(objects);
+  // The direct path's condition is ObjectSet's own for its sole-mesh path: one object with
+  // non-empty, bounded bounds, an untransformed mesh; every other object has empty bounds.
+  mesh_ = nullptr;
+  mesh_object_ = -1;
+  std::size_t hittable = 0;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const Aabb b = raycast::bounds(objects[i]);
+    if (b.is_empty()) continue;
+    ++hittable;
+    const auto* m = std::get_if<MeshShape>(&objects[i].shape);
+    if (m && !objects[i].xf && b.is_bounded()) {
+      mesh_ = m->mesh.get();
+      mesh_object_ = static_cast<std::int32_t>(i);
+      mesh_box_ = b;
+    }
+  }
+  if (hittable != 1) mesh_ = nullptr;
   build_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
   if (!is_valid(ray)) return false;
+  if (mesh_) {
+    // The box first: most rays that miss it (a camera's around the mesh) stop here, cheaper
+    // than the mesh's own root test.
+    double t_enter;
+    if (!intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter) ||
+        !raycast::intersect(*mesh_, ray, hit.local))
+      return false;
+    hit.object = mesh_object_;
+    return true;
+  }
   return set_.intersect(objects, ray, hit.local, hit.object);
 }
 
 bool Scene::occluded(const Ray& ray) const {
   if (!is_valid(ray)) return false;
+  if (mesh_) {
+    // The mesh first and its box only when the mesh is hit: the answer is the general path's
+    // (box and mesh), but shadow rays start on the mesh, inside its box, so the box test is
+    // paid only by the few rays that are blocked.
+    double t_enter;
+    return raycast::occluded(*mesh_, ray) &&
+           intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
+  }
   return set_.occluded(objects, ray);
 }
 

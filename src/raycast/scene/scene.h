@@ -76,6 +76,12 @@ struct Scene {
  private:
   ObjectSet set_;  // the objects' BVH and the walks over it
   double build_ms_ = 0;
+  // The scene is one untransformed mesh and nothing else that can be hit: intersect and
+  // occluded test its box and call the mesh directly, without the walk over objects
+  // (docs/performance-mesh.md, session 7). The same answers as the general path (test).
+  const Mesh* mesh_ = nullptr;  // owned by objects[mesh_object_]
+  std::int32_t mesh_object_ = -1;
+  Aabb mesh_box_;
 };
 
 /// The camera to use: the scene's, or one with fov 40 looking along -z at the centre of the
