@@ -15,20 +15,12 @@ void Scene::build() {
   // The direct path's condition is ObjectSet's own for its sole-mesh path: one object with
   // non-empty, bounded bounds, an untransformed mesh; every other object has empty bounds.
   mesh_ = nullptr;
-  mesh_object_ = -1;
-  std::size_t hittable = 0;
-  for (std::size_t i = 0; i < objects.size(); ++i) {
-    const Aabb b = raycast::bounds(objects[i]);
-    if (b.is_empty()) continue;
-    ++hittable;
-    const auto* m = std::get_if<MeshShape>(&objects[i].shape);
-    if (m && !objects[i].xf && b.is_bounded()) {
-      mesh_ = m->mesh.get();
-      mesh_object_ = static_cast<std::int32_t>(i);
-      mesh_box_ = b;
-    }
+  mesh_object_ = set_.sole_mesh();
+  if (mesh_object_ >= 0) {
+    const Object& object = objects[std::size_t(mesh_object_)];
+    mesh_ = std::get<MeshShape>(object.shape).mesh.get();
+    mesh_box_ = raycast::bounds(object);
   }
-  if (hittable != 1) mesh_ = nullptr;
   build_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
