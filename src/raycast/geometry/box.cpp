@@ -79,11 +79,7 @@ SurfaceInfo surface(const Box& b, const Ray& ray, const LocalHit& hit) {
   Vec3 p = ray.at(hit.t);
   // The computed t carries two roundings (subtraction, division); o + t d adds two more. The face
   // coordinate is snapped onto the face plane, so it is exact.
-  // std::abs per component (an AND each; Vec3's abs compares and branches on the signs).
-  const Vec3 td = hit.t * ray.d;
-  si.p_error =
-      gamma(5) * Vec3{std::abs(ray.o.x) + std::abs(td.x), std::abs(ray.o.y) + std::abs(td.y),
-                      std::abs(ray.o.z) + std::abs(td.z)};
+  si.p_error = gamma(5) * (abs(ray.o) + abs(hit.t * ray.d));
   p[a] = at_hi ? b.hi[a] : b.lo[a];
   si.p_error[a] = 0;
   // The true point lies on the face rectangle: clamping onto it only removes error.

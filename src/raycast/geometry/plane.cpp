@@ -71,10 +71,7 @@ SurfaceInfo surface_geometry(const Plane& p, const Ray& ray, const LocalHit& hit
   // Project onto the plane: the remaining error is a few ulps of the coordinates.
   q -= (dot(p.n, q) - p.offset) * p.n;
   si.p = q;
-  // std::abs per component (an AND each; Vec3's abs compares and branches on the signs).
-  si.p_error =
-      gamma(6) * Vec3{std::abs(q.x) + std::abs(p.point.x), std::abs(q.y) + std::abs(p.point.y),
-                      std::abs(q.z) + std::abs(p.point.z)};
+  si.p_error = gamma(6) * (abs(q) + abs(p.point));
   si.n = p.n;
   si.shading_n = p.n;
   return si;

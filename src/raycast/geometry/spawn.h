@@ -17,10 +17,7 @@ namespace raycast {
 /// ulp divided by a direction component above 1 underflows to t = -0, which counts as t >= 0.
 /// This holds for direction components below 2^52 in magnitude.
 inline Vec3 offset_ray_origin(const SurfaceInfo& s, const Vec3& w) {
-  // |n| . p_error with std::abs per component: an AND each, where Vec3's abs compares and
-  // branches on the normal's signs.
-  const double dist =
-      std::abs(s.n.x) * s.p_error.x + std::abs(s.n.y) * s.p_error.y + std::abs(s.n.z) * s.p_error.z;
+  const double dist = dot(abs(s.n), s.p_error);
   Vec3 dir = s.n;
   if (dot(w, s.n) < 0) dir = -dir;
   Vec3 po = s.p + dist * dir;

@@ -120,10 +120,7 @@ SurfaceInfo geometry_at(const Sphere& s, const Ray& ray, const LocalHit& hit, Ve
   SurfaceInfo si;
   p = ray.o - s.center + hit.t * ray.d;
   p *= s.radius / length(p);
-  // std::abs per component (an AND each; Vec3's abs compares and branches on the signs).
-  const Vec3 abs_p{std::abs(p.x), std::abs(p.y), std::abs(p.z)};
-  const Vec3 abs_c{std::abs(s.center.x), std::abs(s.center.y), std::abs(s.center.z)};
-  si.p_error = gamma(5) * abs_p + gamma(1) * abs_c;
+  si.p_error = gamma(5) * abs(p) + gamma(1) * abs(s.center);
   si.n = p / s.radius;
   si.shading_n = si.n;
   si.p = p + s.center;

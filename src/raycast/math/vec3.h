@@ -100,9 +100,11 @@ template <class T>
 inline Vec3T<T> normalize(const Vec3T<T>& a) {
   return a / length(a);
 }
+/// |a| per component by std::abs: clearing the sign bit, no compare and branch per component
+/// (error bounds call it on every hit).
 template <class T>
-constexpr Vec3T<T> abs(const Vec3T<T>& a) {
-  return {a.x < 0 ? -a.x : a.x, a.y < 0 ? -a.y : a.y, a.z < 0 ? -a.z : a.z};
+inline Vec3T<T> abs(const Vec3T<T>& a) {
+  return {std::abs(a.x), std::abs(a.y), std::abs(a.z)};
 }
 template <class T>
 constexpr Vec3T<T> min(const Vec3T<T>& a, const Vec3T<T>& b) {
