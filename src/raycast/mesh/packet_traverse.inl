@@ -132,6 +132,46 @@ inline bool convert_rays(const Ray* rays, int mask, PacketRays& pr, double* scal
   return !(out_of_range[0] | out_of_range[1] | out_of_range[2] | out_of_range[3]);
 }
 
+// The least and greatest of eight floats (finite: prepare_packet checks), by halving shuffles on
+// a GCC vector type (native lanes on every ISA; inside one function, so no vector crosses a call:
+// -Wpsabi). Replaces a scalar loop of 16 min/max per axis.
+inline void min_max8(const float* x, float& lo, float& hi) {
+  using F8v = float __attribute__((vector_size(32)));
+  F8v v;
+  std::memcpy(&v, x, sizeof v);
+  F8v a = v, b = v;
+  F8v s = __builtin_shufflevector(a, a, 4, 5, 6, 7, 0, 1, 2, 3);
+  a = s < a ? s : a;
+  b = s > b ? s : b;
+  s = __builtin_shufflevector(a, a, 2, 3, 0, 1, 6, 7, 4, 5);
+  a = s < a ? s : a;
+  s = __builtin_shufflevector(b, b, 2, 3, 0, 1, 6, 7, 4, 5);
+  b = s > b ? s : b;
+  s = __builtin_shufflevector(a, a, 1, 0, 3, 2, 5, 4, 7, 6);
+  a = s < a ? s : a;
+  s = __builtin_shufflevector(b, b, 1, 0, 3, 2, 5, 4, 7, 6);
+  b = s > b ? s : b;
+  lo = a[0];
+  hi = b[0];
+}
+
+// The greatest of x[l] over the lanes l of `lanes` (not empty), as min_max8 does it.
+inline float lanes_max8(const float* x, int lanes) {
+  using F8v = float __attribute__((vector_size(32)));
+  using I8v = std::int32_t __attribute__((vector_size(32)));
+  F8v v;
+  std::memcpy(&v, x, sizeof v);
+  const I8v bit = {1, 2, 4, 8, 16, 32, 64, 128};
+  v = (bit & lanes) != 0 ? v : F8v{} - kInfinityF;
+  F8v s = __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3);
+  v = s > v ? s : v;
+  s = __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5);
+  v = s > v ? s : v;
+  s = __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6);
+  v = s > v ? s : v;
+  return v[0];
+}
+
 // Fills `p` for the lanes of `pr` (idle lanes hold an active ray); false when they cannot go as
 // one packet: a direction sign that differs between lanes, or a ray that is not finite.
 inline bool prepare_packet(const PacketRays& pr, PacketData& p) {
@@ -155,13 +195,9 @@ inline bool prepare_packet(const PacketRays& pr, PacketData& p) {
     p.inv[a] = splat(1.0f) / load8(da);  // as the single-ray test computes it
     alignas(32) float inv[8];
     store8(inv, p.inv[a]);
-    float olo = f[a][0], ohi = olo, ilo = inv[0], ihi = ilo;
-    for (int l = 1; l < 8; ++l) {
-      olo = std::min(olo, f[a][l]);
-      ohi = std::max(ohi, f[a][l]);
-      ilo = std::min(ilo, inv[l]);
-      ihi = std::max(ihi, inv[l]);
-    }
+    float olo, ohi, ilo, ihi;
+    min_max8(f[a], olo, ohi);
+    min_max8(inv, ilo, ihi);
     if ((ilo < 0) != (ihi < 0)) return false;  // lanes disagree on the near plane
     const bool positive = ilo >= 0;
     // Entry (plane - o) * inv is least for the greatest origin when 1/d > 0, the least origin
@@ -173,8 +209,8 @@ inline bool prepare_packet(const PacketRays& pr, PacketData& p) {
     p.near_off[a] = positive ? 0 : kNodeWidth;
     p.far_off[a] = positive ? kNodeWidth : 0;
   }
-  float tmin_lo = f[6][0];
-  for (int l = 1; l < 8; ++l) tmin_lo = std::min(tmin_lo, f[6][l]);
+  float tmin_lo, tmin_hi;
+  min_max8(f[6], tmin_lo, tmin_hi);
   for (int l = 0; l < 8; ++l) p.lane_tmin[l] = f[6][l];
   p.tmin_lo = splat(tmin_lo);
   p.tmin = load8(f[6]);
@@ -413,8 +449,7 @@ int closest8_format(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhH
   for (;;) {
     if (!(ref & kLeafBit)) {
       const Node& node = node_array<Node>(bvh)[ref];
-      float reach_s = -kInfinityF;
-      for (int l = lanes; l; l &= l - 1) reach_s = std::max(reach_s, tmax_s[__builtin_ctz(l)]);
+      const float reach_s = lanes_max8(tmax_s, lanes);
       V8 tn;
       NodePlanes planes;
       int m = packet_node(node, p, splat(reach_s), tn, planes);
