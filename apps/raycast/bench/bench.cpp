@@ -19,6 +19,7 @@
 #include "bench/embree_peer.h"
 #include "geometry/spawn.h"
 #include "mesh/mesh_file.h"
+#include "mesh/mesh_packet16.h"
 #include "mesh/procedural.h"
 #include "scene/loader.h"
 #include "scene/scene_error.h"
@@ -245,25 +246,31 @@ BenchResult run_bench(const BenchOptions& o) {
       packet_mesh = std::get_if<MeshShape>(&scene.objects[0].shape);
     if (!packet_mesh)
       throw SceneError("--packets", 0, 0, "packets need a scene of one mesh without a transform");
+    if (o.packet_width != 8 && o.packet_width != 16)
+      throw SceneError("--packets", 0, 0, "packets of 8 or 16 rays");
     r.packets = true;
+    r.packet_width = o.packet_width;
   }
+  // Packets of W consecutive rays: intersect8, or intersect16 (one 16-lane packet with AVX-512).
   auto trace_packets = [&](const std::vector<BenchRay>& rs, std::vector<SceneHit>& out) {
-    const std::size_t packets = (rs.size() + 7) / 8;
+    const std::size_t w = static_cast<std::size_t>(o.packet_width);
+    const std::size_t packets = (rs.size() + w - 1) / w;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, packets, 128),
                       [&](const tbb::blocked_range<std::size_t>& b) {
                         for (std::size_t p = b.begin(); p < b.end(); ++p) {
-                          Ray ray[8];
-                          LocalHit local[8];
+                          Ray ray[16];
+                          LocalHit local[16];
                           int mask = 0;
-                          for (int l = 0; l < 8; ++l) {
-                            const std::size_t i = p * 8 + l;
+                          for (std::size_t l = 0; l < w; ++l) {
+                            const std::size_t i = p * w + l;
                             if (i >= rs.size()) break;
                             ray[l] = Ray{rs[i].o, rs[i].d, rs[i].tmin, rs[i].tmax};
                             if (is_valid(ray[l])) mask |= 1 << l;
                           }
-                          const int found = intersect8(*packet_mesh, ray, mask, local);
-                          for (int l = 0; l < 8 && p * 8 + l < rs.size(); ++l)
-                            out[p * 8 + l] = found >> l & 1 ? SceneHit{local[l], 0} : SceneHit{};
+                          const int found = w == 16 ? intersect16(*packet_mesh, ray, mask, local)
+                                                    : intersect8(*packet_mesh, ray, mask, local);
+                          for (std::size_t l = 0; l < w && p * w + l < rs.size(); ++l)
+                            out[p * w + l] = found >> l & 1 ? SceneHit{local[l], 0} : SceneHit{};
                         }
                       });
   };
@@ -339,7 +346,9 @@ BenchResult run_bench(const BenchOptions& o) {
     embree_seconds = best_of(
         o.repeat,
         [&] {
-          if (o.packets)
+          if (o.packets && o.packet_width == 16)
+            peer.intersect16(rays, eh);
+          else if (o.packets)
             peer.intersect8(rays, eh);
           else
             peer.intersect(rays, eh);
@@ -389,6 +398,10 @@ std::string format_bench(const BenchResult& r, bool json) {
                   r.threads, r.raycast_build_ms, r.raycast_mrays, r.raycast_mrays_cpu,
                   isa_name(active_isa()), r.raycast_build_cpu_ms, r.packets ? "true" : "false");
     out = buf;
+    if (r.packets) {
+      std::snprintf(buf, sizeof buf, ", \"packet_width\": %d", r.packet_width);
+      out += buf;
+    }
     if (r.triangles > 0)  // else null: per triangle means nothing without triangles
       std::snprintf(buf, sizeof buf,
                     ", \"raycast_bytes_per_tri\": %.2f, \"raycast_total_bytes_per_tri\": %.2f",
@@ -419,9 +432,9 @@ std::string format_bench(const BenchResult& r, bool json) {
                 "raycast: build %.1f ms, %.3f Mrays/s",
                 r.triangles > 0 ? "mesh" : "scene", r.what.c_str(),
                 static_cast<unsigned long long>(r.triangles), r.ray_kind.c_str(),
-                r.packets ? " (packets of 8)" : "", static_cast<unsigned long long>(r.rays),
-                static_cast<unsigned long long>(r.hits), r.threads, isa_name(active_isa()),
-                r.raycast_build_ms, r.raycast_mrays);
+                r.packets ? (r.packet_width == 16 ? " (packets of 16)" : " (packets of 8)") : "",
+                static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
+                r.threads, isa_name(active_isa()), r.raycast_build_ms, r.raycast_mrays);
   out = buf;
   // Bytes per triangle only mean something when there are triangles.
   if (r.triangles > 0) {

@@ -18,6 +18,7 @@ struct BenchOptions {
   BenchRays rays = BenchRays::kPrimary;
   bool vs_embree = false;
   bool packets = false;  // primary rays in packets of 8 (rows of 8 pixels); Embree: rtcIntersect8
+  int packet_width = 8;  // 8 or 16 (16: rtcIntersect16; raycast's 16-lane kernel with AVX-512)
   int threads = 0;       // 0: all cores
   int repeat = 3;        // tracing passes; the fastest counts
   int width = 1024;      // primary rays: width x height pinhole camera
@@ -35,6 +36,7 @@ struct BenchResult {
   std::string what;      // the mesh or scene
   std::string ray_kind;  // primary, incoherent, shadow
   bool packets = false;
+  int packet_width = 0;  // 8 or 16 with packets
   std::uint64_t triangles = 0;
   std::uint64_t rays = 0;
   std::uint64_t hits = 0;

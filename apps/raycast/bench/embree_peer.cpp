@@ -154,18 +154,24 @@ void EmbreePeer::occluded(std::span<const BenchRay> rays, std::span<std::uint8_t
                     });
 }
 
-void EmbreePeer::intersect8(std::span<const BenchRay> rays, std::span<PeerHit> out) const {
-  const std::size_t packets = (rays.size() + 7) / 8;
+namespace {
+
+// rtcIntersect8 or rtcIntersect16 (K rays) over consecutive groups of K rays, coherent flag set.
+template <int K, class RayHitK, class IntersectK>
+void intersect_packets(RTCScene scene, const std::vector<const Mesh*>& meshes,
+                       std::span<const BenchRay> rays, std::span<PeerHit> out,
+                       IntersectK intersect_k) {
+  const std::size_t packets = (rays.size() + K - 1) / K;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, packets, 128),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       RTCIntersectContext ctx;
                       rtcInitIntersectContext(&ctx);
                       ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
                       for (std::size_t p = r.begin(); p < r.end(); ++p) {
-                        alignas(32) int valid[8];
-                        alignas(32) RTCRayHit8 rh;
-                        for (int l = 0; l < 8; ++l) {
-                          const std::size_t i = p * 8 + l;
+                        alignas(64) int valid[K];
+                        alignas(64) RayHitK rh;
+                        for (int l = 0; l < K; ++l) {
+                          const std::size_t i = p * K + l;
                           valid[l] = i < rays.size() ? -1 : 0;
                           const BenchRay& b = rays[i < rays.size() ? i : rays.size() - 1];
                           rh.ray.org_x[l] = static_cast<float>(b.o.x);
@@ -184,14 +190,14 @@ void EmbreePeer::intersect8(std::span<const BenchRay> rays, std::span<PeerHit> o
                           rh.hit.primID[l] = RTC_INVALID_GEOMETRY_ID;
                           rh.hit.instID[0][l] = RTC_INVALID_GEOMETRY_ID;
                         }
-                        rtcIntersect8(valid, impl_->scene, &ctx, &rh);
-                        for (int l = 0; l < 8; ++l) {
-                          const std::size_t i = p * 8 + l;
+                        intersect_k(valid, scene, &ctx, &rh);
+                        for (int l = 0; l < K; ++l) {
+                          const std::size_t i = p * K + l;
                           if (i >= rays.size()) break;
                           if (rh.hit.geomID[l] == RTC_INVALID_GEOMETRY_ID) {
                             out[i] = PeerHit{};
                           } else {
-                            const Mesh& m = *impl_->meshes[rh.hit.geomID[l]];
+                            const Mesh& m = *meshes[rh.hit.geomID[l]];
                             out[i] =
                                 PeerHit{rh.ray.tfar[l], static_cast<std::int32_t>(rh.hit.geomID[l]),
                                         static_cast<std::int32_t>(m.source[rh.hit.primID[l]])};
@@ -199,6 +205,16 @@ void EmbreePeer::intersect8(std::span<const BenchRay> rays, std::span<PeerHit> o
                         }
                       }
                     });
+}
+
+}  // namespace
+
+void EmbreePeer::intersect8(std::span<const BenchRay> rays, std::span<PeerHit> out) const {
+  intersect_packets<8, RTCRayHit8>(impl_->scene, impl_->meshes, rays, out, rtcIntersect8);
+}
+
+void EmbreePeer::intersect16(std::span<const BenchRay> rays, std::span<PeerHit> out) const {
+  intersect_packets<16, RTCRayHit16>(impl_->scene, impl_->meshes, rays, out, rtcIntersect16);
 }
 
 #else
@@ -216,6 +232,7 @@ bool EmbreePeer::available() { return false; }
 void EmbreePeer::intersect(std::span<const BenchRay>, std::span<PeerHit>) const {}
 void EmbreePeer::occluded(std::span<const BenchRay>, std::span<std::uint8_t>) const {}
 void EmbreePeer::intersect8(std::span<const BenchRay>, std::span<PeerHit>) const {}
+void EmbreePeer::intersect16(std::span<const BenchRay>, std::span<PeerHit>) const {}
 
 #endif
 

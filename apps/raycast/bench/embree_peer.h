@@ -44,6 +44,8 @@ class EmbreePeer {
   void occluded(std::span<const BenchRay> rays, std::span<std::uint8_t> out) const;
   /// rtcIntersect8 over consecutive groups of eight rays (the last one masked), coherent flag set.
   void intersect8(std::span<const BenchRay> rays, std::span<PeerHit> out) const;
+  /// The same with rtcIntersect16 over groups of sixteen.
+  void intersect16(std::span<const BenchRay> rays, std::span<PeerHit> out) const;
 
   static bool available();
 

@@ -1,7 +1,9 @@
 // The packet traversal of up to eight rays (MeshKernels::closest8), written once and compiled once
 // per instruction set: a mesh/wide_kernels_<isa>.cpp file includes it right after
 // mesh/wide_traverse.inl (same lane type V8, same namespace, and it calls that file's single-ray
-// traversal for the rays it does not trace as a packet).
+// traversal for the rays it does not trace as a packet). The packet's width N is a template
+// parameter: 8 lanes (V8) on every ISA, and 16 (V16, mesh/packet_lanes16.inl) where the kernel
+// has 512-bit registers (AVX-512: closest16_rays, mesh/mesh_packet16.h).
 //
 // Inner nodes are tested once for the whole packet, against the interval bounds of its rays
 // (least and greatest origin and inverse direction per axis over the active lanes): a child that
@@ -12,10 +14,33 @@
 
 namespace raycast::RAYCAST_KERNEL_NS {
 
+// The lane vector of a packet of N rays and its load, broadcast and store (the arithmetic,
+// comparisons, bits and select are overloads on the vector type).
+template <int N>
+struct PacketLanes;
+
+template <>
+struct PacketLanes<8> {
+  using V = V8;
+  static V load(const float* p) { return load8(p); }
+  static V broadcast(float x) { return splat(x); }
+  static void store(float* p, V x) { store8(p, x); }
+};
+
+}  // namespace raycast::RAYCAST_KERNEL_NS
+
+#ifdef RAYCAST_KERNEL_NODE16
+#include "mesh/packet_lanes16.inl"
+#endif
+
+namespace raycast::RAYCAST_KERNEL_NS {
+
 // Per-lane constants of the watertight triangle test, and the packet's interval bounds.
+template <int N>
 struct PacketData {
-  V8 o[3], inv[3];  // per lane, for the single-ray slab test
-  V8 tmin;
+  using V = typename PacketLanes<N>::V;
+  V o[3], inv[3];  // per lane, for the single-ray slab test
+  V tmin;
   // Interval bounds per axis: the origin bound that gives the least entry (o_near) and the
   // greatest exit (o_far), the least and greatest 1/d, and which half of an axis's planes
   // ([lo x 8 | hi x 8]) is near and which far: 0 or kNodeWidth, as in the single-ray test.
@@ -26,16 +51,17 @@ struct PacketData {
   // leaf (most packets of primary rays miss the mesh and never do): each lane's, and as lanes
   // when every lane has the same axis permutation (`shared`).
   bool leaves_ready = false, shared = false;
-  int lane_k[3][8];
-  alignas(32) float lane_s[3][8], lane_ok[3][8], lane_tmin[8];
+  int lane_k[3][N];
+  alignas(64) float lane_s[3][N], lane_ok[3][N], lane_tmin[N];
   int kx, ky, kz;
-  V8 sx, sy, sz, okx, oky, okz;
+  V sx, sy, sz, okx, oky, okz;
 };
 
-// A packet's rays as lanes: ox, oy, oz, dx, dy, dz, tmin, tmax, each of eight lanes (idle lanes
+// A packet's rays as lanes: ox, oy, oz, dx, dy, dz, tmin, tmax, each of N lanes (idle lanes
 // hold a copy of an active ray).
+template <int N>
 struct PacketRays {
-  alignas(64) float f[8][8];
+  alignas(64) float f[8][N];
   MeshRay ray(int l) const {
     return MeshRay{Vec3f{f[0][l], f[1][l], f[2][l]}, Vec3f{f[3][l], f[4][l], f[5][l]}, f[6][l],
                    f[7][l]};
@@ -44,7 +70,7 @@ struct PacketRays {
 
 // The rays of `mask` as lanes; idle lanes copy the first active ray, so the bounds over all eight
 // lanes are those over the active ones.
-inline void gather_rays(const MeshRay* rays, int mask, PacketRays& pr) {
+inline void gather_rays(const MeshRay* rays, int mask, PacketRays<8>& pr) {
   const int first = __builtin_ctz(mask);
   for (int l = 0; l < 8; ++l) {
     const MeshRay& r = rays[(mask >> l & 1) ? l : first];
@@ -54,14 +80,15 @@ inline void gather_rays(const MeshRay* rays, int mask, PacketRays& pr) {
   }
 }
 
-// mesh.cpp's to_mesh_ray on the eight lanes at once (the same operations, so the same bits), for
+// mesh.cpp's to_mesh_ray on the N lanes at once (the same operations, so the same bits), for
 // the rays of `mask` (idle lanes copy the first active one): false, with nothing converted, when a
 // lane's largest |direction component| has an exponent outside to_mesh_ray's fast range (NaN and
 // infinite directions included; the caller converts those rays one by one). GCC vector types of
 // four lanes, so each instruction set's file compiles it to its own instructions (kept inside
 // this one function, with __builtin_bit_cast, so that no function passes or returns one: -Wpsabi);
 // only operations AVX2 has on 256 bits, so that GCC does not split them into scalars.
-inline bool convert_rays(const Ray* rays, int mask, PacketRays& pr, double* scale) {
+template <int N>
+inline bool convert_rays(const Ray* rays, int mask, PacketRays<N>& pr, double* scale) {
   using D4 = double __attribute__((vector_size(32)));
   using I64x4 = std::int64_t __attribute__((vector_size(32)));
   using F4 = float __attribute__((vector_size(16)));
@@ -70,7 +97,7 @@ inline bool convert_rays(const Ray* rays, int mask, PacketRays& pr, double* scal
   static_assert(sizeof(Ray) == 8 * sizeof(double), "a Ray is o, d, tmin, tmax: eight doubles");
   const int first = __builtin_ctz(mask);
   I64x4 out_of_range = {};
-  for (int h = 0; h < 8; h += 4) {
+  for (int h = 0; h < N; h += 4) {
     // Lanes h..h+3 as rows (ox oy oz dx | dy dz tmin tmax), transposed into v[0..7] by two 4x4
     // shuffles.
     D4 a[4], b[4];
@@ -172,32 +199,61 @@ inline float lanes_max8(const float* x, int lanes) {
   return v[0];
 }
 
+// min_max8 and lanes_max8 over the N lanes.
+template <int N>
+inline void min_max_lanes(const float* x, float& lo, float& hi) {
+  min_max8(x, lo, hi);
+  if constexpr (N == 16) {
+    float lo2, hi2;
+    min_max8(x + 8, lo2, hi2);
+    lo = std::min(lo, lo2);
+    hi = std::max(hi, hi2);
+  }
+}
+
+template <int N>
+inline float lanes_max(const float* x, int lanes) {
+  if constexpr (N == 16) {
+    const int lo = lanes & 0xFF, hi = lanes >> 8;
+    if (!lo) return lanes_max8(x + 8, hi);
+    if (!hi) return lanes_max8(x, lo);
+    return std::max(lanes_max8(x, lo), lanes_max8(x + 8, hi));
+  }
+  return lanes_max8(x, lanes);
+}
+
 // Fills `p` for the lanes of `pr` (idle lanes hold an active ray); false when they cannot go as
 // one packet: a direction sign that differs between lanes, or a ray that is not finite.
-inline bool prepare_packet(const PacketRays& pr, PacketData& p) {
+template <int N>
+inline bool prepare_packet(const PacketRays<N>& pr, PacketData<N>& p) {
+  using L = PacketLanes<N>;
+  using V = typename L::V;
+  constexpr int kAll = (1 << N) - 1;
   const auto& f = pr.f;
-  const V8 zero = splat(0.0f);
-  int finite = bits(cmp_eq(load8(f[6]), load8(f[6]))) & bits(cmp_eq(load8(f[7]), load8(f[7])));
-  for (int k = 0; k < 6; ++k) finite &= bits(cmp_eq(load8(f[k]) - load8(f[k]), zero));
-  if (finite != 0xFF) return false;
+  const V zero = L::broadcast(0.0f);
+  int finite =
+      bits(cmp_eq(L::load(f[6]), L::load(f[6]))) & bits(cmp_eq(L::load(f[7]), L::load(f[7])));
+  for (int k = 0; k < 6; ++k) finite &= bits(cmp_eq(L::load(f[k]) - L::load(f[k]), zero));
+  if (finite != kAll) return false;
   for (int a = 0; a < 3; ++a) {
     // Tiny components are replaced as the single-ray test does (rare: fixed lane by lane).
-    alignas(32) float da[8];
+    alignas(64) float da[N];
     std::memcpy(da, f[3 + a], sizeof da);
-    const V8 d = load8(da);
-    const int small =
-        ~(bits(cmp_ge(d, splat(kMinDirection))) | bits(cmp_le(d, splat(-kMinDirection)))) & 0xFF;
+    const V d = L::load(da);
+    const int small = ~(bits(cmp_ge(d, L::broadcast(kMinDirection))) |
+                        bits(cmp_le(d, L::broadcast(-kMinDirection)))) &
+                      kAll;
     for (int m = small; m; m &= m - 1) {
       float& x = da[__builtin_ctz(m)];
       x = x < 0 ? -kMinDirection : kMinDirection;
     }
-    p.o[a] = load8(f[a]);
-    p.inv[a] = splat(1.0f) / load8(da);  // as the single-ray test computes it
-    alignas(32) float inv[8];
-    store8(inv, p.inv[a]);
+    p.o[a] = L::load(f[a]);
+    p.inv[a] = L::broadcast(1.0f) / L::load(da);  // as the single-ray test computes it
+    alignas(64) float inv[N];
+    L::store(inv, p.inv[a]);
     float olo, ohi, ilo, ihi;
-    min_max8(f[a], olo, ohi);
-    min_max8(inv, ilo, ihi);
+    min_max_lanes<N>(f[a], olo, ohi);
+    min_max_lanes<N>(inv, ilo, ihi);
     if ((ilo < 0) != (ihi < 0)) return false;  // lanes disagree on the near plane
     const bool positive = ilo >= 0;
     // Entry (plane - o) * inv is least for the greatest origin when 1/d > 0, the least origin
@@ -210,17 +266,19 @@ inline bool prepare_packet(const PacketRays& pr, PacketData& p) {
     p.far_off[a] = positive ? kNodeWidth : 0;
   }
   float tmin_lo, tmin_hi;
-  min_max8(f[6], tmin_lo, tmin_hi);
-  for (int l = 0; l < 8; ++l) p.lane_tmin[l] = f[6][l];
+  min_max_lanes<N>(f[6], tmin_lo, tmin_hi);
+  for (int l = 0; l < N; ++l) p.lane_tmin[l] = f[6][l];
   p.tmin_lo = splat(tmin_lo);
-  p.tmin = load8(f[6]);
+  p.tmin = L::load(f[6]);
   return true;
 }
 
 // The watertight test's constants of every lane (idle lanes copy an active ray).
-inline void prepare_leaves(const PacketRays& pr, PacketData& p) {
+template <int N>
+inline void prepare_leaves(const PacketRays<N>& pr, PacketData<N>& p) {
+  using L = PacketLanes<N>;
   p.shared = true;
-  for (int l = 0; l < 8; ++l) {
+  for (int l = 0; l < N; ++l) {
     const MeshRay r = pr.ray(l);
     const float* ro = &r.o.x;
     const WatertightRay w = make_watertight_ray(r.o, r.d);
@@ -239,8 +297,8 @@ inline void prepare_leaves(const PacketRays& pr, PacketData& p) {
   p.kx = p.lane_k[0][0];
   p.ky = p.lane_k[1][0];
   p.kz = p.lane_k[2][0];
-  p.sx = load8(p.lane_s[0]), p.sy = load8(p.lane_s[1]), p.sz = load8(p.lane_s[2]);
-  p.okx = load8(p.lane_ok[0]), p.oky = load8(p.lane_ok[1]), p.okz = load8(p.lane_ok[2]);
+  p.sx = L::load(p.lane_s[0]), p.sy = L::load(p.lane_s[1]), p.sz = L::load(p.lane_s[2]);
+  p.okx = L::load(p.lane_ok[0]), p.oky = L::load(p.lane_ok[1]), p.okz = L::load(p.lane_ok[2]);
   p.leaves_ready = true;
 }
 
@@ -260,20 +318,21 @@ struct NodePlanes {
 
 // The near and far planes of axis a of a node's eight children, as every node test reads them:
 // float nodes directly, quantised nodes dequantised (origin + q * scale).
-inline void node_planes(const WideNode& n, int a, const PacketData& p, V8& pn, V8& pf) {
+template <class PD>
+inline void node_planes(const WideNode& n, int a, const PD& p, V8& pn, V8& pf) {
   pn = load8(n.box[a] + p.near_off[a]);
   pf = load8(n.box[a] + p.far_off[a]);
 }
 
-inline void node_planes(const QuantisedNode& n, int a, const PacketData& p, V8& pn, V8& pf) {
+template <class PD>
+inline void node_planes(const QuantisedNode& n, int a, const PD& p, V8& pn, V8& pf) {
   const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
   pn = o + load8_u8(n.q[2 * a + p.near_off[a] / kNodeWidth]) * s;
   pf = o + load8_u8(n.q[2 * a + p.far_off[a] / kNodeWidth]) * s;
 }
 
-template <class Node>
-inline int packet_node(const Node& n, const PacketData& p, V8 reach, V8& tnear,
-                       NodePlanes& planes) {
+template <class Node, class PD>
+inline int packet_node(const Node& n, const PD& p, V8 reach, V8& tnear, NodePlanes& planes) {
   V8 near[3], far[3];
   for (int a = 0; a < 3; ++a) {
     V8 pn, pf;
@@ -294,41 +353,48 @@ inline int packet_node(const Node& n, const PacketData& p, V8 reach, V8& tnear,
 // Child c of a node against every lane: the single-ray slab test of that child, lane by lane, on
 // the planes packet_node read (node_planes: as every node test reads them). All lanes
 // share the direction signs, so the near plane is the same for every lane.
-inline int packet_child(const NodePlanes& n, int c, const PacketData& p, V8 tmax) {
-  V8 near[3], far[3];
+template <int N>
+inline int packet_child(const NodePlanes& n, int c, const PacketData<N>& p,
+                        typename PacketLanes<N>::V tmax) {
+  using L = PacketLanes<N>;
+  using V = typename L::V;
+  V near[3], far[3];
   for (int a = 0; a < 3; ++a) {
-    near[a] = (splat(n.near[a][c]) - p.o[a]) * p.inv[a];
-    far[a] = (splat(n.far[a][c]) - p.o[a]) * p.inv[a];
+    near[a] = (L::broadcast(n.near[a][c]) - p.o[a]) * p.inv[a];
+    far[a] = (L::broadcast(n.far[a][c]) - p.o[a]) * p.inv[a];
   }
-  const V8 tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
-  const V8 f = vmin(vmin(far[0], far[1]), far[2]);
-  const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
+  const V tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
+  const V f = vmin(vmin(far[0], far[1]), far[2]);
+  const V widen =
+      select(cmp_ge(f, L::broadcast(0.0f)), L::broadcast(kSlabWiden), L::broadcast(kSlabNarrow));
   return bits(cmp_le(tnear, vmin(f * widen, tmax)));
 }
 
 // Triangle `lane` of group g against every lane's ray: the watertight test of intersect_pair.
-inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData& p, V8 tmax, V8& t,
-                           V8& v, V8& w, V8& det) {
-  const V8 a_kz = splat(g.v[0][p.kz][lane]) - p.okz;
-  const V8 b_kz = splat(g.v[1][p.kz][lane]) - p.okz;
-  const V8 c_kz = splat(g.v[2][p.kz][lane]) - p.okz;
-  const V8 ax = (splat(g.v[0][p.kx][lane]) - p.okx) - p.sx * a_kz;
-  const V8 ay = (splat(g.v[0][p.ky][lane]) - p.oky) - p.sy * a_kz;
-  const V8 bx = (splat(g.v[1][p.kx][lane]) - p.okx) - p.sx * b_kz;
-  const V8 by = (splat(g.v[1][p.ky][lane]) - p.oky) - p.sy * b_kz;
-  const V8 cx = (splat(g.v[2][p.kx][lane]) - p.okx) - p.sx * c_kz;
-  const V8 cy = (splat(g.v[2][p.ky][lane]) - p.oky) - p.sy * c_kz;
-  V8 u = cx * by - cy * bx;
+template <int N, class V = typename PacketLanes<N>::V>
+inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData<N>& p, V tmax, V& t,
+                           V& v, V& w, V& det) {
+  using L = PacketLanes<N>;
+  const V a_kz = L::broadcast(g.v[0][p.kz][lane]) - p.okz;
+  const V b_kz = L::broadcast(g.v[1][p.kz][lane]) - p.okz;
+  const V c_kz = L::broadcast(g.v[2][p.kz][lane]) - p.okz;
+  const V ax = (L::broadcast(g.v[0][p.kx][lane]) - p.okx) - p.sx * a_kz;
+  const V ay = (L::broadcast(g.v[0][p.ky][lane]) - p.oky) - p.sy * a_kz;
+  const V bx = (L::broadcast(g.v[1][p.kx][lane]) - p.okx) - p.sx * b_kz;
+  const V by = (L::broadcast(g.v[1][p.ky][lane]) - p.oky) - p.sy * b_kz;
+  const V cx = (L::broadcast(g.v[2][p.kx][lane]) - p.okx) - p.sx * c_kz;
+  const V cy = (L::broadcast(g.v[2][p.ky][lane]) - p.oky) - p.sy * c_kz;
+  V u = cx * by - cy * bx;
   v = ax * cy - ay * cx;
   w = bx * ay - by * ax;
-  const V8 zero = splat(0.0f);
+  const V zero = L::broadcast(0.0f);
   const int zero_mask = bits(mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero)));
   if (zero_mask) {
-    alignas(32) float f[6][8], uu[8], vv[8], ww[8];
-    store8(f[0], ax), store8(f[1], ay), store8(f[2], bx);
-    store8(f[3], by), store8(f[4], cx), store8(f[5], cy);
-    store8(uu, u), store8(vv, v), store8(ww, w);
-    for (int l = 0; l < 8; ++l) {
+    alignas(64) float f[6][N], uu[N], vv[N], ww[N];
+    L::store(f[0], ax), L::store(f[1], ay), L::store(f[2], bx);
+    L::store(f[3], by), L::store(f[4], cx), L::store(f[5], cy);
+    L::store(uu, u), L::store(vv, v), L::store(ww, w);
+    for (int l = 0; l < N; ++l) {
       if (!(zero_mask >> l & 1)) continue;
       const double dax = f[0][l], day = f[1][l], dbx = f[2][l], dby = f[3][l], dcx = f[4][l],
                    dcy = f[5][l];
@@ -336,17 +402,17 @@ inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData& p
       vv[l] = static_cast<float>(dax * dcy - day * dcx);
       ww[l] = static_cast<float>(dbx * day - dby * dax);
     }
-    u = load8(uu);
-    v = load8(vv);
-    w = load8(ww);
+    u = L::load(uu);
+    v = L::load(vv);
+    w = L::load(ww);
   }
   const auto pos = mand(mand(cmp_ge(u, zero), cmp_ge(v, zero)), cmp_ge(w, zero));
   const auto neg = mand(mand(cmp_le(u, zero), cmp_le(v, zero)), cmp_le(w, zero));
   det = (u + v) + w;
   const auto same_sign = mand(mor(pos, neg), cmp_ne(det, zero));
   if (!bits(same_sign)) return 0;
-  const V8 az = p.sz * a_kz, bz = p.sz * b_kz, cz = p.sz * c_kz;
-  const V8 ts = (u * az + v * bz) + w * cz;
+  const V az = p.sz * a_kz, bz = p.sz * b_kz, cz = p.sz * c_kz;
+  const V ts = (u * az + v * bz) + w * cz;
   t = ts / det;
   return bits(mand(same_sign, mand(cmp_ge(t, p.tmin), cmp_le(t, tmax))));
 }
@@ -364,18 +430,20 @@ inline void keep_hit(int l, const MeshBvhHit& h, float* tmax_s, MeshBvhHit* hits
 
 // A leaf's triangles one at a time against the lanes (the better order when many lanes enter
 // it; the lanes must share the axis permutation).
+template <int N>
 inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
-                             const PacketData& p, int lanes, float* tmax_s, MeshBvhHit* hits,
+                             const PacketData<N>& p, int lanes, float* tmax_s, MeshBvhHit* hits,
                              int& found) {
+  using L = PacketLanes<N>;
   for (std::uint32_t gi = first; gi < end; ++gi) {
     const TriangleGroup& g = bvh.groups[gi];
     for (int k = 0; k < 4; ++k) {
       if (g.id[k] == kNoTriangle) continue;
-      V8 t, v, w, det;
-      int m = packet_triangle(g, k, p, load8(tmax_s), t, v, w, det) & lanes;
+      typename L::V t, v, w, det;
+      int m = packet_triangle<N>(g, k, p, L::load(tmax_s), t, v, w, det) & lanes;
       if (!m) continue;
-      alignas(32) float tl[8], vl[8], wl[8], dl[8];
-      store8(tl, t), store8(vl, v), store8(wl, w), store8(dl, det);
+      alignas(64) float tl[N], vl[N], wl[N], dl[N];
+      L::store(tl, t), L::store(vl, v), L::store(wl, w), L::store(dl, det);
       while (m) {
         const int l = __builtin_ctz(m);
         m &= m - 1;
@@ -390,8 +458,9 @@ inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint3
 
 // A leaf's groups two at a time against one lane after another: the single-ray leaf test (the
 // better order when few lanes enter the leaf).
+template <int N>
 inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
-                         const PacketData& p, int lanes, float* tmax_s, MeshBvhHit* hits,
+                         const PacketData<N>& p, int lanes, float* tmax_s, MeshBvhHit* hits,
                          int& found) {
   RayData r;  // only the triangle test's members are set
   PairResult res;
@@ -426,22 +495,23 @@ inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t 
 
 // The nearest hit of each ray of `mask` (lane l of `pr` for each bit l); returns the lanes that
 // hit.
-template <class Node>
-int closest8_format(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhHit* hits,
-                    PacketEntry* stack, TraversalEntry* single_stack) {
-  PacketData p;
+template <class Node, int N>
+int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBvhHit* hits,
+                   PacketEntry* stack, TraversalEntry* single_stack) {
+  using L = PacketLanes<N>;
+  PacketData<N> p;
   if (!prepare_packet(pr, p)) {  // not one packet: one ray at a time
     int found = 0;
-    for (int l = 0; l < 8; ++l) {
+    for (int l = 0; l < N; ++l) {
       if (!(mask >> l & 1)) continue;
       const MeshRay r = pr.ray(l);
       if (traverse<Query::kNearest, Node>(bvh, r, &hits[l], nullptr, single_stack)) found |= 1 << l;
     }
     return found;
   }
-  alignas(32) float tmax_s[8];
-  for (int l = 0; l < 8; ++l) tmax_s[l] = (mask >> l & 1) ? pr.f[7][l] : -kInfinityF;
-  V8 tmax = load8(tmax_s);
+  alignas(64) float tmax_s[N];
+  for (int l = 0; l < N; ++l) tmax_s[l] = (mask >> l & 1) ? pr.f[7][l] : -kInfinityF;
+  typename L::V tmax = L::load(tmax_s);
   int found = 0;
   int top = 0;
   std::uint32_t ref = bvh.root;
@@ -449,7 +519,7 @@ int closest8_format(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhH
   for (;;) {
     if (!(ref & kLeafBit)) {
       const Node& node = node_array<Node>(bvh)[ref];
-      const float reach_s = lanes_max8(tmax_s, lanes);
+      const float reach_s = lanes_max<N>(tmax_s, lanes);
       V8 tn;
       NodePlanes planes;
       int m = packet_node(node, p, splat(reach_s), tn, planes);
@@ -462,7 +532,7 @@ int closest8_format(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhH
         while (m) {
           const int c = __builtin_ctz(m);
           m &= m - 1;
-          const int lm = packet_child(planes, c, p, tmax) & lanes;
+          const int lm = packet_child<N>(planes, c, p, tmax) & lanes;
           if (!lm) continue;
           prefetch_children(bvh, node, 1 << c);
           const PacketEntry e{node.child[c], tnl[c], static_cast<std::uint32_t>(lm)};
@@ -479,17 +549,17 @@ int closest8_format(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhH
       if (!p.leaves_ready) prepare_leaves(pr, p);
       if (!p.shared ||
           __builtin_popcount(lanes) * int((end - first + 1) / 2) < 4 * int(end - first)) {
-        leaf_by_lane(bvh, first, end, p, lanes, tmax_s, hits, found);
+        leaf_by_lane<N>(bvh, first, end, p, lanes, tmax_s, hits, found);
       } else {
-        leaf_by_triangle(bvh, first, end, p, lanes, tmax_s, hits, found);
+        leaf_by_triangle<N>(bvh, first, end, p, lanes, tmax_s, hits, found);
       }
-      tmax = load8(tmax_s);
+      tmax = L::load(tmax_s);
     }
     // Pop; an entry keeps the lanes whose nearest hit so far is not before its entry bound.
     for (;;) {
       if (top == 0) return found;
       const PacketEntry& e = stack[--top];
-      lanes = bits(cmp_ge(tmax, splat(e.tnear))) & static_cast<int>(e.lanes);
+      lanes = bits(cmp_ge(tmax, L::broadcast(e.tnear))) & static_cast<int>(e.lanes);
       if (lanes) {
         ref = e.ref;
         break;
@@ -498,29 +568,43 @@ int closest8_format(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhH
   }
 }
 
-inline int closest8_lanes(const MeshBvh& bvh, const PacketRays& pr, int mask, MeshBvhHit* hits,
-                          PacketEntry* stack, TraversalEntry* single_stack) {
-  return bvh.quantised ? closest8_format<QuantisedNode>(bvh, pr, mask, hits, stack, single_stack)
-                       : closest8_format<WideNode>(bvh, pr, mask, hits, stack, single_stack);
+template <int N>
+inline int closest_lanes(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBvhHit* hits,
+                         PacketEntry* stack, TraversalEntry* single_stack) {
+  return bvh.quantised ? closest_format<QuantisedNode, N>(bvh, pr, mask, hits, stack, single_stack)
+                       : closest_format<WideNode, N>(bvh, pr, mask, hits, stack, single_stack);
 }
 
 int closest8(const MeshBvh& bvh, const MeshRay* rays, int mask, MeshBvhHit* hits,
              PacketEntry* stack, TraversalEntry* single_stack) {
   mask &= 0xFF;
   if (bvh.empty() || !mask) return 0;
-  PacketRays pr;
+  PacketRays<8> pr;
   gather_rays(rays, mask, pr);
-  return closest8_lanes(bvh, pr, mask, hits, stack, single_stack);
+  return closest_lanes<8>(bvh, pr, mask, hits, stack, single_stack);
 }
 
 int closest8_rays(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit* hits, double* scale,
                   PacketEntry* stack, TraversalEntry* single_stack) {
   mask &= 0xFF;
   if (!mask) return 0;
-  PacketRays pr;
-  if (!convert_rays(rays, mask, pr, scale)) return -1;
+  PacketRays<8> pr;
+  if (!convert_rays<8>(rays, mask, pr, scale)) return -1;
   if (bvh.empty()) return 0;
-  return closest8_lanes(bvh, pr, mask, hits, stack, single_stack);
+  return closest_lanes<8>(bvh, pr, mask, hits, stack, single_stack);
 }
+
+#ifdef RAYCAST_KERNEL_NODE16
+// closest8_rays on sixteen rays as one packet (mesh/mesh_packet16.cpp declares it).
+int closest16_rays(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit* hits, double* scale,
+                   PacketEntry* stack, TraversalEntry* single_stack) {
+  mask &= 0xFFFF;
+  if (!mask) return 0;
+  PacketRays<16> pr;
+  if (!convert_rays<16>(rays, mask, pr, scale)) return -1;
+  if (bvh.empty()) return 0;
+  return closest_lanes<16>(bvh, pr, mask, hits, stack, single_stack);
+}
+#endif
 
 }  // namespace raycast::RAYCAST_KERNEL_NS
