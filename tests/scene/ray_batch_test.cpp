@@ -100,6 +100,38 @@ TEST(RayBatch, MeshBesideAnEmptyBox_PacketsEqualSingleRays) {
   expect_batch_equals_single(scene, mixed_rays(rng, soup));
 }
 
+// A flat square on its own box's face (z = 0): rows of sixteen coherent rays down onto it and
+// past its edges, with segment ends a few ulps either side of the plane. Whether a lane's ray
+// reaches the mesh is the object's box test (widened exit, in double), so the packet path's box
+// test per lane must decide exactly as the single ray's.
+TEST(RayBatch, BoxFaceAndEdges_PacketsEqualSingleRays) {
+  Scene scene;
+  Object o;
+  o.shape = MeshShape{
+      make_mesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{{0, 1, 2}}, {{0, 2, 3}}})};
+  scene.objects.push_back(std::move(o));
+  scene.build();
+  ASSERT_EQ(scene.sole_mesh(), 0);
+  std::vector<Ray> rays;
+  for (int row = 0; row < 64; ++row) {
+    const double y = row % 8 == 7 ? 1.0 : -1.1 + row * (2.2 / 64);  // some rows on the edge
+    for (int i = 0; i < 32; ++i) {
+      const double x = 0.95 + i * (0.1 / 32);  // across the edge x = 1
+      Ray r{{x, y, 1}, {0.001 * (i % 4), 0.001 * (row % 3), -1}};
+      const int k = (i + row) % 9 - 4;  // ends k ulps from the plane's t (about 1)
+      double end = 1;
+      for (int s = 0; s < std::abs(k); ++s) end = std::nextafter(end, k < 0 ? 0.0 : 2.0);
+      if (row % 2)
+        r.tmax = end;
+      else
+        r.tmin = end;
+      rays.push_back(r);
+    }
+  }
+  EXPECT_TRUE(coherent_rays(rays.data(), 16, 2.0));
+  expect_batch_equals_single(scene, rays);
+}
+
 TEST(RayBatch, TwoMeshes_SingleRaysEqual) {
   testing::Rng rng(9);
   const Scene scene = mesh_scene(2);

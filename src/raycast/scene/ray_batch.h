@@ -8,15 +8,16 @@
 
 namespace raycast {
 
-/// Whether rays[0..n) (n <= 8) may go as one packet: the same direction octant, origins within
+/// Whether rays[0..n) (n <= 16) may go as one packet: the same direction octant, origins within
 /// `extent` / 32 of each other and unit directions within 1/16 of each other on every axis.
 bool coherent_rays(const Ray* rays, int n, double extent);
 
 /// hits[i] and found[i] exactly as `found[i] = scene.intersect(rays[i], hits[i])` from a
 /// default SceneHit gives them. In a scene of one mesh without a transform (Scene::sole_mesh: other
-/// objects' boxes empty), each run of eight
-/// coherent rays (coherent_rays) is traced as one packet (mesh/packet_traverse.inl, bit for bit
-/// the single-ray answers); every other ray alone. Serial: callers split big batches.
+/// objects' boxes empty), each run of sixteen (AVX-512: packet_width) or eight coherent rays
+/// (coherent_rays) is traced as one packet (mesh/packet_traverse.inl, bit for bit the single-ray
+/// answers) after the object's box test on its lanes; every other ray alone. Serial: callers
+/// split big batches.
 void intersect_batch(const Scene& scene, std::span<const Ray> rays, std::span<SceneHit> hits,
                      std::span<std::uint8_t> found);
 
