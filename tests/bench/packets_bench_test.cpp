@@ -35,6 +35,22 @@ TEST(BenchPackets, PrimaryRays_SameHitsAsSingleRays) {
   }
 }
 
+TEST(BenchPackets, PacketsOf16_SameHitsAsSingleRays) {
+  const BenchResult single = run_bench(small_bench(false));
+  BenchOptions o = small_bench(true);
+  o.packet_width = 16;  // one 16-lane packet with AVX-512, two of 8 elsewhere; rtcIntersect16
+  const BenchResult packets = run_bench(o);
+  EXPECT_EQ(packets.packet_width, 16);
+  EXPECT_EQ(packets.rays, single.rays);
+  EXPECT_EQ(packets.hits, single.hits);
+  if (packets.embree) {
+    EXPECT_LE(packets.disagree_hit, packets.rays / 2000);
+    EXPECT_LE(packets.disagree, packets.rays / 500);
+  }
+  o.packet_width = 12;
+  EXPECT_THROW(run_bench(o), SceneError);
+}
+
 TEST(BenchPackets, ShadowRays_Refused) {
   BenchOptions o = small_bench(true);
   o.rays = BenchRays::kShadow;
