@@ -14,7 +14,8 @@ Action add_bench_command(CLI::App& app) {
     std::string scene, mesh, procedural, rays = "primary", vs;
     int threads = 0, repeat = 3;
     bool json = false;
-    int packets = 0;  // 0: single rays; 8 or 16
+    bool packets = false;
+    int packet_width = 0;  // 0: not given (8); --packet-width alone implies --packets
   };
   auto opt = std::make_shared<Options>();
   auto* scene = cmd->add_option("SCENE", opt->scene, "Scene file (meshes only with --vs embree)");
@@ -32,11 +33,11 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--repeat", opt->repeat, "Tracing passes; the fastest counts (default 3)")
       ->check(CLI::Range(1, 100));
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->add_option("--packets", opt->packets,
-                  "Primary rays in packets of 8 (the default) or 16 (one mesh); with --vs embree, "
-                  "rtcIntersect8 or rtcIntersect16")
-      ->expected(0, 1)
-      ->default_str("8")
+  // A flag and a separate width (not an option with an optional value, which would swallow a
+  // SCENE given after it).
+  cmd->add_flag("--packets", opt->packets,
+                "Primary rays in packets (one mesh); with --vs embree, rtcIntersect8/16");
+  cmd->add_option("--packet-width", opt->packet_width, "Rays per packet: 8 (default) or 16")
       ->check(CLI::IsMember({8, 16}));
   auto bvh = std::make_shared<MeshBvhConfig>();
   cmd->add_option("--leaf-size", bvh->max_leaf_size, "Tuning: most triangles per leaf (1-16)")
@@ -55,8 +56,8 @@ Action add_bench_command(CLI::App& app) {
       throw SceneError("bench", 0, 0, "give a SCENE, --mesh FILE or --procedural NAME:TRIANGLES");
     o.rays = parse_bench_rays(opt->rays);
     o.vs_embree = opt->vs == "embree";
-    o.packets = opt->packets != 0;
-    o.packet_width = opt->packets != 0 ? opt->packets : 8;
+    o.packets = opt->packets || opt->packet_width != 0;
+    o.packet_width = opt->packet_width != 0 ? opt->packet_width : 8;
     o.threads = opt->threads;
     o.repeat = opt->repeat;
     o.bvh = *bvh;
