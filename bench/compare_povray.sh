@@ -35,21 +35,8 @@ done
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 TIMEFORMAT='%R %U %S'  # wall, user, system seconds
+source bench/timing.sh  # seconds, best
 
-seconds() {  # runs "$@" quietly, prints "wall cpu" seconds; stops the script if it fails
-  local log="$tmp/log" status=0
-  { time "$@" >"$log" 2>&1; } 2>"$tmp/time" || status=$?
-  if [ "$status" -ne 0 ]; then
-    echo "failed ($status): $*" >&2
-    cat "$log" >&2
-    exit 1
-  fi
-  tail -1 "$tmp/time" | awk '{ printf "%.3f %.3f\n", $1, $2 + $3 }'
-}
-
-best() {  # best "wall cpu" over the lines on stdin (each column separately)
-  awk 'NR == 1 || $1 < w { w = $1 } NR == 1 || $2 < c { c = $2 } END { printf "%.3f %.3f\n", w, c }'
-}
 
 pov_cmd=(povray +I"$pov_file" +O"$tmp/povray.png" +W"$width" +H"$height" -A -D +FN +WT"$threads"
          +L/usr/share/povray-3.7/include File_Gamma=sRGB)
@@ -71,7 +58,7 @@ fi
 echo "scene: $scene ($yaml_file vs $pov_file), ${width}x${height}, 1 sample per pixel, $threads thread(s)"
 echo "best of $repeats runs (load average at the end: $(cut -d' ' -f1 /proc/loadavg)):"
 echo "povray:  wall ${pov_wall} s, cpu ${pov_cpu} s   ($(povray --version 2>&1 | grep -m1 "^POV-Ray"))"
-echo "raycast: wall ${our_wall} s, cpu ${our_cpu} s   (raycast render, whitted)"
+echo "raycast: wall ${our_wall} s, cpu ${our_cpu} s   (raycast render, $scene)"
 awk -v pw="$pov_wall" -v pc="$pov_cpu" -v rw="$our_wall" -v rc="$our_cpu" 'BEGIN {
   printf "ratio povray / raycast:"
   if (rw > 0) printf " wall %.2f", pw / rw

@@ -32,21 +32,8 @@ launcher=("$mpirun" -np "$ranks")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 TIMEFORMAT='%R %U %S'  # wall, user, system seconds
+source bench/timing.sh  # seconds, best
 
-seconds() {  # runs "$@" quietly, prints "wall cpu" seconds; stops the script if it fails
-  local log="$tmp/log" status=0
-  { time "$@" >"$log" 2>&1; } 2>"$tmp/time" || status=$?
-  if [ "$status" -ne 0 ]; then
-    echo "failed ($status): $*" >&2
-    cat "$log" >&2
-    exit 1
-  fi
-  tail -1 "$tmp/time" | awk '{ printf "%.3f %.3f\n", $1, $2 + $3 }'
-}
-
-best() {  # best "wall cpu" of a file of such lines (each column separately)
-  awk 'NR == 1 || $1 < w { w = $1 } NR == 1 || $2 < c { c = $2 } END { printf "%.3f %.3f\n", w, c }' "$1"
-}
 
 # The fixed cost of a job: mpirun, MPI_Init and MPI_Finalize on every rank, around an 8 x 8 render.
 : >"$tmp/empty.t"

@@ -25,6 +25,7 @@ done
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 TIMEFORMAT='%R %U %S'
+source bench/timing.sh  # seconds, best
 
 "$iso_bench" --export-df3 scenes/fluid/splash_0000.ply 0.02 "$tmp/fluid.df3" >"$tmp/params"
 read -r _ lx ly lz < <(grep '^min' "$tmp/params")
@@ -61,20 +62,6 @@ isosurface {
   interior { ior 1.33 }
 }
 POV
-
-seconds() {
-  local log="$tmp/log" status=0
-  { time "$@" >"$log" 2>&1; } 2>"$tmp/time" || status=$?
-  if [ "$status" -ne 0 ]; then
-    echo "failed ($status): $*" >&2
-    cat "$log" >&2
-    exit 1
-  fi
-  tail -1 "$tmp/time" | awk '{ printf "%.3f %.3f\n", $1, $2 + $3 }'
-}
-best() {
-  awk 'NR == 1 || $1 < w { w = $1 } NR == 1 || $2 < c { c = $2 } END { printf "%.3f %.3f\n", w, c }'
-}
 pov_cmd=(povray +I"$tmp/fluid.pov" +O"$tmp/povray.png" +W"$width" +H"$height" -A -D +FN
          +WT"$threads" +L/usr/share/povray-3.7/include File_Gamma=sRGB)
 our_cmd=("$raycast" render scenes/fluid.yaml -o "$tmp/raycast.png" --width "$width"

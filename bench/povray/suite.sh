@@ -36,6 +36,7 @@ command -v povray >/dev/null || { echo "povray is not installed (scripts/setup.s
 [ -x "$raycast" ] || { echo "missing: $raycast" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+source bench/timing.sh  # best
 mkdir -p "$ref_dir"
 
 yaml_of() {  # the raycast scene of a suite name
@@ -58,10 +59,6 @@ our_run() {  # our_run OUT THREADS [options...]: prints "seconds cpu_seconds"
   "$raycast" render "$(yaml_of "$scene")" -o "$out" --width "$width" --height "$height" \
     --threads "$n" "$@" >"$tmp/our.log" 2>&1 || { cat "$tmp/our.log" >&2; exit 1; }
   sed -n 's/.* threads: \([0-9.]*\) s (cpu \([0-9.]*\) s).*/\1 \2/p' "$tmp/our.log"
-}
-
-best() {  # best "a b" over the lines on stdin (each column separately)
-  awk 'NR == 1 || $1 < a { a = $1 } NR == 1 || $2 < b { b = $2 } END { printf "%.3f %.3f\n", a, b }'
 }
 
 echo "raycast suite against $(povray --version 2>&1 | grep -m1 '^POV-Ray'), ${width}x${height}," \
