@@ -7,7 +7,7 @@
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
-// A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv) and
+// A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
 // (AVX-512: 16 lanes).
 // Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
@@ -42,8 +42,9 @@ struct RayData {
 #endif
 };
 
-inline RayData prepare(const MeshRay& r) {
-  RayData p;
+// Fills p in place (returning RayData by value made GCC copy the AVX-512 part, nine 64-byte
+// vectors, through the stack twice per ray).
+inline void prepare(const MeshRay& r, RayData& p) {
   const float* o = &r.o.x;
   const float* d = &r.d.x;
   float invs[3];
@@ -70,11 +71,10 @@ inline RayData prepare(const MeshRay& r) {
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
 #ifdef RAYCAST_KERNEL_NODE16
-  p.node16 = prepare_node16(o, invs);
+  prepare_node16(o, invs, p.node16);
 #else
   (void)invs;
 #endif
-  return p;
 }
 
 // The node arrays of the two formats (mesh/mesh_bvh.h).
@@ -258,7 +258,8 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
               TraversalEntry* stack) {
   if (bvh.empty()) return false;
   const Node* nodes = node_array<Node>(bvh);
-  const RayData p = prepare(ray);
+  RayData p;
+  prepare(ray, p);
   float tmax_s = ray.tmax;
   V8 tmax = splat(tmax_s);
   int top = 0;
@@ -271,12 +272,14 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
       V8 tn;
       int mask = intersect_node(node, p, tmax, tn);
       if (mask) {
-        prefetch_children(bvh, node, mask);
         if constexpr (Q == Query::kNearest) {
+          prefetch_children(bvh, node, mask);
           ref = order_children(node, mask, tn, stack, top);
         } else {
           const int first = __builtin_ctz(mask);
           mask &= mask - 1;
+          // Only the pushed children: the first is read at once, its loads issue together anyway.
+          prefetch_children(bvh, node, mask);
           while (mask) {
             stack[top++] = {node.child[__builtin_ctz(mask)], 0.0f};
             mask &= mask - 1;
