@@ -196,25 +196,30 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
 // finds an out-of-line copy free of side effects (__builtin_prefetch does not count) and deletes
 // the calls, so until session 7 no kernel prefetched at all (docs/performance-mesh.md).
 template <class Node>
+[[gnu::always_inline]] inline void prefetch_child(const MeshBvh& bvh, std::uint32_t ref) {
+  const bool leaf = ref & kLeafBit;
+  const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
+                       : reinterpret_cast<const char*>(node_array<Node>(bvh) + ref);
+  const int bytes = leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup))
+                         : int(sizeof(Node));
+  for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
+}
+
+template <class Node>
 [[gnu::always_inline]] inline void prefetch_children(const MeshBvh& bvh, const Node& node,
                                                      int mask) {
   while (mask) {
-    const std::uint32_t ref = node.child[__builtin_ctz(mask)];
+    prefetch_child<Node>(bvh, node.child[__builtin_ctz(mask)]);
     mask &= mask - 1;
-    const bool leaf = ref & kLeafBit;
-    const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
-                         : reinterpret_cast<const char*>(node_array<Node>(bvh) + ref);
-    const int bytes = leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup))
-                           : int(sizeof(Node));
-    for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
   }
 }
 
 // Ordered descent: pushes the hit children except the nearest (farthest first, so that they pop
-// nearest first) with their entry distances, and returns the nearest.
+// nearest first) with their entry distances, prefetches the pushed ones (the nearest is read at
+// once: its loads issue together without help), and returns the nearest.
 template <class Node>
-inline std::uint32_t order_children(const Node& node, int mask, V8 tn, TraversalEntry* stack,
-                                    int& top) {
+inline std::uint32_t order_children(const MeshBvh& bvh, const Node& node, int mask, V8 tn,
+                                    TraversalEntry* stack, int& top) {
   const int first = __builtin_ctz(mask);
   mask &= mask - 1;
   if (!mask) return node.child[first];  // one child hit: no ordering, no push
@@ -225,10 +230,12 @@ inline std::uint32_t order_children(const Node& node, int mask, V8 tn, Traversal
   if (!mask) {  // two: push the farther
     const bool swap = tnear[second] < tnear[first];
     const int near = swap ? second : first, far = swap ? first : second;
+    prefetch_child<Node>(bvh, node.child[far]);
     stack[top++] = {node.child[far], tnear[far]};
     return node.child[near];
   }
   mask |= (1 << first) | (1 << second);
+  prefetch_children(bvh, node, mask);  // all but the nearest would need the sort first
   // Insertion sort, farthest first, straight onto the stack.
   const int base = top;
   while (mask) {
@@ -273,8 +280,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
       int mask = intersect_node(node, p, tmax, tn);
       if (mask) {
         if constexpr (Q == Query::kNearest) {
-          prefetch_children(bvh, node, mask);
-          ref = order_children(node, mask, tn, stack, top);
+          ref = order_children(bvh, node, mask, tn, stack, top);
         } else {
           const int first = __builtin_ctz(mask);
           mask &= mask - 1;
