@@ -145,8 +145,7 @@ inline Vec3f hit_vertex(const MeshBvh& bvh, const MeshBvhHit& h, int k) {
 }
 
 /// Entries a traversal stack needs for `bvh`: each level below the root pushes at most
-/// kNodeWidth - 1 entries. A node at level L finds at most (L - 1)(kNodeWidth - 1) entries on the
-/// stack, so a push that writes kNodeWidth entries whole (the AVX-512 any-hit walk) stays inside.
+/// kNodeWidth - 1 entries.
 inline std::size_t traversal_stack_size(const MeshBvh& bvh) {
   return static_cast<std::size_t>(bvh.depth) * (kNodeWidth - 1) + 2;
 }

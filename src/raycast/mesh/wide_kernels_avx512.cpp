@@ -112,20 +112,8 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
   return _mm256_cmp_ps_mask(near, tfar, _CMP_LE_OQ) & n.used;
 }
 
-// The unordered push of the any-hit walk (RAYCAST_KERNEL_PUSH_CHILDREN in
-// mesh/wide_traverse.inl): the eight child references widened to {ref, 0.0f} entries, the hit
-// ones compressed to the front of one register and stored whole, instead of a loop with a
-// branch per child.
-inline int push_children(const std::uint32_t* child, int mask, TraversalEntry* out) {
-  const __m512i entries =
-      _mm512_cvtepu32_epi64(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(child)));
-  _mm512_storeu_si512(out, _mm512_maskz_compress_epi64(static_cast<__mmask8>(mask), entries));
-  return __builtin_popcount(static_cast<unsigned>(mask));
-}
-
 }  // namespace raycast::kernels_avx512
 
-#define RAYCAST_KERNEL_PUSH_CHILDREN 1
 #define RAYCAST_KERNEL_NODE16 1
 #define RAYCAST_KERNEL_NS kernels_avx512
 #include "mesh/wide_traverse.inl"
@@ -133,7 +121,6 @@ inline int push_children(const std::uint32_t* child, int mask, TraversalEntry* o
 #include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 #undef RAYCAST_KERNEL_NODE16
-#undef RAYCAST_KERNEL_PUSH_CHILDREN
 
 #pragma GCC diagnostic pop
 #pragma GCC pop_options

@@ -7,9 +7,6 @@
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
-// A kernel may define RAYCAST_KERNEL_PUSH_CHILDREN with push_children(child, mask, out): the
-// entries {child[i], 0} of the bits i of mask, in increasing i, written to out (it may write up to
-// eight entries: traversal_stack_size leaves that room), returning their count.
 // A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
 // (AVX-512: 16 lanes).
@@ -289,14 +286,10 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
           mask &= mask - 1;
           // Only the pushed children: the first is read at once, its loads issue together anyway.
           prefetch_children(bvh, node, mask);
-#ifdef RAYCAST_KERNEL_PUSH_CHILDREN
-          top += push_children(node.child, mask, stack + top);
-#else
           while (mask) {
             stack[top++] = {node.child[__builtin_ctz(mask)], 0.0f};
             mask &= mask - 1;
           }
-#endif
           ref = node.child[first];
         }
         continue;
