@@ -65,8 +65,7 @@ struct NodeRay16 {
   __m512i perm[3];  // puts the near planes in lanes 0-7: the halves swapped when 1/d < 0
 };
 
-inline NodeRay16 prepare_node16(const float* o, const float* inv) {
-  NodeRay16 r;
+inline void prepare_node16(const float* o, const float* inv, NodeRay16& r) {
   const __m512i same = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   const __m512i swap = _mm512_setr_epi32(8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7);
   for (int a = 0; a < 3; ++a) {
@@ -74,7 +73,6 @@ inline NodeRay16 prepare_node16(const float* o, const float* inv) {
     r.mul[a] = _mm512_insertf32x8(_mm512_set1_ps(inv[a]), _mm256_set1_ps(-inv[a]), 1);
     r.perm[a] = inv[a] >= 0 ? same : swap;
   }
-  return r;
 }
 
 // One axis's sixteen planes [lo x 8 | hi x 8]: as stored, or dequantised.

@@ -7,7 +7,7 @@
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
-// A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv) and
+// A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
 // (AVX-512: 16 lanes).
 // Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
@@ -42,8 +42,9 @@ struct RayData {
 #endif
 };
 
-inline RayData prepare(const MeshRay& r) {
-  RayData p;
+// Fills p in place (returning RayData by value made GCC copy the AVX-512 part, nine 64-byte
+// vectors, through the stack twice per ray).
+inline void prepare(const MeshRay& r, RayData& p) {
   const float* o = &r.o.x;
   const float* d = &r.d.x;
   float invs[3];
@@ -70,11 +71,10 @@ inline RayData prepare(const MeshRay& r) {
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
 #ifdef RAYCAST_KERNEL_NODE16
-  p.node16 = prepare_node16(o, invs);
+  prepare_node16(o, invs, p.node16);
 #else
   (void)invs;
 #endif
-  return p;
 }
 
 // The node arrays of the two formats (mesh/mesh_bvh.h).
@@ -196,25 +196,30 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
 // finds an out-of-line copy free of side effects (__builtin_prefetch does not count) and deletes
 // the calls, so until session 7 no kernel prefetched at all (docs/performance-mesh.md).
 template <class Node>
+[[gnu::always_inline]] inline void prefetch_child(const MeshBvh& bvh, std::uint32_t ref) {
+  const bool leaf = ref & kLeafBit;
+  const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
+                       : reinterpret_cast<const char*>(node_array<Node>(bvh) + ref);
+  const int bytes = leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup))
+                         : int(sizeof(Node));
+  for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
+}
+
+template <class Node>
 [[gnu::always_inline]] inline void prefetch_children(const MeshBvh& bvh, const Node& node,
                                                      int mask) {
   while (mask) {
-    const std::uint32_t ref = node.child[__builtin_ctz(mask)];
+    prefetch_child<Node>(bvh, node.child[__builtin_ctz(mask)]);
     mask &= mask - 1;
-    const bool leaf = ref & kLeafBit;
-    const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
-                         : reinterpret_cast<const char*>(node_array<Node>(bvh) + ref);
-    const int bytes = leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup))
-                           : int(sizeof(Node));
-    for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
   }
 }
 
 // Ordered descent: pushes the hit children except the nearest (farthest first, so that they pop
-// nearest first) with their entry distances, and returns the nearest.
+// nearest first) with their entry distances, prefetches the pushed ones (the nearest is read at
+// once: its loads issue together without help), and returns the nearest.
 template <class Node>
-inline std::uint32_t order_children(const Node& node, int mask, V8 tn, TraversalEntry* stack,
-                                    int& top) {
+inline std::uint32_t order_children(const MeshBvh& bvh, const Node& node, int mask, V8 tn,
+                                    TraversalEntry* stack, int& top) {
   const int first = __builtin_ctz(mask);
   mask &= mask - 1;
   if (!mask) return node.child[first];  // one child hit: no ordering, no push
@@ -225,10 +230,12 @@ inline std::uint32_t order_children(const Node& node, int mask, V8 tn, Traversal
   if (!mask) {  // two: push the farther
     const bool swap = tnear[second] < tnear[first];
     const int near = swap ? second : first, far = swap ? first : second;
+    prefetch_child<Node>(bvh, node.child[far]);
     stack[top++] = {node.child[far], tnear[far]};
     return node.child[near];
   }
   mask |= (1 << first) | (1 << second);
+  prefetch_children(bvh, node, mask);  // all but the nearest would need the sort first
   // Insertion sort, farthest first, straight onto the stack.
   const int base = top;
   while (mask) {
@@ -258,7 +265,8 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
               TraversalEntry* stack) {
   if (bvh.empty()) return false;
   const Node* nodes = node_array<Node>(bvh);
-  const RayData p = prepare(ray);
+  RayData p;
+  prepare(ray, p);
   float tmax_s = ray.tmax;
   V8 tmax = splat(tmax_s);
   int top = 0;
@@ -271,12 +279,13 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
       V8 tn;
       int mask = intersect_node(node, p, tmax, tn);
       if (mask) {
-        prefetch_children(bvh, node, mask);
         if constexpr (Q == Query::kNearest) {
-          ref = order_children(node, mask, tn, stack, top);
+          ref = order_children(bvh, node, mask, tn, stack, top);
         } else {
           const int first = __builtin_ctz(mask);
           mask &= mask - 1;
+          // Only the pushed children: the first is read at once, its loads issue together anyway.
+          prefetch_children(bvh, node, mask);
           while (mask) {
             stack[top++] = {node.child[__builtin_ctz(mask)], 0.0f};
             mask &= mask - 1;
