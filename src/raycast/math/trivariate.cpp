@@ -259,12 +259,6 @@ long expanded_cost(const Trivariate& f) {
   return cost;
 }
 
-double ipow(double x, int n) {
-  double r = 1;
-  for (int i = 0; i < n; ++i) r *= x;
-  return r;
-}
-
 }  // namespace
 
 Trivariate expand_polynomial(std::string_view text) {
@@ -287,33 +281,38 @@ Trivariate expand_polynomial(std::string_view text) {
   return f;
 }
 
-double evaluate(const Trivariate& f, const Vec3& p) {
-  double s = 0;
-  for (const auto& t : f.terms) s += t.c * ipow(p.x, t.i) * ipow(p.y, t.j) * ipow(p.z, t.k);
-  return s;
-}
-
-Vec3 gradient(const Trivariate& f, const Vec3& p) {
-  Vec3 g;
-  for (const auto& t : f.terms) {
-    if (t.i > 0) g.x += t.c * t.i * ipow(p.x, t.i - 1) * ipow(p.y, t.j) * ipow(p.z, t.k);
-    if (t.j > 0) g.y += t.c * t.j * ipow(p.x, t.i) * ipow(p.y, t.j - 1) * ipow(p.z, t.k);
-    if (t.k > 0) g.z += t.c * t.k * ipow(p.x, t.i) * ipow(p.y, t.j) * ipow(p.z, t.k - 1);
-  }
-  return g;
-}
-
 namespace {
 // x^0 .. x^n, each the previous times x: the same products, in the same order, as multiplying
 // x into 1 k times, so the sums below round exactly as with a power computed per term.
-struct PowersLd {
-  long double v[kStride];
-  PowersLd(long double x, int n) {
+template <class T>
+struct Powers {
+  T v[kStride];
+  Powers(T x, int n) {
     v[0] = 1;
     for (int i = 1; i <= n; ++i) v[i] = v[i - 1] * x;
   }
 };
+using PowersLd = Powers<long double>;
 }  // namespace
+
+// Surface normals call these once per hit: the powers are tabled once per call.
+double evaluate(const Trivariate& f, const Vec3& p) {
+  const Powers<double> px(p.x, f.degree), py(p.y, f.degree), pz(p.z, f.degree);
+  double s = 0;
+  for (const auto& t : f.terms) s += t.c * px.v[t.i] * py.v[t.j] * pz.v[t.k];
+  return s;
+}
+
+Vec3 gradient(const Trivariate& f, const Vec3& p) {
+  const Powers<double> px(p.x, f.degree), py(p.y, f.degree), pz(p.z, f.degree);
+  Vec3 g;
+  for (const auto& t : f.terms) {
+    if (t.i > 0) g.x += t.c * t.i * px.v[t.i - 1] * py.v[t.j] * pz.v[t.k];
+    if (t.j > 0) g.y += t.c * t.j * px.v[t.i] * py.v[t.j - 1] * pz.v[t.k];
+    if (t.k > 0) g.z += t.c * t.k * px.v[t.i] * py.v[t.j] * pz.v[t.k - 1];
+  }
+  return g;
+}
 
 // The polish of a hit calls this dozens of times per ray: the powers are tabled once per call.
 long double evaluate_extended(const Trivariate& f, long double x, long double y, long double z) {
