@@ -190,7 +190,17 @@ Vec3 polished_point(const Algebraic& s, const Ray& ray, const LocalHit& hit, lon
       const long double mid = 0.5L * (lo + hi);
       if (mid <= lo || mid >= hi) break;  // lo and hi are adjacent: no step can shrink the bracket
       long double m = lo - flo * (hi - lo) / (fhi - flo);
-      if (since_halved >= 2 || !(m > lo && m < hi)) m = mid;
+      if (since_halved >= 2 || std::isnan(m)) {
+        m = mid;
+      } else if (m <= lo || m >= hi) {
+        // The step lands on an end: that end is within rounding of the root. Probe the next
+        // number inward: a sign change there closes the bracket at once, where bisection would
+        // take ~log2(width / ulp) steps.
+        m = m <= lo ? std::nextafter(lo, hi) : std::nextafter(hi, lo);
+        // Where long double is no wider than double in fact (valgrind's x87 emulation), the
+        // probe may round back onto the end: bisect instead.
+        if (!(m > lo && m < hi)) m = mid;
+      }
       const long double fm = f(m);
       if (fm == 0) {
         lo = hi = m;
