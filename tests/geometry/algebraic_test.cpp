@@ -137,6 +137,11 @@ std::vector<double> tree_line(const Expression& e, int index, const Vec3& o, con
       if (a.size() == 1 && b.size() == 1) return {a[0] * b[0]};
       return mul(a, b);
     }
+    case ExprOp::kNeg: {
+      std::vector<double> a = tree_line(e, n.a, o, d);
+      for (double& c : a) c = -c;
+      return a;
+    }
     case ExprOp::kDiv: {
       std::vector<double> a = tree_line(e, n.a, o, d);
       const double v = tree_line(e, n.b, o, d)[0];
@@ -182,6 +187,30 @@ TEST(Algebraic, LineCodeCommonSubexpressions_BitEqualToTheTreeWalk) {
       const Polynomial a = restrict_code_to_line(f, o, d);
       const std::vector<double> want = tree_line(e, e.root, o, d);
       ASSERT_EQ(a.degree, static_cast<int>(want.size()) - 1);
+      for (int k = 0; k <= a.degree; ++k) ASSERT_EQ(a.c[k], want[k]) << "coefficient " << k;
+    }
+  }
+}
+
+// The register steps translated from the line code: negation, division, constants added and
+// multiplied on either side, products above the unrolled degrees (a 9th power times a square),
+// bit for bit the tree walk's coefficients.
+TEST(Algebraic, LineCodeRegisterSteps_BitEqualToTheTreeWalk) {
+  for (const char* text :
+       {"-(x - 2*y + 1)^3 / 3 * (z + 0.5)^2 - (y - z)^2 * (1 - x) + 2",
+        "(x + y + 1)^9 * (z - 1)^2 - 3 * (y*z - 1)^5", "((x + y)^2 + 1)^4 * (0.5 - (z - x)^2)^4"}) {
+    SCOPED_TRACE(text);
+    const Trivariate f = expand_polynomial(text);
+    ASSERT_TRUE(f.line_code_cheaper);
+    ASSERT_FALSE(f.line_steps.empty());
+    const Expression e = parse_expression(text);
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 100; ++i) {
+      const Vec3 o{1.5 * u(rng), 1.5 * u(rng), 1.5 * u(rng)}, d{u(rng), u(rng), u(rng)};
+      const Polynomial a = restrict_code_to_line(f, o, d);
+      const std::vector<double> want = tree_line(e, e.root, o, d);
+      ASSERT_EQ(a.degree, std::min(f.degree, static_cast<int>(want.size()) - 1));
       for (int k = 0; k <= a.degree; ++k) ASSERT_EQ(a.c[k], want[k]) << "coefficient " << k;
     }
   }
