@@ -449,6 +449,26 @@ void add_step(const Step& s, Reg r) {
   for (int k = m + 1; k <= s.db; ++k) d[k] = 0.0 + s.value * b[k];
   for (int k = m + 1; k <= s.da; ++k) d[k] = a[k];
 }
+template <int DA, int DB>
+void add_fixed_step(const Step& s, Reg r) {
+  const double *a = r[s.a], *b = r[s.b];
+  double* d = r[s.dst];
+  constexpr int m = DA < DB ? DA : DB;
+  for (int k = 0; k <= m; ++k) d[k] = a[k] + s.value * b[k];
+  for (int k = m + 1; k <= DB; ++k) d[k] = 0.0 + s.value * b[k];
+  for (int k = m + 1; k <= DA; ++k) d[k] = a[k];
+}
+template <int DA, int... DB>
+constexpr std::array<Step::Run, sizeof...(DB)> add_step_row(std::integer_sequence<int, DB...>) {
+  return {&add_fixed_step<DA, DB>...};
+}
+template <int... DA>
+constexpr std::array<std::array<Step::Run, kFixedDegree + 1>, sizeof...(DA)> add_step_table(
+    std::integer_sequence<int, DA...>) {
+  return {add_step_row<DA>(std::make_integer_sequence<int, kFixedDegree + 1>())...};
+}
+constexpr auto kAddStep = add_step_table(std::make_integer_sequence<int, kFixedDegree + 1>());
+
 void scale_step(const Step& s, Reg r) {
   const double* a = r[s.a];
   double* d = r[s.dst];
@@ -549,7 +569,8 @@ void translate_line_code(Trivariate& f) {
         Value a = stack.back();
         stack.pop_back();
         const int ra = reg_of(a), rb = reg_of(b);
-        Step s{&add_step,
+        Step s{a.degree <= kFixedDegree && b.degree <= kFixedDegree ? kAddStep[a.degree][b.degree]
+                                                                    : &add_step,
                static_cast<unsigned char>(next++),
                static_cast<unsigned char>(ra),
                static_cast<unsigned char>(rb),
