@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "geometry/spawn.h"
 #include "geometry/torus.h"
 #include "reference_roots.h"
 
@@ -136,6 +137,11 @@ std::vector<double> tree_line(const Expression& e, int index, const Vec3& o, con
       if (a.size() == 1 && b.size() == 1) return {a[0] * b[0]};
       return mul(a, b);
     }
+    case ExprOp::kNeg: {
+      std::vector<double> a = tree_line(e, n.a, o, d);
+      for (double& c : a) c = -c;
+      return a;
+    }
     case ExprOp::kDiv: {
       std::vector<double> a = tree_line(e, n.a, o, d);
       const double v = tree_line(e, n.b, o, d)[0];
@@ -181,6 +187,30 @@ TEST(Algebraic, LineCodeCommonSubexpressions_BitEqualToTheTreeWalk) {
       const Polynomial a = restrict_code_to_line(f, o, d);
       const std::vector<double> want = tree_line(e, e.root, o, d);
       ASSERT_EQ(a.degree, static_cast<int>(want.size()) - 1);
+      for (int k = 0; k <= a.degree; ++k) ASSERT_EQ(a.c[k], want[k]) << "coefficient " << k;
+    }
+  }
+}
+
+// The register steps translated from the line code: negation, division, constants added and
+// multiplied on either side, products above the unrolled degrees (a 9th power times a square),
+// bit for bit the tree walk's coefficients.
+TEST(Algebraic, LineCodeRegisterSteps_BitEqualToTheTreeWalk) {
+  for (const char* text :
+       {"-(x - 2*y + 1)^3 / 3 * (z + 0.5)^2 - (y - z)^2 * (1 - x) + 2",
+        "(x + y + 1)^9 * (z - 1)^2 - 3 * (y*z - 1)^5", "((x + y)^2 + 1)^4 * (0.5 - (z - x)^2)^4"}) {
+    SCOPED_TRACE(text);
+    const Trivariate f = expand_polynomial(text);
+    ASSERT_TRUE(f.line_code_cheaper);
+    ASSERT_FALSE(f.line_steps.empty());
+    const Expression e = parse_expression(text);
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 100; ++i) {
+      const Vec3 o{1.5 * u(rng), 1.5 * u(rng), 1.5 * u(rng)}, d{u(rng), u(rng), u(rng)};
+      const Polynomial a = restrict_code_to_line(f, o, d);
+      const std::vector<double> want = tree_line(e, e.root, o, d);
+      ASSERT_EQ(a.degree, std::min(f.degree, static_cast<int>(want.size()) - 1));
       for (int k = 0; k <= a.degree; ++k) ASSERT_EQ(a.c[k], want[k]) << "coefficient " << k;
     }
   }
@@ -436,6 +466,57 @@ TEST(Algebraic, Occluded_AgreesWithIntersectOnSegmentsAndShadowRays) {
   }
   EXPECT_GT(hits, 1000);
   EXPECT_GT(shadow_cases, 3000);
+}
+
+// occluded settles most rays by Bernstein sweeps of [tmin, tmax] without isolating roots: shadow
+// rays as the renderer spawns them (origin offset off the surface), segments starting inside a
+// solid that a box face cuts (no root at all, the sign decides), short and long segments.
+TEST(Algebraic, Occluded_BySweeps_AgreesWithIntersect) {
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  int cases = 0, hits = 0, inside = 0;
+  for (const bool open : {false, true}) {
+    for (const auto& [text, box] :
+         {std::pair{kHeart, Aabb{{-1.5, -1, -1.5}, {1.5, 1, 1.5}}},
+          std::pair{"x^2 + y^2 + z^2 - 2.5", Aabb{{-1, -1, -1}, {1, 1, 1}}},
+          std::pair{"(x^2 + y^2 + z^2 + 0.84)^2 - 4*(x^2 + y^2)", Aabb{{-2, -2, -1}, {2, 2, 1}}}}) {
+      const Algebraic s = make_algebraic(text, box, open);
+      for (int i = 0; i < 1500; ++i) {
+        const Vec3 o{2.5 * u(rng), 2.5 * u(rng), 2.5 * u(rng)};
+        const Vec3 target{u(rng), u(rng), u(rng)};
+        Ray r{o, target - o};
+        r.tmin = unit(rng) < 0.3 ? 0 : 0.8 * unit(rng);
+        r.tmax = unit(rng) < 0.3 ? kInfinity : r.tmin + 1.5 * unit(rng);
+        LocalHit h;
+        const bool hit = intersect(s, r, h);
+        inside += contains(s, r.at(r.tmin));
+        ASSERT_EQ(occluded(s, r), hit) << text << " open " << open << " ray " << i;
+        ++cases;
+        if (!hit) continue;
+        ++hits;
+        // tmin just before the hit, within the cap of a root's error estimate: only the full
+        // solve can judge that root.
+        Ray before = r;
+        before.tmin = h.t - 1e-4 * unit(rng) * std::abs(h.t);
+        LocalHit bh;
+        ASSERT_EQ(occluded(s, before), intersect(s, before, bh))
+            << text << " open " << open << " before " << i;
+        const SurfaceInfo si = surface(s, r, h);
+        const Vec3 light{4 * u(rng), 4 * u(rng), 4 * u(rng)};
+        for (const double tmax : {1.0, 0.3, 0.002}) {
+          const Vec3 from = offset_ray_origin(si, light - si.p);
+          const Ray sr{from, light - from, 0, tmax};
+          LocalHit sh;
+          ASSERT_EQ(occluded(s, sr), intersect(s, sr, sh))
+              << text << " open " << open << " shadow " << i << " tmax " << tmax;
+          ++cases;
+        }
+      }
+    }
+  }
+  EXPECT_GT(hits, 3000);
+  EXPECT_GT(inside, 300);
+  EXPECT_GT(cases, 15000);
 }
 
 TEST(Algebraic, MakeAlgebraic_RejectsBadInput) {

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "geometry/clipped_solid.h"
+#include "math/bernstein.h"
+#include "math/float_error.h"
 #include "math/polynomial_solver.h"
 
 namespace raycast {
@@ -76,6 +78,86 @@ bool certain_sign_change(const LineRoots& r, double lo, double hi) {
   return seen == 3;
 }
 
+// What a sweep of an interval by Bernstein forms of the line's polynomial settled.
+enum class Sweep {
+  kCrossing,   // a piece whose ends have certain opposite signs: a root inside, a crossing
+  kNegative,   // certainly no root, the polynomial negative throughout
+  kPositive,   // certainly no root, positive throughout
+  kUnsettled,  // neither within the halving caps
+};
+
+// The sweep's halving caps: depth of a piece, halvings in all.
+constexpr int kSweepMaxDepth = 8;
+constexpr int kSweepMaxSplits = 16;
+
+// Sweeps [a, b] (ray parameters, a < b) depth first from the left: a piece whose Bernstein
+// coefficients have no possible sign change has the one sign of all of them; the first piece with
+// one possible change and ends of certain opposite signs holds a root and ends the sweep;
+// anything else is halved, up to the caps.
+Sweep bernstein_sweep(const LineRoots& r, double a, double b, int max_depth) {
+  const int n = r.p.degree;
+  struct Piece {
+    int depth;
+    BernsteinForm f;
+  };
+  Piece stack[kSweepMaxDepth + 2];
+  int top = 0, splits = 0, sign = 0;
+  stack[0].depth = 0;
+  // Widened as the solver does: covers [a, b] despite the rounding of a - mid and b - a.
+  const double u = a - r.mid,
+               w = (b - a) * (1 + 4 * kMachineEpsilon) + 4 * kMachineEpsilon * std::abs(u);
+  stack[0].f = bernstein_form(r.p, u - 2 * kMachineEpsilon * std::abs(u), w);
+  while (top >= 0) {
+    Piece& piece = stack[top];
+    const BernsteinForm& f = piece.f;
+    const int changes = max_sign_changes(f);
+    const double f0 = f.b[0], fn = f.b[n];
+    if (changes == 0 && std::abs(f0) > f.e[0]) {
+      const int s = f0 < 0 ? -1 : 1;
+      if (sign != 0 && s != sign) return Sweep::kUnsettled;  // not reached: pieces share ends
+      sign = s;
+      --top;
+      continue;
+    }
+    if (changes == 1 && std::abs(f0) > f.e[0] && std::abs(fn) > f.e[n] && (f0 < 0) != (fn < 0))
+      return Sweep::kCrossing;
+    if (piece.depth >= max_depth || ++splits > kSweepMaxSplits) return Sweep::kUnsettled;
+    // The right half replaces the piece, the left one goes on top of it.
+    Piece& left = stack[top + 1];
+    bernstein_halves(f, left.f, piece.f);
+    left.depth = ++piece.depth;
+    ++top;
+  }
+  return sign < 0 ? Sweep::kNegative : Sweep::kPositive;
+}
+
+// occluded's answer without isolating the roots, where the sweeps settle it: 1 or 0, -1 when
+// only the full solve can tell. intersect skips a curved root within its error estimate (at most
+// kMaxRootError of the chord) of tmin, so a root there cannot be judged without it: the part of
+// [tmin, tmax] within that cap of tmin must be certainly root-free; a certain crossing past it is
+// a hit; with no root at all the solid's sign over the whole range decides (a face at either end
+// of the chord inside the range, or nothing).
+int occluded_by_sweeps(const Algebraic& s, const Ray& ray, const LineRoots& r) {
+  const double a = std::max(r.chord.t0, ray.tmin), b = std::min(r.chord.t1, ray.tmax);
+  if (!(a < b) || r.p.degree == 0 || !std::isfinite(r.mid)) return -1;
+  for (int i = 0; i <= r.p.degree; ++i)
+    if (!std::isfinite(r.p.c[i])) return -1;
+  const double split = ray.tmin + kMaxRootError * (r.chord.t1 - r.chord.t0);
+  Sweep near = Sweep::kUnsettled;
+  if (a < split) {
+    near = bernstein_sweep(r, a, std::min(b, split), 2);
+    if (near != Sweep::kNegative && near != Sweep::kPositive) return -1;
+  }
+  Sweep far = near;
+  if (split < b) {
+    far = bernstein_sweep(r, std::max(a, split), b, kSweepMaxDepth);
+    if (far == Sweep::kCrossing) return 1;
+    if (far == Sweep::kUnsettled || (a < split && far != near)) return -1;
+  }
+  if (s.open || far == Sweep::kPositive) return 0;
+  return r.chord.t0 >= ray.tmin || r.chord.t1 <= ray.tmax ? 1 : 0;
+}
+
 // Polishes a root of f(o + t d) in extended precision and returns the point. Where f's gradient
 // nearly vanishes on the surface (the heart's f behaves like a cube of the distance along its
 // equator z = 0) a double root is only good to about cbrt(eps), and the gradient at such a point
@@ -108,7 +190,17 @@ Vec3 polished_point(const Algebraic& s, const Ray& ray, const LocalHit& hit, lon
       const long double mid = 0.5L * (lo + hi);
       if (mid <= lo || mid >= hi) break;  // lo and hi are adjacent: no step can shrink the bracket
       long double m = lo - flo * (hi - lo) / (fhi - flo);
-      if (since_halved >= 2 || !(m > lo && m < hi)) m = mid;
+      if (since_halved >= 2 || std::isnan(m)) {
+        m = mid;
+      } else if (m <= lo || m >= hi) {
+        // The step lands on an end: that end is within rounding of the root. Probe the next
+        // number inward: a sign change there closes the bracket at once, where bisection would
+        // take ~log2(width / ulp) steps.
+        m = m <= lo ? std::nextafter(lo, hi) : std::nextafter(hi, lo);
+        // Where long double is no wider than double in fact (valgrind's x87 emulation), the
+        // probe may round back onto the end: bisect instead.
+        if (!(m > lo && m < hi)) m = mid;
+      }
       const long double fm = f(m);
       if (fm == 0) {
         lo = hi = m;
@@ -199,6 +291,7 @@ bool occluded(const Algebraic& s, const Ray& ray) {
   const double lo = std::max(r.chord.t0, ray.tmin + kMaxRootError * (r.chord.t1 - r.chord.t0));
   const double hi = std::min(r.chord.t1, ray.tmax);
   if (lo < hi && certain_sign_change(r, lo, hi)) return true;
+  if (const int known = occluded_by_sweeps(s, ray, r); known >= 0) return known == 1;
   solve_line(r);
   return first_hit(s, ray, r, nullptr);
 }

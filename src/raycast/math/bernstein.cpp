@@ -23,43 +23,39 @@ constexpr Binomials kBinomials;
 
 }  // namespace
 
+// The coefficient and its magnitude bound side by side: the two recurrences are the same
+// elementwise IEEE operations on both (so the same bits as two scalar loops), in one vector.
+using Pair = double __attribute__((vector_size(16)));
+
 BernsteinForm bernstein_form(const Polynomial& p, double a, double w) {
   BernsteinForm f;
   const int n = p.degree;
   f.degree = n;
-  double* q = f.b;  // the coefficients, then the Bernstein coefficients, in place
-  double* m = f.e;  // the same computation on |p|, |a|: every term's magnitude summed
-  for (int i = 0; i <= n; ++i) {
-    q[i] = p.c[i];
-    m[i] = std::abs(p.c[i]);
-  }
+  // .. [0] the coefficients, then the Bernstein coefficients, in place; [1] the same computation
+  // on |p|, |a|: every term's magnitude summed.
+  Pair v[kMaxPolynomialDegree + 1];
+  for (int i = 0; i <= n; ++i) v[i] = Pair{p.c[i], std::abs(p.c[i])};
   // Taylor shift to a (synthetic division): at most n updates of two roundings per term.
-  const double aa = std::abs(a);
-  for (int k = 0; k < n; ++k) {
-    for (int i = n - 1; i >= k; --i) {
-      q[i] += a * q[i + 1];
-      m[i] += aa * m[i + 1];
-    }
-  }
+  const Pair av{a, std::abs(a)};
+  for (int k = 0; k < n; ++k)
+    for (int i = n - 1; i >= k; --i) v[i] += av * v[i + 1];
   // Scale by w^k and divide by C(n, k): at most k - 1 + 2 roundings.
   double wk = 1;
   for (int k = 0; k <= n; ++k) {
     const double c = kBinomials.c[n][k];
-    q[k] = q[k] * wk / c;
-    m[k] = m[k] * wk / c;
+    v[k] = v[k] * wk / c;
     wk *= w;
   }
   // The binomial transform b_i = sum_k C(i, k) c_k (Pascal's triangle): at most n additions.
-  for (int j = 1; j <= n; ++j) {
-    for (int i = n; i >= j; --i) {
-      q[i] += q[i - 1];
-      m[i] += m[i - 1];
-    }
-  }
+  for (int j = 1; j <= n; ++j)
+    for (int i = n; i >= j; --i) v[i] += v[i - 1];
   // Every term passed at most 2n + (n + 1) + n < 4n + 2 roundings; gamma(4n + 4) also covers the
   // rounding of m itself. The absolute term covers underflow.
   const double g = gamma(4 * n + 4);
-  for (int i = 0; i <= n; ++i) m[i] = m[i] * g + (4 * n + 4) * 0x1p-1074;
+  for (int i = 0; i <= n; ++i) {
+    f.b[i] = v[i][0];
+    f.e[i] = v[i][1] * g + (4 * n + 4) * 0x1p-1074;
+  }
   return f;
 }
 

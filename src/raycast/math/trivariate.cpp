@@ -259,11 +259,7 @@ long expanded_cost(const Trivariate& f) {
   return cost;
 }
 
-double ipow(double x, int n) {
-  double r = 1;
-  for (int i = 0; i < n; ++i) r *= x;
-  return r;
-}
+void translate_line_code(Trivariate& f);
 
 }  // namespace
 
@@ -284,36 +280,42 @@ Trivariate expand_polynomial(std::string_view text) {
   f.line_code_cheaper = lc.max_degree <= kMaxPolynomialDegree && lc.max_stack <= kMaxLineStack &&
                         lc.cost < expanded_cost(f);
   if (!f.line_code_cheaper) f.line_code.clear();
+  translate_line_code(f);
   return f;
-}
-
-double evaluate(const Trivariate& f, const Vec3& p) {
-  double s = 0;
-  for (const auto& t : f.terms) s += t.c * ipow(p.x, t.i) * ipow(p.y, t.j) * ipow(p.z, t.k);
-  return s;
-}
-
-Vec3 gradient(const Trivariate& f, const Vec3& p) {
-  Vec3 g;
-  for (const auto& t : f.terms) {
-    if (t.i > 0) g.x += t.c * t.i * ipow(p.x, t.i - 1) * ipow(p.y, t.j) * ipow(p.z, t.k);
-    if (t.j > 0) g.y += t.c * t.j * ipow(p.x, t.i) * ipow(p.y, t.j - 1) * ipow(p.z, t.k);
-    if (t.k > 0) g.z += t.c * t.k * ipow(p.x, t.i) * ipow(p.y, t.j) * ipow(p.z, t.k - 1);
-  }
-  return g;
 }
 
 namespace {
 // x^0 .. x^n, each the previous times x: the same products, in the same order, as multiplying
 // x into 1 k times, so the sums below round exactly as with a power computed per term.
-struct PowersLd {
-  long double v[kStride];
-  PowersLd(long double x, int n) {
+template <class T>
+struct Powers {
+  T v[kStride];
+  Powers(T x, int n) {
     v[0] = 1;
     for (int i = 1; i <= n; ++i) v[i] = v[i - 1] * x;
   }
 };
+using PowersLd = Powers<long double>;
 }  // namespace
+
+// Surface normals call these once per hit: the powers are tabled once per call.
+double evaluate(const Trivariate& f, const Vec3& p) {
+  const Powers<double> px(p.x, f.degree), py(p.y, f.degree), pz(p.z, f.degree);
+  double s = 0;
+  for (const auto& t : f.terms) s += t.c * px.v[t.i] * py.v[t.j] * pz.v[t.k];
+  return s;
+}
+
+Vec3 gradient(const Trivariate& f, const Vec3& p) {
+  const Powers<double> px(p.x, f.degree), py(p.y, f.degree), pz(p.z, f.degree);
+  Vec3 g;
+  for (const auto& t : f.terms) {
+    if (t.i > 0) g.x += t.c * t.i * px.v[t.i - 1] * py.v[t.j] * pz.v[t.k];
+    if (t.j > 0) g.y += t.c * t.j * px.v[t.i] * py.v[t.j - 1] * pz.v[t.k];
+    if (t.k > 0) g.z += t.c * t.k * px.v[t.i] * py.v[t.j] * pz.v[t.k - 1];
+  }
+  return g;
+}
 
 // The polish of a hit calls this dozens of times per ray: the powers are tabled once per call.
 long double evaluate_extended(const Trivariate& f, long double x, long double y, long double z) {
@@ -431,7 +433,219 @@ void multiply_line(LinePoly& a, const double* b, int db) {
 }
 }  // namespace
 
+namespace {
+// The register steps (Trivariate::LineStep): each the arithmetic of the stack interpreter below
+// for its operation, written into a fresh register.
+using Reg = double (*)[kStride];
+using Step = Trivariate::LineStep;
+
+// a + value * b (value +1 or -1), coefficients above the shorter operand's degree as the stack
+// code forms them (0 + value * b).
+void add_step(const Step& s, Reg r) {
+  const double *a = r[s.a], *b = r[s.b];
+  double* d = r[s.dst];
+  const int m = std::min(s.da, s.db);
+  for (int k = 0; k <= m; ++k) d[k] = a[k] + s.value * b[k];
+  for (int k = m + 1; k <= s.db; ++k) d[k] = 0.0 + s.value * b[k];
+  for (int k = m + 1; k <= s.da; ++k) d[k] = a[k];
+}
+template <int DA, int DB>
+void add_fixed_step(const Step& s, Reg r) {
+  const double *a = r[s.a], *b = r[s.b];
+  double* d = r[s.dst];
+  constexpr int m = DA < DB ? DA : DB;
+  for (int k = 0; k <= m; ++k) d[k] = a[k] + s.value * b[k];
+  for (int k = m + 1; k <= DB; ++k) d[k] = 0.0 + s.value * b[k];
+  for (int k = m + 1; k <= DA; ++k) d[k] = a[k];
+}
+template <int DA, int... DB>
+constexpr std::array<Step::Run, sizeof...(DB)> add_step_row(std::integer_sequence<int, DB...>) {
+  return {&add_fixed_step<DA, DB>...};
+}
+template <int... DA>
+constexpr std::array<std::array<Step::Run, kFixedDegree + 1>, sizeof...(DA)> add_step_table(
+    std::integer_sequence<int, DA...>) {
+  return {add_step_row<DA>(std::make_integer_sequence<int, kFixedDegree + 1>())...};
+}
+constexpr auto kAddStep = add_step_table(std::make_integer_sequence<int, kFixedDegree + 1>());
+
+void scale_step(const Step& s, Reg r) {
+  const double* a = r[s.a];
+  double* d = r[s.dst];
+  for (int k = 0; k <= s.da; ++k) d[k] = a[k] * s.value;
+}
+void divide_step(const Step& s, Reg r) {
+  const double* a = r[s.a];
+  double* d = r[s.dst];
+  for (int k = 0; k <= s.da; ++k) d[k] = a[k] / s.value;
+}
+void negate_step(const Step& s, Reg r) {
+  const double* a = r[s.a];
+  double* d = r[s.dst];
+  for (int k = 0; k <= s.da; ++k) d[k] = -a[k];
+}
+void multiply_step(const Step& s, Reg r) { multiply_into(r[s.a], s.da, r[s.b], s.db, r[s.dst]); }
+template <int DA, int DB>
+void multiply_fixed_step(const Step& s, Reg r) {
+  const double *a = r[s.a], *b = r[s.b];
+  double* d = r[s.dst];
+  for (int k = 0; k <= DA + DB; ++k) d[k] = 0;
+  for (int i = 0; i <= DA; ++i)
+    for (int j = 0; j <= DB; ++j) d[i + j] += a[i] * b[j];
+}
+template <int DA, int... DB>
+constexpr std::array<Step::Run, sizeof...(DB)> multiply_step_row(
+    std::integer_sequence<int, DB...>) {
+  return {&multiply_fixed_step<DA, DB>...};
+}
+template <int... DA>
+constexpr std::array<std::array<Step::Run, kFixedDegree + 1>, sizeof...(DA)> multiply_step_table(
+    std::integer_sequence<int, DA...>) {
+  return {multiply_step_row<DA>(std::make_integer_sequence<int, kFixedDegree + 1>())...};
+}
+constexpr auto kMultiplyStep =
+    multiply_step_table(std::make_integer_sequence<int, kFixedDegree + 1>());
+
+// Registers restrict_code_to_line keeps on its stack (longer code runs the stack interpreter).
+constexpr int kMaxLineRegisters = 64;
+
+void translate_line_code(Trivariate& f) {
+  using Op = Trivariate::LineOp;
+  f.line_steps.clear();
+  f.line_constants.clear();
+  if (f.line_code.empty()) return;
+  struct Value {
+    int reg = -1, degree = 0;
+    bool constant = false;
+    double c = 0;
+  };
+  std::vector<Value> stack, saved(kMaxLineSlots);
+  std::vector<Step> steps;
+  std::vector<std::pair<int, double>> constants;
+  int next = 3;
+  auto reg_of = [&](Value& v) {  // a constant used as a polynomial gets its register
+    if (v.reg < 0) {
+      v.reg = next++;
+      constants.push_back({v.reg, v.c});
+    }
+    return v.reg;
+  };
+  auto multiply = [&](Value& a, Value& b) {
+    Step s;
+    if (b.constant || a.constant) {
+      Value& p = b.constant ? a : b;
+      s = {&scale_step,
+           0,
+           static_cast<unsigned char>(reg_of(p)),
+           0,
+           static_cast<unsigned char>(p.degree),
+           0,
+           b.constant ? b.c : a.c};
+    } else {
+      s.run = a.degree <= kFixedDegree && b.degree <= kFixedDegree
+                  ? kMultiplyStep[a.degree][b.degree]
+                  : &multiply_step;
+      s.a = static_cast<unsigned char>(a.reg);
+      s.b = static_cast<unsigned char>(b.reg);
+      s.da = static_cast<unsigned char>(a.degree);
+      s.db = static_cast<unsigned char>(b.degree);
+    }
+    s.dst = static_cast<unsigned char>(next++);
+    steps.push_back(s);
+    return Value{s.dst, a.degree + b.degree};
+  };
+  for (const Op& in : f.line_code) {
+    switch (in.kind) {
+      case Op::kConst:
+        stack.push_back({-1, 0, true, in.value});
+        break;
+      case Op::kVar:
+        stack.push_back({in.n, 1});
+        break;
+      case Op::kAdd:
+      case Op::kSub: {
+        Value b = stack.back();
+        stack.pop_back();
+        Value a = stack.back();
+        stack.pop_back();
+        const int ra = reg_of(a), rb = reg_of(b);
+        Step s{a.degree <= kFixedDegree && b.degree <= kFixedDegree ? kAddStep[a.degree][b.degree]
+                                                                    : &add_step,
+               static_cast<unsigned char>(next++),
+               static_cast<unsigned char>(ra),
+               static_cast<unsigned char>(rb),
+               static_cast<unsigned char>(a.degree),
+               static_cast<unsigned char>(b.degree),
+               in.kind == Op::kAdd ? 1.0 : -1.0};
+        steps.push_back(s);
+        stack.push_back({s.dst, std::max(a.degree, b.degree)});
+        break;
+      }
+      case Op::kMul: {
+        Value b = stack.back();
+        stack.pop_back();
+        Value a = stack.back();
+        stack.pop_back();
+        stack.push_back(multiply(a, b));
+        break;
+      }
+      case Op::kNeg:
+      case Op::kDiv: {
+        Value a = stack.back();
+        stack.pop_back();
+        Step s{in.kind == Op::kNeg ? &negate_step : &divide_step,
+               static_cast<unsigned char>(0),
+               static_cast<unsigned char>(reg_of(a)),
+               0,
+               static_cast<unsigned char>(a.degree),
+               0,
+               in.value};
+        s.dst = static_cast<unsigned char>(next++);
+        steps.push_back(s);
+        stack.push_back({s.dst, a.degree});
+        break;
+      }
+      case Op::kPow: {
+        Value base = stack.back();
+        stack.pop_back();
+        if (in.n == 0 || base.constant) return;  // folded by the compiler: not translated
+        Value acc = base;
+        for (int m = 1; m < in.n; ++m) acc = multiply(acc, base);
+        stack.push_back(acc);
+        break;
+      }
+      case Op::kStore:
+        saved[in.n] = stack.back();
+        break;
+      case Op::kLoad:
+        stack.push_back(saved[in.n]);
+        break;
+    }
+    if (next > kMaxLineRegisters) return;
+  }
+  if (stack.size() != 1 || stack.back().constant) return;
+  f.line_steps = std::move(steps);
+  f.line_constants = std::move(constants);
+  f.line_result = stack.back().reg;
+  f.line_result_degree = stack.back().degree;
+}
+}  // namespace
+
 Polynomial restrict_code_to_line(const Trivariate& f, const Vec3& o, const Vec3& d) {
+  if (!f.line_steps.empty()) {
+    double reg[kMaxLineRegisters][kStride];
+    for (int i = 0; i < 3; ++i) {
+      reg[i][0] = o[i];
+      reg[i][1] = d[i];
+    }
+    for (const auto& [r, v] : f.line_constants) reg[r][0] = v;
+    for (const Step& s : f.line_steps) s.run(s, reg);
+    // Coefficients above f's degree belong to terms that cancel (rounding residue): dropped.
+    Polynomial p;
+    p.degree = std::min(f.line_result_degree, f.degree);
+    for (int k = 0; k <= p.degree; ++k) p.c[k] = reg[f.line_result][k];
+    return p;
+  }
   using Op = Trivariate::LineOp;
   LinePoly s[kMaxLineStack], saved[kMaxLineSlots];
   int top = -1;

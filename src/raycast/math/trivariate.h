@@ -2,6 +2,7 @@
 // Polynomials in x, y, z: expansion from formula text, evaluation, gradient and restriction to a
 // line.
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "math/expression.h"
@@ -43,6 +44,22 @@ struct Trivariate {
   };
   std::vector<LineOp> line_code;
   bool line_code_cheaper = false;
+
+  /// line_code translated once into steps over registers, each value computed into its own
+  /// register (no stack copies; a stored value is its register, loads cost nothing), with the
+  /// operands' degrees fixed per step and products of small degrees unrolled: the same
+  /// operations in the same order, so the same coefficients bit for bit. Registers 0..2 hold the
+  /// lines of x, y, z; `line_constants` the (register, value) pairs of the constants. Empty when
+  /// the code needs more registers than restrict_code_to_line keeps (it then runs line_code).
+  struct LineStep {
+    using Run = void (*)(const LineStep&, double (*reg)[kMaxPolynomialDegree + 1]);
+    Run run = nullptr;
+    unsigned char dst = 0, a = 0, b = 0, da = 0, db = 0;
+    double value = 0;  // the constant of a scaling, division or (+1 / -1) sum
+  };
+  std::vector<LineStep> line_steps;
+  std::vector<std::pair<int, double>> line_constants;
+  int line_result = 0, line_result_degree = 0;
 };
 
 /// Expands formula text into a polynomial: + - *, / by constants, ^ with non-negative whole
