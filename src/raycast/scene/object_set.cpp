@@ -159,6 +159,17 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   return test.found;
 }
 
+std::size_t ObjectSet::float_candidates(const Ray& ray, const Vec3& inv_d,
+                                        std::uint32_t* out) const {
+  std::size_t n = 0;
+  each_float_box(float_ray(ray, inv_d), octant_groups(inv_d), float_up(ray.tmax),
+                 [&](std::size_t k, float) {
+                   out[n++] = bounded_[k];
+                   return false;
+                 });
+  return n;
+}
+
 bool ObjectSet::occluded(std::span<const Object> objects, const Ray& ray) const {
   if (sole_mesh_)  // flat_any's walk of one box, without the visitor
     return box_meets(0, ray, reciprocal(ray.d), ray.tmax) &&

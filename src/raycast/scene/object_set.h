@@ -87,9 +87,15 @@ class ObjectSet {
         if (box_meets(k, ray, inv_d, ray.tmax) && visit(bounded_[k])) return true;
       return false;
     }
-    return each_float_box(float_ray(ray, inv_d), octant_groups(inv_d), float_up(ray.tmax),
-                          [&](std::size_t k, float) { return visit(bounded_[k]); });
+    std::uint32_t candidates[kFlatLimit];
+    const std::size_t n = float_candidates(ray, inv_d, candidates);
+    for (std::size_t j = 0; j < n; ++j)
+      if (visit(candidates[j])) return true;
+    return false;
   }
+  /// The objects whose float boxes may meet the ray's segment, in index order (out of line: the
+  /// callers' visitors inline the walk around it); returns their count.
+  std::size_t float_candidates(const Ray& ray, const Vec3& inv_d, std::uint32_t* out) const;
   /// Whether boxes_[k] (double) meets the ray's segment [tmin, tmax].
   bool box_meets(std::size_t k, const Ray& ray, const Vec3& inv_d, double tmax) const {
     double t_enter;
