@@ -26,7 +26,8 @@ void ObjectSet::build(std::span<const Object> objects) {
     }
   }
   flat_ = bounded_.size() <= kFlatLimit;
-  sole_mesh_ = bounded_.size() == 1 && unbounded_.empty() && !objects[bounded_[0]].xf &&
+  sole_ = flat_ && bounded_.size() == 1 && unbounded_.empty();
+  sole_mesh_ = sole_ && !objects[bounded_[0]].xf &&
                std::holds_alternative<MeshShape>(objects[bounded_[0]].shape);
   if (flat_) {
     bvh_ = Bvh{};
@@ -121,6 +122,17 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
     index = static_cast<std::int32_t>(bounded_[0]);
     return true;
   }
+  if (sole_) {
+    // The walk below for one box (an instance's prototype of one object): its test, without the
+    // walk's set-up; the hit is taken on the walk's terms (t not beyond tmax).
+    LocalHit h;
+    if (!box_meets(0, ray, reciprocal(ray.d), ray.tmax) ||
+        !raycast::intersect(objects[bounded_[0]], ray, h) || !(h.t <= ray.tmax))
+      return false;
+    hit = h;
+    index = static_cast<std::int32_t>(bounded_[0]);
+    return true;
+  }
   Ray r = ray;
   NearestTest test{objects, r, hit, index};
   for (std::uint32_t i : unbounded_) test(i);
@@ -171,7 +183,7 @@ std::size_t ObjectSet::float_candidates(const Ray& ray, const Vec3& inv_d,
 }
 
 bool ObjectSet::occluded(std::span<const Object> objects, const Ray& ray) const {
-  if (sole_mesh_)  // flat_any's walk of one box, without the visitor
+  if (sole_)  // flat_any's walk of one box, without the visitor
     return box_meets(0, ray, reciprocal(ray.d), ray.tmax) &&
            raycast::occluded(objects[bounded_[0]], ray);
   return any(ray, [&](std::uint32_t i) { return raycast::occluded(objects[i], ray); });

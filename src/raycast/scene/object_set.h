@@ -141,6 +141,9 @@ class ObjectSet {
   // box and go straight to the mesh, without the general walk's set-up
   // (docs/performance-mesh.md, session 6).
   bool sole_mesh_ = false;
+  // The set is one bounded object of any kind and nothing else (boxes_ holds its box): the same
+  // short cut for both queries.
+  bool sole_ = false;
   // flat_, from kFloatBoxesFrom: bounded_[4 g + l]'s box in lane l of group g, stored once per
   // ray octant o (the signs of d's x, y, z in bits 0, 1, 2) at groups_[o * group_count_ + g],
   // its rows the near planes then the far ones for that octant (lo or hi by the sign).
