@@ -114,22 +114,18 @@ struct NearestTest {
 
 bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
                           std::int32_t& index) const {
-  if (sole_mesh_) {
-    // The object's box first: rays that miss it cost less here than in the mesh.
-    if (!box_meets(0, ray, reciprocal(ray.d), ray.tmax) ||
-        !raycast::intersect(objects[bounded_[0]], ray, hit))
-      return false;
-    index = static_cast<std::int32_t>(bounded_[0]);
-    return true;
-  }
   if (sole_) {
-    // The walk below for one box (an instance's prototype of one object): its test, without the
-    // walk's set-up; the hit is taken on the walk's terms (t not beyond tmax).
-    LocalHit h;
-    if (!box_meets(0, ray, reciprocal(ray.d), ray.tmax) ||
-        !raycast::intersect(objects[bounded_[0]], ray, h) || !(h.t <= ray.tmax))
-      return false;
-    hit = h;
+    // The object's box first: rays that miss it cost less here than in the object (a mesh, or
+    // an instance's prototype of one object), and the walk below is not set up.
+    if (!box_meets(0, ray, reciprocal(ray.d), ray.tmax)) return false;
+    const Object& object = objects[bounded_[0]];
+    if (sole_mesh_) {
+      if (!raycast::intersect(object, ray, hit)) return false;
+    } else {  // the hit taken on the walk's terms (t not beyond tmax)
+      LocalHit h;
+      if (!raycast::intersect(object, ray, h) || !(h.t <= ray.tmax)) return false;
+      hit = h;
+    }
     index = static_cast<std::int32_t>(bounded_[0]);
     return true;
   }
