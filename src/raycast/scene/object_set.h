@@ -71,9 +71,10 @@ class ObjectSet {
   /// benchmark scenes (docs/performance-render.md, rounds 4 and 6).
   static constexpr std::size_t kFlatLimit = 16;
   /// Flat sets of at least this many bounded objects test their boxes four at a time in float
-  /// (accel/box4.h); fewer test each double box (the float test's per-ray set-up costs about
-  /// three double box tests; docs/performance-render.md, round 6).
-  static constexpr std::size_t kFloatBoxesFrom = 5;
+  /// (accel/box4.h); fewer test each double box. Measured with the octant copies
+  /// (docs/performance-render.md, session 8: top8): float from 4 objects saves 2.3 % on
+  /// textured (4), from 2 costs 8.6 % on whitted (2).
+  static constexpr std::size_t kFloatBoxesFrom = 4;
 
  private:
   /// visit(index) for each bounded object whose box may meet the segment, in index order; stops
