@@ -18,19 +18,21 @@
 namespace raycast {
 namespace {
 
-std::vector<Object> random_objects(std::size_t bounded, testing::Rng& rng) {
+// Object i is a box, a sphere or a translated sphere by (i + kind) % 3.
+std::vector<Object> random_objects(std::size_t bounded, testing::Rng& rng, bool with_plane,
+                                   std::size_t kind) {
   std::vector<Object> objects;
   Object plane;  // unbounded: tried on every ray
   plane.shape = make_plane({0, 1, 0}, {0, -5, 0});
-  objects.push_back(std::move(plane));
+  if (with_plane) objects.push_back(std::move(plane));
   for (std::size_t i = 0; i < bounded; ++i) {
     const Vec3 c = rng.in_box(4);
     Object o;
-    if (i % 3 == 0) {
+    if ((i + kind) % 3 == 0) {
       o.shape = make_box(c - Vec3{0.5, 0.3, 0.4}, c + Vec3{0.5, 0.3, 0.4});
     } else {
       o.shape = make_sphere({0, 0, 0}, rng.uniform(0.2, 1.2));
-      if (i % 3 == 2)
+      if ((i + kind) % 3 == 2)
         o.xf = Transform::translate(c);  // also through a transform
       else
         o.shape = make_sphere(c, rng.uniform(0.2, 1.2));
@@ -40,9 +42,10 @@ std::vector<Object> random_objects(std::size_t bounded, testing::Rng& rng) {
   return objects;
 }
 
-void check_against_brute_force(std::size_t bounded, bool flat) {
-  testing::Rng rng(1234 + bounded);
-  const std::vector<Object> objects = random_objects(bounded, rng);
+void check_against_brute_force(std::size_t bounded, bool flat, bool with_plane = true,
+                               std::size_t kind = 0) {
+  testing::Rng rng(1234 + bounded + kind);
+  const std::vector<Object> objects = random_objects(bounded, rng, with_plane, kind);
   ObjectSet set;
   set.build(objects);
   ASSERT_EQ(bounded <= ObjectSet::kFlatLimit, flat) << "the case must exercise its path";
@@ -50,8 +53,11 @@ void check_against_brute_force(std::size_t bounded, bool flat) {
   for (int n = 0; n < 2000; ++n) {
     Ray ray = testing::random_ray(rng, 8, 5);
     if (n % 2 == 1) ray.tmax = rng.uniform(0.05, 1.2);  // a segment (|d| is in [0.1, 10])
-    if (n % 10 == 3) ray.d[n % 3] = 0;                  // parallel to a pair of slabs
-    if (n % 10 == 7) {                                  // along two axes, origin on a box face
+    if (!with_plane && n % 4 == 0)  // few objects: half the full rays aimed at the first one
+      ray.d = raycast::bounds(objects[0]).centre() - ray.o;
+    if (n % 10 == 3) ray.d[n % 3] = 0;           // parallel to a pair of slabs
+    if (n % 10 == 5) ray.d[(n + 2) % 3] = -0.0;  // the same, in the other octant
+    if (n % 10 == 7) {                           // along two axes, origin on a box face
       ray.d[n % 3] = ray.d[(n + 1) % 3] = 0;
       if (objects.size() > 1) ray.o[n % 3] = raycast::bounds(objects[1]).lo[n % 3];
     }
@@ -97,6 +103,12 @@ void check_against_brute_force(std::size_t bounded, bool flat) {
 TEST(ObjectSet, FlatWalk_MatchesBruteForce) {
   for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(3)})
     check_against_brute_force(n, true);
+}
+
+// A set of one bounded object and nothing else takes the sole-object short cut (box, then the
+// object): each kind alone (box, sphere, translated sphere).
+TEST(ObjectSet, SoleObject_MatchesBruteForce) {
+  for (std::size_t kind = 0; kind < 3; ++kind) check_against_brute_force(1, true, false, kind);
 }
 
 TEST(ObjectSet, FloatBoxWalk_MatchesBruteForce) {

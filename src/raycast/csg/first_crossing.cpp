@@ -64,10 +64,34 @@ Change resolve(const CsgFormula& f, std::int32_t code, std::uint64_t before, std
   return a;
 }
 
+// Reports end `e` as the crossing (flipped by `flip`) when it is a surface.
+bool report(const LeafEnd& e, bool flip, LocalHit& hit) {
+  if (e.part == kNoSurface) return false;
+  hit = e.hit ? *e.hit : LocalHit{.t = e.t, .part = e.part};
+  hit.leaf = static_cast<std::int32_t>(e.leaf);
+  hit.flip = flip;
+  return true;
+}
+
+// The walk below for one interval of one leaf, in then out, t0 < t1 (no sort, no tie, no NaN):
+// the same steps unrolled.
+bool one_interval(const CsgFormula& f, const LeafEnd& in, const LeafEnd& out, double tmin,
+                  double tmax, LocalHit& hit) {
+  if (in.t > tmax) return false;
+  const bool inside = f.inside(std::uint64_t{1} << in.leaf);
+  const bool flip = f.leaf_flip(in.leaf);
+  if (inside && in.t >= tmin && report(in, flip, hit)) return true;
+  if (out.t > tmax || f.inside(0) == inside || out.t < tmin) return false;
+  return report(out, flip, hit);
+}
+
 }  // namespace
 
 bool first_crossing(const CsgFormula& f, std::span<LeafEnd> ends, double tmin, double tmax,
                     LocalHit& hit) {
+  if (ends.size() == 2 && ends[0].t < ends[1].t && ends[0].leaf == ends[1].leaf && !ends[0].exit &&
+      ends[1].exit)
+    return one_interval(f, ends[0], ends[1], tmin, tmax, hit);
   sort_by_t(ends);
   std::uint64_t mask = 0;
   bool inside = false;
@@ -103,12 +127,7 @@ bool first_crossing(const CsgFormula& f, std::span<LeafEnd> ends, double tmin, d
           crossing = c.crossing;
           flip = c.flip;
         }
-        if (crossing && crossing->part != kNoSurface) {
-          hit = crossing->hit ? *crossing->hit : LocalHit{.t = crossing->t, .part = crossing->part};
-          hit.leaf = static_cast<std::int32_t>(crossing->leaf);
-          hit.flip = flip;
-          return true;
-        }
+        if (crossing && report(*crossing, flip, hit)) return true;
       }
     }
     i = j;

@@ -10,6 +10,7 @@ void ObjectSet::build(std::span<const Object> objects) {
   bounded_.clear();
   unbounded_.clear();
   groups_.clear();
+  group_count_ = 0;
   bounds_ = finite_bounds_ = Aabb{};
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const Aabb b = raycast::bounds(objects[i]);
@@ -25,7 +26,8 @@ void ObjectSet::build(std::span<const Object> objects) {
     }
   }
   flat_ = bounded_.size() <= kFlatLimit;
-  sole_mesh_ = bounded_.size() == 1 && unbounded_.empty() && !objects[bounded_[0]].xf &&
+  sole_ = flat_ && bounded_.size() == 1 && unbounded_.empty();
+  sole_mesh_ = sole_ && !objects[bounded_[0]].xf &&
                std::holds_alternative<MeshShape>(objects[bounded_[0]].shape);
   if (flat_) {
     bvh_ = Bvh{};
@@ -34,9 +36,10 @@ void ObjectSet::build(std::span<const Object> objects) {
       return;
     }
     boxes_.clear();
-    groups_.resize((boxes.size() + 3) / 4);
-    for (std::size_t k = 0; k < groups_.size() * 4; ++k) {
-      Box4& g = groups_[k / 4];
+    group_count_ = (boxes.size() + 3) / 4;
+    std::vector<Box4> plain(group_count_);
+    for (std::size_t k = 0; k < group_count_ * 4; ++k) {
+      Box4& g = plain[k / 4];
       const int lane = static_cast<int>(k % 4);
       if (k < boxes.size())
         set_box4_lane(g, lane, boxes[k]);
@@ -47,11 +50,24 @@ void ObjectSet::build(std::span<const Object> objects) {
     last_lanes_ = last == 0 ? 0xFu : (1u << last) - 1;
     double magnitude[3] = {0, 0, 0};
     for (int a = 0; a < 3; ++a)
-      for (const Box4& g : groups_)
+      for (const Box4& g : plain)
         for (int row : {a, 3 + a})
           for (float p : g.plane[row])
             if (std::isfinite(p)) magnitude[a] = std::max(magnitude[a], double(std::abs(p)));
     scale_ = make_box4_scale(magnitude);
+    // One copy per octant, rows ordered as make_box4_ray would pick them for its signs.
+    groups_.resize(8 * group_count_);
+    for (std::size_t octant = 0; octant < 8; ++octant)
+      for (std::size_t g = 0; g < group_count_; ++g) {
+        Box4& copy = groups_[octant * group_count_ + g];
+        for (int a = 0; a < 3; ++a) {
+          const bool negative = (octant >> a) & 1;
+          for (int l = 0; l < 4; ++l) {
+            copy.plane[a][l] = plain[g].plane[negative ? 3 + a : a][l];
+            copy.plane[3 + a][l] = plain[g].plane[negative ? a : 3 + a][l];
+          }
+        }
+      }
     return;
   }
   // One object per leaf: its own box is the last test before its shape's (a leaf of four tested
@@ -98,11 +114,18 @@ struct NearestTest {
 
 bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
                           std::int32_t& index) const {
-  if (sole_mesh_) {
-    // The object's box first: rays that miss it cost less here than in the mesh.
-    if (!box_meets(0, ray, reciprocal(ray.d), ray.tmax) ||
-        !raycast::intersect(objects[bounded_[0]], ray, hit))
-      return false;
+  if (sole_) {
+    // The object's box first: rays that miss it cost less here than in the object (a mesh, or
+    // an instance's prototype of one object), and the walk below is not set up.
+    if (!box_meets(0, ray, reciprocal(ray.d), ray.tmax)) return false;
+    const Object& object = objects[bounded_[0]];
+    if (sole_mesh_) {
+      if (!raycast::intersect(object, ray, hit)) return false;
+    } else {  // the hit taken on the walk's terms (t not beyond tmax)
+      LocalHit h;
+      if (!raycast::intersect(object, ray, h) || !(h.t <= ray.tmax)) return false;
+      hit = h;
+    }
     index = static_cast<std::int32_t>(bounded_[0]);
     return true;
   }
@@ -122,7 +145,7 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   }
   // The boxes that may meet [tmin, tmax], then their objects nearest entry first (ties in index
   // order), each while its entry is not beyond the tmax lowered by the hits found so far.
-  const Box4Ray br = make_box4_ray(ray, inv_d, scale_);
+  const Box4Ray br = float_ray(ray, inv_d);
   float tmax_up = float_up(r.tmax);
   struct Candidate {
     float t;
@@ -130,7 +153,7 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   };
   Candidate c[kFlatLimit];
   std::size_t n = 0;
-  each_float_box(br, tmax_up, [&](std::size_t k, float t_enter) {
+  each_float_box(br, octant_groups(inv_d), tmax_up, [&](std::size_t k, float t_enter) {
     // Insertion by entry, after equal entries: the order is a function of the ray.
     std::size_t at = n++;
     for (; at > 0 && c[at - 1].t > t_enter; --at) c[at] = c[at - 1];
@@ -144,8 +167,19 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   return test.found;
 }
 
+std::size_t ObjectSet::float_candidates(const Ray& ray, const Vec3& inv_d,
+                                        std::uint32_t* out) const {
+  std::size_t n = 0;
+  each_float_box(float_ray(ray, inv_d), octant_groups(inv_d), float_up(ray.tmax),
+                 [&](std::size_t k, float) {
+                   out[n++] = bounded_[k];
+                   return false;
+                 });
+  return n;
+}
+
 bool ObjectSet::occluded(std::span<const Object> objects, const Ray& ray) const {
-  if (sole_mesh_)  // flat_any's walk of one box, without the visitor
+  if (sole_)  // flat_any's walk of one box, without the visitor
     return box_meets(0, ray, reciprocal(ray.d), ray.tmax) &&
            raycast::occluded(objects[bounded_[0]], ray);
   return any(ray, [&](std::uint32_t i) { return raycast::occluded(objects[i], ray); });

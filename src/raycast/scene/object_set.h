@@ -6,6 +6,7 @@
 // boxes in float, four per SIMD test (accel/box4.h, conservative: the objects' own tests decide),
 // without the tree's stack and node boxes; a set of one bounded object tests its double box.
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -70,9 +71,10 @@ class ObjectSet {
   /// benchmark scenes (docs/performance-render.md, rounds 4 and 6).
   static constexpr std::size_t kFlatLimit = 16;
   /// Flat sets of at least this many bounded objects test their boxes four at a time in float
-  /// (accel/box4.h); fewer test each double box (the float test's per-ray set-up costs about
-  /// three double box tests; docs/performance-render.md, round 6).
-  static constexpr std::size_t kFloatBoxesFrom = 5;
+  /// (accel/box4.h); fewer test each double box. Measured with the octant copies
+  /// (docs/performance-render.md, session 8: top8): float from 4 objects saves 2.3 % on
+  /// textured (4), from 2 costs 8.6 % on whitted (2).
+  static constexpr std::size_t kFloatBoxesFrom = 4;
 
  private:
   /// visit(index) for each bounded object whose box may meet the segment, in index order; stops
@@ -86,22 +88,47 @@ class ObjectSet {
         if (box_meets(k, ray, inv_d, ray.tmax) && visit(bounded_[k])) return true;
       return false;
     }
-    return each_float_box(make_box4_ray(ray, inv_d, scale_), float_up(ray.tmax),
-                          [&](std::size_t k, float) { return visit(bounded_[k]); });
+    std::uint32_t candidates[kFlatLimit];
+    const std::size_t n = float_candidates(ray, inv_d, candidates);
+    for (std::size_t j = 0; j < n; ++j)
+      if (visit(candidates[j])) return true;
+    return false;
   }
+  /// The objects whose float boxes may meet the ray's segment, in index order (out of line: the
+  /// callers' visitors inline the walk around it); returns their count.
+  std::size_t float_candidates(const Ray& ray, const Vec3& inv_d, std::uint32_t* out) const;
   /// Whether boxes_[k] (double) meets the ray's segment [tmin, tmax].
   bool box_meets(std::size_t k, const Ray& ray, const Vec3& inv_d, double tmax) const {
     double t_enter;
     return intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, tmax, t_enter);
   }
-  /// f(k, t_enter) for each k whose box in groups_ (float) may meet the segment [r.tmin,
-  /// tmax_up], in index order, t_enter its entry; stops when f returns true (returned).
+  /// The float test's constants for the ray, its slab rows fixed to the octant copies' order
+  /// (near planes in rows 0-2, far in 3-5): box4_hits then loads them at constant offsets, and
+  /// the per-ray choice of rows by the signs of d is not made (the compiler drops it).
+  Box4Ray float_ray(const Ray& ray, const Vec3& inv_d) const {
+    Box4Ray r = make_box4_ray(ray, inv_d, scale_);
+    for (std::uint32_t a = 0; a < 3; ++a) {
+      r.near_row[a] = a;
+      r.far_row[a] = 3 + a;
+    }
+    return r;
+  }
+  /// The groups of the ray's octant (by the signs of 1 / d, as make_box4_ray chooses its rows).
+  const Box4* octant_groups(const Vec3& inv_d) const {
+    const std::size_t octant = (std::signbit(inv_d.x) ? 1u : 0u) |
+                               (std::signbit(inv_d.y) ? 2u : 0u) |
+                               (std::signbit(inv_d.z) ? 4u : 0u);
+    return groups_.data() + octant * group_count_;
+  }
+  /// f(k, t_enter) for each k whose box in `groups` (one octant's float copies) may meet the
+  /// segment [r.tmin, tmax_up], in index order, t_enter its entry; stops when f returns true
+  /// (returned).
   template <class F>
-  bool each_float_box(const Box4Ray& r, float tmax_up, F&& f) const {
-    for (std::size_t g = 0; g < groups_.size(); ++g) {
+  bool each_float_box(const Box4Ray& r, const Box4* groups, float tmax_up, F&& f) const {
+    for (std::size_t g = 0; g < group_count_; ++g) {
       alignas(16) float t_enter[4];
-      unsigned mask = box4_hits(groups_[g], r, tmax_up, t_enter);
-      if (g + 1 == groups_.size()) mask &= last_lanes_;
+      unsigned mask = box4_hits(groups[g], r, tmax_up, t_enter);
+      if (g + 1 == group_count_) mask &= last_lanes_;
       for (; mask != 0; mask &= mask - 1) {
         const int l = std::countr_zero(mask);
         if (f(4 * g + static_cast<std::size_t>(l), t_enter[l])) return true;
@@ -115,11 +142,18 @@ class ObjectSet {
   // box and go straight to the mesh, without the general walk's set-up
   // (docs/performance-mesh.md, session 6).
   bool sole_mesh_ = false;
-  std::vector<Box4> groups_;  // flat_, from kFloatBoxesFrom: bounded_[4 g + l]'s box in lane l of g
-  unsigned last_lanes_ = 0;   // the lanes of the last group that hold a box
-  Box4Scale scale_{};         // from a bound on |coordinate| over groups_' planes
-  std::vector<Aabb> boxes_;   // flat_, fewer than kFloatBoxesFrom: bounded_[k]'s box
-  Bvh bvh_;                   // over the bounded objects
+  // The set is one bounded object of any kind and nothing else (boxes_ holds its box): the same
+  // short cut for both queries.
+  bool sole_ = false;
+  // flat_, from kFloatBoxesFrom: bounded_[4 g + l]'s box in lane l of group g, stored once per
+  // ray octant o (the signs of d's x, y, z in bits 0, 1, 2) at groups_[o * group_count_ + g],
+  // its rows the near planes then the far ones for that octant (lo or hi by the sign).
+  std::vector<Box4> groups_;
+  std::size_t group_count_ = 0;
+  unsigned last_lanes_ = 0;               // the lanes of the last group that hold a box
+  Box4Scale scale_{};                     // from a bound on |coordinate| over groups_' planes
+  std::vector<Aabb> boxes_;               // flat_, fewer than kFloatBoxesFrom: bounded_[k]'s box
+  Bvh bvh_;                               // over the bounded objects
   std::vector<std::uint32_t> bounded_;    // bvh prim -> object index
   std::vector<std::uint32_t> unbounded_;  // objects tested on every ray
   Aabb bounds_, finite_bounds_;
