@@ -274,11 +274,8 @@ inline bool Integrator::walk_shadow(const Ray& segment, F&& blocks) const {
   if (!is_valid(segment)) return false;
   for (std::uint32_t index : shadow_.unbounded)
     if (blocks(index)) return true;
-  if (shadow_.balls.empty()) return false;
-  const Vec3 e = shadow_direction(segment.d);
-  for (const ShadowBall& b : shadow_.balls)
-    if (may_meet(b, segment.o, e) && blocks(b.index)) return true;
-  return false;
+  if (shadow_.bounded.empty()) return false;
+  return each_shadow_ball(shadow_, segment.o, shadow_direction(segment.d), blocks);
 }
 
 inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,

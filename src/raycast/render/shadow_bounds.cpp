@@ -55,9 +55,21 @@ ShadowBounds make_shadow_bounds(const Scene& scene) {
     const double scale = max_component(abs(centre)) + radius;
     radius = radius * (1 + 1e-9) + 1e-9 * scale;
     if (!(scale + radius <= kShadowBallLimit)) within = false;
-    out.balls.push_back({centre, radius * radius * (1 + 1e-12), index});
+    out.bounded.push_back(index);
+    out.x.push_back(centre.x);
+    out.y.push_back(centre.y);
+    out.z.push_back(centre.z);
+    out.radius2.push_back(radius * radius * (1 + 1e-12));
   }
-  out.usable = within && scene.sole_mesh() < 0 && out.balls.size() <= ObjectSet::kFlatLimit;
+  const std::size_t count = out.bounded.size();
+  if (count % 2 != 0) {  // an empty ball: |v|^2 - k^2 >= 0 > -1
+    out.bounded.push_back(0);
+    out.x.push_back(0);
+    out.y.push_back(0);
+    out.z.push_back(0);
+    out.radius2.push_back(-1);
+  }
+  out.usable = within && scene.sole_mesh() < 0 && count <= ObjectSet::kFlatLimit;
   return out;
 }
 
