@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -269,25 +270,29 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
 }
 
 template <class F>
-inline bool Integrator::walk_shadow(const Ray& segment, F&& blocks) const {
-  // The scene's queries answer nothing for a ray that is not is_valid; so does this walk.
-  if (!is_valid(segment)) return false;
+inline bool Integrator::walk_shadow(const Ray& segment, const Vec3& e, F&& blocks) const {
   for (std::uint32_t index : shadow_.unbounded)
     if (blocks(index)) return true;
-  if (shadow_.bounded.empty()) return false;
-  return each_shadow_ball(shadow_, segment.o, shadow_direction(segment.d), blocks);
+  return each_shadow_ball(shadow_, segment.o, e, blocks);
 }
 
 inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,
                                     SampleState& state) const {
   const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
   ++state.rays;
-  const bool own_walk =
-      shadow_.usable && length_squared(from) <= kShadowBallLimit * kShadowBallLimit;
+  // is_valid(segment) (tmin 0 and tmax 1 or inf are valid): the scene's queries answer nothing
+  // for other rays, nor does the own walk. |o|^2 and |d|^2 once for it and the walk.
+  const double oo = length_squared(segment.o), dd = length_squared(segment.d);
+  const bool valid = oo <= std::numeric_limits<double>::max() &&
+                     dd >= std::numeric_limits<double>::min() &&
+                     dd <= std::numeric_limits<double>::max();
+  const bool own_walk = shadow_.usable && oo <= kShadowBallLimit * kShadowBallLimit;
+  const Vec3 e = segment.d * (1 / std::sqrt(dd));  // shadow_direction, for the own walk
   if (!any_transmissive_) {
     if (!own_walk) return scene_.occluded(segment) ? Color{0, 0, 0} : Color{1, 1, 1};
-    const bool blocked =
-        walk_shadow(segment, [&](std::uint32_t index) { return crosses(index, segment); });
+    const bool blocked = valid && walk_shadow(segment, e, [&](std::uint32_t index) {
+                           return crosses(index, segment);
+                         });
     return blocked ? Color{0, 0, 0} : Color{1, 1, 1};
   }
   // One pass over the objects on the segment (docs/rendering.md "Shadow rays"): each object is
@@ -296,7 +301,8 @@ inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_in
   // ends the pass, each transmissive object crossed multiplies by its filter once.
   Color through{1, 1, 1};
   auto blocks = [&](std::uint32_t index) { return !passes(index, segment, through); };
-  const bool blocked = own_walk ? walk_shadow(segment, blocks) : scene_.any_object(segment, blocks);
+  const bool blocked =
+      own_walk ? valid && walk_shadow(segment, e, blocks) : scene_.any_object(segment, blocks);
   return blocked ? Color{0, 0, 0} : through;
 }
 

@@ -66,10 +66,11 @@ class Integrator {
                const Material& m, unsigned exponent, const Color& c, SampleState& state) const;
   /// shadow() without the call: the query the shading makes for every light.
   Color visibility(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
-  /// The scene's any-object walk for a shadow segment (ObjectSet::any's order, shadow_'s balls
-  /// for culling): blocks(index) for each object it may cross until one returns true (returned).
+  /// The scene's any-object walk for a valid shadow segment (ObjectSet::any's order, shadow_'s
+  /// balls for culling; e: segment.d's unit direction): blocks(index) for each object it may
+  /// cross until one returns true (returned).
   template <class F>
-  bool walk_shadow(const Ray& segment, F&& blocks) const;
+  bool walk_shadow(const Ray& segment, const Vec3& e, F&& blocks) const;
 
   /// What the shading asks of each scene object, worked out once per frame (the same answers
   /// the per-hit look-ups would give).

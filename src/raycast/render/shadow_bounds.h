@@ -41,9 +41,6 @@ ShadowBounds make_shadow_bounds(const Scene& scene);
 /// ulps of |v|^2) many times over.
 inline constexpr double kShadowBallSlack = 1e-12;
 
-/// The unit direction of a segment's d (|d|^2 a finite normal double: is_valid).
-inline Vec3 shadow_direction(const Vec3& d) { return d * (1 / std::sqrt(length_squared(d))); }
-
 /// f(bounded[k]) for each ball k, in order, that the half-line from `o` along the unit `e` may come
 /// within (false only when its exact distance from the centre exceeds the radius; the segment's
 /// far end is not used: conservative); stops when f returns true (returned). With v = centre - o
