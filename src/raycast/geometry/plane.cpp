@@ -32,18 +32,9 @@ Aabb bounds(const Plane& p) {
   return b;
 }
 
-namespace {
-// Signed distance of the ray parameter where the line meets the plane; NaN when parallel.
-double crossing(const Plane& p, const Ray& ray) {
-  return (p.offset - dot(p.n, ray.o)) / dot(p.n, ray.d);
-}
-}  // namespace
-
 bool intersect(const Plane& p, const Ray& ray, LocalHit& hit) {
-  const double t = crossing(p, ray);
-  // A parallel ray gives NaN (on the plane) or +-inf (off it): neither is a crossing, even
-  // when tmax is infinite.
-  if (!std::isfinite(t) || !(t >= ray.tmin && t <= ray.tmax)) return false;
+  const double t = plane_crossing(p, ray);
+  if (!plane_crossing_within(t, ray)) return false;
   hit = LocalHit{.t = t};
   return true;
 }

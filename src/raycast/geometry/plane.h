@@ -1,5 +1,7 @@
 #pragma once
 // The plane as a half-space solid: inside is behind the normal, as in POV-Ray.
+#include <cmath>
+
 #include "geometry/shape.h"
 
 namespace raycast {
@@ -18,6 +20,20 @@ struct Plane {
 Plane make_plane(const Vec3& normal, const Vec3& point);
 
 Aabb bounds(const Plane& p);
+/// The ray parameter where the line meets the plane; NaN or +-inf when parallel.
+inline double plane_crossing(const Plane& p, const Ray& ray) {
+  return (p.offset - dot(p.n, ray.o)) / dot(p.n, ray.d);
+}
+/// Whether a plane_crossing t is a crossing within [tmin, tmax]. A parallel ray gives NaN (on
+/// the plane) or +-inf (off it): neither is a crossing, even when tmax is infinite.
+inline bool plane_crossing_within(double t, const Ray& ray) {
+  return std::isfinite(t) && t >= ray.tmin && t <= ray.tmax;
+}
+/// intersect's answer without the record, inline for the shadow rays' walk
+/// (render/integrator.cpp).
+inline bool crosses(const Plane& p, const Ray& ray) {
+  return plane_crossing_within(plane_crossing(p, ray), ray);
+}
 bool intersect(const Plane& p, const Ray& ray, LocalHit& hit);
 void spans(const Plane& p, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Plane& p, const Ray& ray, const LocalHit& hit);

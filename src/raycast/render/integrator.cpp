@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -46,7 +47,10 @@ Color id_color(int entry) {
 }
 
 Integrator::Integrator(const Scene& scene, RenderMode mode)
-    : scene_(scene), mode_(mode), textures_(load_textures(scene)) {
+    : scene_(scene),
+      mode_(mode),
+      textures_(load_textures(scene)),
+      shadow_(make_shadow_bounds(scene)) {
   for (const Material& m : scene.materials) {
     any_transmissive_ |= m.transmission > 0;
     filters_.push_back(m.transmission * m.color);
@@ -61,6 +65,10 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
     const std::size_t mi = std::size_t(std::max(o.material, 0));
     f.material = composite ? -1 : std::int32_t(mi);
     f.terminator = has_terminator_origin(o);
+    if (!o.xf) {
+      f.plane = std::get_if<Plane>(&o.shape);
+      f.sphere = std::get_if<Sphere>(&o.shape);
+    }
     if (composite) {
       f.shadow = ObjectFacts::kWalk;
     } else if (mi < scene.materials.size()) {
@@ -261,33 +269,66 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
   return visibility(from, to, to_infinity, state);
 }
 
+template <class F>
+inline bool Integrator::walk_shadow(const Ray& segment, const Vec3& e, F&& blocks) const {
+  for (std::uint32_t index : shadow_.unbounded)
+    if (blocks(index)) return true;
+  return each_shadow_ball(shadow_, segment.o, e, blocks);
+}
+
 inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,
                                     SampleState& state) const {
   const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
   ++state.rays;
-  if (!any_transmissive_) return scene_.occluded(segment) ? Color{0, 0, 0} : Color{1, 1, 1};
+  // is_valid(segment) (tmin 0 and tmax 1 or inf are valid): the scene's queries answer nothing
+  // for other rays, nor does the own walk. |o|^2 and |d|^2 once for it and the walk.
+  const double oo = length_squared(segment.o), dd = length_squared(segment.d);
+  const bool valid = oo <= std::numeric_limits<double>::max() &&
+                     dd >= std::numeric_limits<double>::min() &&
+                     dd <= std::numeric_limits<double>::max();
+  const bool own_walk = shadow_.usable && oo <= kShadowBallLimit * kShadowBallLimit;
+  const Vec3 e = segment.d * (1 / std::sqrt(dd));  // shadow_direction, for the own walk
+  if (!any_transmissive_) {
+    if (!own_walk) return scene_.occluded(segment) ? Color{0, 0, 0} : Color{1, 1, 1};
+    const bool blocked = valid && walk_shadow(segment, e, [&](std::uint32_t index) {
+                           return crosses(index, segment);
+                         });
+    return blocked ? Color{0, 0, 0} : Color{1, 1, 1};
+  }
   // One pass over the objects on the segment (docs/rendering.md "Shadow rays"): each object is
   // asked on its own whether the segment crosses it (an any-hit query, or for a composite
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
   Color through{1, 1, 1};
-  const bool blocked = scene_.any_object(
-      segment, [&](std::uint32_t index) { return !filter(index, segment, through); });
+  auto blocks = [&](std::uint32_t index) { return !passes(index, segment, through); };
+  const bool blocked =
+      own_walk ? valid && walk_shadow(segment, e, blocks) : scene_.any_object(segment, blocks);
   return blocked ? Color{0, 0, 0} : through;
 }
 
-bool Integrator::filter(std::uint32_t index, const Ray& segment, Color& through) const {
-  const Object& object = scene_.objects[index];
+inline bool Integrator::crosses(std::uint32_t index, const Ray& segment) const {
   const ObjectFacts& facts = objects_[index];
-  const bool composite = facts.material < 0;
+  if (facts.plane) return raycast::crosses(*facts.plane, segment);
+  if (facts.sphere) return occluded(*facts.sphere, segment);
+  return occluded(scene_.objects[index], segment);
+}
+
+inline bool Integrator::passes(std::uint32_t index, const Ray& segment, Color& through) const {
+  const ObjectFacts& facts = objects_[index];
   // An opaque object blocks wherever it crosses; an untextured transmissive one filters by its
   // material's transmission * color once.
-  if (facts.shadow == ObjectFacts::kOpaque) return !occluded(object, segment);
+  if (facts.shadow == ObjectFacts::kOpaque) return !crosses(index, segment);
   if (facts.shadow == ObjectFacts::kFilter) {
-    if (!occluded(object, segment)) return true;
+    if (!crosses(index, segment)) return true;
     through = mul(through, filters_[std::size_t(facts.material)]);
     return max_component(through) > 0;
   }
+  return passes_walk(index, segment, through);
+}
+
+bool Integrator::passes_walk(std::uint32_t index, const Ray& segment, Color& through) const {
+  const Object& object = scene_.objects[index];
+  const bool composite = objects_[index].material < 0;
   // The object's crossings in order: the first opaque one blocks; the first transmissive one
   // gives the filter colour (its albedo at that crossing).
   Ray r = segment;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/rng.h"
+#include "render/shadow_bounds.h"
 #include "render/texture.h"
 #include "scene/scene.h"
 
@@ -46,7 +47,13 @@ class Integrator {
   /// The shadow segment's passage through object `index`: false when an opaque part of it
   /// crosses the segment; else true, with `through` multiplied by the object's filter when the
   /// segment crosses it (once per object).
-  bool filter(std::uint32_t index, const Ray& segment, Color& through) const;
+  bool passes(std::uint32_t index, const Ray& segment, Color& through) const;
+  /// passes() for an object with materials per part or a textured transmissive one: a walk of
+  /// its crossings.
+  bool passes_walk(std::uint32_t index, const Ray& segment, Color& through) const;
+  /// Whether the segment crosses object `index` (occluded(), with planes and spheres called
+  /// directly).
+  bool crosses(std::uint32_t index, const Ray& segment) const;
   /// (u, v) only for a material with an image texture.
   SurfaceNeeds needs(const SceneHit& hit) const { return needs(material_index(hit)); }
   SurfaceNeeds needs(std::size_t material) const;
@@ -59,13 +66,21 @@ class Integrator {
                const Material& m, unsigned exponent, const Color& c, SampleState& state) const;
   /// shadow() without the call: the query the shading makes for every light.
   Color visibility(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
+  /// The scene's any-object walk for a valid shadow segment (ObjectSet::any's order, shadow_'s
+  /// balls for culling; e: segment.d's unit direction): blocks(index) for each object it may
+  /// cross until one returns true (returned).
+  template <class F>
+  bool walk_shadow(const Ray& segment, const Vec3& e, F&& blocks) const;
 
   /// What the shading asks of each scene object, worked out once per frame (the same answers
   /// the per-hit look-ups would give).
   struct ObjectFacts {
     std::int32_t material = 0;  // its material index; -1 for CSG and instances (per part)
     bool terminator = false;  // has_terminator_origin: shadow rays may start from terminator_origin
-    enum Shadow : std::uint8_t { kOpaque, kFilter, kWalk } shadow = kOpaque;  // filter()'s case
+    enum Shadow : std::uint8_t { kOpaque, kFilter, kWalk } shadow = kOpaque;  // passes()'s case
+    // The shape when it is an untransformed plane or sphere (crosses() calls it directly).
+    const Plane* plane = nullptr;
+    const Sphere* sphere = nullptr;
   };
 
   const Scene& scene_;
@@ -75,6 +90,7 @@ class Integrator {
   std::vector<Color> filters_;        // by material: transmission * color (shadow filter)
   std::vector<Color> emitted_;        // by light: Light::emitted()
   std::vector<unsigned> exponents_;   // by material: integer Phong exponent, 0 for std::pow
+  ShadowBounds shadow_;               // the shadow rays' walk over the objects
   bool any_transmissive_ = false;
 };
 
