@@ -11,6 +11,7 @@
 #include "mesh/mesh.h"
 #include "mesh/procedural.h"
 #include "mesh/wide_kernels.h"
+#include "packet_checks.h"
 
 namespace raycast {
 namespace {
@@ -23,13 +24,6 @@ class PacketRays : public testing::TestWithParam<Isa> {
   }
   const MeshKernels* kernels_ = nullptr;
 };
-
-// Whether to_mesh_ray takes its fast path (the largest |d| has a normal, not extreme exponent).
-bool fast_conversion(const Ray& r) {
-  const double m = std::max(std::abs(r.d.x), std::max(std::abs(r.d.y), std::abs(r.d.z)));
-  const int e = std::ilogb(m);
-  return std::isfinite(m) && m >= std::numeric_limits<double>::min() && e > -1022 && e < 1022;
-}
 
 TEST_P(PacketRays, MixedMasks_EqualSingleRays) {
   const TriangleSoup sphere = make_octa_sphere(16);
@@ -87,26 +81,8 @@ TEST_P(PacketRays, MixedMasks_EqualSingleRays) {
         ++slow_seen;
         continue;
       }
-      ASSERT_GE(found, 0) << "packet " << i;
-      EXPECT_EQ(found & ~mask, 0);
-      for (int l = 0; l < 8; ++l) {
-        if (!(mask >> l & 1)) {
-          EXPECT_EQ(hits[l].triangle, 12345u);
-          continue;
-        }
-        double scale;
-        const MeshRay r = to_mesh_ray(rays[l], scale);
-        EXPECT_EQ(scales[l], scale) << "packet " << i << " lane " << l;
-        MeshBvhHit one;
-        const bool hit = kernels_->closest(bvh, r, one, stack.data());
-        ASSERT_EQ((found >> l & 1) != 0, hit) << "packet " << i << " lane " << l;
-        if (!hit) continue;
-        ++hits_seen;
-        EXPECT_EQ(hits[l].t, one.t);
-        EXPECT_EQ(hits[l].b1, one.b1);
-        EXPECT_EQ(hits[l].b2, one.b2);
-        EXPECT_EQ(hits[l].triangle, one.triangle);
-      }
+      expect_lanes_equal_single_rays(*kernels_, bvh, rays, 8, mask, found, hits, scales,
+                                     stack.data(), i, hits_seen);
       if (HasFailure()) return;
     }
     EXPECT_GT(hits_seen, 500);
