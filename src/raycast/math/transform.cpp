@@ -118,13 +118,4 @@ bool Transform::flips_handedness() const {
   return det < 0;
 }
 
-Vec3 Transform::point_error(const Vec3& p) const {
-  const auto& r = m_.m;
-  Vec3 e;
-  for (int i = 0; i < 3; ++i)
-    e[i] = gamma(3) * (std::abs(r[i][0] * p.x) + std::abs(r[i][1] * p.y) + std::abs(r[i][2] * p.z) +
-                       std::abs(r[i][3]));
-  return e;
-}
-
 }  // namespace raycast

@@ -2,8 +2,10 @@
 // Affine transforms as 4x4 row-major matrices that map points p' = M p (translation in the fourth
 // column), stored with their inverse so rays go to object space and normals come back cheaply.
 #include <array>
+#include <cmath>
 #include <optional>
 
+#include "math/float_error.h"
 #include "math/vec3.h"
 
 namespace raycast {
@@ -58,7 +60,9 @@ class Transform {
   Vec3 inverse_point(const Vec3& p) const { return apply_point(inv_, p); }
   Vec3 inverse_vector(const Vec3& v) const { return apply_vector(inv_, v); }
   /// Bounds on the absolute rounding error of point(p), per component (pbrt-v4 6.8.6).
-  Vec3 point_error(const Vec3& p) const;
+  Vec3 point_error(const Vec3& p) const { return apply_point_error(m_, p); }
+  /// The same for inverse_point(p) (no Transform copy, unlike inverse().point_error(p)).
+  Vec3 inverse_point_error(const Vec3& p) const { return apply_point_error(inv_, p); }
 
   /// This transform applied after `first`: (this * first)(p) = this(first(p)).
   Transform operator*(const Transform& first) const {
@@ -70,6 +74,14 @@ class Transform {
     return {r[0][0] * p.x + r[0][1] * p.y + r[0][2] * p.z + r[0][3],
             r[1][0] * p.x + r[1][1] * p.y + r[1][2] * p.z + r[1][3],
             r[2][0] * p.x + r[2][1] * p.y + r[2][2] * p.z + r[2][3]};
+  }
+  static Vec3 apply_point_error(const Mat4& a, const Vec3& p) {
+    const auto& r = a.m;
+    Vec3 e;
+    for (int i = 0; i < 3; ++i)
+      e[i] = gamma(3) * (std::abs(r[i][0] * p.x) + std::abs(r[i][1] * p.y) +
+                         std::abs(r[i][2] * p.z) + std::abs(r[i][3]));
+    return e;
   }
   static Vec3 apply_vector(const Mat4& a, const Vec3& v) {
     const auto& r = a.m;

@@ -29,17 +29,6 @@ decltype(auto) visit_shape(const ShapeVariant& v, F&& f) {
   return std::visit(f, v);
 }
 
-// Transform::point_error's bound for the matrix a (the same arithmetic), inline and without the
-// Transform copy that inverse() makes for the inverse's bound.
-inline Vec3 point_error(const Mat4& a, const Vec3& p) {
-  const auto& r = a.m;
-  Vec3 e;
-  for (int i = 0; i < 3; ++i)
-    e[i] = gamma(3) * (std::abs(r[i][0] * p.x) + std::abs(r[i][1] * p.y) + std::abs(r[i][2] * p.z) +
-                       std::abs(r[i][3]));
-  return e;
-}
-
 }  // namespace
 
 Aabb bounds(const Object& o) {
@@ -79,7 +68,7 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, Surfac
     si.p = o.xf->point(p);
     // Error of the object-space point carried through the matrix, plus the transform's own.
     const auto& m = o.xf->matrix().m;
-    Vec3 e = point_error(o.xf->matrix(), p);
+    Vec3 e = o.xf->point_error(p);
     for (int i = 0; i < 3; ++i)
       e[i] +=
           (1 + gamma(3)) * (std::abs(m[i][0]) * si.p_error.x + std::abs(m[i][1]) * si.p_error.y +
@@ -87,7 +76,7 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, Surfac
     // A ray spawned from p goes back through the inverse transform, which rounds its origin
     // again (pbrt-v4 tracks this as the ray's origin error): widen the bound by that rounding,
     // carried to world space, so the offset origin stays outside after the round trip.
-    const Vec3 back = point_error(o.xf->inverse_matrix(), si.p);
+    const Vec3 back = o.xf->inverse_point_error(si.p);
     for (int i = 0; i < 3; ++i)
       e[i] += (1 + gamma(3)) * (std::abs(m[i][0]) * back.x + std::abs(m[i][1]) * back.y +
                                 std::abs(m[i][2]) * back.z);
