@@ -161,6 +161,22 @@ std::vector<double> tree_line(const Expression& e, int index, const Vec3& o, con
   }
 }
 
+// restrict_code_to_line(f) on `count` random lines: bit for bit the tree walk's coefficients of
+// the formula `text` f was expanded from.
+void expect_line_code_equal_to_tree_walk(const Trivariate& f, const char* text, unsigned seed,
+                                         int count) {
+  const Expression e = parse_expression(text);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < count; ++i) {
+    const Vec3 o{1.5 * u(rng), 1.5 * u(rng), 1.5 * u(rng)}, d{u(rng), u(rng), u(rng)};
+    const Polynomial a = restrict_code_to_line(f, o, d);
+    const std::vector<double> want = tree_line(e, e.root, o, d);
+    ASSERT_EQ(a.degree, std::min(f.degree, static_cast<int>(want.size()) - 1));
+    for (int k = 0; k <= a.degree; ++k) ASSERT_EQ(a.c[k], want[k]) << "coefficient " << k;
+  }
+}
+
 // Common subexpressions (the heart's x^2, y^2, z^3; the tori's x^2, y^2, z^2, (x-1)^2) are
 // computed once in the line code: it must say so (kStore, kLoad), and its polynomial must be the
 // tree's, bit for bit, on random rays (the saved copy is the value computed anew).
@@ -179,16 +195,7 @@ TEST(Algebraic, LineCodeCommonSubexpressions_BitEqualToTheTreeWalk) {
     }
     EXPECT_GE(stores, 3);
     EXPECT_GE(loads, stores);
-    const Expression e = parse_expression(text);
-    std::mt19937 rng(9);
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (int i = 0; i < 200; ++i) {
-      const Vec3 o{1.5 * u(rng), 1.5 * u(rng), 1.5 * u(rng)}, d{u(rng), u(rng), u(rng)};
-      const Polynomial a = restrict_code_to_line(f, o, d);
-      const std::vector<double> want = tree_line(e, e.root, o, d);
-      ASSERT_EQ(a.degree, static_cast<int>(want.size()) - 1);
-      for (int k = 0; k <= a.degree; ++k) ASSERT_EQ(a.c[k], want[k]) << "coefficient " << k;
-    }
+    expect_line_code_equal_to_tree_walk(f, text, 9, 200);
   }
 }
 
@@ -203,16 +210,7 @@ TEST(Algebraic, LineCodeRegisterSteps_BitEqualToTheTreeWalk) {
     const Trivariate f = expand_polynomial(text);
     ASSERT_TRUE(f.line_code_cheaper);
     ASSERT_FALSE(f.line_steps.empty());
-    const Expression e = parse_expression(text);
-    std::mt19937 rng(12);
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (int i = 0; i < 100; ++i) {
-      const Vec3 o{1.5 * u(rng), 1.5 * u(rng), 1.5 * u(rng)}, d{u(rng), u(rng), u(rng)};
-      const Polynomial a = restrict_code_to_line(f, o, d);
-      const std::vector<double> want = tree_line(e, e.root, o, d);
-      ASSERT_EQ(a.degree, std::min(f.degree, static_cast<int>(want.size()) - 1));
-      for (int k = 0; k <= a.degree; ++k) ASSERT_EQ(a.c[k], want[k]) << "coefficient " << k;
-    }
+    expect_line_code_equal_to_tree_walk(f, text, 12, 100);
   }
 }
 
