@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -283,11 +282,9 @@ inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_in
   // is_valid(segment) (tmin 0 and tmax 1 or inf are valid): the scene's queries answer nothing
   // for other rays, nor does the own walk. |o|^2 and |d|^2 once for it and the walk.
   const double oo = length_squared(segment.o), dd = length_squared(segment.d);
-  const bool valid = oo <= std::numeric_limits<double>::max() &&
-                     dd >= std::numeric_limits<double>::min() &&
-                     dd <= std::numeric_limits<double>::max();
+  const bool valid = is_valid_extent(oo, dd);
   const bool own_walk = shadow_.usable && oo <= kShadowBallLimit * kShadowBallLimit;
-  const Vec3 e = segment.d * (1 / std::sqrt(dd));  // shadow_direction, for the own walk
+  const Vec3 e = segment.d * (1 / std::sqrt(dd));  // the unit direction, for the own walk
   if (!any_transmissive_) {
     if (!own_walk) return scene_.occluded(segment) ? Color{0, 0, 0} : Color{1, 1, 1};
     const bool blocked = valid && walk_shadow(segment, e, [&](std::uint32_t index) {
