@@ -153,8 +153,16 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
   V8 v = ax * cy - ay * cx;
   V8 w = bx * ay - by * ax;
   const V8 zero = splat(0.0f);
-  const int zero_mask = bits(mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero)));
-  if (zero_mask) {
+  auto pos = mand(mand(cmp_ge(u, zero), cmp_ge(v, zero)), cmp_ge(w, zero));
+  auto neg = mand(mand(cmp_le(u, zero), cmp_le(v, zero)), cmp_le(w, zero));
+  // Most lanes fail here. The double fallback below can only turn a float 0 into a signed value
+  // (rounding is monotonic, so a non-zero float edge function already has the exact sign), which
+  // can take a lane out of pos or neg but never put one in: a pair with no candidate lane is a
+  // miss without looking for zeros.
+  if (!bits(mor(pos, neg))) return 0;
+  const int zero_mask =
+      bits(mand(mor(pos, neg), mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero))));
+  if (zero_mask) [[unlikely]] {
     // An edge function exactly 0 in float: recompute that lane's three in double (the paper's
     // fallback), so the sign of a ray exactly through an edge or vertex is exact.
     alignas(32) float f[6][8], uu[8], vv[8], ww[8];
@@ -172,9 +180,9 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
     u = load8(uu);
     v = load8(vv);
     w = load8(ww);
+    pos = mand(mand(cmp_ge(u, zero), cmp_ge(v, zero)), cmp_ge(w, zero));
+    neg = mand(mand(cmp_le(u, zero), cmp_le(v, zero)), cmp_le(w, zero));
   }
-  const auto pos = mand(mand(cmp_ge(u, zero), cmp_ge(v, zero)), cmp_ge(w, zero));
-  const auto neg = mand(mand(cmp_le(u, zero), cmp_le(v, zero)), cmp_le(w, zero));
   const V8 det = (u + v) + w;
   const auto same_sign = mand(mor(pos, neg), cmp_ne(det, zero));
   if (!bits(same_sign)) return 0;
