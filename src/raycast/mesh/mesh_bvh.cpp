@@ -250,6 +250,9 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
 
 namespace {
 
+// Stack entries kept on the C stack: every tree of sane depth (128 levels of 8-wide nodes).
+constexpr std::size_t kLocalStack = 128 * (kNodeWidth - 1) + 2;
+
 // A traversal stack: on the C stack for every tree of sane depth (up to 128 levels of 8-wide
 // nodes); on the heap (one allocation per query) only for deeper trees, which the SAH build makes
 // only for pathological inputs. Never too small: sized from the tree's depth.
@@ -265,7 +268,7 @@ class Stack {
   TraversalEntry* data() { return data_; }
 
  private:
-  static constexpr std::size_t kLocal = 128 * (kNodeWidth - 1) + 2;
+  static constexpr std::size_t kLocal = kLocalStack;
   // Uninitialised (the kernels write before they read); a unique_ptr rather than a vector: its
   // construction and destruction cost a few instructions per query, a vector's a dozen or more.
   TraversalEntry local_[kLocal];
@@ -316,9 +319,12 @@ const MeshKernels& active_mesh_kernels() {
 void append_mesh_hit(std::vector<MeshBvhHit>& out, const MeshBvhHit& hit) { out.push_back(hit); }
 
 bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit) {
-  if (bvh.empty()) return false;
-  Stack stack(bvh);
-  return kernels().closest(bvh, ray, hit, stack.data());
+  if (traversal_stack_size(bvh) > kLocalStack) [[unlikely]] {
+    Stack stack(bvh);
+    return kernels().closest(bvh, ray, hit, stack.data());
+  }
+  TraversalEntry stack[kLocalStack];
+  return kernels().closest(bvh, ray, hit, stack);
 }
 
 namespace {
@@ -355,9 +361,14 @@ int intersect_closest8(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit
 }
 
 bool intersect_any(const MeshBvh& bvh, const MeshRay& ray) {
-  if (bvh.empty()) return false;
-  Stack stack(bvh);
-  return kernels().any(bvh, ray, stack.data());
+  // A plain array on the common path (no Stack: its heap pointer is set and tested per query);
+  // the kernel tests bvh.empty() itself.
+  if (traversal_stack_size(bvh) > kLocalStack) [[unlikely]] {
+    Stack stack(bvh);
+    return kernels().any(bvh, ray, stack.data());
+  }
+  TraversalEntry stack[kLocalStack];
+  return kernels().any(bvh, ray, stack);
 }
 
 void intersect_every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out) {
