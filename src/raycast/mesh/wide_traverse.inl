@@ -292,10 +292,12 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
         } else {
           const int first = __builtin_ctz(mask);
           mask &= mask - 1;
-          // Only the pushed children: the first is read at once, its loads issue together anyway.
-          prefetch_children(bvh, node, mask);
+          // Only the pushed children are prefetched (the first is read at once, its loads issue
+          // together anyway), in the push loop itself.
           while (mask) {
-            stack[top++] = {node.child[__builtin_ctz(mask)], 0.0f};
+            const std::uint32_t child = node.child[__builtin_ctz(mask)];
+            prefetch_child<Node>(bvh, child);
+            stack[top++] = {child, 0.0f};
             mask &= mask - 1;
           }
           ref = node.child[first];
