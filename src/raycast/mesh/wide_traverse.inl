@@ -243,13 +243,14 @@ inline std::uint32_t order_children(const MeshBvh& bvh, const Node& node, int ma
     return node.child[near];
   }
   mask |= (1 << first) | (1 << second);
-  prefetch_children(bvh, node, mask);  // all but the nearest would need the sort first
-  // Insertion sort, farthest first, straight onto the stack.
+  // Insertion sort, farthest first, straight onto the stack; every child prefetched on the way
+  // (all but the nearest would need the sort first).
   const int base = top;
   while (mask) {
     const int i = __builtin_ctz(mask);
     mask &= mask - 1;
     const TraversalEntry e{node.child[i], tnear[i]};
+    prefetch_child<Node>(bvh, e.ref);
     int j = top++;
     while (j > base && stack[j - 1].tnear < e.tnear) {
       stack[j] = stack[j - 1];
