@@ -20,6 +20,7 @@
 
 #include "accel/build_memory.h"
 #include "accel/progress.h"
+#include "mesh/wide_kernels.h"
 
 namespace raycast {
 
@@ -369,7 +370,13 @@ bool intersect(const Mesh& m, const Ray& ray, LocalHit& hit) {
   double scale;
   const MeshRay r = convert_ray(ray, scale);
   MeshBvhHit h;
-  if (!intersect_closest(m.bvh, r, h)) return false;
+  // The kernel called from here (intersect_closest's common path without its call level).
+  if (traversal_stack_size(m.bvh) > kLocalTraversalStack) [[unlikely]] {
+    if (!intersect_closest(m.bvh, r, h)) return false;
+  } else {
+    TraversalEntry stack[kLocalTraversalStack];
+    if (!kernels_in_use().closest(m.bvh, r, h, stack)) return false;
+  }
   // The double refinement and the record for the winning hit only.
   const double t = std::clamp(refine_hit(m, h, ray, scale), ray.tmin, ray.tmax);
   hit = LocalHit{t, static_cast<std::int32_t>(h.source), static_cast<std::int32_t>(h.triangle),
@@ -405,7 +412,12 @@ int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits) {
 
 bool occluded(const Mesh& m, const Ray& ray) {
   double scale;
-  return intersect_any(m.bvh, convert_ray(ray, scale));  // inlined, as in intersect
+  const MeshRay r = convert_ray(ray, scale);
+  // The kernel called from here (intersect_any's common path without its call level).
+  if (traversal_stack_size(m.bvh) > kLocalTraversalStack) [[unlikely]]
+    return intersect_any(m.bvh, r);
+  TraversalEntry stack[kLocalTraversalStack];
+  return kernels_in_use().any(m.bvh, r, stack);
 }
 
 bool occluded(const MeshShape& s, const Ray& ray) { return occluded(*s.mesh, ray); }

@@ -250,9 +250,6 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
 
 namespace {
 
-// Stack entries kept on the C stack: every tree of sane depth (128 levels of 8-wide nodes).
-constexpr std::size_t kLocalStack = 128 * (kNodeWidth - 1) + 2;
-
 // A traversal stack: on the C stack for every tree of sane depth (up to 128 levels of 8-wide
 // nodes); on the heap (one allocation per query) only for deeper trees, which the SAH build makes
 // only for pathological inputs. Never too small: sized from the tree's depth.
@@ -268,7 +265,7 @@ class Stack {
   TraversalEntry* data() { return data_; }
 
  private:
-  static constexpr std::size_t kLocal = kLocalStack;
+  static constexpr std::size_t kLocal = kLocalTraversalStack;
   // Uninitialised (the kernels write before they read); a unique_ptr rather than a vector: its
   // construction and destruction cost a few instructions per query, a vector's a dozen or more.
   TraversalEntry local_[kLocal];
@@ -276,10 +273,7 @@ class Stack {
   TraversalEntry* data_ = local_;
 };
 
-[[gnu::always_inline]] inline const MeshKernels& kernels() {
-  static const MeshKernels& k = active_mesh_kernels();
-  return k;
-}
+[[gnu::always_inline]] inline const MeshKernels& kernels() { return kernels_in_use(); }
 
 }  // namespace
 
@@ -319,11 +313,11 @@ const MeshKernels& active_mesh_kernels() {
 void append_mesh_hit(std::vector<MeshBvhHit>& out, const MeshBvhHit& hit) { out.push_back(hit); }
 
 bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit) {
-  if (traversal_stack_size(bvh) > kLocalStack) [[unlikely]] {
+  if (traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]] {
     Stack stack(bvh);
     return kernels().closest(bvh, ray, hit, stack.data());
   }
-  TraversalEntry stack[kLocalStack];
+  TraversalEntry stack[kLocalTraversalStack];
   return kernels().closest(bvh, ray, hit, stack);
 }
 
@@ -363,11 +357,11 @@ int intersect_closest8(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit
 bool intersect_any(const MeshBvh& bvh, const MeshRay& ray) {
   // A plain array on the common path (no Stack: its heap pointer is set and tested per query);
   // the kernel tests bvh.empty() itself.
-  if (traversal_stack_size(bvh) > kLocalStack) [[unlikely]] {
+  if (traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]] {
     Stack stack(bvh);
     return kernels().any(bvh, ray, stack.data());
   }
-  TraversalEntry stack[kLocalStack];
+  TraversalEntry stack[kLocalTraversalStack];
   return kernels().any(bvh, ray, stack);
 }
 

@@ -55,6 +55,17 @@ const MeshKernels* mesh_kernels(Isa isa);
 /// The kernels of active_isa().
 const MeshKernels& active_mesh_kernels();
 
+/// The kernels of active_isa(), looked up once (the single-ray entries call it per query).
+inline const MeshKernels& kernels_in_use() {
+  static const MeshKernels& k = active_mesh_kernels();
+  return k;
+}
+
+/// Traversal stack entries a single-ray query keeps on the C stack: every tree up to 128 levels
+/// deep (deeper ones, which the SAH build makes only for pathological inputs, go through
+/// intersect_any / intersect_closest, which then use the heap).
+inline constexpr std::size_t kLocalTraversalStack = 128 * (kNodeWidth - 1) + 2;
+
 /// Appends to a hit list (out of line, so that ISA-specific code never instantiates vector code).
 void append_mesh_hit(std::vector<MeshBvhHit>& out, const MeshBvhHit& hit);
 
