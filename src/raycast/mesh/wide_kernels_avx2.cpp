@@ -52,11 +52,13 @@ inline V8 select(M8 m, V8 x, V8 y) { return {_mm256_blendv_ps(y.v, x.v, m.m)}; }
 
 }  // namespace raycast::kernels_avx2
 
+#define RAYCAST_KERNEL_MINMAX_SLABS 1
 #define RAYCAST_KERNEL_NS kernels_avx2
 #include "mesh/wide_traverse.inl"
 // After the single-ray traversal, which it uses.
 #include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
+#undef RAYCAST_KERNEL_MINMAX_SLABS
 
 #pragma GCC pop_options
 

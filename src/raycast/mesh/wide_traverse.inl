@@ -7,6 +7,8 @@
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
+// A kernel may define RAYCAST_KERNEL_MINMAX_SLABS to compute a float node's slab distances from
+// both rows at fixed offsets (min and max) instead of rows chosen by the sign of d: same results.
 // A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
 // (AVX-512: 16 lanes).
@@ -28,8 +30,11 @@ constexpr float kInfinityF = __builtin_huge_valf();
 
 // Per-ray constants of the box and triangle tests.
 struct RayData {
-  V8 o[3];          // origin, broadcast
-  V8 inv[3];        // 1 / d, broadcast
+  V8 o[3];    // origin, broadcast
+  V8 inv[3];  // 1 / d, broadcast
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+  V8 neg_inv[3];  // -1 / d, broadcast
+#endif
   int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis] (and in
   int far_off[3];   // an axis's two rows of QuantisedNode::q)
   // Watertight test (Woop, Benthin and Wald 2013): permutation and shear.
@@ -55,6 +60,9 @@ inline void prepare(const MeshRay& r, RayData& p) {
     const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+    p.neg_inv[a] = splat(-inv);
+#endif
     // WideNode::box[a] and QuantisedNode::q[2a], q[2a + 1]: the lo planes, then the hi planes.
     p.near_off[a] = inv >= 0 ? 0 : kNodeWidth;
     p.far_off[a] = inv >= 0 ? kNodeWidth : 0;
@@ -87,12 +95,29 @@ const Node* node_array(const MeshBvh& bvh) {
 }
 
 // The near and far distances of a node's eight children on each axis: float planes as stored.
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+// Both rows at fixed offsets, near and far as their min and max: no per-ray row offsets to keep
+// in registers, and the plane loads fold into the subtractions (three-operand AVX; with SSE's
+// two-operand forms and two registers per V8 this costs more than it saves). (o - plane) *
+// (-1/d) is (plane - o) * (1/d) bit for bit, and for a used child (lo <= hi, no NaN) the smaller
+// distance is the near plane's whatever the sign of d (equal values differ in bits only as zeros
+// of opposite sign, which one multiplier cannot give).
+inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
+  for (int a = 0; a < 3; ++a) {
+    const V8 lo = (p.o[a] - load8(n.box[a])) * p.neg_inv[a];
+    const V8 hi = (p.o[a] - load8(n.box[a] + kNodeWidth)) * p.neg_inv[a];
+    d[a] = vmin(lo, hi);
+    d[3 + a] = vmax(lo, hi);
+  }
+}
+#else
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
     d[a] = (load8(n.box[a] + p.near_off[a]) - p.o[a]) * p.inv[a];
     d[3 + a] = (load8(n.box[a] + p.far_off[a]) - p.o[a]) * p.inv[a];
   }
 }
+#endif
 
 // The same for quantised planes, dequantised exactly as the build checked them
 // (origin + q * scale).
