@@ -551,6 +551,14 @@ int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBv
           }
           stack[j] = e;
         }
+        // The nearest child at once: a fresh entry's lanes all pass the pop's test (the
+        // packet's entry bound is below each lane's entry, which is before its nearest hit).
+        if (top > base) {
+          const PacketEntry& e = stack[--top];
+          ref = e.ref;
+          lanes = static_cast<int>(e.lanes);
+          continue;
+        }
       }
     } else {
       const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
