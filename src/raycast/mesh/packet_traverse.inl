@@ -52,9 +52,13 @@ struct PacketData {
   // when every lane has the same axis permutation (`shared`).
   bool leaves_ready = false, shared = false;
   int lane_k[3][N];
-  alignas(64) float lane_s[3][N], lane_ok[3][N], lane_tmin[N];
+  alignas(64) float lane_s[3][N], lane_ok[3][N];
   int kx, ky, kz;
   V sx, sy, sz, okx, oky, okz;
+  // Each lane's constants as the single-ray leaf test reads them (only the triangle test's
+  // members are set): leaf_by_lane passes them by reference, so the test reads its broadcasts
+  // from here instead of a copy spilled to the stack for every lane of every leaf.
+  RayData lane_ray[N];
 };
 
 // A packet's rays as lanes: ox, oy, oz, dx, dy, dz, tmin, tmax, each of N lanes (idle lanes
@@ -275,7 +279,6 @@ inline bool prepare_packet(const PacketRays<N>& pr, PacketData<N>& p) {
   }
   float tmin_lo, tmin_hi;
   min_max_lanes<N>(f[6], tmin_lo, tmin_hi);
-  for (int l = 0; l < N; ++l) p.lane_tmin[l] = f[6][l];
   p.tmin_lo = splat(tmin_lo);
   p.tmin = L::load(f[6]);
   return true;
@@ -301,6 +304,17 @@ inline void prepare_leaves(const PacketRays<N>& pr, PacketData<N>& p) {
     p.lane_ok[0][l] = ro[w.kx];
     p.lane_ok[1][l] = ro[w.ky];
     p.lane_ok[2][l] = ro[w.kz];
+    RayData& lr = p.lane_ray[l];
+    lr.kx = w.kx;
+    lr.ky = w.ky;
+    lr.kz = w.kz;
+    lr.sx = splat(w.sx);
+    lr.sy = splat(w.sy);
+    lr.sz = splat(w.sz);
+    lr.okx = splat(ro[w.kx]);
+    lr.oky = splat(ro[w.ky]);
+    lr.okz = splat(ro[w.kz]);
+    lr.tmin = splat(r.tmin);
   }
   p.kx = p.lane_k[0][0];
   p.ky = p.lane_k[1][0];
@@ -470,20 +484,10 @@ template <int N>
 inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
                          const PacketData<N>& p, int lanes, float* tmax_s, MeshBvhHit* hits,
                          int& found) {
-  RayData r;  // only the triangle test's members are set
   PairResult res;
   for (; lanes; lanes &= lanes - 1) {
     const int l = __builtin_ctz(lanes);
-    r.kx = p.lane_k[0][l];
-    r.ky = p.lane_k[1][l];
-    r.kz = p.lane_k[2][l];
-    r.sx = splat(p.lane_s[0][l]);
-    r.sy = splat(p.lane_s[1][l]);
-    r.sz = splat(p.lane_s[2][l]);
-    r.okx = splat(p.lane_ok[0][l]);
-    r.oky = splat(p.lane_ok[1][l]);
-    r.okz = splat(p.lane_ok[2][l]);
-    r.tmin = splat(p.lane_tmin[l]);
+    const RayData& r = p.lane_ray[l];
     for (std::uint32_t gi = first; gi < end; gi += 2) {
       const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
       int m = intersect_pair(bvh.groups[gi], g1, r, splat(tmax_s[l]), res);
@@ -550,6 +554,14 @@ int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBv
             --j;
           }
           stack[j] = e;
+        }
+        // The nearest child at once: a fresh entry's lanes all pass the pop's test (the
+        // packet's entry bound is below each lane's entry, which is before its nearest hit).
+        if (top > base) {
+          const PacketEntry& e = stack[--top];
+          ref = e.ref;
+          lanes = static_cast<int>(e.lanes);
+          continue;
         }
       }
     } else {
