@@ -207,9 +207,13 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
     if (max_component(seen) <= 0) return;
     sum += mul(seen, term);
   };
-  for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
-    const Light& light = scene_.lights[li];
-    const Color& emitted = emitted_[li];
+  // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
+  const Light* const lights = scene_.lights.data();
+  const Color* const emitted_by = emitted_.data();
+  const std::size_t light_count = scene_.lights.size();
+  for (std::size_t li = 0; li < light_count; ++li) {
+    const Light& light = lights[li];
+    const Color& emitted = emitted_by[li];
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:
