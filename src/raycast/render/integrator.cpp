@@ -92,8 +92,7 @@ SurfaceNeeds Integrator::needs(std::size_t material) const {
                                                             : SurfaceNeeds::kGeometry;
 }
 
-Color Integrator::li(const Ray& ray, SampleState& state) const {
-  if (mode_ == RenderMode::kWhitted) return whitted(ray, 0, state);
+Color Integrator::li_diagnostic(const Ray& ray, SampleState& state) const {
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) {
@@ -117,7 +116,7 @@ Color Integrator::li(const Ray& ray, SampleState& state) const {
       return id_color(scene_.objects[hit.object].entry);
     case RenderMode::kAlbedo:
       return albedo(scene_, textures_, ray, hit, si);
-    case RenderMode::kWhitted:
+    case RenderMode::kWhitted:  // li() calls whitted() itself
       break;
   }
   return {0, 0, 0};
