@@ -17,13 +17,4 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
   half_width_ = aspect * half_height_;
 }
 
-Ray Camera::ray(double x, double y) const {
-  // Screen coordinates in [-1, 1], +sx to the right and +sy up.
-  const double sx = 2 * x / width_ - 1;
-  const double sy = 1 - 2 * y / height_;
-  const Vec3 offset = (sx * half_width_) * u_ + (sy * half_height_) * v_;
-  if (type_ == CameraType::kOrthographic) return {origin_ + offset, w_, 0, kInfinity};
-  return {origin_, normalize(w_ + offset), 0, kInfinity};
-}
-
 }  // namespace raycast

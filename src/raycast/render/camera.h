@@ -15,7 +15,7 @@ class Camera {
   /// The ray through the raster position (x, y): x from 0 (left edge) to width, y from 0 (top
   /// edge) to height, so pixel (i, j) covers [i, i+1] x [j, j+1]. The direction is unit length, so
   /// t is the distance from the origin; tmin = 0, tmax = inf.
-  Ray ray(double x, double y) const;
+  Ray ray(double x, double y) const;  // inline below: called once per sample
 
   const Vec3& forward() const { return w_; }
 
@@ -26,5 +26,14 @@ class Camera {
   double half_width_, half_height_;  // of the image plane at distance 1 (perspective) or in units
   double width_, height_;
 };
+
+inline Ray Camera::ray(double x, double y) const {
+  // Screen coordinates in [-1, 1], +sx to the right and +sy up.
+  const double sx = 2 * x / width_ - 1;
+  const double sy = 1 - 2 * y / height_;
+  const Vec3 offset = (sx * half_width_) * u_ + (sy * half_height_) * v_;
+  if (type_ == CameraType::kOrthographic) return {origin_ + offset, w_, 0, kInfinity};
+  return {origin_, normalize(w_ + offset), 0, kInfinity};
+}
 
 }  // namespace raycast

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <optional>
 
 #include "geometry/spawn.h"
 #include "render/optics.h"
@@ -93,8 +92,7 @@ SurfaceNeeds Integrator::needs(std::size_t material) const {
                                                             : SurfaceNeeds::kGeometry;
 }
 
-Color Integrator::li(const Ray& ray, SampleState& state) const {
-  if (mode_ == RenderMode::kWhitted) return whitted(ray, 0, state);
+Color Integrator::li_diagnostic(const Ray& ray, SampleState& state) const {
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) {
@@ -118,7 +116,7 @@ Color Integrator::li(const Ray& ray, SampleState& state) const {
       return id_color(scene_.objects[hit.object].entry);
     case RenderMode::kAlbedo:
       return albedo(scene_, textures_, ray, hit, si);
-    case RenderMode::kWhitted:
+    case RenderMode::kWhitted:  // li() calls whitted() itself
       break;
   }
   return {0, 0, 0};
@@ -142,13 +140,13 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer
   const Vec3 v = -wi;
   // Shadow rays leaving on the shading normal's side of a smooth mesh start from Hanika's point
-  // (for any other object terminator_origin returns si itself: no copy).
-  std::optional<SurfaceInfo> moved;  // no 120-byte initialisation per hit
+  // (a temporary at its own call: a std::optional here had GCC zero 120 bytes per hit).
+  const unsigned exponent = exponents_[mi];
+  Color result = m.ambient * mul(scene_.render.ambient, c);
   if (objects_[std::size_t(hit.object)].terminator)
-    moved = terminator_origin(object, hit.local, si);
-  const SurfaceInfo& lit = moved ? *moved : si;
-  Color result = m.ambient * mul(scene_.render.ambient, c) +
-                 direct(si, lit, n, v, m, exponents_[mi], c, state);
+    result += direct(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state);
+  else
+    result += direct(si, si, n, v, m, exponent, c, state);
   if (depth >= scene_.render.max_depth) return result;
 
   // Split between the mirror and the refracted ray (fixed weights, or exact Fresnel).
@@ -208,9 +206,13 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
     if (max_component(seen) <= 0) return;
     sum += mul(seen, term);
   };
-  for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
-    const Light& light = scene_.lights[li];
-    const Color& emitted = emitted_[li];
+  // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
+  const Light* const lights = scene_.lights.data();
+  const Color* const emitted_by = emitted_.data();
+  const std::size_t light_count = scene_.lights.size();
+  for (std::size_t li = 0; li < light_count; ++li) {
+    const Light& light = lights[li];
+    const Color& emitted = emitted_by[li];
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:

@@ -30,7 +30,11 @@ class Integrator {
   Integrator(const Scene& scene, RenderMode mode);
 
   /// The value seen along a primary ray (unit direction for `depth` to be a distance).
-  Color li(const Ray& ray, SampleState& state) const;
+  Color li(const Ray& ray, SampleState& state) const {
+    // Inline: the Whitted case without the frame of the diagnostic modes.
+    if (mode_ == RenderMode::kWhitted) return whitted(ray, 0, state);
+    return li_diagnostic(ray, state);
+  }
 
   /// Whitted radiance along a ray `depth` secondary bounces deep (primary rays: 0) whose
   /// radiance reaches the pixel multiplied by `weight` (primary rays: 1); its reflected and
@@ -44,6 +48,8 @@ class Integrator {
   Color shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
  private:
+  /// li() for the modes other than kWhitted.
+  Color li_diagnostic(const Ray& ray, SampleState& state) const;
   /// The shadow segment's passage through object `index`: false when an opaque part of it
   /// crosses the segment; else true, with `through` multiplied by the object's filter when the
   /// segment crosses it (once per object).
