@@ -20,15 +20,12 @@ static_assert(AllShapes<ShapeVariant>::value, "every alternative of ShapeVariant
 
 // std::visit over the shapes calls through a table of thunks that GCC 12 does not inline; the
 // shapes of most scenes (plane, sphere, box) are dispatched first by direct tests of the index
-// (docs/performance-render.md, round 7), then meshes, CSG objects and instances (session 9: top9).
+// (docs/performance-render.md, round 7).
 template <class F>
 decltype(auto) visit_shape(const ShapeVariant& v, F&& f) {
   if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
   if (const auto* s = std::get_if<Sphere>(&v)) return f(*s);
   if (const auto* s = std::get_if<Box>(&v)) return f(*s);
-  if (const auto* s = std::get_if<MeshShape>(&v)) return f(*s);
-  if (const auto* s = std::get_if<CsgShape>(&v)) return f(*s);
-  if (const auto* s = std::get_if<InstanceShape>(&v)) return f(*s);
   return std::visit(f, v);
 }
 
