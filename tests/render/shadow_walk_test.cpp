@@ -65,20 +65,66 @@ Vec3 random_point(std::mt19937_64& rng, double half) {
   return {u(rng), u(rng), u(rng)};
 }
 
-void expect_walk_matches_every_object(bool transmissive) {
-  const Scene scene = load_scene_text(scene_text(transmissive));
+// CSG objects and instances whose balls (scene/bounding_ball.h) are much tighter than their
+// boxes': a rotated cube minus a sphere, a lens, a rotated notched torus, a union of spheres, a
+// Steinmetz solid, and instances of a sphere minus a bar; `alt` as in scene_text.
+std::string csg_scene_text(bool transmissive) {
+  const char* alt = transmissive ? "a" : "o";
+  std::ostringstream text;
+  text << "materials:\n  a: {color: [0.8, 0.6, 0.4], transmission: " << (transmissive ? 0.5 : 0)
+       << "}\n  o: {color: [1, 1, 1]}\n"
+       << "library:\n  nut:\n    difference:\n      - sphere: {radius: 0.45}\n"
+       << "      - box: {min: [-0.2, -1, -0.2], max: [0.2, 1, 0.2]}\n"
+       << "objects:\n"
+       << "  - {plane: {normal: [0, 1, 0], point: [0, -2, 0]}, material: o}\n"
+       << "  - difference:\n      - box: {min: [-1, -1, -1], max: [1, 1, 1]}\n"
+       << "      - sphere: {radius: 1.3}\n"
+       << "    transform: [{rotate: {axis: [1, 2, 0], degrees: 30}}, {translate: [-2, 0, 1]}]\n"
+       << "    material: " << alt << "\n"
+       << "  - intersection:\n      - sphere: {center: [0, 0, -1.2], radius: 1.5}\n"
+       << "      - sphere: {center: [0, 0, 1.2], radius: 1.5}\n"
+       << "    transform: [{rotate: {axis: [0, 1, 1], degrees: 50}}, {translate: [1.5, 0.5, 0]}]\n"
+       << "    material: a\n"
+       << "  - difference:\n      - torus: {major_radius: 0.9, minor_radius: 0.3}\n"
+       << "        transform: [{rotate: {axis: [1, 0, 0], degrees: 90}}]\n"
+       << "      - box: {min: [-0.5, -0.5, -1.5], max: [0.5, 0.5, -0.5]}\n"
+       << "    transform: [{translate: [0, 2, -2]}]\n    material: " << alt << "\n"
+       << "  - union:\n      - sphere: {center: [0, 0, 0], radius: 0.5}\n"
+       << "      - sphere: {center: [0, 0.6, 0], radius: 0.35}\n"
+       << "    transform: [{translate: [2.5, -1, -2]}]\n    material: a\n"
+       << "  - intersection:\n      - cylinder: {from: [-1, 0, 0], to: [1, 0, 0], radius: 1}\n"
+       << "      - cylinder: {from: [0, -1, 0], to: [0, 1, 0], radius: 1}\n"
+       << "      - cylinder: {from: [0, 0, -1], to: [0, 0, 1], radius: 1}\n"
+       << "    transform: [{scale: [1, 0.7, 1.2]}, {translate: [-1, 2, 2]}]\n    material: o\n";
+  for (int i = 0; i < 4; ++i)
+    text << "  - {use: nut, transform: [{scale: " << 1 + 0.3 * i << "}, {translate: ["
+         << -3 + 1.5 * i << ", -1, -3]}], material: " << (i % 2 ? alt : "o") << "}\n";
+  return text.str();
+}
+
+void expect_walk_matches_every_object(bool transmissive, bool csg = false) {
+  const Scene scene =
+      load_scene_text(csg ? csg_scene_text(transmissive) : scene_text(transmissive));
   ASSERT_TRUE(make_shadow_bounds(scene).usable);
   const Integrator integrator(scene, RenderMode::kWhitted);
   SampleState state{Rng(1), 0};
   std::mt19937_64 rng(7);
   int blocked = 0, filtered = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Vec3 from = random_point(rng, 4);
+    Vec3 from = random_point(rng, 4);
     // Segments to random points and half-lines in random directions, and segments through
     // points of the unit sphere's surface (grazing and crossing it).
     Vec3 to = random_point(rng, 6);
     const bool to_infinity = i % 3 == 1;
     if (i % 3 == 2) to = from + 2.0 * (normalize(random_point(rng, 1)) - from);
+    if (csg && i % 2 == 0) {
+      // From a point on an object's surface (where shading starts shadow rays), offset along
+      // the ray that found it, or a little inside it.
+      SceneHit hit;
+      const Vec3 eye = random_point(rng, 6), dir = random_point(rng, 3) - eye;
+      if (scene.intersect(Ray{eye, dir, 0, kInfinity}, hit))
+        from = eye + hit.local.t * (1 + (i % 4 == 0 ? -1e-9 : 1e-9)) * dir;
+    }
     const Color got = integrator.shadow(from, to, to_infinity, state);
     const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
     const Color want = every_object(scene, segment);
@@ -106,6 +152,14 @@ TEST(ShadowWalk, OpaqueScene_SameAnswersAsEveryObjectAskedInTurn) {
 
 TEST(ShadowWalk, TransmissiveScene_SameProductAsEveryObjectAskedInTurn) {
   expect_walk_matches_every_object(true);
+}
+
+TEST(ShadowWalk, CsgOpaqueScene_SameAnswersAsEveryObjectAskedInTurn) {
+  expect_walk_matches_every_object(false, true);
+}
+
+TEST(ShadowWalk, CsgTransmissiveScene_SameProductAsEveryObjectAskedInTurn) {
+  expect_walk_matches_every_object(true, true);
 }
 
 TEST(ShadowBalls, EveryBallWithinItsRadiusOfTheHalfLineIsVisited_FartherOnesAreNot) {

@@ -13,6 +13,7 @@
 
 #include "mesh/mesh.h"
 #include "mesh/procedural.h"
+#include "scene/loader.h"
 #include "support/random.h"
 
 namespace raycast {
@@ -109,6 +110,46 @@ TEST(ObjectSet, FlatWalk_MatchesBruteForce) {
 // object): each kind alone (box, sphere, translated sphere).
 TEST(ObjectSet, SoleObject_MatchesBruteForce) {
   for (std::size_t kind = 0; kind < 3; ++kind) check_against_brute_force(1, true, false, kind);
+}
+
+// A sole CSG object of whole spheres and boxes skips the box test (the tree culls itself); one
+// with another leaf keeps it: both answer as the object asked directly.
+TEST(ObjectSet, SoleCsgObject_MatchesTheObject) {
+  const char* texts[] = {
+      "objects:\n  - difference:\n      - sphere: {radius: 0.45}\n"
+      "      - box: {min: [-0.2, -1, -0.2], max: [0.2, 1, 0.2]}\n"
+      "    transform: [{rotate: {axis: [1, 1, 0], degrees: 40}}, {translate: [0.3, -0.2, 0.1]}]\n",
+      "objects:\n  - union:\n      - sphere: {radius: 0.5}\n"
+      "      - sphere: {center: [0.6, 0, 0], radius: 0.3}\n",
+      "objects:\n  - difference:\n      - torus: {major_radius: 0.9, minor_radius: 0.3}\n"
+      "      - box: {min: [-0.5, -0.5, -1.5], max: [0.5, 0.5, -0.5]}\n"};
+  for (const char* text : texts) {
+    const Scene scene = load_scene_text(text);
+    const std::vector<Object> objects = scene.objects;
+    ASSERT_EQ(objects.size(), 1u);
+    ObjectSet set;
+    set.build(objects);
+    testing::Rng rng(5);
+    int hits = 0;
+    for (int n = 0; n < 4000; ++n) {
+      Ray ray = testing::random_ray(rng, 2, 1);
+      if (n % 2 == 1) ray.tmax = rng.uniform(0.05, 3.0);
+      if (n % 4 == 0) ray.d = rng.in_box(0.3) - ray.o;  // aimed near the object
+      if (n % 10 == 3) ray.d[n % 3] = 0;
+      if (n % 20 == 7) ray.o = rng.in_box(0.3);  // starting inside or near it
+      LocalHit want, got;
+      const bool expected = intersect(objects[0], ray, want) && want.t <= ray.tmax;
+      std::int32_t index = -1;
+      ASSERT_EQ(set.intersect(objects, ray, got, index), expected) << text << n;
+      if (expected) {
+        ++hits;
+        EXPECT_EQ(got.t, want.t) << n;
+        EXPECT_EQ(index, 0) << n;
+      }
+      EXPECT_EQ(set.occluded(objects, ray), occluded(objects[0], ray)) << text << n;
+    }
+    EXPECT_GT(hits, 400) << text;
+  }
 }
 
 TEST(ObjectSet, FloatBoxWalk_MatchesBruteForce) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "scene/csg_tree.h"
+
 namespace raycast {
 
 void ObjectSet::build(std::span<const Object> objects) {
@@ -29,6 +31,15 @@ void ObjectSet::build(std::span<const Object> objects) {
   sole_ = flat_ && bounded_.size() == 1 && unbounded_.empty();
   sole_mesh_ = sole_ && !objects[bounded_[0]].xf &&
                std::holds_alternative<MeshShape>(objects[bounded_[0]].shape);
+  sole_box_ = true;
+  if (const auto* csg = sole_ ? std::get_if<CsgShape>(&objects[bounded_[0]].shape) : nullptr) {
+    // A CSG object of whole spheres and boxes only: each leaf's own interval costs about what
+    // the box test does, and an instance's prototype box has just passed in the instance's box
+    // (docs/performance-render.md, session 9: top9).
+    sole_box_ = false;
+    for (const CsgTree::LeafKind kind : csg->tree->leaf_kind)
+      if (kind != CsgTree::LeafKind::kSphere && kind != CsgTree::LeafKind::kBox) sole_box_ = true;
+  }
   if (flat_) {
     bvh_ = Bvh{};
     if (boxes.size() < kFloatBoxesFrom) {
@@ -116,9 +127,10 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
                           std::int32_t& index) const {
   if (sole_) {
     // The object's box first: rays that miss it cost less here than in the object (a mesh, or
-    // an instance's prototype of one object), and the walk below is not set up.
-    if (!box_meets(0, ray, reciprocal(ray.d), ray.tmax)) return false;
+    // an instance's prototype of one object), and the walk below is not set up (unless the box
+    // test is skipped: sole_box_).
     const Object& object = objects[bounded_[0]];
+    if (sole_box_ && !box_meets(0, ray, reciprocal(ray.d), ray.tmax)) return false;
     if (sole_mesh_) {
       if (!raycast::intersect(object, ray, hit)) return false;
     } else {  // the hit taken on the walk's terms (t not beyond tmax)
@@ -180,7 +192,7 @@ std::size_t ObjectSet::float_candidates(const Ray& ray, const Vec3& inv_d,
 
 bool ObjectSet::occluded(std::span<const Object> objects, const Ray& ray) const {
   if (sole_)  // flat_any's walk of one box, without the visitor
-    return box_meets(0, ray, reciprocal(ray.d), ray.tmax) &&
+    return (!sole_box_ || box_meets(0, ray, reciprocal(ray.d), ray.tmax)) &&
            raycast::occluded(objects[bounded_[0]], ray);
   return any(ray, [&](std::uint32_t i) { return raycast::occluded(objects[i], ray); });
 }

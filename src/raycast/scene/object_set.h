@@ -145,6 +145,9 @@ class ObjectSet {
   // The set is one bounded object of any kind and nothing else (boxes_ holds its box): the same
   // short cut for both queries.
   bool sole_ = false;
+  // sole_: whether its box is tested first; not for a CSG object whose leaves are all whole
+  // spheres and boxes (their own intervals are as cheap as the box test).
+  bool sole_box_ = true;
   // flat_, from kFloatBoxesFrom: bounded_[4 g + l]'s box in lane l of group g, stored once per
   // ray octant o (the signs of d's x, y, z in bits 0, 1, 2) at groups_[o * group_count_ + g],
   // its rows the near planes then the far ones for that octant (lo or hi by the sign).
