@@ -82,16 +82,17 @@ bool intersect(const Torus& s, const Ray& ray, LocalHit& hit) {
   const double len = 1 / q.inv_len;
   // The u range of [tmin, tmax], widened by a rounding margin; t is re-checked exactly below.
   const double margin = gamma(4) * (std::abs(q.t_c) * len + q.h);
-  double u[4];
-  const int n = roots_u(q, (ray.tmin - q.t_c) * len - margin, (ray.tmax - q.t_c) * len + margin, u);
-  for (int i = 0; i < n; ++i) {
-    const double t = q.t_c + u[i] * q.inv_len;
-    if (t >= ray.tmin && t <= ray.tmax) {
-      hit = LocalHit{.t = t};
-      return true;
-    }
-  }
-  return false;
+  const double u_lo = (ray.tmin - q.t_c) * len - margin, u_hi = (ray.tmax - q.t_c) * len + margin;
+  // Only the nearest crossing in [tmin, tmax] is wanted: the isolation stops there.
+  const auto in_range = [&](double u) {
+    const double t = q.t_c + u * q.inv_len;
+    return t >= ray.tmin && t <= ray.tmax;
+  };
+  double u;
+  if (!find_first_real_root(q.p, std::max(u_lo, -q.h), std::min(u_hi, q.h), in_range, u))
+    return false;
+  hit = LocalHit{.t = q.t_c + u * q.inv_len};
+  return true;
 }
 
 void spans(const Torus& s, const Ray& ray, SpanList& out) {
