@@ -66,10 +66,10 @@ double refine(const Implicit& s, const Ray& ray, double a, double b, double fa, 
 enum class Want { kAll, kFirst, kAny };
 
 // The roots of f along the ray in [lo, hi], in increasing order, into roots (at most max_roots);
-// see Want. Returns the count. known_f is f at known_t, if the caller has it (NaN: nothing). A piece is split in
-// kFormulaLanes parts evaluated in one pass (run_lanes); parts whose inclusion excludes 0 are
-// dropped, the others kept in order on a stack, each settled by its ends' signs once f is
-// monotone on it (or it is too small to split) and split again otherwise.
+// see Want. Returns the count. known_f is f at known_t, if the caller has it (NaN: nothing). A
+// piece is split in kFormulaLanes parts evaluated in one pass (run_lanes); parts whose inclusion
+// excludes 0 are dropped, the others kept in order on a stack, each settled by its ends' signs once
+// f is monotone on it (or it is too small to split) and split again otherwise.
 int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want want, double* roots,
                int max_roots, double known_t = std::numeric_limits<double>::quiet_NaN(),
                double known_f = 0) {

@@ -22,7 +22,8 @@ class RootFilter {
  public:
   template <class F>
   RootFilter(const F& f)  // NOLINT(google-explicit-constructor): a lambda passes as is
-      : object_(&f), call_([](const void* o, double x) { return (*static_cast<const F*>(o))(x); }) {}
+      : object_(&f),
+        call_([](const void* o, double x) { return (*static_cast<const F*>(o))(x); }) {}
   bool operator()(double x) const { return call_(object_, x); }
 
  private:
