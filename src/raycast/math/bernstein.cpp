@@ -27,9 +27,16 @@ constexpr Binomials kBinomials;
 // elementwise IEEE operations on both (so the same bits as two scalar loops), in one vector.
 using Pair = double __attribute__((vector_size(16)));
 
-BernsteinForm bernstein_form(const Polynomial& p, double a, double w) {
+namespace {
+
+// bernstein_form for degree N (kDynamic: p.degree): the fixed degrees let the compiler unroll the
+// triangular loops; the operations and their order are the same for all, so are the bits.
+constexpr int kDynamic = -1;
+
+template <int N>
+BernsteinForm bernstein_form_n(const Polynomial& p, double a, double w) {
   BernsteinForm f;
-  const int n = p.degree;
+  const int n = N == kDynamic ? p.degree : N;
   f.degree = n;
   // .. [0] the coefficients, then the Bernstein coefficients, in place; [1] the same computation
   // on |p|, |a|: every term's magnitude summed.
@@ -59,8 +66,9 @@ BernsteinForm bernstein_form(const Polynomial& p, double a, double w) {
   return f;
 }
 
-void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm& right) {
-  const int n = f.degree;
+template <int N>
+void bernstein_halves_n(const BernsteinForm& f, BernsteinForm& left, BernsteinForm& right) {
+  const int n = N == kDynamic ? f.degree : N;
   left.degree = right.degree = n;
   double b[kMaxPolynomialDegree + 1], e[kMaxPolynomialDegree + 1];
   std::copy(f.b, f.b + n + 1, b);
@@ -82,6 +90,30 @@ void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm
     left.e[j] = e[0];
     right.b[n - j] = b[n - j];
     right.e[n - j] = e[n - j];
+  }
+}
+
+}  // namespace
+
+BernsteinForm bernstein_form(const Polynomial& p, double a, double w) {
+  switch (p.degree) {
+    case 4:
+      return bernstein_form_n<4>(p, a, w);
+    case 6:
+      return bernstein_form_n<6>(p, a, w);
+    default:
+      return bernstein_form_n<kDynamic>(p, a, w);
+  }
+}
+
+void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm& right) {
+  switch (f.degree) {
+    case 4:
+      return bernstein_halves_n<4>(f, left, right);
+    case 6:
+      return bernstein_halves_n<6>(f, left, right);
+    default:
+      return bernstein_halves_n<kDynamic>(f, left, right);
   }
 }
 
