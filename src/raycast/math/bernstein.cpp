@@ -124,17 +124,22 @@ void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm
   }
 }
 
-int max_sign_changes(const BernsteinForm& f) {
+namespace {
+
+template <int N>
+int max_sign_changes_n(const BernsteinForm& f) {
+  const int n = N == kDynamic ? f.degree : N;
   // Certain signs: count the changes.
   int changes = 0, last = 0, i = 0;
-  for (; i <= f.degree; ++i) {
+#pragma GCC unroll 8
+  for (; i <= n; ++i) {
     const double b = f.b[i], e = f.e[i];
     const int sign = b > e ? 1 : (b < -e ? -1 : 0);
     if (sign == 0) break;
     changes += last != 0 && sign != last;
     last = sign;
   }
-  if (i > f.degree) return changes;
+  if (i > n) return changes;
   // From the first uncertain coefficient on: the most changes of a sequence ending in a positive
   // (pos) or negative (neg) value, where an uncertain coefficient may be either; kNone: none.
   constexpr int kNone = -1000;
@@ -144,7 +149,7 @@ int max_sign_changes(const BernsteinForm& f) {
     neg = f.b[0] <= f.e[0] ? 0 : kNone;
     ++i;
   }
-  for (; i <= f.degree; ++i) {
+  for (; i <= n; ++i) {
     const bool can_pos = f.b[i] >= -f.e[i], can_neg = f.b[i] <= f.e[i];
     const int p = can_pos ? std::max(pos, neg + 1) : kNone;
     const int q = can_neg ? std::max(neg, pos + 1) : kNone;
@@ -152,7 +157,20 @@ int max_sign_changes(const BernsteinForm& f) {
     neg = q;
   }
   // Neither sign possible: a NaN coefficient; it decides nothing.
-  return pos < 0 && neg < 0 ? f.degree + 1 : std::max(pos, neg);
+  return pos < 0 && neg < 0 ? n + 1 : std::max(pos, neg);
+}
+
+}  // namespace
+
+int max_sign_changes(const BernsteinForm& f) {
+  switch (f.degree) {
+    case 4:
+      return max_sign_changes_n<4>(f);
+    case 6:
+      return max_sign_changes_n<6>(f);
+    default:
+      return max_sign_changes_n<kDynamic>(f);
+  }
 }
 
 }  // namespace raycast
