@@ -234,6 +234,13 @@ int exponent_of(double x) {
   return biased - 1023;
 }
 
+// x 2^e, as std::ldexp(x, e) (one correctly rounded operation either way) without the libm call
+// while 2^e is a normal double.
+double scale2(double x, int e) {
+  if (e < -1022 || e > 1023) return std::ldexp(x, e);
+  return x * std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+}
+
 // Fujiwara's bound on the magnitude of every complex root, 2 max |c_{n-i} / c_n|^(1/i) (the
 // constant term's ratio halved), rounded up to powers of two so that no pow() is needed.
 double root_bound(const Polynomial& p) {
@@ -249,14 +256,7 @@ double root_bound(const Polynomial& p) {
     e = std::max(e, root_exp);
   }
   if (e == std::numeric_limits<int>::min()) return 0;
-  return std::ldexp(2.0, e);
-}
-
-// x 2^e, as std::ldexp(x, e) (one correctly rounded operation either way) without the libm call
-// while 2^e is a normal double.
-double scale2(double x, int e) {
-  if (e < -1022 || e > 1023) return std::ldexp(x, e);
-  return x * std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+  return scale2(2.0, e);
 }
 
 bool RootStop::takes(double u) {
@@ -299,7 +299,7 @@ int solve(const Polynomial& p_in, double lo, double hi, double* roots, RootStop*
     if (!std::isfinite(cmax) || cmax == 0) return 0;
     const int ce2 = exponent_of(cmax);
     for (int i = 0; i <= p.degree; ++i) p.c[i] = scale2(p.c[i], -ce2);
-    p = trimmed(p);
+    while (p.degree > 0 && p.c[p.degree] == 0) --p.degree;  // trimmed, in place
     if (p.degree == 0) return 0;
     lo = scale2(lo, -se);
     hi = scale2(hi, -se);
