@@ -168,7 +168,7 @@ Interval widen_ulps(double lo, double hi) {
 // (sin to r^15, cos to r^16), then the quadrant. Lanes with |x| > 2^19 (or not finite) take
 // libm's sincos (within kLibmUlps ulps). Elementwise IEEE operations without contraction: the
 // same bits for every width.
-void sincos_points(V x, V& s, V& c) {
+[[gnu::always_inline]] inline void sincos_points(V x, V& s, V& c) {
   constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
   constexpr double kPio2_1 = 0x1.921fb544p+0;  // 33 bits of pi/2, then the next 33, and so on
   constexpr double kPio2_2 = 0x1.0b4611a6p-34;
