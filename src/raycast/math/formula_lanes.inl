@@ -212,44 +212,65 @@ Interval widen_ulps(double lo, double hi) {
   }
 }
 
+// interval_detail::hits_phase on every lane: the same operations elementwise.
+inline M hits_phase_lanes(V lo, V hi, double c, double period) {
+  V k = (lo - splat(c)) / splat(period) - splat(1e-9);
+  for (int j = 0; j < W; ++j) k[j] = std::ceil(k[j]);
+  return splat(c) + k * splat(period) <= hi + splat(1e-9) * (splat(1) + vabs(hi));
+}
+
+// std::min(a, b) and std::max(a, b) elementwise (the first argument on ties).
+inline V vmin(V a, V b) { return b < a ? b : a; }
+inline V vmax(V a, V b) { return a < b ? b : a; }
+
 // sin and cos of variable lanes `x` whose intervals run between the points p[k], p[k + 1]
 // (give or take the rounding of the intervals' ends), from sincos of those points.
-// s[j], c[j]: sin and cos of p[j].
+// s[j], c[j]: sin and cos of p[j]. Every lane by the same elementwise operations as the scalar
+// form (Interval's sin_cos bounds from the points' values, widened by their distance to the
+// interval's ends, the extrema by hits_phase); empty lanes and lanes of a period or more are
+// then set as that form sets them.
 void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const double* c,
                  Slot& sin_x, Slot& cos_x) {
-  using interval_detail::hits_phase;
   constexpr double kTwoPi = 2 * std::numbers::pi;
+  constexpr double kHalfPi = std::numbers::pi / 2;
+  V p0, p1, s0, s1, c0, c1;
   for (int k = 0; k < W; ++k) {
-    const Interval a{x.lo[k], x.hi[k]};
-    Interval si, ci;
-    if (a.is_empty()) {
-      si = ci = a;
-    } else if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) {
-      si = ci = {-1, 1};
-    } else {
-      const double pmin = std::min(p[k], p[k + 1]), pmax = std::max(p[k], p[k + 1]);
-      // Every point of a lies within e of [pmin, pmax] (e rounded up).
-      // (s, c: within kLaneSinCosError of sin and cos of the points, or from libm.)
-      const double e =
-          std::max({0.0, pmin - a.lo, a.hi - pmax}) * (1 + 0x1p-50) + 0x1p-1074 + kLaneSinCosError;
-      auto clamp = [](const Interval& r) {
-        return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
-      };
-      double lo = std::min(s[k], s[k + 1]) - e, hi = std::max(s[k], s[k + 1]) + e;
-      if (hits_phase(a.lo, a.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
-      if (hits_phase(a.lo, a.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
-      si = clamp(widen_ulps(lo, hi));
-      lo = std::min(c[k], c[k + 1]) - e;
-      hi = std::max(c[k], c[k + 1]) + e;
-      if (hits_phase(a.lo, a.hi, 0, kTwoPi)) hi = 1;
-      if (hits_phase(a.lo, a.hi, std::numbers::pi, kTwoPi)) lo = -1;
-      ci = clamp(widen_ulps(lo, hi));
-    }
-    sin_x.lo[k] = si.lo;
-    sin_x.hi[k] = si.hi;
-    cos_x.lo[k] = ci.lo;
-    cos_x.hi[k] = ci.hi;
+    p0[k] = p[k];
+    p1[k] = p[k + 1];
+    s0[k] = s[k];
+    s1[k] = s[k + 1];
+    c0[k] = c[k];
+    c1[k] = c[k + 1];
   }
+  const V lo = x.lo, hi = x.hi, zero = splat(0), one = splat(1), minus_one = splat(-1);
+  const V pmin = vmin(p0, p1), pmax = vmax(p0, p1);
+  // Every point of x lies within e of [pmin, pmax] (e rounded up); as std::max({0, a, b}).
+  V far = zero;
+  far = vmax(far, pmin - lo);
+  far = vmax(far, hi - pmax);
+  const V e = far * splat(1 + 0x1p-50) + splat(0x1p-1074) + splat(kLaneSinCosError);
+  // widen_ulps, then the clamp to [-1, 1].
+  const V steps = splat(2 * (kLibmUlps + 1)), ulp = splat(0x1p-52), tiny = splat(0x1p-1074);
+  auto bound = [&](V l, V h, V& rl, V& rh) {
+    l = l - steps * (vabs(l) * ulp + tiny);
+    h = h + steps * (vabs(h) * ulp + tiny);
+    rl = l < minus_one ? minus_one : l;
+    rh = one < h ? one : h;
+  };
+  V slo = vmin(s0, s1) - e, shi = vmax(s0, s1) + e;
+  shi = hits_phase_lanes(lo, hi, kHalfPi, kTwoPi) ? one : shi;
+  slo = hits_phase_lanes(lo, hi, -kHalfPi, kTwoPi) ? minus_one : slo;
+  bound(slo, shi, sin_x.lo, sin_x.hi);
+  V clo = vmin(c0, c1) - e, chi = vmax(c0, c1) + e;
+  chi = hits_phase_lanes(lo, hi, 0, kTwoPi) ? one : chi;
+  clo = hits_phase_lanes(lo, hi, std::numbers::pi, kTwoPi) ? minus_one : clo;
+  bound(clo, chi, cos_x.lo, cos_x.hi);
+  const M empty = ~(lo <= hi);
+  const M whole = ~(hi - lo < splat(kTwoPi)) | (vabs(lo) > splat(1e15)) | (vabs(hi) > splat(1e15));
+  sin_x.lo = empty ? lo : (whole ? minus_one : sin_x.lo);
+  sin_x.hi = empty ? hi : (whole ? one : sin_x.hi);
+  cos_x.lo = empty ? lo : (whole ? minus_one : cos_x.lo);
+  cos_x.hi = empty ? hi : (whole ? one : cos_x.hi);
   // The derivatives cos(x) x' and -sin(x) x' on all lanes at once (mul is Interval's operator*
   // lane by lane, so the same bits as the one-interval form).
   mul(cos_x.lo, cos_x.hi, x.dlo, x.dhi, sin_x.dlo, sin_x.dhi);
