@@ -122,11 +122,14 @@ TEST(FormulaLanes, LanesHoldSampledValuesAndMatchTheScalarInclusion) {
 // ran them as vectors): each lane's interval of x, the points' sin and cos (lane_sin_cos), widened
 // by the interval's distance to the points, the extrema by hits_phase, widened by kLibmUlps + 1
 // ulps, clamped; a lane of a period or more is [-1, 1].
-void scalar_sin_cos_var(const Interval& a, double p0, double p1, Interval& si, Interval& ci) {
+// sin_of_any: the ends of a are the points (sin and cos of any argument: e is the lanes' error
+// alone, an empty lane is Interval::empty()).
+void scalar_sin_cos_var(const Interval& a, double p0, double p1, Interval& si, Interval& ci,
+                        bool sin_of_any = false) {
   using interval_detail::hits_phase;
   constexpr double kTwoPi = 2 * std::numbers::pi;
   if (a.is_empty()) {
-    si = ci = a;
+    si = ci = sin_of_any ? Interval::empty() : a;
     return;
   }
   if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) {
@@ -137,8 +140,9 @@ void scalar_sin_cos_var(const Interval& a, double p0, double p1, Interval& si, I
   lane_sin_cos(p0, &s0, &c0);
   lane_sin_cos(p1, &s1, &c1);
   const double pmin = std::min(p0, p1), pmax = std::max(p0, p1);
-  const double e =
-      std::max({0.0, pmin - a.lo, a.hi - pmax}) * (1 + 0x1p-50) + 0x1p-1074 + kLaneSinCosError;
+  const double e = sin_of_any ? kLaneSinCosError
+                              : std::max({0.0, pmin - a.lo, a.hi - pmax}) * (1 + 0x1p-50) +
+                                    0x1p-1074 + kLaneSinCosError;
   auto finish = [](double lo, double hi) {
     constexpr double kSteps = 2 * (kLibmUlps + 1);
     lo -= kSteps * (std::abs(lo) * 0x1p-52 + 0x1p-1074);
@@ -184,6 +188,47 @@ TEST(FormulaLanes, SinCosOfAVariable_BitEqualToTheScalarForm) {
         scalar_sin_cos_var(a, o[0] + t[k] * d[0], o[0] + t[k + 1] * d[0], si, ci);
         const Interval v = want_sin ? si : ci;
         const Interval dv = (want_sin ? ci : -si) * Interval{d[0], d[0]};
+        EXPECT_EQ(out.lo[k], v.lo) << k;
+        EXPECT_EQ(out.hi[k], v.hi) << k;
+        EXPECT_EQ(out.dlo[k], dv.lo) << k;
+        EXPECT_EQ(out.dhi[k], dv.hi) << k;
+      }
+    }
+  }
+}
+
+// The same for sin and cos of any argument (here x + y): the argument's lanes as Interval's and
+// Dual's + give them, the ends' sin and cos from the lanes' own sincos.
+TEST(FormulaLanes, SinCosOfAnyArgument_BitEqualToTheScalarForm) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const char* text : {"sin(x + y)", "cos(x + y)"}) {
+    SCOPED_TRACE(text);
+    const Formula f = compile_formula(text);
+    ASSERT_EQ(f.trig_vars, 0u);
+    const bool want_sin = text[0] == 's';
+    for (int trial = 0; trial < 4000; ++trial) {
+      SCOPED_TRACE(trial);
+      double o[3] = {0, 0, 0}, d[3] = {0, 0, 0}, t[W + 1];
+      const double scale = std::pow(10.0, 16 * std::abs(u(rng)));
+      for (int v = 0; v < 2; ++v) {
+        o[v] = trial % 7 == 0 ? std::numbers::pi / 4 * std::round(8 * u(rng)) : scale * u(rng);
+        d[v] = trial % 11 == 0 ? 0.5 : u(rng);
+      }
+      const double width = std::pow(10.0, -12 + 13.6 * std::abs(u(rng)));
+      for (int k = 0; k <= W; ++k) t[k] = (trial % 7 == 0 ? 0 : u(rng)) + width * k / W;
+      FormulaLanes out;
+      LaneTrig lt;
+      run_lanes(f, o, d, t, out, &lt);
+      for (int k = 0; k < W; ++k) {
+        const Interval tk{t[k], t[k + 1]};
+        const Interval a = (Interval{o[0], o[0]} + tk * Interval{d[0], d[0]}) +
+                           (Interval{o[1], o[1]} + tk * Interval{d[1], d[1]});
+        const Interval da = Interval{d[0], d[0]} + Interval{d[1], d[1]};
+        Interval si, ci;
+        scalar_sin_cos_var(a, a.lo, a.hi, si, ci, true);
+        const Interval v = want_sin ? si : ci;
+        const Interval dv = (want_sin ? ci : -si) * da;
         EXPECT_EQ(out.lo[k], v.lo) << k;
         EXPECT_EQ(out.hi[k], v.hi) << k;
         EXPECT_EQ(out.dlo[k], dv.lo) << k;

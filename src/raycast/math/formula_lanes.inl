@@ -154,10 +154,14 @@ inline void dual_add(const Slot& a, const Slot& b, bool sub, Slot& r) {
 // the e terms below) without stepping bit patterns: as in interval_detail::widen, |x| 2^-52 +
 // 2^-1074 is at least one ulp of x, and twice as many such steps as ulps are needed cover the
 // larger ulps past a power of two. Values here are finite and within [-2, 2].
-Interval widen_ulps(double lo, double hi) {
-  constexpr double kSteps = 2 * (kLibmUlps + 1);
-  return {lo - kSteps * (std::abs(lo) * 0x1p-52 + 0x1p-1074),
-          hi + kSteps * (std::abs(hi) * 0x1p-52 + 0x1p-1074)};
+// Then clamped to [-1, 1] (std::max(lo, -1), std::min(hi, 1)): on every lane.
+inline void widen_ulps_clamped(V lo, V hi, V& rlo, V& rhi) {
+  const V steps = splat(2 * (kLibmUlps + 1)), ulp = splat(0x1p-52), tiny = splat(0x1p-1074);
+  const V one = splat(1), minus_one = splat(-1);
+  lo = lo - steps * (vabs(lo) * ulp + tiny);
+  hi = hi + steps * (vabs(hi) * ulp + tiny);
+  rlo = lo < minus_one ? minus_one : lo;
+  rhi = one < hi ? one : hi;
 }
 
 // sin and cos of W points at once, each within kLaneSinCosError of the exact values (the bound
@@ -249,22 +253,14 @@ void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const do
   far = vmax(far, pmin - lo);
   far = vmax(far, hi - pmax);
   const V e = far * splat(1 + 0x1p-50) + splat(0x1p-1074) + splat(kLaneSinCosError);
-  // widen_ulps, then the clamp to [-1, 1].
-  const V steps = splat(2 * (kLibmUlps + 1)), ulp = splat(0x1p-52), tiny = splat(0x1p-1074);
-  auto bound = [&](V l, V h, V& rl, V& rh) {
-    l = l - steps * (vabs(l) * ulp + tiny);
-    h = h + steps * (vabs(h) * ulp + tiny);
-    rl = l < minus_one ? minus_one : l;
-    rh = one < h ? one : h;
-  };
   V slo = vmin(s0, s1) - e, shi = vmax(s0, s1) + e;
   shi = hits_phase_lanes(lo, hi, kHalfPi, kTwoPi) ? one : shi;
   slo = hits_phase_lanes(lo, hi, -kHalfPi, kTwoPi) ? minus_one : slo;
-  bound(slo, shi, sin_x.lo, sin_x.hi);
+  widen_ulps_clamped(slo, shi, sin_x.lo, sin_x.hi);
   V clo = vmin(c0, c1) - e, chi = vmax(c0, c1) + e;
   chi = hits_phase_lanes(lo, hi, 0, kTwoPi) ? one : chi;
   clo = hits_phase_lanes(lo, hi, std::numbers::pi, kTwoPi) ? minus_one : clo;
-  bound(clo, chi, cos_x.lo, cos_x.hi);
+  widen_ulps_clamped(clo, chi, cos_x.lo, cos_x.hi);
   const M empty = ~(lo <= hi);
   const M whole = ~(hi - lo < splat(kTwoPi)) | (vabs(lo) > splat(1e15)) | (vabs(hi) > splat(1e15));
   sin_x.lo = empty ? lo : (whole ? minus_one : sin_x.lo);
@@ -279,42 +275,36 @@ void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const do
 
 // sin (or cos) of lanes `a` whatever their argument: Interval's sin_cos lane by lane, with the
 // ends' sines and cosines from sincos_points (so each bound also moves out by kLaneSinCosError),
-// then the chain rule's product on all lanes.
+// then the chain rule's product on all lanes. As vector code: the same elementwise operations on
+// every lane, empty and whole-period lanes set by masks.
 void sin_or_cos_lanes(Slot& a, bool want_sin) {
-  using interval_detail::hits_phase;
   constexpr double kTwoPi = 2 * std::numbers::pi;
+  constexpr double kHalfPi = std::numbers::pi / 2;
+  const V lo = a.lo, hi = a.hi, one = splat(1), minus_one = splat(-1),
+          err = splat(kLaneSinCosError);
   V s0, c0, s1, c1;
-  sincos_points(a.lo, s0, c0);
-  sincos_points(a.hi, s1, c1);
-  V rlo = splat(0), rhi = rlo, glo = rlo, ghi = rlo;  // the result; the derivative's factor
-  for (int k = 0; k < W; ++k) {
-    const Interval x{a.lo[k], a.hi[k]};
-    Interval si, ci;
-    if (x.is_empty()) {
-      si = ci = Interval::empty();
-    } else if (!(x.hi - x.lo < kTwoPi) || std::abs(x.lo) > 1e15 || std::abs(x.hi) > 1e15) {
-      si = ci = {-1, 1};
-    } else {
-      auto clamp = [](const Interval& r) {
-        return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
-      };
-      double lo = std::min(s0[k], s1[k]) - kLaneSinCosError;
-      double hi = std::max(s0[k], s1[k]) + kLaneSinCosError;
-      if (hits_phase(x.lo, x.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
-      if (hits_phase(x.lo, x.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
-      si = clamp(widen_ulps(lo, hi));
-      lo = std::min(c0[k], c1[k]) - kLaneSinCosError;
-      hi = std::max(c0[k], c1[k]) + kLaneSinCosError;
-      if (hits_phase(x.lo, x.hi, 0, kTwoPi)) hi = 1;
-      if (hits_phase(x.lo, x.hi, std::numbers::pi, kTwoPi)) lo = -1;
-      ci = clamp(widen_ulps(lo, hi));
-    }
-    const Interval r = want_sin ? si : ci, g = want_sin ? ci : -si;
-    rlo[k] = r.lo;
-    rhi[k] = r.hi;
-    glo[k] = g.lo;
-    ghi[k] = g.hi;
-  }
+  sincos_points(lo, s0, c0);
+  sincos_points(hi, s1, c1);
+  V slo = vmin(s0, s1) - err, shi = vmax(s0, s1) + err;
+  shi = hits_phase_lanes(lo, hi, kHalfPi, kTwoPi) ? one : shi;
+  slo = hits_phase_lanes(lo, hi, -kHalfPi, kTwoPi) ? minus_one : slo;
+  V clo = vmin(c0, c1) - err, chi = vmax(c0, c1) + err;
+  chi = hits_phase_lanes(lo, hi, 0, kTwoPi) ? one : chi;
+  clo = hits_phase_lanes(lo, hi, std::numbers::pi, kTwoPi) ? minus_one : clo;
+  V sil, sih, cil, cih;
+  widen_ulps_clamped(slo, shi, sil, sih);
+  widen_ulps_clamped(clo, chi, cil, cih);
+  const M empty = ~(lo <= hi);
+  const M whole = ~(hi - lo < splat(kTwoPi)) | (vabs(lo) > splat(1e15)) | (vabs(hi) > splat(1e15));
+  const V inf = splat(kInf);
+  // Interval::empty() for empty lanes; [-1, 1] for whole ones.
+  sil = empty ? inf : (whole ? minus_one : sil);
+  sih = empty ? -inf : (whole ? one : sih);
+  cil = empty ? inf : (whole ? minus_one : cil);
+  cih = empty ? -inf : (whole ? one : cih);
+  // The result, and the derivative's factor: cos for sin, -sin for cos.
+  const V rlo = want_sin ? sil : cil, rhi = want_sin ? sih : cih;
+  const V glo = want_sin ? cil : -sih, ghi = want_sin ? cih : -sil;
   V dlo, dhi;
   mul(glo, ghi, a.dlo, a.dhi, dlo, dhi);
   a = {rlo, rhi, dlo, dhi};
