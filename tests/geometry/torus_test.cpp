@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include "math/float_error.h"
+#include "math/polynomial_solver.h"
 #include "reference_roots.h"
 
 namespace raycast {
@@ -234,6 +236,71 @@ TEST(Torus, UV_HandComputed) {
   EXPECT_NEAR(st.u, 0.25, 1e-12);
   EXPECT_NEAR(st.v, 0.25, 1e-12);
   EXPECT_NEAR(st.n.z, 1, 1e-12);
+}
+
+// intersect's short cuts (the first root only, lines missing the slab or inside the hole skipped)
+// against all the quartic's roots from find_real_roots over the same range: the same hit or miss,
+// the same t. Rays aimed at the slab's faces |z| = r, at the hole's wall rho = R - r (from above,
+// steeply and flatly), at the tube's top and through the hole, each moved off by a random amount
+// from 1e-12 to 1 (both sides), with tmin and tmax cutting some chords.
+TEST(Torus, ShortCuts_AgreeWithAllTheQuarticsRoots) {
+  for (const Torus& s : {make_torus(2, 0.5), make_torus(1, 0.35), make_torus(0.5, 0.7)}) {
+    std::mt19937 rng(91);
+    std::uniform_real_distribution<double> u(0, 1);
+    int hits = 0, misses = 0;
+    for (int i = 0; i < 20000; ++i) {
+      SCOPED_TRACE(i);
+      const double R = s.major_radius, r = s.minor_radius;
+      const double phi = 2 * M_PI * u(rng), off = std::pow(10.0, -12 * u(rng)) * (u(rng) - 0.5);
+      const Vec3 radial{std::cos(phi), std::sin(phi), 0};
+      Vec3 target;
+      switch (i % 4) {
+        case 0:  // a slab face
+          target = (R + (2 * u(rng) - 1) * r) * radial + Vec3{0, 0, (i % 8 < 4 ? r : -r) + off};
+          break;
+        case 1:  // the hole's wall
+          target = (std::abs(R - r) + off) * radial + Vec3{0, 0, (2 * u(rng) - 1) * r};
+          break;
+        case 2:  // the tube's top
+          target = (R + off) * radial + Vec3{0, 0, r + off};
+          break;
+        default:  // through the hole
+          target = (std::abs(R - r) * u(rng)) * radial + Vec3{0, 0, (2 * u(rng) - 1) * r};
+      }
+      const double a = 2 * M_PI * u(rng), b = M_PI * (0.02 + 0.96 * u(rng));
+      const Vec3 dir{std::sin(b) * std::cos(a), std::sin(b) * std::sin(a), std::cos(b)};
+      Ray ray{target - 6.0 * dir, dir * (0.5 + u(rng))};
+      if (i % 3 == 0) ray.tmin = 6.0 / (0.5 + u(rng)) * u(rng);
+      if (i % 5 == 0) ray.tmax = ray.tmin + 12 * u(rng);
+      TorusQuartic q;
+      bool want = false;
+      double want_t = 0;
+      if (torus_quartic(s, ray, q)) {
+        const double len = 1 / q.inv_len;
+        const double margin = gamma(4) * (std::abs(q.t_c) * len + q.h);
+        const double lo = std::max((ray.tmin - q.t_c) * len - margin, -q.h);
+        const double hi = std::min((ray.tmax - q.t_c) * len + margin, q.h);
+        double roots[4];
+        const int n = find_real_roots(q.p, lo, hi, roots);
+        for (int k = 0; k < n && !want; ++k) {
+          const double t = q.t_c + roots[k] * q.inv_len;
+          if (t >= ray.tmin && t <= ray.tmax) {
+            want = true;
+            want_t = t;
+          }
+        }
+      }
+      LocalHit h;
+      const bool got = intersect(s, ray, h);
+      ASSERT_EQ(got, want);
+      if (got) {
+        EXPECT_NEAR(h.t, want_t, 1e-12 * (1 + std::abs(want_t)));
+      }
+      (got ? hits : misses) += 1;
+    }
+    EXPECT_GT(hits, 2000);
+    EXPECT_GT(misses, 2000);
+  }
 }
 
 }  // namespace

@@ -118,6 +118,126 @@ TEST(FormulaLanes, LanesHoldSampledValuesAndMatchTheScalarInclusion) {
 
 // The AVX2 kernel (4 lanes, one pass) and the baseline one (2 lanes, two passes) agree bit for
 // bit, also when the ends' sines are passed in; skipped where the CPU lacks AVX2.
+// The scalar form the lanes' sin and cos of a variable follow (the one the kernel had before it
+// ran them as vectors): each lane's interval of x, the points' sin and cos (lane_sin_cos), widened
+// by the interval's distance to the points, the extrema by hits_phase, widened by kLibmUlps + 1
+// ulps, clamped; a lane of a period or more is [-1, 1].
+// sin_of_any: the ends of a are the points (sin and cos of any argument: e is the lanes' error
+// alone, an empty lane is Interval::empty()).
+void scalar_sin_cos_var(const Interval& a, double p0, double p1, Interval& si, Interval& ci,
+                        bool sin_of_any = false) {
+  using interval_detail::hits_phase;
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  if (a.is_empty()) {
+    si = ci = sin_of_any ? Interval::empty() : a;
+    return;
+  }
+  if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) {
+    si = ci = {-1, 1};
+    return;
+  }
+  double s0, c0, s1, c1;
+  lane_sin_cos(p0, &s0, &c0);
+  lane_sin_cos(p1, &s1, &c1);
+  const double pmin = std::min(p0, p1), pmax = std::max(p0, p1);
+  const double e = sin_of_any ? kLaneSinCosError
+                              : std::max({0.0, pmin - a.lo, a.hi - pmax}) * (1 + 0x1p-50) +
+                                    0x1p-1074 + kLaneSinCosError;
+  auto finish = [](double lo, double hi) {
+    constexpr double kSteps = 2 * (kLibmUlps + 1);
+    lo -= kSteps * (std::abs(lo) * 0x1p-52 + 0x1p-1074);
+    hi += kSteps * (std::abs(hi) * 0x1p-52 + 0x1p-1074);
+    return Interval{std::max(lo, -1.0), std::min(hi, 1.0)};
+  };
+  double lo = std::min(s0, s1) - e, hi = std::max(s0, s1) + e;
+  if (hits_phase(a.lo, a.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
+  if (hits_phase(a.lo, a.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
+  si = finish(lo, hi);
+  lo = std::min(c0, c1) - e;
+  hi = std::max(c0, c1) + e;
+  if (hits_phase(a.lo, a.hi, 0, kTwoPi)) hi = 1;
+  if (hits_phase(a.lo, a.hi, std::numbers::pi, kTwoPi)) lo = -1;
+  ci = finish(lo, hi);
+}
+
+// The vector form of sin and cos of a variable gives the scalar form's bits on every lane: lanes
+// of 1e-12 to 40 in t (tiny, across extrema, more than a period), points up to 1e16 (past the
+// reduction's range and past 1e15, where a lane is [-1, 1]), lanes starting exactly at extrema.
+TEST(FormulaLanes, SinCosOfAVariable_BitEqualToTheScalarForm) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const char* text : {"sin(x)", "cos(x)"}) {
+    SCOPED_TRACE(text);
+    const Formula f = compile_formula(text);
+    ASSERT_NE(f.trig_vars, 0u);
+    const bool want_sin = text[0] == 's';
+    for (int trial = 0; trial < 4000; ++trial) {
+      SCOPED_TRACE(trial);
+      double o[3] = {0, 0, 0}, d[3] = {0, 0, 0}, t[W + 1];
+      const double scale = std::pow(10.0, 16 * std::abs(u(rng)));
+      o[0] = trial % 7 == 0 ? std::numbers::pi / 2 * std::round(8 * u(rng)) : scale * u(rng);
+      d[0] = trial % 11 == 0 ? 1 : u(rng);
+      const double width = std::pow(10.0, -12 + 13.6 * std::abs(u(rng)));
+      for (int k = 0; k <= W; ++k) t[k] = (trial % 7 == 0 ? 0 : u(rng)) + width * k / W;
+      FormulaLanes out;
+      LaneTrig lt;
+      run_lanes(f, o, d, t, out, &lt);
+      for (int k = 0; k < W; ++k) {
+        const Interval a = Interval{o[0], o[0]} + Interval{t[k], t[k + 1]} * Interval{d[0], d[0]};
+        Interval si, ci;
+        scalar_sin_cos_var(a, o[0] + t[k] * d[0], o[0] + t[k + 1] * d[0], si, ci);
+        const Interval v = want_sin ? si : ci;
+        const Interval dv = (want_sin ? ci : -si) * Interval{d[0], d[0]};
+        EXPECT_EQ(out.lo[k], v.lo) << k;
+        EXPECT_EQ(out.hi[k], v.hi) << k;
+        EXPECT_EQ(out.dlo[k], dv.lo) << k;
+        EXPECT_EQ(out.dhi[k], dv.hi) << k;
+      }
+    }
+  }
+}
+
+// The same for sin and cos of any argument (here x + y): the argument's lanes as Interval's and
+// Dual's + give them, the ends' sin and cos from the lanes' own sincos.
+TEST(FormulaLanes, SinCosOfAnyArgument_BitEqualToTheScalarForm) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const char* text : {"sin(x + y)", "cos(x + y)"}) {
+    SCOPED_TRACE(text);
+    const Formula f = compile_formula(text);
+    ASSERT_EQ(f.trig_vars, 0u);
+    const bool want_sin = text[0] == 's';
+    for (int trial = 0; trial < 4000; ++trial) {
+      SCOPED_TRACE(trial);
+      double o[3] = {0, 0, 0}, d[3] = {0, 0, 0}, t[W + 1];
+      const double scale = std::pow(10.0, 16 * std::abs(u(rng)));
+      for (int v = 0; v < 2; ++v) {
+        o[v] = trial % 7 == 0 ? std::numbers::pi / 4 * std::round(8 * u(rng)) : scale * u(rng);
+        d[v] = trial % 11 == 0 ? 0.5 : u(rng);
+      }
+      const double width = std::pow(10.0, -12 + 13.6 * std::abs(u(rng)));
+      for (int k = 0; k <= W; ++k) t[k] = (trial % 7 == 0 ? 0 : u(rng)) + width * k / W;
+      FormulaLanes out;
+      LaneTrig lt;
+      run_lanes(f, o, d, t, out, &lt);
+      for (int k = 0; k < W; ++k) {
+        const Interval tk{t[k], t[k + 1]};
+        const Interval a = (Interval{o[0], o[0]} + tk * Interval{d[0], d[0]}) +
+                           (Interval{o[1], o[1]} + tk * Interval{d[1], d[1]});
+        const Interval da = Interval{d[0], d[0]} + Interval{d[1], d[1]};
+        Interval si, ci;
+        scalar_sin_cos_var(a, a.lo, a.hi, si, ci, true);
+        const Interval v = want_sin ? si : ci;
+        const Interval dv = (want_sin ? ci : -si) * da;
+        EXPECT_EQ(out.lo[k], v.lo) << k;
+        EXPECT_EQ(out.hi[k], v.hi) << k;
+        EXPECT_EQ(out.dlo[k], dv.lo) << k;
+        EXPECT_EQ(out.dhi[k], dv.hi) << k;
+      }
+    }
+  }
+}
+
 TEST(FormulaLanes, TwoAndFourLaneKernelsAgree) {
   if (!run_lanes_avx2()) GTEST_SKIP() << "no AVX2 on this CPU (or RAYCAST_ISA narrower)";
   for (const char* text : kFormulas) {

@@ -243,5 +243,51 @@ TEST(Cubic, RandomRoots_MatchIsolatingSolver) {
   }
 }
 
+// find_first_real_root against the full list: the first root the filter takes, or none. Random
+// roots (clusters and pairs within 1e-9 included, where the isolation may fall back to the
+// derivative sequence) and filters by threshold and by window; the root must match the full
+// solver's to 1e-12 (bit for bit but for that fallback) and be found exactly when it exists.
+TEST(PolynomialSolver, FirstRoot_MatchesTheFullListsFirstTaken) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int found = 0, bits_equal = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    SCOPED_TRACE(trial);
+    const int degree = 3 + trial % 6;
+    std::vector<double> roots;
+    for (int i = 0; i < degree; ++i) {
+      double r = u(rng);
+      if (i > 0 && trial % 5 == 0) r = roots.back() + 1e-9 * (1 + i);  // a close pair
+      roots.push_back(r);
+    }
+    Polynomial p = from_roots(roots, 1 + 3 * std::abs(u(rng)));
+    if (trial % 7 == 0) p.c[0] += 0.01 * u(rng);  // some roots turn complex
+    const double lo = -1.5 + 0.5 * std::abs(u(rng)), hi = 1.5 - 0.5 * std::abs(u(rng));
+    const double threshold = u(rng);
+    const bool window = trial % 3 == 0;  // else a threshold
+    const auto accept = [&](double x) {
+      return window ? (x >= threshold && x <= threshold + 0.2) : x > threshold;
+    };
+    const std::vector<double> all = solve(p, lo, hi);
+    double want = 0;
+    bool exists = false;
+    for (double x : all)
+      if (accept(x)) {
+        want = x;
+        exists = true;
+        break;
+      }
+    double got = -7;
+    const bool has = find_first_real_root(p, lo, hi, accept, got);
+    ASSERT_EQ(has, exists);
+    if (!has) continue;
+    ++found;
+    bits_equal += got == want;
+    EXPECT_NEAR(got, want, 1e-12 * (1 + std::abs(want)));
+  }
+  EXPECT_GT(found, 1500);
+  EXPECT_GT(bits_equal, found * 9 / 10);
+}
+
 }  // namespace
 }  // namespace raycast

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "geometry/algebraic.h"
 #include "geometry/clipped_solid.h"
@@ -65,12 +66,13 @@ double refine(const Implicit& s, const Ray& ray, double a, double b, double fa, 
 enum class Want { kAll, kFirst, kAny };
 
 // The roots of f along the ray in [lo, hi], in increasing order, into roots (at most max_roots);
-// see Want. Returns the count. A piece is split in
-// kFormulaLanes parts evaluated in one pass (run_lanes); parts whose inclusion excludes 0 are
-// dropped, the others kept in order on a stack, each settled by its ends' signs once f is
-// monotone on it (or it is too small to split) and split again otherwise.
+// see Want. Returns the count. known_f is f at known_t, if the caller has it (NaN: nothing). A
+// piece is split in kFormulaLanes parts evaluated in one pass (run_lanes); parts whose inclusion
+// excludes 0 are dropped, the others kept in order on a stack, each settled by its ends' signs once
+// f is monotone on it (or it is too small to split) and split again otherwise.
 int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want want, double* roots,
-               int max_roots) {
+               int max_roots, double known_t = std::numeric_limits<double>::quiet_NaN(),
+               double known_f = 0) {
   const bool first_only = want != Want::kAll;
   constexpr int W = kFormulaLanes;
   struct Piece {
@@ -135,8 +137,12 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
   };
   // The root of a piece on which f is monotone (or which cannot be split): a sign change of its
   // ends. Returns whether the search is over.
+  // f at known_t (a value the caller has, or the last end's: depth first from the left, a settled
+  // piece's right end is often the next one's left end, the same point, so the same value).
   auto settle = [&](double a, double b) {
-    const double fa = f_at(s, ray, a), fb = f_at(s, ray, b);
+    const double fa = a == known_t ? known_f : f_at(s, ray, a), fb = f_at(s, ray, b);
+    known_t = b;
+    known_f = fb;
     double t;
     if (fa == 0) {
       t = a;
@@ -196,12 +202,17 @@ bool first_hit(const Implicit& s, const Ray& ray, LocalHit* hit) {
   const double lo = std::max(c.t0, ray.tmin), hi = std::min(c.t1, ray.tmax);
   if (!(lo <= hi)) return false;
   const bool closed = !s.open;
-  if (closed && lo == c.t0 && negative(f_at(s, ray, c.t0))) {
-    if (hit) *hit = LocalHit{c.t0, -1, kFacePart + c.face0, 0, 0};
-    return true;
+  double known_t = std::numeric_limits<double>::quiet_NaN(), known_f = 0;
+  if (closed && lo == c.t0) {
+    known_t = c.t0;
+    known_f = f_at(s, ray, c.t0);
+    if (negative(known_f)) {
+      if (hit) *hit = LocalHit{c.t0, -1, kFacePart + c.face0, 0, 0};
+      return true;
+    }
   }
   double t;
-  if (find_roots(s, ray, lo, hi, hit ? Want::kFirst : Want::kAny, &t, 1) == 1) {
+  if (find_roots(s, ray, lo, hi, hit ? Want::kFirst : Want::kAny, &t, 1, known_t, known_f) == 1) {
     if (hit) *hit = LocalHit{t, -1, kCurvedPart, 0, 0};
     return true;
   }

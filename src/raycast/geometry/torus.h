@@ -39,6 +39,7 @@ struct TorusQuartic {
   double t_c = 0;
   double inv_len = 0;
   double h = 0;
+  Vec3 c, e;  // the line's point nearest the centre, its unit direction: the line is c + u e
 };
 bool torus_quartic(const Torus& s, const Ray& ray, TorusQuartic& q);
 

@@ -27,9 +27,16 @@ constexpr Binomials kBinomials;
 // elementwise IEEE operations on both (so the same bits as two scalar loops), in one vector.
 using Pair = double __attribute__((vector_size(16)));
 
-BernsteinForm bernstein_form(const Polynomial& p, double a, double w) {
+namespace {
+
+// bernstein_form for degree N (kDynamic: p.degree): the fixed degrees let the compiler unroll the
+// triangular loops; the operations and their order are the same for all, so are the bits.
+constexpr int kDynamic = -1;
+
+template <int N>
+BernsteinForm bernstein_form_n(const Polynomial& p, double a, double w) {
   BernsteinForm f;
-  const int n = p.degree;
+  const int n = N == kDynamic ? p.degree : N;
   f.degree = n;
   // .. [0] the coefficients, then the Bernstein coefficients, in place; [1] the same computation
   // on |p|, |a|: every term's magnitude summed.
@@ -59,12 +66,16 @@ BernsteinForm bernstein_form(const Polynomial& p, double a, double w) {
   return f;
 }
 
-void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm& right) {
-  const int n = f.degree;
+template <int N>
+void bernstein_halves_n(const BernsteinForm& f, BernsteinForm& left, BernsteinForm& right) {
+  const int n = N == kDynamic ? f.degree : N;
   left.degree = right.degree = n;
+  // (right may be f itself: copies first; element by element, as a memcpy call costs more.)
   double b[kMaxPolynomialDegree + 1], e[kMaxPolynomialDegree + 1];
-  std::copy(f.b, f.b + n + 1, b);
-  std::copy(f.e, f.e + n + 1, e);
+  for (int i = 0; i <= n; ++i) {
+    b[i] = f.b[i];
+    e[i] = f.e[i];
+  }
   left.b[0] = b[0];
   left.e[0] = e[0];
   right.b[n] = b[n];
@@ -73,7 +84,11 @@ void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm
   // mean of the two bounds plus u |result| (1 + 2u) + 2^-1075; the factor 1 + 8u covers the
   // roundings of computing the bound itself.
   constexpr double u = kMachineEpsilon;
+  // Fully unrolled for the fixed degrees (GCC otherwise vectorises the inner loop with a
+  // remainder; clang takes the same pragma).
+#pragma GCC unroll 8
   for (int j = 1; j <= n; ++j) {
+#pragma GCC unroll 8
     for (int i = 0; i <= n - j; ++i) {
       b[i] = 0.5 * (b[i] + b[i + 1]);
       e[i] = (0.5 * (e[i] + e[i + 1]) + u * std::abs(b[i])) * (1 + 8 * u) + 0x1p-1074;
@@ -85,17 +100,46 @@ void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm
   }
 }
 
-int max_sign_changes(const BernsteinForm& f) {
+}  // namespace
+
+BernsteinForm bernstein_form(const Polynomial& p, double a, double w) {
+  switch (p.degree) {
+    case 4:
+      return bernstein_form_n<4>(p, a, w);
+    case 6:
+      return bernstein_form_n<6>(p, a, w);
+    default:
+      return bernstein_form_n<kDynamic>(p, a, w);
+  }
+}
+
+void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm& right) {
+  switch (f.degree) {
+    case 4:
+      return bernstein_halves_n<4>(f, left, right);
+    case 6:
+      return bernstein_halves_n<6>(f, left, right);
+    default:
+      return bernstein_halves_n<kDynamic>(f, left, right);
+  }
+}
+
+namespace {
+
+template <int N>
+int max_sign_changes_n(const BernsteinForm& f) {
+  const int n = N == kDynamic ? f.degree : N;
   // Certain signs: count the changes.
   int changes = 0, last = 0, i = 0;
-  for (; i <= f.degree; ++i) {
+#pragma GCC unroll 8
+  for (; i <= n; ++i) {
     const double b = f.b[i], e = f.e[i];
     const int sign = b > e ? 1 : (b < -e ? -1 : 0);
     if (sign == 0) break;
     changes += last != 0 && sign != last;
     last = sign;
   }
-  if (i > f.degree) return changes;
+  if (i > n) return changes;
   // From the first uncertain coefficient on: the most changes of a sequence ending in a positive
   // (pos) or negative (neg) value, where an uncertain coefficient may be either; kNone: none.
   constexpr int kNone = -1000;
@@ -105,7 +149,7 @@ int max_sign_changes(const BernsteinForm& f) {
     neg = f.b[0] <= f.e[0] ? 0 : kNone;
     ++i;
   }
-  for (; i <= f.degree; ++i) {
+  for (; i <= n; ++i) {
     const bool can_pos = f.b[i] >= -f.e[i], can_neg = f.b[i] <= f.e[i];
     const int p = can_pos ? std::max(pos, neg + 1) : kNone;
     const int q = can_neg ? std::max(neg, pos + 1) : kNone;
@@ -113,7 +157,20 @@ int max_sign_changes(const BernsteinForm& f) {
     neg = q;
   }
   // Neither sign possible: a NaN coefficient; it decides nothing.
-  return pos < 0 && neg < 0 ? f.degree + 1 : std::max(pos, neg);
+  return pos < 0 && neg < 0 ? n + 1 : std::max(pos, neg);
+}
+
+}  // namespace
+
+int max_sign_changes(const BernsteinForm& f) {
+  switch (f.degree) {
+    case 4:
+      return max_sign_changes_n<4>(f);
+    case 6:
+      return max_sign_changes_n<6>(f);
+    default:
+      return max_sign_changes_n<kDynamic>(f);
+  }
 }
 
 }  // namespace raycast

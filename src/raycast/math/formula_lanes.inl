@@ -75,7 +75,8 @@ inline V mul0(V a, V b) {
 
 // r = a * b, as Interval's operator* lane by lane (std::min_element / max_element order: the
 // first of equal values wins).
-inline void mul(V alo, V ahi, V blo, V bhi, V& rlo, V& rhi) {
+// (Always inlined: as a call it passes its vectors through memory, ~15 % of the kernel's time.)
+[[gnu::always_inline]] inline void mul(V alo, V ahi, V blo, V bhi, V& rlo, V& rhi) {
   const V p0 = mul0(alo, blo), p1 = mul0(alo, bhi), p2 = mul0(ahi, blo), p3 = mul0(ahi, bhi);
   V mn = p0, mx = p0;
   mn = p1 < mn ? p1 : mn;
@@ -153,10 +154,14 @@ inline void dual_add(const Slot& a, const Slot& b, bool sub, Slot& r) {
 // the e terms below) without stepping bit patterns: as in interval_detail::widen, |x| 2^-52 +
 // 2^-1074 is at least one ulp of x, and twice as many such steps as ulps are needed cover the
 // larger ulps past a power of two. Values here are finite and within [-2, 2].
-Interval widen_ulps(double lo, double hi) {
-  constexpr double kSteps = 2 * (kLibmUlps + 1);
-  return {lo - kSteps * (std::abs(lo) * 0x1p-52 + 0x1p-1074),
-          hi + kSteps * (std::abs(hi) * 0x1p-52 + 0x1p-1074)};
+// Then clamped to [-1, 1] (std::max(lo, -1), std::min(hi, 1)): on every lane.
+inline void widen_ulps_clamped(V lo, V hi, V& rlo, V& rhi) {
+  const V steps = splat(2 * (kLibmUlps + 1)), ulp = splat(0x1p-52), tiny = splat(0x1p-1074);
+  const V one = splat(1), minus_one = splat(-1);
+  lo = lo - steps * (vabs(lo) * ulp + tiny);
+  hi = hi + steps * (vabs(hi) * ulp + tiny);
+  rlo = lo < minus_one ? minus_one : lo;
+  rhi = one < hi ? one : hi;
 }
 
 // sin and cos of W points at once, each within kLaneSinCosError of the exact values (the bound
@@ -167,7 +172,7 @@ Interval widen_ulps(double lo, double hi) {
 // (sin to r^15, cos to r^16), then the quadrant. Lanes with |x| > 2^19 (or not finite) take
 // libm's sincos (within kLibmUlps ulps). Elementwise IEEE operations without contraction: the
 // same bits for every width.
-void sincos_points(V x, V& s, V& c) {
+[[gnu::always_inline]] inline void sincos_points(V x, V& s, V& c) {
   constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
   constexpr double kPio2_1 = 0x1.921fb544p+0;  // 33 bits of pi/2, then the next 33, and so on
   constexpr double kPio2_2 = 0x1.0b4611a6p-34;
@@ -211,44 +216,57 @@ void sincos_points(V x, V& s, V& c) {
   }
 }
 
+// interval_detail::hits_phase on every lane: the same operations elementwise.
+inline M hits_phase_lanes(V lo, V hi, double c, double period) {
+  V k = (lo - splat(c)) / splat(period) - splat(1e-9);
+  for (int j = 0; j < W; ++j) k[j] = std::ceil(k[j]);
+  return splat(c) + k * splat(period) <= hi + splat(1e-9) * (splat(1) + vabs(hi));
+}
+
+// std::min(a, b) and std::max(a, b) elementwise (the first argument on ties).
+inline V vmin(V a, V b) { return b < a ? b : a; }
+inline V vmax(V a, V b) { return a < b ? b : a; }
+
 // sin and cos of variable lanes `x` whose intervals run between the points p[k], p[k + 1]
 // (give or take the rounding of the intervals' ends), from sincos of those points.
-// s[j], c[j]: sin and cos of p[j].
+// s[j], c[j]: sin and cos of p[j]. Every lane by the same elementwise operations as the scalar
+// form (Interval's sin_cos bounds from the points' values, widened by their distance to the
+// interval's ends, the extrema by hits_phase); empty lanes and lanes of a period or more are
+// then set as that form sets them.
 void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const double* c,
                  Slot& sin_x, Slot& cos_x) {
-  using interval_detail::hits_phase;
   constexpr double kTwoPi = 2 * std::numbers::pi;
+  constexpr double kHalfPi = std::numbers::pi / 2;
+  V p0, p1, s0, s1, c0, c1;
   for (int k = 0; k < W; ++k) {
-    const Interval a{x.lo[k], x.hi[k]};
-    Interval si, ci;
-    if (a.is_empty()) {
-      si = ci = a;
-    } else if (!(a.hi - a.lo < kTwoPi) || std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15) {
-      si = ci = {-1, 1};
-    } else {
-      const double pmin = std::min(p[k], p[k + 1]), pmax = std::max(p[k], p[k + 1]);
-      // Every point of a lies within e of [pmin, pmax] (e rounded up).
-      // (s, c: within kLaneSinCosError of sin and cos of the points, or from libm.)
-      const double e =
-          std::max({0.0, pmin - a.lo, a.hi - pmax}) * (1 + 0x1p-50) + 0x1p-1074 + kLaneSinCosError;
-      auto clamp = [](const Interval& r) {
-        return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
-      };
-      double lo = std::min(s[k], s[k + 1]) - e, hi = std::max(s[k], s[k + 1]) + e;
-      if (hits_phase(a.lo, a.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
-      if (hits_phase(a.lo, a.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
-      si = clamp(widen_ulps(lo, hi));
-      lo = std::min(c[k], c[k + 1]) - e;
-      hi = std::max(c[k], c[k + 1]) + e;
-      if (hits_phase(a.lo, a.hi, 0, kTwoPi)) hi = 1;
-      if (hits_phase(a.lo, a.hi, std::numbers::pi, kTwoPi)) lo = -1;
-      ci = clamp(widen_ulps(lo, hi));
-    }
-    sin_x.lo[k] = si.lo;
-    sin_x.hi[k] = si.hi;
-    cos_x.lo[k] = ci.lo;
-    cos_x.hi[k] = ci.hi;
+    p0[k] = p[k];
+    p1[k] = p[k + 1];
+    s0[k] = s[k];
+    s1[k] = s[k + 1];
+    c0[k] = c[k];
+    c1[k] = c[k + 1];
   }
+  const V lo = x.lo, hi = x.hi, zero = splat(0), one = splat(1), minus_one = splat(-1);
+  const V pmin = vmin(p0, p1), pmax = vmax(p0, p1);
+  // Every point of x lies within e of [pmin, pmax] (e rounded up); as std::max({0, a, b}).
+  V far = zero;
+  far = vmax(far, pmin - lo);
+  far = vmax(far, hi - pmax);
+  const V e = far * splat(1 + 0x1p-50) + splat(0x1p-1074) + splat(kLaneSinCosError);
+  V slo = vmin(s0, s1) - e, shi = vmax(s0, s1) + e;
+  shi = hits_phase_lanes(lo, hi, kHalfPi, kTwoPi) ? one : shi;
+  slo = hits_phase_lanes(lo, hi, -kHalfPi, kTwoPi) ? minus_one : slo;
+  widen_ulps_clamped(slo, shi, sin_x.lo, sin_x.hi);
+  V clo = vmin(c0, c1) - e, chi = vmax(c0, c1) + e;
+  chi = hits_phase_lanes(lo, hi, 0, kTwoPi) ? one : chi;
+  clo = hits_phase_lanes(lo, hi, std::numbers::pi, kTwoPi) ? minus_one : clo;
+  widen_ulps_clamped(clo, chi, cos_x.lo, cos_x.hi);
+  const M empty = ~(lo <= hi);
+  const M whole = ~(hi - lo < splat(kTwoPi)) | (vabs(lo) > splat(1e15)) | (vabs(hi) > splat(1e15));
+  sin_x.lo = empty ? lo : (whole ? minus_one : sin_x.lo);
+  sin_x.hi = empty ? hi : (whole ? one : sin_x.hi);
+  cos_x.lo = empty ? lo : (whole ? minus_one : cos_x.lo);
+  cos_x.hi = empty ? hi : (whole ? one : cos_x.hi);
   // The derivatives cos(x) x' and -sin(x) x' on all lanes at once (mul is Interval's operator*
   // lane by lane, so the same bits as the one-interval form).
   mul(cos_x.lo, cos_x.hi, x.dlo, x.dhi, sin_x.dlo, sin_x.dhi);
@@ -257,42 +275,36 @@ void sin_cos_var(const Slot& x, const double p[W + 1], const double* s, const do
 
 // sin (or cos) of lanes `a` whatever their argument: Interval's sin_cos lane by lane, with the
 // ends' sines and cosines from sincos_points (so each bound also moves out by kLaneSinCosError),
-// then the chain rule's product on all lanes.
+// then the chain rule's product on all lanes. As vector code: the same elementwise operations on
+// every lane, empty and whole-period lanes set by masks.
 void sin_or_cos_lanes(Slot& a, bool want_sin) {
-  using interval_detail::hits_phase;
   constexpr double kTwoPi = 2 * std::numbers::pi;
+  constexpr double kHalfPi = std::numbers::pi / 2;
+  const V lo = a.lo, hi = a.hi, one = splat(1), minus_one = splat(-1),
+          err = splat(kLaneSinCosError);
   V s0, c0, s1, c1;
-  sincos_points(a.lo, s0, c0);
-  sincos_points(a.hi, s1, c1);
-  V rlo = splat(0), rhi = rlo, glo = rlo, ghi = rlo;  // the result; the derivative's factor
-  for (int k = 0; k < W; ++k) {
-    const Interval x{a.lo[k], a.hi[k]};
-    Interval si, ci;
-    if (x.is_empty()) {
-      si = ci = Interval::empty();
-    } else if (!(x.hi - x.lo < kTwoPi) || std::abs(x.lo) > 1e15 || std::abs(x.hi) > 1e15) {
-      si = ci = {-1, 1};
-    } else {
-      auto clamp = [](const Interval& r) {
-        return Interval{std::max(r.lo, -1.0), std::min(r.hi, 1.0)};
-      };
-      double lo = std::min(s0[k], s1[k]) - kLaneSinCosError;
-      double hi = std::max(s0[k], s1[k]) + kLaneSinCosError;
-      if (hits_phase(x.lo, x.hi, std::numbers::pi / 2, kTwoPi)) hi = 1;
-      if (hits_phase(x.lo, x.hi, -std::numbers::pi / 2, kTwoPi)) lo = -1;
-      si = clamp(widen_ulps(lo, hi));
-      lo = std::min(c0[k], c1[k]) - kLaneSinCosError;
-      hi = std::max(c0[k], c1[k]) + kLaneSinCosError;
-      if (hits_phase(x.lo, x.hi, 0, kTwoPi)) hi = 1;
-      if (hits_phase(x.lo, x.hi, std::numbers::pi, kTwoPi)) lo = -1;
-      ci = clamp(widen_ulps(lo, hi));
-    }
-    const Interval r = want_sin ? si : ci, g = want_sin ? ci : -si;
-    rlo[k] = r.lo;
-    rhi[k] = r.hi;
-    glo[k] = g.lo;
-    ghi[k] = g.hi;
-  }
+  sincos_points(lo, s0, c0);
+  sincos_points(hi, s1, c1);
+  V slo = vmin(s0, s1) - err, shi = vmax(s0, s1) + err;
+  shi = hits_phase_lanes(lo, hi, kHalfPi, kTwoPi) ? one : shi;
+  slo = hits_phase_lanes(lo, hi, -kHalfPi, kTwoPi) ? minus_one : slo;
+  V clo = vmin(c0, c1) - err, chi = vmax(c0, c1) + err;
+  chi = hits_phase_lanes(lo, hi, 0, kTwoPi) ? one : chi;
+  clo = hits_phase_lanes(lo, hi, std::numbers::pi, kTwoPi) ? minus_one : clo;
+  V sil, sih, cil, cih;
+  widen_ulps_clamped(slo, shi, sil, sih);
+  widen_ulps_clamped(clo, chi, cil, cih);
+  const M empty = ~(lo <= hi);
+  const M whole = ~(hi - lo < splat(kTwoPi)) | (vabs(lo) > splat(1e15)) | (vabs(hi) > splat(1e15));
+  const V inf = splat(kInf);
+  // Interval::empty() for empty lanes; [-1, 1] for whole ones.
+  sil = empty ? inf : (whole ? minus_one : sil);
+  sih = empty ? -inf : (whole ? one : sih);
+  cil = empty ? inf : (whole ? minus_one : cil);
+  cih = empty ? -inf : (whole ? one : cih);
+  // The result, and the derivative's factor: cos for sin, -sin for cos.
+  const V rlo = want_sin ? sil : cil, rhi = want_sin ? sih : cih;
+  const V glo = want_sin ? cil : -sih, ghi = want_sin ? cih : -sil;
   V dlo, dhi;
   mul(glo, ghi, a.dlo, a.dhi, dlo, dhi);
   a = {rlo, rhi, dlo, dhi};

@@ -6,17 +6,27 @@
 
 namespace raycast {
 
-double evaluate(const Polynomial& p, double t) {
-  double y = p.c[p.degree];
-  for (int i = p.degree - 1; i >= 0; --i) y = y * t + p.c[i];
+namespace {
+
+// Horner's rule for degree N (kDynamic: p.degree): fixed degrees unroll; the same operations in
+// the same order for all, so the same bits.
+constexpr int kDynamic = -1;
+
+template <int N>
+double horner(const Polynomial& p, double t) {
+  const int n = N == kDynamic ? p.degree : N;
+  double y = p.c[n];
+  for (int i = n - 1; i >= 0; --i) y = y * t + p.c[i];
   return y;
 }
 
-double evaluate(const Polynomial& p, double t, double& error) {
-  double y = p.c[p.degree];
+template <int N>
+double horner_error(const Polynomial& p, double t, double& error) {
+  const int n = N == kDynamic ? p.degree : N;
+  double y = p.c[n];
   double mu = 0.5 * std::abs(y);
   const double at = std::abs(t);
-  for (int i = p.degree - 1; i >= 0; --i) {
+  for (int i = n - 1; i >= 0; --i) {
     y = y * t + p.c[i];
     mu = mu * at + std::abs(y);
   }
@@ -25,12 +35,14 @@ double evaluate(const Polynomial& p, double t, double& error) {
   return y;
 }
 
-double evaluate(const Polynomial& p, double t, double& derivative, double& error) {
-  double y = p.c[p.degree];
+template <int N>
+double horner_derivative_error(const Polynomial& p, double t, double& derivative, double& error) {
+  const int n = N == kDynamic ? p.degree : N;
+  double y = p.c[n];
   double dy = 0;
   double mu = 0.5 * std::abs(y);
   const double at = std::abs(t);
-  for (int i = p.degree - 1; i >= 0; --i) {
+  for (int i = n - 1; i >= 0; --i) {
     dy = dy * t + y;
     y = y * t + p.c[i];
     mu = mu * at + std::abs(y);
@@ -38,6 +50,41 @@ double evaluate(const Polynomial& p, double t, double& derivative, double& error
   derivative = dy;
   error = kMachineEpsilon * (2 * mu - std::abs(y)) * (1 + gamma(2)) + 0x1p-1074;
   return y;
+}
+
+}  // namespace
+
+double evaluate(const Polynomial& p, double t) {
+  switch (p.degree) {
+    case 4:
+      return horner<4>(p, t);
+    case 6:
+      return horner<6>(p, t);
+    default:
+      return horner<kDynamic>(p, t);
+  }
+}
+
+double evaluate(const Polynomial& p, double t, double& error) {
+  switch (p.degree) {
+    case 4:
+      return horner_error<4>(p, t, error);
+    case 6:
+      return horner_error<6>(p, t, error);
+    default:
+      return horner_error<kDynamic>(p, t, error);
+  }
+}
+
+double evaluate(const Polynomial& p, double t, double& derivative, double& error) {
+  switch (p.degree) {
+    case 4:
+      return horner_derivative_error<4>(p, t, derivative, error);
+    case 6:
+      return horner_derivative_error<6>(p, t, derivative, error);
+    default:
+      return horner_derivative_error<kDynamic>(p, t, derivative, error);
+  }
 }
 
 Polynomial derivative(const Polynomial& p) {

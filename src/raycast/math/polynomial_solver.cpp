@@ -154,13 +154,24 @@ int roots_in(const Polynomial& p, double lo, double hi, double* out) {
 constexpr int kBernsteinMaxDepth = 12;
 constexpr int kBernsteinSplitsPerDegree = 4;
 
+// find_first_real_root's filter inside the isolation: roots there are in scaled units (t = u 2^e).
+struct RootStop {
+  const RootFilter* accept;
+  int scale_exp = 0;
+  bool stopped = false;
+  bool takes(double u);
+};
+
 // The roots of p in [lo, hi] (lo < hi) when Descartes' rule of signs on the Bernstein form of
 // halvings of [lo, hi] settles every piece: none in a piece whose coefficients allow no sign
 // change; exactly one, simple, where they allow one and the piece's ends have certain opposite
 // signs (refined as above). -1 when a piece stays unsettled within the caps (roots closer than
 // the caps resolve, a multiple root, a root at an end or at a halving point): the caller then
 // runs the derivative sequence on the whole interval, so those cases keep its behaviour.
-int bernstein_roots(const Polynomial& p, double lo, double hi, double* out) {
+// With a stop, each new root is offered to it (scaled back) as soon as it is refined, and the
+// isolation ends at the first one it takes: every piece left of it is settled by then (depth
+// first, left halves first), so it is the same root the full isolation reports there.
+int bernstein_roots(const Polynomial& p, double lo, double hi, double* out, RootStop* stop) {
   const int n = p.degree;
   const double w = (hi - lo) * (1 + 4 * kMachineEpsilon);  // covers [lo, hi] despite rounding
   struct Piece {
@@ -192,7 +203,10 @@ int bernstein_roots(const Polynomial& p, double lo, double hi, double* out) {
           if (std::abs(fh) > err && same_sign(fh, f0)) return count;
           t = hi;
         }
-        if (count == 0 || t > out[count - 1]) out[count++] = t;
+        if (count == 0 || t > out[count - 1]) {
+          out[count++] = t;
+          if (stop && stop->takes(t)) return count;
+        }
       }
       --top;
       continue;
@@ -220,6 +234,13 @@ int exponent_of(double x) {
   return biased - 1023;
 }
 
+// x 2^e, as std::ldexp(x, e) (one correctly rounded operation either way) without the libm call
+// while 2^e is a normal double.
+double scale2(double x, int e) {
+  if (e < -1022 || e > 1023) return std::ldexp(x, e);
+  return x * std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+}
+
 // Fujiwara's bound on the magnitude of every complex root, 2 max |c_{n-i} / c_n|^(1/i) (the
 // constant term's ratio halved), rounded up to powers of two so that no pow() is needed.
 double root_bound(const Polynomial& p) {
@@ -235,19 +256,16 @@ double root_bound(const Polynomial& p) {
     e = std::max(e, root_exp);
   }
   if (e == std::numeric_limits<int>::min()) return 0;
-  return std::ldexp(2.0, e);
+  return scale2(2.0, e);
 }
 
-// x 2^e, as std::ldexp(x, e) (one correctly rounded operation either way) without the libm call
-// while 2^e is a normal double.
-double scale2(double x, int e) {
-  if (e < -1022 || e > 1023) return std::ldexp(x, e);
-  return x * std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+bool RootStop::takes(double u) {
+  stopped = (*accept)(scale2(u, scale_exp));
+  return stopped;
 }
 
-}  // namespace
-
-int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots) {
+// find_real_roots, and find_first_real_root when stop is given (see bernstein_roots).
+int solve(const Polynomial& p_in, double lo, double hi, double* roots, RootStop* stop) {
   if (std::isnan(lo) || std::isnan(hi) || lo > hi) return 0;
   for (int i = 0; i <= p_in.degree; ++i)
     if (!std::isfinite(p_in.c[i])) return 0;
@@ -281,15 +299,40 @@ int find_real_roots(const Polynomial& p_in, double lo, double hi, double* roots)
     if (!std::isfinite(cmax) || cmax == 0) return 0;
     const int ce2 = exponent_of(cmax);
     for (int i = 0; i <= p.degree; ++i) p.c[i] = scale2(p.c[i], -ce2);
-    p = trimmed(p);
+    while (p.degree > 0 && p.c[p.degree] == 0) --p.degree;  // trimmed, in place
     if (p.degree == 0) return 0;
     lo = scale2(lo, -se);
     hi = scale2(hi, -se);
   }
-  int n = p.degree >= 3 && lo < hi ? bernstein_roots(p, lo, hi, roots) : -1;
+  if (stop) stop->scale_exp = se;
+  int n = p.degree >= 3 && lo < hi ? bernstein_roots(p, lo, hi, roots, stop) : -1;
   if (n < 0) n = certainly_no_root(p, lo, hi) ? 0 : roots_in(p, lo, hi, roots);
   for (int i = 0; i < n; ++i) roots[i] = scale2(roots[i], se);
   return n;
+}
+
+}  // namespace
+
+int find_real_roots(const Polynomial& p, double lo, double hi, double* roots) {
+  return solve(p, lo, hi, roots, nullptr);
+}
+
+bool find_first_real_root(const Polynomial& p, double lo, double hi, const RootFilter& accept,
+                          double& root) {
+  double roots[kMaxPolynomialDegree];
+  RootStop stop{&accept};
+  const int n = solve(p, lo, hi, roots, &stop);
+  if (stop.stopped) {
+    root = roots[n - 1];
+    return true;
+  }
+  // The full isolation ran (or the derivative sequence): the roots in order.
+  for (int i = 0; i < n; ++i)
+    if (accept(roots[i])) {
+      root = roots[i];
+      return true;
+    }
+  return false;
 }
 
 int solve_cubic(double a, double b, double c, double d, double roots[3]) {

@@ -16,6 +16,30 @@ namespace raycast {
 /// the zero polynomial and NaN bounds give 0 roots. `roots` needs room for p.degree values.
 int find_real_roots(const Polynomial& p, double lo, double hi, double* roots);
 
+/// A predicate on roots (a reference to any callable taking a double; the callable must outlive
+/// the filter).
+class RootFilter {
+ public:
+  template <class F>
+  RootFilter(const F& f)  // NOLINT(google-explicit-constructor): a lambda passes as is
+      : object_(&f),
+        call_([](const void* o, double x) { return (*static_cast<const F*>(o))(x); }) {}
+  bool operator()(double x) const { return call_(object_, x); }
+
+ private:
+  const void* object_;
+  bool (*call_)(const void*, double);
+};
+
+/// The first root that `accept` takes, trying them in increasing order, of those
+/// find_real_roots(p, lo, hi) reports; false when it takes none. The isolation stops at that root,
+/// so a caller that wants only the first root in some range (a ray's nearest hit) does not refine
+/// the later ones. The root has find_real_roots' bits, except where its full isolation falls back
+/// to the derivative sequence over a piece right of the root: then the root is the Bernstein
+/// isolation's (the same certified root, refined from its own bracket).
+bool find_first_real_root(const Polynomial& p, double lo, double hi, const RootFilter& accept,
+                          double& root);
+
 /// The real roots of a t^3 + b t^2 + c t + d = 0 in increasing order (a double root once);
 /// returns the count. Closed form (trigonometric for three real roots, Cardano otherwise, on the
 /// depressed cubic), then two Newton steps on the original cubic. a == 0 falls back to
