@@ -39,14 +39,14 @@ double rmse(const Image& a, const Image& b) {
 TEST(ColourDistance, SumOfClampedChannelDifferences) {
   EXPECT_EQ(colour_distance({0, 0, 0}, {0, 0, 0}), 0);
   EXPECT_EQ(colour_distance({1, 0, 0}, {0, 0.5, 0.25}),
-            1 + linear_to_srgb8(0.5f) / 255.0 + linear_to_srgb8(0.25f) / 255.0);
+            (255 + linear_to_srgb8(0.5f) + linear_to_srgb8(0.25f)) / 255.0);
   EXPECT_EQ(colour_distance({0.2, 0.2, 0.2}, {0.2, 0.2, 0.2}), 0);
   EXPECT_EQ(colour_distance({3, -1, 0.5}, {1, 0, 0.5}), 0);  // clamped to [0, 1] first
   EXPECT_EQ(colour_distance({0, 0, 0}, {2, 2, 2}), 3);
 }
 
 TEST(ColourDistance, EqualsTheDisplayedCodesDividedBy255) {
-  // The displayed value is each channel's 8-bit sRGB code divided by 255, bit for bit.
+  // The sum of the channels' 8-bit sRGB code differences, divided by 255 once, bit for bit.
   std::uint64_t h = 1;
   auto next = [&] {
     h = h * 6364136223846793005ull + 1442695040888963407ull;
@@ -54,11 +54,10 @@ TEST(ColourDistance, EqualsTheDisplayedCodesDividedBy255) {
   };
   for (int i = 0; i < 2000; ++i) {
     const Color a{next(), next(), next()}, b{next(), next(), next()};
-    double want = 0;
+    int codes = 0;
     for (int c = 0; c < 3; ++c)
-      want += std::abs(double(linear_to_srgb8(float(a[c]))) / 255.0 -
-                       double(linear_to_srgb8(float(b[c]))) / 255.0);
-    ASSERT_EQ(colour_distance(a, b), want) << i;
+      codes += std::abs(int(linear_to_srgb8(float(a[c]))) - int(linear_to_srgb8(float(b[c]))));
+    ASSERT_EQ(colour_distance(a, b), codes / 255.0) << i;
   }
 }
 
@@ -149,6 +148,30 @@ TEST(Antialias, ThresholdAboveEveryDistance_NoRefinement) {
   RenderStats stats;
   render(scene, small(AntialiasMethod::kSubdivide, 3.5, 4, 1), &stats);
   EXPECT_EQ(stats.samples, 41u * 31u);
+}
+
+TEST(Antialias, ThresholdEqualToTheDistance_NoRefinementJustBelowIt_Refinement) {
+  // Two halves of a 2 x 1 picture whose colours lie exactly `d` apart: a pixel is refined when
+  // the distance exceeds the threshold, so threshold d refines nothing and the next double
+  // below d refines both pixels (method 1: 8 new samples each; method 2: the pixels' squares).
+  const Color a{0.1, 0.6, 0.3}, b{0.7, 0.2, 0.35};
+  const double d = colour_distance(a, b);
+  const RasterSampler sample = [&](double x, double, SampleState& state) {
+    ++state.rays;
+    return x < 1 ? a : b;
+  };
+  for (const auto method : {AntialiasMethod::kNeighbour, AntialiasMethod::kSubdivide}) {
+    const std::uint64_t first = method == AntialiasMethod::kNeighbour ? 2 : 6;
+    for (const double threshold : {d, std::nextafter(d, 0.0)}) {
+      Image image(2, 1);
+      AdaptiveStats stats;
+      render_adaptive({method, threshold, 3}, 1, sample, image, stats, nullptr);
+      if (threshold == d)
+        EXPECT_EQ(stats.samples, first) << int(method);
+      else
+        EXPECT_GT(stats.samples, first) << int(method);
+    }
+  }
 }
 
 TEST(Antialias, FlatImage_ExactBackgroundEverywhere) {

@@ -9,6 +9,10 @@
 #include <stdexcept>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace raycast {
 
 namespace {
@@ -22,15 +26,6 @@ struct Counters {
 
 double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 
-/// code / 255.0 for every 8-bit code (the same quotients, divided once).
-struct CodeValues {
-  double of[256];
-  CodeValues() {
-    for (int i = 0; i < 256; ++i) of[i] = double(i) / 255.0;
-  }
-};
-const CodeValues kCodeValues;
-
 /// The displayed value of a linear colour: its 8-bit sRGB codes (io/image.h), as the bytes of one
 /// word (red lowest) so that a first pass keeps 4 bytes per pixel.
 std::uint32_t display_codes(const Color& c) {
@@ -39,11 +34,26 @@ std::uint32_t display_codes(const Color& c) {
          std::uint32_t(linear_to_srgb8(float(c.z))) << 16;
 }
 
-/// The distance of two displayed values: the sum over channels of |code difference| / 255.
-double display_distance(std::uint32_t a, std::uint32_t b) {
-  const double* of = kCodeValues.of;
-  return std::abs(of[a & 0xff] - of[b & 0xff]) +
-         std::abs(of[(a >> 8) & 0xff] - of[(b >> 8) & 0xff]) + std::abs(of[a >> 16] - of[b >> 16]);
+/// The distance of two displayed values in codes: the sum over channels of |code difference|
+/// (0 to 765). The tests compare it with an integer limit, so no division per comparison.
+int code_distance(std::uint32_t a, std::uint32_t b) {
+#if defined(__SSE2__)
+  // One sum of absolute byte differences (psadbw; the fourth bytes are zero).
+  return _mm_cvtsi128_si32(_mm_sad_epu8(_mm_cvtsi32_si128(int(a)), _mm_cvtsi32_si128(int(b))));
+#else
+  const auto channel = [&](int shift) {
+    return std::abs(int((a >> shift) & 0xff) - int((b >> shift) & 0xff));
+  };
+  return channel(0) + channel(8) + channel(16);
+#endif
+}
+
+/// The least code distance s with s / 255 > threshold (766: none), so that
+/// `code_distance >= limit` is exactly `colour distance > threshold`.
+int code_limit(double threshold) {
+  int s = 0;
+  while (s <= 765 && !(double(s) / 255.0 > threshold)) ++s;
+  return s;
 }
 
 /// Runs body(y, counters) for every row y in [0, rows) in parallel, then calls row_done.
@@ -73,18 +83,18 @@ struct FirstPass {
 };
 
 /// Whether pixel (x, y) of the first-pass values differs from one of its four neighbours by more
-/// than the threshold (POV-Ray's method 1 compares each pixel with its left and upper neighbours
-/// and refines both: the same set of pixels).
-bool differs(const FirstPass& first, int x, int y, double threshold) {
+/// than the threshold, `limit` = code_limit(threshold) (POV-Ray's method 1 compares each pixel with
+/// its left and upper neighbours and refines both: the same set of pixels).
+bool differs(const FirstPass& first, int x, int y, int limit) {
   const std::size_t i = first.index(x, y);
   const std::uint32_t* shown = first.shown.data();
   const std::uint32_t c = shown[i];
   const std::size_t row = std::size_t(first.x1 - first.x0);
   // Left, right, up, down (in that order, as before), each inside the full picture.
-  if (x > 0 && display_distance(c, shown[i - 1]) > threshold) return true;
-  if (x + 1 < first.full_width && display_distance(c, shown[i + 1]) > threshold) return true;
-  if (y > 0 && display_distance(c, shown[i - row]) > threshold) return true;
-  return y + 1 < first.full_height && display_distance(c, shown[i + row]) > threshold;
+  if (x > 0 && code_distance(c, shown[i - 1]) >= limit) return true;
+  if (x + 1 < first.full_width && code_distance(c, shown[i + 1]) >= limit) return true;
+  if (y > 0 && code_distance(c, shown[i - row]) >= limit) return true;
+  return y + 1 < first.full_height && code_distance(c, shown[i + row]) >= limit;
 }
 
 /// The first pass of methods 1 and variance: one sample through every pixel's centre, over the
@@ -120,16 +130,16 @@ FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_h
 }
 
 /// Method 2's recursion over the square [x0, x0 + size] x [y0, y0 + size] with corner values
-/// c[0..3] (top-left, top-right, bottom-left, bottom-right).
+/// c[0..3] (top-left, top-right, bottom-left, bottom-right); `limit` = code_limit(aa.threshold).
 Color subdivide(double x0, double y0, double size, const Color c[4], int level,
-                const AntialiasSettings& aa, const RasterSampler& sample, SampleState& state,
-                std::uint64_t& samples) {
+                const AntialiasSettings& aa, int limit, const RasterSampler& sample,
+                SampleState& state, std::uint64_t& samples) {
   const std::uint32_t shown[4] = {display_codes(c[0]), display_codes(c[1]), display_codes(c[2]),
                                   display_codes(c[3])};
-  double spread = 0;
+  int spread = 0;
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) spread = std::max(spread, display_distance(shown[i], shown[j]));
-  if (level >= aa.depth || !(spread > aa.threshold)) return 0.25 * (c[0] + c[1] + c[2] + c[3]);
+    for (int j = i + 1; j < 4; ++j) spread = std::max(spread, code_distance(shown[i], shown[j]));
+  if (level >= aa.depth || spread < limit) return 0.25 * (c[0] + c[1] + c[2] + c[3]);
   const double h = 0.5 * size;
   // The five new points: the edges' midpoints (top, left, right, bottom) and the centre.
   const Color top = sample(x0 + h, y0, state), left = sample(x0, y0 + h, state);
@@ -138,16 +148,16 @@ Color subdivide(double x0, double y0, double size, const Color c[4], int level,
   samples += 5;
   const Color q0[4] = {c[0], top, left, mid}, q1[4] = {top, c[1], mid, right};
   const Color q2[4] = {left, mid, c[2], bottom}, q3[4] = {mid, right, bottom, c[3]};
-  return 0.25 * (subdivide(x0, y0, h, q0, level + 1, aa, sample, state, samples) +
-                 subdivide(x0 + h, y0, h, q1, level + 1, aa, sample, state, samples) +
-                 subdivide(x0, y0 + h, h, q2, level + 1, aa, sample, state, samples) +
-                 subdivide(x0 + h, y0 + h, h, q3, level + 1, aa, sample, state, samples));
+  return 0.25 * (subdivide(x0, y0, h, q0, level + 1, aa, limit, sample, state, samples) +
+                 subdivide(x0 + h, y0, h, q1, level + 1, aa, limit, sample, state, samples) +
+                 subdivide(x0, y0 + h, h, q2, level + 1, aa, limit, sample, state, samples) +
+                 subdivide(x0 + h, y0 + h, h, q3, level + 1, aa, limit, sample, state, samples));
 }
 
 }  // namespace
 
 double colour_distance(const Color& a, const Color& b) {
-  return display_distance(display_codes(a), display_codes(b));
+  return code_distance(display_codes(a), display_codes(b)) / 255.0;
 }
 
 void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
@@ -165,6 +175,7 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
   if (x0 < 0 || y0 < 0 || x0 + width > full_width || y0 + height > full_height)
     throw std::invalid_argument("render_adaptive: the window does not fit in the picture");
   tbb::enumerable_thread_specific<Counters> counters;
+  const int limit = code_limit(aa.threshold);
 
   switch (aa.method) {
     case AntialiasMethod::kNone:
@@ -180,7 +191,7 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       for_rows(height, counters, row_done, [&](int row, Counters& c) {
         const int y = y0 + row;
         for (int x = x0; x < x0 + width; ++x) {
-          if (n > 1 && differs(first, x, y, aa.threshold)) {
+          if (n > 1 && differs(first, x, y, limit)) {
             // The centre sample as the first pass stored it (in float, as every pixel is kept).
             const Color value(image.at(x - x0, row));
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
@@ -224,7 +235,8 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
           const int x = x0 + i, y = y0 + row;
           SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
           std::uint64_t samples = 0;
-          image.set(i, row, Vec3f(subdivide(x, y, 1, corner, 0, aa, sample, state, samples)));
+          image.set(i, row,
+                    Vec3f(subdivide(x, y, 1, corner, 0, aa, limit, sample, state, samples)));
           c.rays += state.rays;
           c.samples += samples;
         }
@@ -243,7 +255,7 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       for_rows(height, counters, row_done, [&](int row, Counters& c) {
         const int y = y0 + row;
         for (int x = x0; x < x0 + width; ++x) {
-          if (differs(first, x, y, aa.threshold)) {
+          if (differs(first, x, y, limit)) {
             SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
             Color sum{0, 0, 0}, sum1{0, 0, 0}, sum2{0, 0, 0};  // values; clamped; squared
             int n = 0;
