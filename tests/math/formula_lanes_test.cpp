@@ -160,6 +160,22 @@ void scalar_sin_cos_var(const Interval& a, double p0, double p1, Interval& si, I
   ci = finish(lo, hi);
 }
 
+// Lane k's value and derivative bounds are v's and dv's, bit for bit.
+void expect_lane_bits(const FormulaLanes& out, int k, const Interval& v, const Interval& dv) {
+  EXPECT_EQ(out.lo[k], v.lo) << k;
+  EXPECT_EQ(out.hi[k], v.hi) << k;
+  EXPECT_EQ(out.dlo[k], dv.lo) << k;
+  EXPECT_EQ(out.dhi[k], dv.hi) << k;
+}
+
+// The lanes' ends t[0..W]: t[k] = k / W of a width from 1e-12 to about 40, plus its own random
+// offset in (-1, 1) (lanes of any order and length) or, `at_zero`, none (W equal lanes from 0).
+void lane_ends(std::uniform_real_distribution<double>& u, std::mt19937& rng, bool at_zero,
+               double* t) {
+  const double width = std::pow(10.0, -12 + 13.6 * std::abs(u(rng)));
+  for (int k = 0; k <= W; ++k) t[k] = (at_zero ? 0 : u(rng)) + width * k / W;
+}
+
 // The vector form of sin and cos of a variable gives the scalar form's bits on every lane: lanes
 // of 1e-12 to 40 in t (tiny, across extrema, more than a period), points up to 1e16 (past the
 // reduction's range and past 1e15, where a lane is [-1, 1]), lanes starting exactly at extrema.
@@ -177,8 +193,7 @@ TEST(FormulaLanes, SinCosOfAVariable_BitEqualToTheScalarForm) {
       const double scale = std::pow(10.0, 16 * std::abs(u(rng)));
       o[0] = trial % 7 == 0 ? std::numbers::pi / 2 * std::round(8 * u(rng)) : scale * u(rng);
       d[0] = trial % 11 == 0 ? 1 : u(rng);
-      const double width = std::pow(10.0, -12 + 13.6 * std::abs(u(rng)));
-      for (int k = 0; k <= W; ++k) t[k] = (trial % 7 == 0 ? 0 : u(rng)) + width * k / W;
+      lane_ends(u, rng, trial % 7 == 0, t);
       FormulaLanes out;
       LaneTrig lt;
       run_lanes(f, o, d, t, out, &lt);
@@ -188,10 +203,7 @@ TEST(FormulaLanes, SinCosOfAVariable_BitEqualToTheScalarForm) {
         scalar_sin_cos_var(a, o[0] + t[k] * d[0], o[0] + t[k + 1] * d[0], si, ci);
         const Interval v = want_sin ? si : ci;
         const Interval dv = (want_sin ? ci : -si) * Interval{d[0], d[0]};
-        EXPECT_EQ(out.lo[k], v.lo) << k;
-        EXPECT_EQ(out.hi[k], v.hi) << k;
-        EXPECT_EQ(out.dlo[k], dv.lo) << k;
-        EXPECT_EQ(out.dhi[k], dv.hi) << k;
+        expect_lane_bits(out, k, v, dv);
       }
     }
   }
@@ -215,8 +227,7 @@ TEST(FormulaLanes, SinCosOfAnyArgument_BitEqualToTheScalarForm) {
         o[v] = trial % 7 == 0 ? std::numbers::pi / 4 * std::round(8 * u(rng)) : scale * u(rng);
         d[v] = trial % 11 == 0 ? 0.5 : u(rng);
       }
-      const double width = std::pow(10.0, -12 + 13.6 * std::abs(u(rng)));
-      for (int k = 0; k <= W; ++k) t[k] = (trial % 7 == 0 ? 0 : u(rng)) + width * k / W;
+      lane_ends(u, rng, trial % 7 == 0, t);
       FormulaLanes out;
       LaneTrig lt;
       run_lanes(f, o, d, t, out, &lt);
@@ -229,10 +240,7 @@ TEST(FormulaLanes, SinCosOfAnyArgument_BitEqualToTheScalarForm) {
         scalar_sin_cos_var(a, a.lo, a.hi, si, ci, true);
         const Interval v = want_sin ? si : ci;
         const Interval dv = (want_sin ? ci : -si) * da;
-        EXPECT_EQ(out.lo[k], v.lo) << k;
-        EXPECT_EQ(out.hi[k], v.hi) << k;
-        EXPECT_EQ(out.dlo[k], dv.lo) << k;
-        EXPECT_EQ(out.dhi[k], dv.hi) << k;
+        expect_lane_bits(out, k, v, dv);
       }
     }
   }
