@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/fixed_degree.h"
 #include "math/float_error.h"
 
 namespace raycast {
@@ -29,9 +30,8 @@ using Pair = double __attribute__((vector_size(16)));
 
 namespace {
 
-// bernstein_form for degree N (kDynamic: p.degree): the fixed degrees let the compiler unroll the
-// triangular loops; the operations and their order are the same for all, so are the bits.
-constexpr int kDynamic = -1;
+// The kernels below for degree N (math/fixed_degree.h; kDynamic: the form's own degree).
+constexpr int kDynamic = kDynamicDegree;
 
 template <int N>
 BernsteinForm bernstein_form_n(const Polynomial& p, double a, double w) {
@@ -103,25 +103,13 @@ void bernstein_halves_n(const BernsteinForm& f, BernsteinForm& left, BernsteinFo
 }  // namespace
 
 BernsteinForm bernstein_form(const Polynomial& p, double a, double w) {
-  switch (p.degree) {
-    case 4:
-      return bernstein_form_n<4>(p, a, w);
-    case 6:
-      return bernstein_form_n<6>(p, a, w);
-    default:
-      return bernstein_form_n<kDynamic>(p, a, w);
-  }
+  return with_fixed_degree(p.degree,
+                           [&](auto n) { return bernstein_form_n<decltype(n)::value>(p, a, w); });
 }
 
 void bernstein_halves(const BernsteinForm& f, BernsteinForm& left, BernsteinForm& right) {
-  switch (f.degree) {
-    case 4:
-      return bernstein_halves_n<4>(f, left, right);
-    case 6:
-      return bernstein_halves_n<6>(f, left, right);
-    default:
-      return bernstein_halves_n<kDynamic>(f, left, right);
-  }
+  return with_fixed_degree(
+      f.degree, [&](auto n) { return bernstein_halves_n<decltype(n)::value>(f, left, right); });
 }
 
 namespace {
@@ -163,14 +151,8 @@ int max_sign_changes_n(const BernsteinForm& f) {
 }  // namespace
 
 int max_sign_changes(const BernsteinForm& f) {
-  switch (f.degree) {
-    case 4:
-      return max_sign_changes_n<4>(f);
-    case 6:
-      return max_sign_changes_n<6>(f);
-    default:
-      return max_sign_changes_n<kDynamic>(f);
-  }
+  return with_fixed_degree(f.degree,
+                           [&](auto n) { return max_sign_changes_n<decltype(n)::value>(f); });
 }
 
 }  // namespace raycast

@@ -2,15 +2,15 @@
 
 #include <cmath>
 
+#include "math/fixed_degree.h"
 #include "math/float_error.h"
 
 namespace raycast {
 
 namespace {
 
-// Horner's rule for degree N (kDynamic: p.degree): fixed degrees unroll; the same operations in
-// the same order for all, so the same bits.
-constexpr int kDynamic = -1;
+// Horner's rule for degree N (math/fixed_degree.h; kDynamic: p.degree).
+constexpr int kDynamic = kDynamicDegree;
 
 template <int N>
 double horner(const Polynomial& p, double t) {
@@ -55,36 +55,18 @@ double horner_derivative_error(const Polynomial& p, double t, double& derivative
 }  // namespace
 
 double evaluate(const Polynomial& p, double t) {
-  switch (p.degree) {
-    case 4:
-      return horner<4>(p, t);
-    case 6:
-      return horner<6>(p, t);
-    default:
-      return horner<kDynamic>(p, t);
-  }
+  return with_fixed_degree(p.degree, [&](auto n) { return horner<decltype(n)::value>(p, t); });
 }
 
 double evaluate(const Polynomial& p, double t, double& error) {
-  switch (p.degree) {
-    case 4:
-      return horner_error<4>(p, t, error);
-    case 6:
-      return horner_error<6>(p, t, error);
-    default:
-      return horner_error<kDynamic>(p, t, error);
-  }
+  return with_fixed_degree(p.degree,
+                           [&](auto n) { return horner_error<decltype(n)::value>(p, t, error); });
 }
 
 double evaluate(const Polynomial& p, double t, double& derivative, double& error) {
-  switch (p.degree) {
-    case 4:
-      return horner_derivative_error<4>(p, t, derivative, error);
-    case 6:
-      return horner_derivative_error<6>(p, t, derivative, error);
-    default:
-      return horner_derivative_error<kDynamic>(p, t, derivative, error);
-  }
+  return with_fixed_degree(p.degree, [&](auto n) {
+    return horner_derivative_error<decltype(n)::value>(p, t, derivative, error);
+  });
 }
 
 Polynomial derivative(const Polynomial& p) {
