@@ -134,8 +134,8 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   return whitted_hit(ray, hit, depth, state, weight);
 }
 
-Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int depth, SampleState& state,
-                              double weight) const {
+inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
+                                     SampleState& state, double weight) const {
   // The material is resolved once per hit (CSG and instances search their parts for it).
   const std::size_t mi = material_index(hit);
   const Object& object = scene_.objects[hit.object];
@@ -187,6 +187,13 @@ Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int depth, Sa
     result += w_refract *
               whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
   return result;
+}
+
+Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
+                         SampleState& state) const {
+  ++state.rays;
+  if (mode_ != RenderMode::kWhitted) return diagnostic_hit(ray, found, hit);
+  return found ? whitted_hit(ray, hit, 0, state, 1) : scene_.render.background;
 }
 
 Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n,

@@ -1,5 +1,6 @@
 #include "scene/scene_packets.h"
 
+#include <algorithm>
 #include <bit>
 #include <variant>
 
@@ -11,6 +12,10 @@
 namespace raycast {
 
 ScenePackets::ScenePackets(const Scene& scene) : scene_(scene), width_(packet_width(active_isa())) {
+  // Nothing to gain without a mesh (the scan below computes every object's bounds).
+  if (std::none_of(scene.objects.begin(), scene.objects.end(),
+                   [](const Object& o) { return std::holds_alternative<MeshShape>(o.shape); }))
+    return;
   // ObjectSet::build's split: empty boxes never hit, unbounded objects on every ray, the bounded
   // ones behind their boxes.
   std::vector<Step> unbounded, bounded;
