@@ -51,7 +51,6 @@ struct PacketData {
   // leaf (most packets of primary rays miss the mesh and never do): each lane's, and as lanes
   // when every lane has the same axis permutation (`shared`).
   bool leaves_ready = false, shared = false;
-  int lane_k[3][N];
   alignas(64) float lane_s[3][N], lane_ok[3][N];
   int kx, ky, kz;
   V sx, sy, sz, okx, oky, okz;
@@ -293,11 +292,9 @@ inline void prepare_leaves(const PacketRays<N>& pr, PacketData<N>& p) {
     const MeshRay r = pr.ray(l);
     const float* ro = &r.o.x;
     const WatertightRay w = make_watertight_ray(r.o, r.d);
-    p.lane_k[0][l] = w.kx;
-    p.lane_k[1][l] = w.ky;
-    p.lane_k[2][l] = w.kz;
-    p.shared =
-        p.shared && w.kx == p.lane_k[0][0] && w.ky == p.lane_k[1][0] && w.kz == p.lane_k[2][0];
+    // Every lane's axis permutation the same as lane 0's (lane_ray[0] is set first).
+    const RayData& first = p.lane_ray[0];
+    p.shared = p.shared && (l == 0 || (w.kx == first.kx && w.ky == first.ky && w.kz == first.kz));
     p.lane_s[0][l] = w.sx;
     p.lane_s[1][l] = w.sy;
     p.lane_s[2][l] = w.sz;
@@ -316,9 +313,9 @@ inline void prepare_leaves(const PacketRays<N>& pr, PacketData<N>& p) {
     lr.okz = splat(ro[w.kz]);
     lr.tmin = splat(r.tmin);
   }
-  p.kx = p.lane_k[0][0];
-  p.ky = p.lane_k[1][0];
-  p.kz = p.lane_k[2][0];
+  p.kx = p.lane_ray[0].kx;
+  p.ky = p.lane_ray[0].ky;
+  p.kz = p.lane_ray[0].kz;
   p.sx = L::load(p.lane_s[0]), p.sy = L::load(p.lane_s[1]), p.sz = L::load(p.lane_s[2]);
   p.okx = L::load(p.lane_ok[0]), p.oky = L::load(p.lane_ok[1]), p.okz = L::load(p.lane_ok[2]);
   p.leaves_ready = true;

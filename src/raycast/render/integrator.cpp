@@ -95,7 +95,12 @@ SurfaceNeeds Integrator::needs(std::size_t material) const {
 Color Integrator::li_diagnostic(const Ray& ray, SampleState& state) const {
   ++state.rays;
   SceneHit hit;
-  if (!scene_.intersect(ray, hit)) {
+  const bool found = scene_.intersect(ray, hit);
+  return diagnostic_hit(ray, found, hit);
+}
+
+Color Integrator::diagnostic_hit(const Ray& ray, bool found, const SceneHit& hit) const {
+  if (!found) {
     if (mode_ == RenderMode::kRaycast) return scene_.render.background;
     if (mode_ == RenderMode::kDepth) return {kInfinity, kInfinity, kInfinity};
     return {0, 0, 0};
@@ -126,6 +131,11 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
+  return whitted_hit(ray, hit, depth, state, weight);
+}
+
+inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
+                                     SampleState& state, double weight) const {
   // The material is resolved once per hit (CSG and instances search their parts for it).
   const std::size_t mi = material_index(hit);
   const Object& object = scene_.objects[hit.object];
@@ -177,6 +187,13 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
     result += w_refract *
               whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
   return result;
+}
+
+Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
+                         SampleState& state) const {
+  ++state.rays;
+  if (mode_ != RenderMode::kWhitted) return diagnostic_hit(ray, found, hit);
+  return found ? whitted_hit(ray, hit, 0, state, 1) : scene_.render.background;
 }
 
 Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n,

@@ -16,6 +16,7 @@
 
 #include "render/antialias.h"
 #include "render/camera.h"
+#include "render/camera_packets.h"
 #include "render/integrator.h"
 
 namespace raycast {
@@ -142,6 +143,9 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     return image;
   }
 
+  // Camera-ray packets where the scene has meshes that ScenePackets can trace as packets.
+  const ScenePackets packets(scene);
+  const bool use_packets = options.camera_packets && packets.usable();
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = process_cpu_seconds();
   tbb::parallel_for(
@@ -152,6 +156,13 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
             if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
             const int y1 = std::min(rect.y1, rect.y0 + (ty + 1) * kTileSize);
             const int x1 = std::min(rect.x1, rect.x0 + (tx + 1) * kTileSize);
+            if (use_packets) {
+              const PixelRect tile{rect.x0 + tx * kTileSize, rect.y0 + ty * kTileSize, x1, y1};
+              render_packet_tile(packets, camera, integrator, spp, seed, tile, rect, image,
+                                 counter);
+              progress.advance();
+              continue;
+            }
             for (int y = rect.y0 + ty * kTileSize; y < y1; ++y) {
               for (int x = rect.x0 + tx * kTileSize; x < x1; ++x) {
                 SampleState state{Rng::for_pixel(x, y, seed), 0};
