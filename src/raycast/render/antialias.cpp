@@ -84,7 +84,8 @@ struct FirstPass {
 
 /// Whether pixel (x, y) of the first-pass values differs from one of its four neighbours by more
 /// than the threshold, `limit` = code_limit(threshold) (POV-Ray's method 1 compares each pixel with
-/// its left and upper neighbours and refines both: the same set of pixels).
+/// its left and upper neighbours and refines both: the same set of pixels). Forced inline: GCC
+/// kept it a call, once per pixel of the refinement pass.
 inline __attribute__((always_inline)) bool differs(const FirstPass& first, int x, int y,
                                                    int limit) {
   const std::size_t i = first.index(x, y);
