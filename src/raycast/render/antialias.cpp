@@ -84,8 +84,10 @@ struct FirstPass {
 
 /// Whether pixel (x, y) of the first-pass values differs from one of its four neighbours by more
 /// than the threshold, `limit` = code_limit(threshold) (POV-Ray's method 1 compares each pixel with
-/// its left and upper neighbours and refines both: the same set of pixels).
-bool differs(const FirstPass& first, int x, int y, int limit) {
+/// its left and upper neighbours and refines both: the same set of pixels). Forced inline: GCC
+/// kept it a call, once per pixel of the refinement pass.
+inline __attribute__((always_inline)) bool differs(const FirstPass& first, int x, int y,
+                                                   int limit) {
   const std::size_t i = first.index(x, y);
   const std::uint32_t* shown = first.shown.data();
   const std::uint32_t c = shown[i];
@@ -115,16 +117,19 @@ FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_h
   // The displayed values are computed in the same parallel rows (not in a serial pass after).
   for_rows(first.y1 - first.y0, counters, nullptr, [&](int row, Counters& c) {
     const int y = first.y0 + row;
+    const bool in_rows = y >= wy0 && y < wy0 + h;
+    std::uint32_t* const shown = first.shown.data() + first.index(first.x0, y);
+    std::uint64_t rays = 0;  // summed here, added to the thread's counters once per row
     for (int x = first.x0; x < first.x1; ++x) {
       SampleState state{Rng::for_pixel(x, y, seed), 0};
       const Color value = sample(x + 0.5, y + 0.5, state);
-      first.shown[first.index(x, y)] = display_codes(value);
-      if (x >= wx0 && x < wx0 + w && y >= wy0 && y < wy0 + h)
-        image.set(x - wx0, y - wy0, Vec3f(value));
-      c.rays += state.rays;
-      ++c.samples;
+      shown[x - first.x0] = display_codes(value);
+      if (in_rows && x >= wx0 && x < wx0 + w) image.set(x - wx0, y - wy0, Vec3f(value));
+      rays += state.rays;
     }
-    if (row_done && y >= wy0 && y < wy0 + h) row_done();
+    c.rays += rays;
+    c.samples += std::uint64_t(first.x1 - first.x0);
+    if (row_done && in_rows) row_done();
   });
   return first;
 }
