@@ -29,49 +29,33 @@ std::uint8_t reference_srgb8(float linear) {
   return static_cast<std::uint8_t>(std::lround(255.f * linear_to_srgb(linear)));
 }
 
+}  // namespace
+
 // thresholds[k - 1] = the smallest non-negative float whose code is >= k (k = 1..255). The code is
 // non-decreasing in the value (linear_to_srgb is, and so is rounding), and the order of
 // non-negative floats is the order of their bit patterns, so each threshold is a binary search
 // over bit patterns.
-struct Srgb8Table {
-  static constexpr int kShift = 15;                   // buckets of 2^15 consecutive floats
-  static constexpr std::uint32_t kOne = 0x3f800000u;  // the bits of 1.f
-  float thresholds[255];
-  std::uint8_t bucket_code[kOne >> kShift];  // the code of each bucket's first float
-  Srgb8Table() {
-    for (int k = 1; k <= 255; ++k) {
-      std::uint32_t lo = 0, hi = kOne;  // code(lo) < k <= code(hi)
-      while (hi - lo > 1) {
-        const std::uint32_t mid = lo + (hi - lo) / 2;
-        if (reference_srgb8(std::bit_cast<float>(mid)) >= k)
-          hi = mid;
-        else
-          lo = mid;
-      }
-      thresholds[k - 1] = std::bit_cast<float>(hi);
+Srgb8Table::Srgb8Table() {
+  for (int k = 1; k <= 255; ++k) {
+    std::uint32_t lo = 0, hi = kOne;  // code(lo) < k <= code(hi)
+    while (hi - lo > 1) {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      if (reference_srgb8(std::bit_cast<float>(mid)) >= k)
+        hi = mid;
+      else
+        lo = mid;
     }
-    int n = 0;
-    for (std::uint32_t b = 0; b < (kOne >> kShift); ++b) {
-      const float first = std::bit_cast<float>(b << kShift);
-      while (n < 255 && thresholds[n] <= first) ++n;
-      bucket_code[b] = static_cast<std::uint8_t>(n);
-    }
+    thresholds[k - 1] = std::bit_cast<float>(hi);
   }
-};
+  int n = 0;
+  for (std::uint32_t b = 0; b < (kOne >> kShift); ++b) {
+    const float first = std::bit_cast<float>(b << kShift);
+    while (n < 255 && thresholds[n] <= first) ++n;
+    bucket_code[b] = static_cast<std::uint8_t>(n);
+  }
+}
 
 const Srgb8Table kSrgb8;
-
-}  // namespace
-
-std::uint8_t linear_to_srgb8(float linear) {
-  if (!(linear > 0.f)) return 0;  // also NaN
-  if (linear >= 1.f) return 255;
-  // The number of thresholds <= linear: start from the bucket's first float (a bucket spans at
-  // most a code or two), then step over the thresholds inside the bucket.
-  int n = kSrgb8.bucket_code[std::bit_cast<std::uint32_t>(linear) >> Srgb8Table::kShift];
-  while (n < 255 && kSrgb8.thresholds[n] <= linear) ++n;
-  return static_cast<std::uint8_t>(n);
-}
 
 ImageFormat image_format_for(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();

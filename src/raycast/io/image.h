@@ -1,5 +1,6 @@
 #pragma once
 // Images in linear light: float RGB, row-major from the top-left pixel, and the files they go to.
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -50,10 +51,28 @@ class ImageError : public std::runtime_error {
 /// The sRGB transfer function (IEC 61966-2-1) and its inverse, on [0, 1].
 float linear_to_srgb(float linear);
 float srgb_to_linear(float encoded);
+/// The tables behind linear_to_srgb8 (built once, in image.cpp).
+struct Srgb8Table {
+  static constexpr int kShift = 15;                   // buckets of 2^15 consecutive floats
+  static constexpr std::uint32_t kOne = 0x3f800000u;  // the bits of 1.f
+  float thresholds[255];
+  std::uint8_t bucket_code[kOne >> kShift];  // the code of each bucket's first float
+  Srgb8Table();
+};
+extern const Srgb8Table kSrgb8;
 /// The 8-bit sRGB code of a linear value: exactly lround(255 * linear_to_srgb(linear)) (NaN and
 /// values <= 0 give 0, values >= 1 give 255), from tables of the 255 smallest floats reaching
 /// each code and of the code of every 2^15th float (built once from linear_to_srgb itself).
-std::uint8_t linear_to_srgb8(float linear);
+/// Inline: the antialiasing pass encodes three values per pixel.
+inline std::uint8_t linear_to_srgb8(float linear) {
+  if (!(linear > 0.f)) return 0;  // also NaN
+  if (linear >= 1.f) return 255;
+  // The number of thresholds <= linear: start from the bucket's first float (a bucket spans at
+  // most a code or two), then step over the thresholds inside the bucket.
+  int n = kSrgb8.bucket_code[std::bit_cast<std::uint32_t>(linear) >> Srgb8Table::kShift];
+  while (n < 255 && kSrgb8.thresholds[n] <= linear) ++n;
+  return static_cast<std::uint8_t>(n);
+}
 
 /// 8-bit sRGB PNG: each value clamped to [0, 1], sRGB-encoded, rounded to the nearest of 0..255.
 void save_png(const Image& image, const std::string& path);
