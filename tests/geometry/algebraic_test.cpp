@@ -533,9 +533,9 @@ TEST(Algebraic, Reach_HoldsEveryCrossingAndInsidePoint) {
   const Case cases[] = {
       {kHeart, {{-1.5, -1, -1.5}, {1.5, 1, 1.5}}},
       {kTori, {{-1.5, -1.5, -1.5}, {2.5, 1.5, 1.5}}},
-      {"x^2 + y^2 + z^2 - 2.5", {{-1, -1, -1}, {1, 1, 1}}},     // cut by the box: all of it
-      {"x^2 + y^2 + z^2 - 0.25", {{-3, -1, -1}, {1, 2, 4}}},    // a small ball in a large box
-      {"z - 0.3*x + 0.1*y^2", {{-1, -1, -2}, {1, 1, 2}}},       // a sheet: half the box (closed)
+      {"x^2 + y^2 + z^2 - 2.5", {{-1, -1, -1}, {1, 1, 1}}},   // cut by the box: all of it
+      {"x^2 + y^2 + z^2 - 0.25", {{-3, -1, -1}, {1, 2, 4}}},  // a small ball in a large box
+      {"z - 0.3*x + 0.1*y^2", {{-1, -1, -2}, {1, 1, 2}}},     // a sheet: half the box (closed)
       {"(x^2 + y^2 + z^2 + 0.5)^2 + 1", {{-1, -1, -1}, {1, 1, 1}}},  // no solid: the box
   };
   std::mt19937 rng(2026);
