@@ -308,7 +308,7 @@ Interval enclosure(const Trivariate& f, const Interval v[3]) {
 // Cells the reach search may bound per side before it settles for the best bound so far.
 constexpr int kReachMaxCells = 4096;
 // The search stops once the extreme cell is this fraction of the box's extent thin.
-constexpr double kReachResolution = 1.0 / 64;
+constexpr double kReachResolution = 1.0 / 256;
 
 }  // namespace
 

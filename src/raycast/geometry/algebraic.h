@@ -30,7 +30,7 @@ struct Algebraic {
 /// bound on the magnitude of f's terms over the box, a million times the rounding of any
 /// evaluation, so that no crossing the root finder reports, nor any point inside the solid, lies
 /// outside it. Per side, a best-first search over halved cells (each bounded by interval
-/// arithmetic on the formula as written) down to 1/64 of the box's extent. s.box when the search
+/// arithmetic on the formula as written) down to 1/256 of the box's extent. s.box when the search
 /// finds nothing to keep (an empty solid: the box is a valid, if loose, answer).
 Aabb reach_of_algebraic(const Algebraic& s);
 
