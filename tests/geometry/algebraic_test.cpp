@@ -521,7 +521,8 @@ TEST(Algebraic, Occluded_BySweeps_AgreesWithIntersect) {
 // f over halved cells). Every crossing spans() reports on random rays through the whole box, every
 // hit, and every sampled point inside the solid must lie in it; it must lie in the box; and on the
 // heart and the linked tori it must come within the search's resolution of the extents a dense
-// sample of f < 0 gives (so that it shrinks at all).
+// sample of f < 0 gives (so that it shrinks at all). occluded, which skips segments missing the
+// reach, must answer as intersect on segments of those lines.
 TEST(Algebraic, Reach_HoldsEveryCrossingAndInsidePoint) {
   const char* kTori =
       "((x^2 + y^2 + z^2 + 0.84)^2 - 4*(x^2 + y^2)) * "
@@ -577,6 +578,13 @@ TEST(Algebraic, Reach_HoldsEveryCrossingAndInsidePoint) {
         if (intersect(s, r, h)) {
           ASSERT_TRUE(reach.contains(r.at(h.t))) << c.text << " open " << open << " ray " << i;
         }
+        // occluded skips segments that miss the reach box: it must still answer as intersect.
+        Ray seg = r;
+        seg.tmin = 4 * unit(rng);
+        seg.tmax = seg.tmin + 2 * unit(rng);
+        LocalHit sh;
+        ASSERT_EQ(occluded(s, seg), intersect(s, seg, sh))
+            << c.text << " open " << open << " segment " << i;
         const Vec3 p = in_box();
         if (contains(s, p)) {
           ++inside_seen;

@@ -407,6 +407,12 @@ bool intersect(const Algebraic& s, const Ray& ray, LocalHit& hit) {
 }
 
 bool occluded(const Algebraic& s, const Ray& ray) {
+  // The shadow walk tests a ball around bounds(): a segment that misses the reach box crosses
+  // nothing (the reach holds every crossing with a margin far above this test's rounding; where it
+  // is the box, the test is line_polynomial's own).
+  if (BoxChord reach; !s.reach.is_empty() && (!box_chord(s.reach, ray, reach) ||
+                                              reach.t1 < ray.tmin || reach.t0 > ray.tmax))
+    return false;
   LineRoots r;
   if (!line_polynomial(s, ray, r)) return false;
   if (r.chord.t1 < ray.tmin || r.chord.t0 > ray.tmax) return false;
