@@ -517,6 +517,106 @@ TEST(Algebraic, Occluded_BySweeps_AgreesWithIntersect) {
   EXPECT_GT(cases, 15000);
 }
 
+// bounds() is the reach: the part of the box where solid or surface may lie (interval bounds of
+// f over halved cells). Every crossing spans() reports on random rays through the whole box, every
+// hit, and every sampled point inside the solid must lie in it; it must lie in the box; and on the
+// heart and the linked tori it must come within the search's resolution of the extents a dense
+// sample of f < 0 gives (so that it shrinks at all). occluded, which skips segments missing the
+// reach, must answer as intersect on segments of those lines.
+TEST(Algebraic, Reach_HoldsEveryCrossingAndInsidePoint) {
+  const char* kTori =
+      "((x^2 + y^2 + z^2 + 0.84)^2 - 4*(x^2 + y^2)) * "
+      "(((x-1)^2 + y^2 + z^2 + 0.84)^2 - 4*((x-1)^2 + z^2))";
+  struct Case {
+    const char* text;
+    Aabb box;
+  };
+  const Case cases[] = {
+      {kHeart, {{-1.5, -1, -1.5}, {1.5, 1, 1.5}}},
+      {kTori, {{-1.5, -1.5, -1.5}, {2.5, 1.5, 1.5}}},
+      {"x^2 + y^2 + z^2 - 2.5", {{-1, -1, -1}, {1, 1, 1}}},   // cut by the box: all of it
+      {"x^2 + y^2 + z^2 - 0.25", {{-3, -1, -1}, {1, 2, 4}}},  // a small ball in a large box
+      {"z - 0.3*x + 0.1*y^2", {{-1, -1, -2}, {1, 1, 2}}},     // a sheet: half the box (closed)
+      {"(x^2 + y^2 + z^2 + 0.5)^2 + 1", {{-1, -1, -1}, {1, 1, 1}}},  // no solid: the box
+  };
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int crossings_seen = 0, inside_seen = 0;
+  for (const bool open : {false, true}) {
+    for (const Case& c : cases) {
+      const Algebraic s = make_algebraic(c.text, c.box, open);
+      const Aabb bound = bounds(s);
+      ASSERT_FALSE(bound.is_empty()) << c.text;
+      for (int a = 0; a < 3; ++a) {
+        ASSERT_GE(bound.lo[a], c.box.lo[a]) << c.text;
+        ASSERT_LE(bound.hi[a], c.box.hi[a]) << c.text;
+      }
+      // Points computed from a hit's t carry the rounding of o + t d (a face hit's lies on the
+      // box's face only up to that).
+      Aabb reach = bound;
+      for (int a = 0; a < 3; ++a) {
+        reach.lo[a] -= 1e-12 * c.box.extent()[a];
+        reach.hi[a] += 1e-12 * c.box.extent()[a];
+      }
+      const Vec3 lo = c.box.lo, ext = c.box.extent();
+      auto in_box = [&] {
+        return Vec3{lo.x + ext.x * unit(rng), lo.y + ext.y * unit(rng), lo.z + ext.z * unit(rng)};
+      };
+      // Lines through two random points of the box (some grazing a face), both directions.
+      for (int i = 0; i < 4000; ++i) {
+        const Vec3 a = in_box(), b = in_box();
+        const Ray r{a - 2.0 * (b - a), b - a};
+        SpanList l;
+        spans(s, r, l);
+        for (const Span& sp : l)
+          for (const LocalHit* h : {&sp.in, &sp.out}) {
+            if (!std::isfinite(h->t)) continue;
+            ++crossings_seen;
+            ASSERT_TRUE(reach.contains(r.at(h->t))) << c.text << " open " << open << " ray " << i;
+          }
+        LocalHit h;
+        if (intersect(s, r, h)) {
+          ASSERT_TRUE(reach.contains(r.at(h.t))) << c.text << " open " << open << " ray " << i;
+        }
+        // occluded skips segments that miss the reach box: it must still answer as intersect.
+        Ray seg = r;
+        seg.tmin = 4 * unit(rng);
+        seg.tmax = seg.tmin + 2 * unit(rng);
+        LocalHit sh;
+        ASSERT_EQ(occluded(s, seg), intersect(s, seg, sh))
+            << c.text << " open " << open << " segment " << i;
+        const Vec3 p = in_box();
+        if (contains(s, p)) {
+          ++inside_seen;
+          ASSERT_TRUE(reach.contains(p)) << c.text << " point " << i;
+        }
+      }
+    }
+  }
+  EXPECT_GT(crossings_seen, 20000);
+  EXPECT_GT(inside_seen, 2000);
+  // Tightness: within 3/64 of the box of the sampled extents (the search resolves 1/256).
+  for (const Case& c : {cases[0], cases[1], cases[3]}) {
+    const Algebraic s = make_algebraic(c.text, c.box);
+    Aabb sampled;
+    const int n = 120;
+    const Vec3 lo = c.box.lo, ext = c.box.extent();
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j)
+        for (int k = 0; k <= n; ++k) {
+          const Vec3 p{lo.x + ext.x * i / n, lo.y + ext.y * j / n, lo.z + ext.z * k / n};
+          if (evaluate(s.f, p) < 0) sampled.grow(p);
+        }
+    const Aabb reach = bounds(s);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_LE(reach.lo[a], sampled.lo[a]) << c.text;
+      EXPECT_GE(reach.hi[a], sampled.hi[a]) << c.text;
+      EXPECT_LT(sampled.lo[a] - reach.lo[a], 3 * ext[a] / 64) << c.text << " axis " << a;
+      EXPECT_LT(reach.hi[a] - sampled.hi[a], 3 * ext[a] / 64) << c.text << " axis " << a;
+    }
+  }
+}
+
 TEST(Algebraic, MakeAlgebraic_RejectsBadInput) {
   EXPECT_THROW(make_algebraic("x^2 - 1", Aabb{{0, 0, 0}, {0, 1, 1}}), std::invalid_argument);
   EXPECT_THROW(make_algebraic("2 + 3", kUnitBox), ExpressionError);

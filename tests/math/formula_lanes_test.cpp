@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "geometry/ray.h"
 #include "math/formula_lanes.h"
 #include "math/formula_lanes_kernels.h"
 
@@ -179,6 +180,56 @@ void lane_ends(std::uniform_real_distribution<double>& u, std::mt19937& rng, boo
 // The vector form of sin and cos of a variable gives the scalar form's bits on every lane: lanes
 // of 1e-12 to 40 in t (tiny, across extrema, more than a period), points up to 1e16 (past the
 // reduction's range and past 1e15, where a lane is [-1, 1]), lanes starting exactly at extrema.
+// The implicit search takes a part's certain sign as the sign of f at the part's ends as it
+// evaluates f there (run<double> at ray.at(t)): that value must lie inside the lane's bounds
+// exactly, no slack (every operation's rounding falls inside the bounds' outward widening).
+// Random lines and widths, and lines through a zero of f (values near 0, where a sign matters).
+TEST(FormulaLanes, PointValuesAtLaneEnds_InsideTheLaneExactly) {
+  int checked = 0, small = 0;
+  for (const char* text : kFormulas) {
+    SCOPED_TRACE(text);
+    const Formula f = compile_formula(text);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int trial = 0; trial < 2000; ++trial) {
+      RaySetup s = random_setup(rng);
+      const Ray ray{{s.o[0], s.o[1], s.o[2]}, {s.d[0], s.d[1], s.d[2]}};
+      auto value = [&](double t) {
+        const Vec3 p = ray.at(t);
+        return run<double>(f, p.x, p.y, p.z);
+      };
+      if (trial % 2 == 1) {  // move the lanes onto a sign change of f along the line, if any
+        double a = s.t[0] - 1, b = s.t[W] + 1;
+        if ((value(a) < 0) == (value(b) < 0)) continue;
+        for (int i = 0; i < 200 && a < b; ++i) {
+          const double m = 0.5 * (a + b);
+          if (!(m > a && m < b)) break;
+          ((value(m) < 0) == (value(a) < 0) ? a : b) = m;
+        }
+        const double w = s.t[W] - s.t[0];
+        const int k0 = static_cast<int>(unit(rng) * (W + 1)) % (W + 1);
+        for (int k = 0; k <= W; ++k) s.t[k] = a + w * (k - k0) / W;
+      }
+      FormulaLanes out;
+      LaneTrig trig;
+      run_lanes(f, s.o, s.d, s.t, out, &trig);
+      for (int k = 0; k < W; ++k) {
+        if (!(out.lo[k] <= out.hi[k])) continue;  // undefined there
+        for (const double t : {s.t[k], s.t[k + 1]}) {
+          const double v = value(t);
+          if (std::isnan(v)) continue;
+          ++checked;
+          small += std::abs(v) < 1e-12;
+          ASSERT_LE(out.lo[k], v) << "trial " << trial << " lane " << k;
+          ASSERT_GE(out.hi[k], v) << "trial " << trial << " lane " << k;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 50000);
+  EXPECT_GT(small, 200);
+}
+
 TEST(FormulaLanes, SinCosOfAVariable_BitEqualToTheScalarForm) {
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> u(-1, 1);

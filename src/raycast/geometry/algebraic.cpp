@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <queue>
 #include <stdexcept>
+#include <vector>
 
 #include "geometry/clipped_solid.h"
 #include "math/bernstein.h"
 #include "math/float_error.h"
+#include "math/interval.h"
 #include "math/polynomial_solver.h"
 
 namespace raycast {
@@ -253,7 +256,128 @@ bool first_hit(const Algebraic& s, const Ray& ray, const LineRoots& r, LocalHit*
   return false;
 }
 
+// f over the box v[0] x v[1] x v[2] by interval arithmetic: the formula as written (line_code,
+// whose sums and powers are not expanded, so far tighter) when kept, else the expanded terms.
+Interval enclosure(const Trivariate& f, const Interval v[3]) {
+  using Op = Trivariate::LineOp;
+  if (f.line_code.empty()) {
+    Interval sum(0.0);
+    for (const Trivariate::Term& t : f.terms)
+      sum = sum + Interval(t.c) * pow_int(v[0], t.i) * pow_int(v[1], t.j) * pow_int(v[2], t.k);
+    return sum;
+  }
+  std::vector<Interval> stack, saved;
+  for (const Op& in : f.line_code) {
+    switch (in.kind) {
+      case Op::kConst:
+        stack.push_back(Interval(in.value));
+        break;
+      case Op::kVar:
+        stack.push_back(v[in.n]);
+        break;
+      case Op::kAdd:
+      case Op::kSub:
+      case Op::kMul: {
+        const Interval b = stack.back();
+        stack.pop_back();
+        Interval& a = stack.back();
+        a = in.kind == Op::kAdd ? a + b : (in.kind == Op::kSub ? a - b : a * b);
+        break;
+      }
+      case Op::kNeg:
+        stack.back() = -stack.back();
+        break;
+      case Op::kDiv:
+        stack.back() = stack.back() / Interval(in.value);
+        break;
+      case Op::kPow:
+        stack.back() = in.n == 0 ? Interval(1.0) : pow_int(stack.back(), in.n);
+        break;
+      case Op::kStore:
+        if (saved.size() <= static_cast<std::size_t>(in.n)) saved.resize(in.n + 1);
+        saved[in.n] = stack.back();
+        break;
+      case Op::kLoad:
+        stack.push_back(saved[in.n]);
+        break;
+    }
+  }
+  return stack.back();
+}
+
+// Cells the reach search may bound per side before it settles for the best bound so far.
+constexpr int kReachMaxCells = 4096;
+// The search stops once the extreme cell is this fraction of the box's extent thin.
+constexpr double kReachResolution = 1.0 / 256;
+
 }  // namespace
+
+Aabb reach_of_algebraic(const Algebraic& s) {
+  const Aabb& box = s.box;
+  const Vec3 extent = box.extent();
+  // A bound on the magnitude of every term over the box: the scale of any evaluation's rounding.
+  double magnitude = 0;
+  for (const Trivariate::Term& t : s.f.terms) {
+    double m = std::abs(t.c);
+    const int power[3] = {t.i, t.j, t.k};
+    for (int a = 0; a < 3; ++a)
+      m *= std::pow(std::max(std::abs(box.lo[a]), std::abs(box.hi[a])), power[a]);
+    magnitude += m;
+  }
+  const double delta = 1e-9 * magnitude;
+  // A cell where f certainly stays beyond delta on the empty side holds neither solid nor surface.
+  auto empty_cell = [&](const Aabb& c) {
+    const Interval v[3] = {{c.lo.x, c.hi.x}, {c.lo.y, c.hi.y}, {c.lo.z, c.hi.z}};
+    const Interval r = enclosure(s.f, v);
+    return r.lo > delta || (s.open && r.hi < -delta);
+  };
+  Aabb reach;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const bool upper : {false, true}) {
+      // Best first: the cell reaching furthest out along the axis on this side. Every point not
+      // proved empty lies in a queued cell or the one just taken, so that cell's far face bounds
+      // them all, whenever the search stops.
+      auto key = [&](const Aabb& c) { return upper ? c.hi[axis] : -c.lo[axis]; };
+      auto nearer = [&](const Aabb& a, const Aabb& b) { return key(a) < key(b); };
+      std::priority_queue<Aabb, std::vector<Aabb>, decltype(nearer)> cells(nearer);
+      cells.push(box);
+      bool found = false;
+      double bound = 0;
+      for (int taken = 0; !cells.empty(); ++taken) {
+        const Aabb c = cells.top();
+        cells.pop();
+        if (taken < kReachMaxCells && empty_cell(c)) continue;
+        if (taken >= kReachMaxCells || c.extent()[axis] <= kReachResolution * extent[axis]) {
+          bound = key(c);
+          found = true;
+          break;
+        }
+        // Halved across the axis along which it is widest relative to the box.
+        int split = axis;
+        for (int a = 0; a < 3; ++a)
+          if (c.extent()[a] * extent[split] > c.extent()[split] * extent[a]) split = a;
+        const double mid = 0.5 * (c.lo[split] + c.hi[split]);
+        Aabb low = c, high = c;
+        low.hi[split] = mid;
+        high.lo[split] = mid;
+        cells.push(low);
+        cells.push(high);
+      }
+      if (!found) return box;  // nothing anywhere: an empty solid
+      if (upper) {
+        reach.hi[axis] = bound;
+      } else {
+        reach.lo[axis] = -bound;
+      }
+    }
+  }
+  // A hair wider (the rounding of points computed from roots), within the box.
+  for (int a = 0; a < 3; ++a) {
+    reach.lo[a] = std::max(box.lo[a], reach.lo[a] - 1e-9 * extent[a]);
+    reach.hi[a] = std::min(box.hi[a], reach.hi[a] + 1e-9 * extent[a]);
+  }
+  return reach;
+}
 
 void check_bounds_box(const Aabb& box) {
   if (!is_finite(box.lo) || !is_finite(box.hi))
@@ -269,10 +393,11 @@ Algebraic make_algebraic(std::string_view equation, const Aabb& box, bool open) 
   if (s.f.degree == 0) throw ExpressionError(0, "the equation is a constant: it has no surface");
   s.box = box;
   s.open = open;
+  s.reach = reach_of_algebraic(s);
   return s;
 }
 
-Aabb bounds(const Algebraic& s) { return s.box; }
+Aabb bounds(const Algebraic& s) { return s.reach.is_empty() ? s.box : s.reach; }
 
 bool intersect(const Algebraic& s, const Ray& ray, LocalHit& hit) {
   LineRoots r;
@@ -282,6 +407,12 @@ bool intersect(const Algebraic& s, const Ray& ray, LocalHit& hit) {
 }
 
 bool occluded(const Algebraic& s, const Ray& ray) {
+  // The shadow walk tests a ball around bounds(): a segment that misses the reach box crosses
+  // nothing (the reach holds every crossing with a margin far above this test's rounding; where it
+  // is the box, the test is line_polynomial's own).
+  if (BoxChord reach; !s.reach.is_empty() && (!box_chord(s.reach, ray, reach) ||
+                                              reach.t1 < ray.tmin || reach.t0 > ray.tmax))
+    return false;
   LineRoots r;
   if (!line_polynomial(s, ray, r)) return false;
   if (r.chord.t1 < ray.tmin || r.chord.t0 > ray.tmax) return false;

@@ -19,7 +19,20 @@ struct Algebraic {
   Trivariate f;
   Aabb box;
   bool open = false;
+  /// The part of `box` where the solid (or the open surface) may lie, from interval bounds of f
+  /// (reach_of_algebraic): what bounds() reports, so that rays through the box's empty corners
+  /// never reach the root finder. Empty: not computed (bounds() is then the box).
+  Aabb reach;
 };
+
+/// The smallest box found within s.box outside which f certainly keeps the sign of the empty
+/// side, with a margin: f > delta there (closed), or |f| > delta (open), for delta = 1e-9 times a
+/// bound on the magnitude of f's terms over the box, a million times the rounding of any
+/// evaluation, so that no crossing the root finder reports, nor any point inside the solid, lies
+/// outside it. Per side, a best-first search over halved cells (each bounded by interval
+/// arithmetic on the formula as written) down to 1/256 of the box's extent. s.box when the search
+/// finds nothing to keep (an empty solid: the box is a valid, if loose, answer).
+Aabb reach_of_algebraic(const Algebraic& s);
 
 /// Throws ExpressionError (a std::invalid_argument with the offset in `equation`) for bad text,
 /// std::invalid_argument for a box that is not finite with min < max on every axis, or a

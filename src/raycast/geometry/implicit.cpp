@@ -79,6 +79,8 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
     double a, b;
     int depth;  // halvings from the chord: a split into W parts adds log2(W)
     bool monotone;
+    // f's sign at a and at b where a neighbouring part's inclusion proved it (+1 or -1), else 0.
+    signed char sign_a, sign_b;
     double sin_a[3], cos_a[3], sin_b[3], cos_b[3];  // of the variables at a and b (trig_vars)
   };
   constexpr int kDepthStep = std::bit_width(static_cast<unsigned>(W)) - 1;
@@ -113,6 +115,14 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
     }
     run_lanes(s.f, o, d, t, f, &lt);
     steps += W;
+    // Each part's certain sign (0: none): the inclusion holds f's value at the part's ends as
+    // f_at computes it (the same roundings, each inside the widened bounds), so a part's sign is
+    // that value's sign at both ends.
+    signed char sign[W + 2];
+    sign[0] = known ? known->sign_a : 0;
+    sign[W + 1] = known ? known->sign_b : 0;
+    for (int k = 0; k < W; ++k)
+      sign[k + 1] = f.lo[k] > 0 ? 1 : (f.hi[k] < 0 ? -1 : 0);  // (NaN and empty: 0)
     for (int k = W - 1; k >= 0; --k) {
       if (!(f.lo[k] <= 0 && 0 <= f.hi[k])) {  // excludes 0, or empty (undefined)
         if (f.lo[k] <= f.hi[k]) signs_seen |= f.hi[k] < 0 ? 2 : 1;
@@ -124,6 +134,8 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
       p.b = t[k + 1];
       p.depth = depth + kDepthStep;
       p.monotone = monotone;
+      p.sign_a = sign[k];
+      p.sign_b = sign[k + 2];
       if (trig) {
         for (int v = 0; v < 3; ++v) {
           p.sin_a[v] = lt.s[v][k];
@@ -139,8 +151,13 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
   // ends. Returns whether the search is over.
   // f at known_t (a value the caller has, or the last end's: depth first from the left, a settled
   // piece's right end is often the next one's left end, the same point, so the same value).
-  auto settle = [&](double a, double b) {
-    const double fa = a == known_t ? known_f : f_at(s, ray, a), fb = f_at(s, ray, b);
+  // For Want::kAny only signs matter: an end whose sign a neighbour proved stands in as +-1
+  // (the same sign as f_at's value, and not 0), without evaluating f there.
+  auto value_at = [&](double t, int sign) {
+    return want == Want::kAny && sign != 0 ? double(sign) : f_at(s, ray, t);
+  };
+  auto settle = [&](double a, double b, int sign_a, int sign_b) {
+    const double fa = a == known_t ? known_f : value_at(a, sign_a), fb = value_at(b, sign_b);
     known_t = b;
     known_f = fb;
     double t;
@@ -162,13 +179,13 @@ int find_roots(const Implicit& s, const Ray& ray, double lo, double hi, Want wan
     count = 1;
     return true;
   };
-  if (!split(lo, hi, 0, nullptr) && settle(lo, hi)) return count;
+  if (!split(lo, hi, 0, nullptr) && settle(lo, hi, 0, 0)) return count;
   if (proved_by_signs()) return count;
   while (top >= 0 && count < max_roots && steps <= kImplicitMaxSteps) {
     if (proved_by_signs()) break;
     const Piece p = stack[top--];
     if (p.monotone || p.depth >= kImplicitMaxDepth || !split(p.a, p.b, p.depth, &p)) {
-      if (settle(p.a, p.b)) break;
+      if (settle(p.a, p.b, p.sign_a, p.sign_b)) break;
     }
   }
   return count;
