@@ -291,7 +291,7 @@ TEST(FirstCrossing, RaysAtSurfacePoints_TheBallTestDropsNoHit) {
   const Scene scene = load_scene_file(std::string(RAYCAST_SOURCE_DIR) + "/scenes/csg.yaml");
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(-1, 1);
-  int hits = 0, misses = 0;
+  int hits = 0;
   std::vector<const CsgShape*> trees;  // the scene's CSG objects and the instances' (the nut)
   for (const Object& object : scene.objects) {
     if (const auto* csg = std::get_if<CsgShape>(&object.shape)) trees.push_back(csg);
@@ -318,7 +318,6 @@ TEST(FirstCrossing, RaysAtSurfacePoints_TheBallTestDropsNoHit) {
       ASSERT_EQ(intersect(*csg, ray, got), expect) << "ray " << i;
       ASSERT_EQ(occluded(*csg, ray), expect) << "ray " << i;
       hits += expect;
-      misses += !expect;
       if (expect) {
         EXPECT_EQ(got.t, want.t);
         EXPECT_EQ(got.leaf, want.leaf);
