@@ -3,6 +3,7 @@
 // CsgShape's intersect on random scenes' rays against intersect_by_spans.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "csg/first_crossing.h"
 #include "csg_oracle.h"
 #include "scene/csg_tree.h"
+#include "scene/prototype.h"
 
 namespace raycast {
 namespace {
@@ -280,6 +282,51 @@ TEST(FirstCrossing, ExampleScene_IntersectEqualsTheCombinedLists) {
     }
   }
   EXPECT_GT(hits, 1000);
+}
+
+// The tree's ball test before the walk (csg_shape.cpp): rays from near and far (up to 1e4 times
+// the object's size, where the test's cancellation is largest) aimed at points on the objects'
+// surfaces, grazing them in every direction, answer as the combined lists do.
+TEST(FirstCrossing, RaysAtSurfacePoints_TheBallTestDropsNoHit) {
+  const Scene scene = load_scene_file(std::string(RAYCAST_SOURCE_DIR) + "/scenes/csg.yaml");
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int hits = 0;
+  std::vector<const CsgShape*> trees;  // the scene's CSG objects and the instances' (the nut)
+  for (const Object& object : scene.objects) {
+    if (const auto* csg = std::get_if<CsgShape>(&object.shape)) trees.push_back(csg);
+    if (const auto* instance = std::get_if<InstanceShape>(&object.shape))
+      for (const Object& part : instance->proto->objects)
+        if (const auto* csg = std::get_if<CsgShape>(&part.shape)) trees.push_back(csg);
+  }
+  ASSERT_GE(trees.size(), 12u);
+  for (const CsgShape* csg : trees) {
+    const Aabb box = bounds(*csg);
+    for (int i = 0; i < 3000; ++i) {
+      // A point on the surface: the first crossing of a ray through the box.
+      const Vec3 target = box.centre() + 0.6 * mul(Vec3{u(rng), u(rng), u(rng)}, box.extent());
+      const Vec3 from = box.centre() + 2.0 * mul(Vec3{u(rng), u(rng), u(rng)}, box.extent());
+      LocalHit first;
+      if (!intersect_by_spans(*csg, Ray{from, target - from}, first)) continue;
+      const Vec3 p = from + first.t * (target - from);
+      // A ray through it from a random direction and distance (the point itself is on it).
+      const double far = std::pow(10.0, 4 * (u(rng) + 1) / 2) * length(box.extent());
+      const Vec3 o = p + far * normalize(Vec3{u(rng), u(rng), u(rng)});
+      const Ray ray{o, p - o};
+      LocalHit want, got;
+      const bool expect = intersect_by_spans(*csg, ray, want);
+      ASSERT_EQ(intersect(*csg, ray, got), expect) << "ray " << i;
+      ASSERT_EQ(occluded(*csg, ray), expect) << "ray " << i;
+      hits += expect;
+      if (expect) {
+        EXPECT_EQ(got.t, want.t);
+        EXPECT_EQ(got.leaf, want.leaf);
+      }
+      if (HasFailure()) return;
+    }
+  }
+  // Most of these rays hit (through a surface point); some graze past (tangent, rounding).
+  EXPECT_GT(hits, 10000);
 }
 
 // More ends than the walk's buffer (40 spheres and 20 cylinders on one line, 60 leaves): the

@@ -1,4 +1,5 @@
-// The shadow rays' own walk (render/shadow_bounds.h): its ball culling against brute force, and
+// The shadow rays' walk (ObjectSet::any_along, scene/ball_list.h): its ball culling against
+// brute force, and
 // the integrator's shadow() against every object asked in turn, with no culling at all.
 #include <gtest/gtest.h>
 
@@ -8,7 +9,7 @@
 #include <string>
 
 #include "render/integrator.h"
-#include "render/shadow_bounds.h"
+#include "scene/ball_list.h"
 #include "scene/loader.h"
 
 namespace raycast {
@@ -105,7 +106,9 @@ std::string csg_scene_text(bool transmissive) {
 void expect_walk_matches_every_object(bool transmissive, bool csg = false) {
   const Scene scene =
       load_scene_text(csg ? csg_scene_text(transmissive) : scene_text(transmissive));
-  ASSERT_TRUE(make_shadow_bounds(scene).usable);
+  ObjectSet set;
+  set.build(scene.objects);
+  ASSERT_TRUE(set.walks_balls());
   const Integrator integrator(scene, RenderMode::kWhitted);
   SampleState state{Rng(1), 0};
   std::mt19937_64 rng(7);
@@ -165,7 +168,8 @@ TEST(ShadowWalk, CsgTransmissiveScene_SameProductAsEveryObjectAskedInTurn) {
 TEST(ShadowBalls, EveryBallWithinItsRadiusOfTheHalfLineIsVisited_FartherOnesAreNot) {
   // Balls placed at a chosen distance from random half-lines: at most the radius (down to a
   // grazing 1 - 1e-15 of it) must be visited, beyond 1.01 radii must not unless within the
-  // test's widening (kShadowBallSlack |v|^2; the culling culls).
+  // test's widening (kBallSlack |v|^2; the culling culls). The ball sits in lane 0 or 1 of its
+  // pair, the other lane empty.
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
   for (int i = 0; i < 20000; ++i) {
@@ -189,21 +193,19 @@ TEST(ShadowBalls, EveryBallWithinItsRadiusOfTheHalfLineIsVisited_FartherOnesAreN
     const long double vv = vx * vx + vy * vy + vz * vz;
     const long double dist2 = k > 0 ? vv - k * k : vv;
     const long double r2 = (long double)radius * radius;
-    ShadowBounds b;
-    b.bounded = {5, 0};
-    b.x = {c.x, 0};
-    b.y = {c.y, 0};
-    b.z = {c.z, 0};
-    b.radius2 = {radius * radius, -1};
+    std::vector<BallPair> balls;
+    std::size_t count = 0;
+    if (i % 4 >= 2) add_ball(balls, count, 9, {1e3, 1e3, 1e3}, 1);  // far from every half-line
+    add_ball(balls, count, 5, c, radius);
     bool visited = false;
-    each_shadow_ball(b, o, e, [&](std::uint32_t index) {
+    each_ball_near(balls.data(), balls.data() + balls.size(), o, e, [&](std::uint32_t index) {
       EXPECT_EQ(index, 5u);
       visited = true;
       return false;
     });
     if (dist2 <= r2) {
       EXPECT_TRUE(visited) << i;
-    } else if (dist2 > 1.0001L * (r2 + kShadowBallSlack * vv)) {  // beyond the test's widening
+    } else if (dist2 > 1.0001L * (r2 + kBallSlack * vv)) {  // beyond the test's widening
       EXPECT_FALSE(visited) << i;
     }
   }

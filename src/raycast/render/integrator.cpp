@@ -45,10 +45,7 @@ Color id_color(int entry) {
 }
 
 Integrator::Integrator(const Scene& scene, RenderMode mode)
-    : scene_(scene),
-      mode_(mode),
-      textures_(load_textures(scene)),
-      shadow_(make_shadow_bounds(scene)) {
+    : scene_(scene), mode_(mode), textures_(load_textures(scene)) {
   for (const Material& m : scene.materials) {
     any_transmissive_ |= m.transmission > 0;
     filters_.push_back(m.transmission * m.color);
@@ -287,28 +284,19 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
   return visibility(from, to, to_infinity, state);
 }
 
-template <class F>
-inline bool Integrator::walk_shadow(const Ray& segment, const Vec3& e, F&& blocks) const {
-  for (std::uint32_t index : shadow_.unbounded)
-    if (blocks(index)) return true;
-  return each_shadow_ball(shadow_, segment.o, e, blocks);
-}
-
 inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,
                                     SampleState& state) const {
   const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
   ++state.rays;
   // is_valid(segment) (tmin 0 and tmax 1 or inf are valid): the scene's queries answer nothing
-  // for other rays, nor does the own walk. |o|^2 and |d|^2 once for it and the walk.
-  const double oo = length_squared(segment.o), dd = length_squared(segment.d);
-  const bool valid = is_valid_extent(oo, dd);
-  const bool own_walk = shadow_.usable && oo <= kShadowBallLimit * kShadowBallLimit;
-  const Vec3 e = segment.d * (1 / std::sqrt(dd));  // the unit direction, for the own walk
+  // for other rays. |d|^2 once for it and the walk's unit direction.
+  const double dd = length_squared(segment.d);
+  const bool valid = is_valid_extent(length_squared(segment.o), dd);
+  const Vec3 e = segment.d * (1 / std::sqrt(dd));  // the unit direction, for the balls
   if (!any_transmissive_) {
-    if (!own_walk) return scene_.occluded(segment) ? Color{0, 0, 0} : Color{1, 1, 1};
-    const bool blocked = valid && walk_shadow(segment, e, [&](std::uint32_t index) {
-                           return crosses(index, segment);
-                         });
+    const bool blocked = valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
+      return crosses(index, segment);
+    });
     return blocked ? Color{0, 0, 0} : Color{1, 1, 1};
   }
   // One pass over the objects on the segment (docs/rendering.md "Shadow rays"): each object is
@@ -316,9 +304,9 @@ inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_in
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
   Color through{1, 1, 1};
-  auto blocks = [&](std::uint32_t index) { return !passes(index, segment, through); };
-  const bool blocked =
-      own_walk ? valid && walk_shadow(segment, e, blocks) : scene_.any_object(segment, blocks);
+  const bool blocked = valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
+    return !passes(index, segment, through);
+  });
   return blocked ? Color{0, 0, 0} : through;
 }
 

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "render/rng.h"
-#include "render/shadow_bounds.h"
 #include "render/texture.h"
 #include "scene/scene.h"
 
@@ -84,11 +83,6 @@ class Integrator {
                const Material& m, unsigned exponent, const Color& c, SampleState& state) const;
   /// shadow() without the call: the query the shading makes for every light.
   Color visibility(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
-  /// The scene's any-object walk for a valid shadow segment (ObjectSet::any's order, shadow_'s
-  /// balls for culling; e: segment.d's unit direction): blocks(index) for each object it may
-  /// cross until one returns true (returned).
-  template <class F>
-  bool walk_shadow(const Ray& segment, const Vec3& e, F&& blocks) const;
 
   /// What the shading asks of each scene object, worked out once per frame (the same answers
   /// the per-hit look-ups would give).
@@ -108,7 +102,6 @@ class Integrator {
   std::vector<Color> filters_;        // by material: transmission * color (shadow filter)
   std::vector<Color> emitted_;        // by light: Light::emitted()
   std::vector<unsigned> exponents_;   // by material: integer Phong exponent, 0 for std::pow
-  ShadowBounds shadow_;               // the shadow rays' walk over the objects
   bool any_transmissive_ = false;
 };
 

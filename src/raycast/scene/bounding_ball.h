@@ -2,7 +2,7 @@
 // A ball around an object, often much tighter than the ball around its box: a rotated object's
 // world box grows with the rotation, a CSG intersection's box is the overlap of its operands'
 // boxes (a lens of two spheres: a flat slab), and a sphere's box corners lie outside it. Culling
-// tests that use it (render/shadow_bounds.h) stay conservative: every point of the object is in
+// tests that use it (ObjectSet::any_along) stay conservative: every point of the object is in
 // the ball, with a margin far beyond the rounding of its computation.
 #include "math/vec3.h"
 #include "scene/object.h"

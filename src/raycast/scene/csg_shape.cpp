@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "csg/first_crossing.h"
+#include "scene/ball_list.h"
+#include "scene/bounding_ball.h"
 #include "scene/csg_tree.h"
 
 namespace raycast {
@@ -33,6 +35,25 @@ struct CullRay {
     }
   }
 };
+
+// A cylinder's or cone's frustum (null for other shapes).
+const Frustum* leaf_frustum(const ShapeVariant& shape) {
+  if (const auto* c = std::get_if<Cylinder>(&shape)) return &c->f;
+  if (const auto* c = std::get_if<Cone>(&shape)) return &c->f;
+  return nullptr;
+}
+
+// Whether the line through the ray may meet the tree's ball: |v|^2 |d|^2 - (v . d)^2 (|d|^2 times
+// the distance squared of the centre from the line, v = centre - o) against radius^2 |d|^2, with
+// |v|^2 shrunk by kBallSlack (far beyond the products' rounding, a few ulps of |v|^2 |d|^2).
+// Outside [1e-280, 1e300] for |v|^2 |d|^2 the rounding is not relative: no test.
+bool line_meets_ball(const CsgTree& tree, const Ray& ray) {
+  const Vec3 v = tree.ball_centre - ray.o;
+  const double dd = dot(ray.d, ray.d), k = dot(v, ray.d);
+  const double vvdd = dot(v, v) * dd;
+  return !(vvdd >= 1e-280 && vvdd <= 1e300 &&
+           vvdd * (1 - kBallSlack) - k * k > tree.ball_radius2 * dd);
+}
 
 // Whether the line o + t d may meet box b for some t in [lo, hi] (either may be infinite).
 // Conservative: each slab interval is widened by the rounding of its terms; a NaN from 0 * inf
@@ -192,9 +213,7 @@ struct Gather {
         break;
       }
       case CsgTree::LeafKind::kFrustum: {
-        const Frustum& f = std::holds_alternative<Cylinder>(object.shape)
-                               ? std::get_if<Cylinder>(&object.shape)->f
-                               : std::get_if<Cone>(&object.shape)->f;
+        const Frustum& f = *leaf_frustum(object.shape);
         LineInterval iv[2];
         const int n = frustum_solid_intervals(f, to_object_space(object, ray), iv);
         for (int i = 0; i < n; ++i)
@@ -338,9 +357,7 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
       tree.leaf_kind[i] = CsgTree::LeafKind::kSphere;
     else if (std::holds_alternative<Box>(shape))
       tree.leaf_kind[i] = CsgTree::LeafKind::kBox;
-    else if (const auto* c = std::get_if<Cylinder>(&shape); c && c->f.is_closed())
-      tree.leaf_kind[i] = CsgTree::LeafKind::kFrustum;
-    else if (const auto* c = std::get_if<Cone>(&shape); c && c->f.is_closed())
+    else if (const Frustum* f = leaf_frustum(shape); f && f->is_closed())
       tree.leaf_kind[i] = CsgTree::LeafKind::kFrustum;
   }
   tree.leaf_cull.assign(tree.leaves.size(), 1);
@@ -369,7 +386,16 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
   tree.formula = CsgFormula{};
   for (const CsgNode& node : tree.nodes) tree.formula.add(node.op, node.operands);
   tree.formula.finish(tree.leaves.size(), tree.leaf_flipped);
-  return std::make_shared<const CsgTree>(std::move(tree));
+  auto out = std::make_shared<CsgTree>(std::move(tree));
+  Object whole;  // the tree as an object of its own space
+  whole.shape = CsgShape{out};
+  const Ball ball = bounding_ball(whole);
+  if (ball.is_bounded() && !ball.is_empty() &&
+      max_component(abs(ball.centre)) + ball.radius <= kBallLimit) {
+    out->ball_centre = ball.centre;
+    out->ball_radius2 = ball.radius * ball.radius * (1 + 1e-12);
+  }
+  return out;
 }
 
 Aabb bounds(const CsgShape& s) { return s.tree->nodes[0].box; }
@@ -392,6 +418,10 @@ bool intersect_by_spans(const CsgShape& s, const Ray& ray, LocalHit& hit) {
 
 bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
   const CsgTree& tree = *s.tree;
+  // The tree's ball first: a ray that misses it misses every leaf, and rays that pass the
+  // object's box (in world space, loose for turned objects) often miss it
+  // (docs/performance-render.md, session 10).
+  if (!line_meets_ball(tree, ray)) return false;
   if (tree.formula.is_tree()) {
     Gather g(tree, ray);
     double lo = ray.tmin, hi = ray.tmax;

@@ -36,6 +36,10 @@ struct CsgTree {
   enum class LeafKind : std::uint8_t { kGeneric, kSphere, kBox, kFrustum };
   std::vector<LeafKind> leaf_kind;
   std::vector<char> leaf_cull, node_cull;
+  // A ball around the tree in its own space (scene/bounding_ball.h, widened), tested before the
+  // walk: radius squared infinite when there is none to test. Set by finish_csg_tree.
+  Vec3 ball_centre;
+  double ball_radius2 = kInfinity;
 };
 
 inline std::int32_t csg_leaf_code(std::size_t leaf) { return -static_cast<std::int32_t>(leaf) - 1; }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "scene/bounding_ball.h"
 #include "scene/csg_tree.h"
 
 namespace raycast {
@@ -40,6 +41,18 @@ void ObjectSet::build(std::span<const Object> objects) {
     for (const CsgTree::LeafKind kind : csg->tree->leaf_kind)
       if (kind != CsgTree::LeafKind::kSphere && kind != CsgTree::LeafKind::kBox) sole_box_ = true;
   }
+  // The shadow walk's balls (any_along): from each object's shape, widened; an empty one (an
+  // empty CSG intersection) has no crossing to find.
+  balls_.clear();
+  balls_usable_ = flat_ && !sole_mesh_;
+  std::size_t ball_count = 0;
+  for (std::size_t k = 0; balls_usable_ && k < bounded_.size(); ++k) {
+    const Ball ball = bounding_ball(objects[bounded_[k]]);
+    if (ball.is_empty()) continue;
+    if (!(max_component(abs(ball.centre)) + ball.radius <= kBallLimit)) balls_usable_ = false;
+    add_ball(balls_, ball_count, bounded_[k], ball.centre, ball.radius);
+  }
+  if (!balls_usable_) balls_.clear();
   if (flat_) {
     bvh_ = Bvh{};
     if (boxes.size() < kFloatBoxesFrom) {

@@ -5,6 +5,7 @@
 // walked as a flat list of their boxes instead (docs/performance-render.md, rounds 4 and 6): their
 // boxes in float, four per SIMD test (accel/box4.h, conservative: the objects' own tests decide),
 // without the tree's stack and node boxes; a set of one bounded object tests its double box.
+// Shadow rays walk a flat set by a ball around each object instead (any_along).
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -14,6 +15,7 @@
 #include "accel/box4.h"
 #include "accel/bvh.h"
 #include "accel/bvh_traverse.h"
+#include "scene/ball_list.h"
 #include "scene/object.h"
 
 namespace raycast {
@@ -53,6 +55,23 @@ class ObjectSet {
                  [&](std::uint32_t prim) { visit(bounded_[prim]); });
   }
 
+  /// any()'s walk for shadow rays (e: ray.d's unit direction; requires is_valid(ray)): the same
+  /// objects in the same order, a flat set's bounded ones culled by their balls
+  /// (scene/bounding_ball.h: often tighter than the boxes, and no per-ray set-up) instead of their
+  /// boxes; for the one-mesh set the mesh first, then its box (shadow rays start on the mesh,
+  /// inside its box: only the blocked ones pay the box).
+  template <class F>
+  bool any_along(const Ray& ray, const Vec3& e, F&& visit) const {
+    if (sole_mesh_) return visit(bounded_[0]) && box_meets(0, ray, reciprocal(ray.d), ray.tmax);
+    if (!balls_usable_ || !(length_squared(ray.o) <= kBallLimit * kBallLimit))
+      return any(ray, visit);
+    for (std::uint32_t index : unbounded_)
+      if (visit(index)) return true;
+    return each_ball_near(balls_.data(), balls_.data() + balls_.size(), ray.o, e, visit);
+  }
+
+  /// Whether any_along culls by balls (a flat set, not the one-mesh set, coordinates in range).
+  bool walks_balls() const { return balls_usable_; }
   /// The index of the set's one object when it is an untransformed mesh and every other object's
   /// box is empty (the queries' one-mesh path), else -1.
   std::int32_t sole_mesh() const {
@@ -63,7 +82,7 @@ class ObjectSet {
   const Aabb& finite_bounds() const { return finite_bounds_; }
   std::size_t memory_bytes() const {
     return bvh_.memory_bytes() + groups_.capacity() * sizeof(Box4) +
-           boxes_.capacity() * sizeof(Aabb) +
+           boxes_.capacity() * sizeof(Aabb) + balls_.capacity() * sizeof(BallPair) +
            (bounded_.capacity() + unbounded_.capacity()) * sizeof(std::uint32_t);
   }
 
@@ -153,9 +172,13 @@ class ObjectSet {
   // its rows the near planes then the far ones for that octant (lo or hi by the sign).
   std::vector<Box4> groups_;
   std::size_t group_count_ = 0;
-  unsigned last_lanes_ = 0;               // the lanes of the last group that hold a box
-  Box4Scale scale_{};                     // from a bound on |coordinate| over groups_' planes
-  std::vector<Aabb> boxes_;               // flat_, fewer than kFloatBoxesFrom: bounded_[k]'s box
+  unsigned last_lanes_ = 0;  // the lanes of the last group that hold a box
+  Box4Scale scale_{};        // from a bound on |coordinate| over groups_' planes
+  std::vector<Aabb> boxes_;  // flat_, fewer than kFloatBoxesFrom: bounded_[k]'s box
+  // flat_, not sole_mesh_: a ball around each bounded object with a non-empty one, in index order
+  // (any_along), when every ball lies within kBallLimit (balls_usable_).
+  std::vector<BallPair> balls_;
+  bool balls_usable_ = false;
   Bvh bvh_;                               // over the bounded objects
   std::vector<std::uint32_t> bounded_;    // bvh prim -> object index
   std::vector<std::uint32_t> unbounded_;  // objects tested on every ray

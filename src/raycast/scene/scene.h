@@ -65,6 +65,12 @@ struct Scene {
   bool any_object(const Ray& ray, F&& visit) const {
     return is_valid(ray) && set_.any(ray, visit);
   }
+  /// any_object's walk for shadow rays, culled by a ball around each object when the scene is
+  /// walked flat (ObjectSet::any_along; e: ray.d's unit direction). Requires is_valid(ray).
+  template <class F>
+  bool any_object_along(const Ray& ray, const Vec3& e, F&& visit) const {
+    return set_.any_along(ray, e, visit);
+  }
   /// The index of the scene's one untransformed mesh when every other object's box is empty
   /// (ObjectSet::sole_mesh), else -1.
   std::int32_t sole_mesh() const { return set_.sole_mesh(); }
