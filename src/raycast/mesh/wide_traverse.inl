@@ -9,9 +9,11 @@
 //   (lane i -> bit i), select(m, a, b) (a where m).
 // A kernel may define RAYCAST_KERNEL_MINMAX_SLABS to compute a float node's slab distances from
 // both rows at fixed offsets (min and max) instead of rows chosen by the sign of d: same results.
+// A kernel may define RAYCAST_KERNEL_FOLDED_ROWS instead: the rows chosen by the sign of d, as
+// (o - plane) * (-1/d), so that each plane load folds into its subtraction (same results).
 // A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
-// (AVX-512: 16 lanes).
+// (AVX-512: 16 lanes); with RAYCAST_KERNEL_FLOAT_NODE8 too, only quantised nodes use it.
 // Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
 // with an add, so every ISA returns the same hits bit for bit (the tests compare them).
 
@@ -32,7 +34,7 @@ constexpr float kInfinityF = __builtin_huge_valf();
 struct RayData {
   V8 o[3];    // origin, broadcast
   V8 inv[3];  // 1 / d, broadcast
-#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+#if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
   V8 neg_inv[3];  // -1 / d, broadcast
 #endif
   int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis] (and in
@@ -48,7 +50,8 @@ struct RayData {
 };
 
 // Fills p in place (returning RayData by value made GCC copy the AVX-512 part, nine 64-byte
-// vectors, through the stack twice per ray).
+// vectors, through the stack twice per ray), for a tree of Node.
+template <class Node>
 inline void prepare(const MeshRay& r, RayData& p) {
   const float* o = &r.o.x;
   const float* d = &r.d.x;
@@ -60,7 +63,7 @@ inline void prepare(const MeshRay& r, RayData& p) {
     const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
-#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+#if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
     p.neg_inv[a] = splat(-inv);
 #endif
     // WideNode::box[a] and QuantisedNode::q[2a], q[2a + 1]: the lo planes, then the hi planes.
@@ -79,10 +82,12 @@ inline void prepare(const MeshRay& r, RayData& p) {
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
 #ifdef RAYCAST_KERNEL_NODE16
-  prepare_node16(o, invs, p.node16);
-#else
-  (void)invs;
+#ifdef RAYCAST_KERNEL_FLOAT_NODE8
+  if constexpr (!std::is_same_v<Node, WideNode>)
 #endif
+    prepare_node16(o, invs, p.node16);
+#endif
+  (void)invs;
 }
 
 // The node arrays of the two formats (mesh/mesh_bvh.h).
@@ -110,6 +115,17 @@ inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
     d[3 + a] = vmax(lo, hi);
   }
 }
+#elif defined(RAYCAST_KERNEL_FOLDED_ROWS)
+// The rows chosen by the sign of d, as (o - plane) * (-1/d): the plane loads fold into the
+// subtractions. The same value as (plane - o) * (1/d) but for the sign of a zero distance (plane
+// == o), which no comparison of the walk tells apart. AVX-512 (32 registers: the row offsets and
+// the negated reciprocals stay in registers).
+inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
+  for (int a = 0; a < 3; ++a) {
+    d[a] = (p.o[a] - load8(n.box[a] + p.near_off[a])) * p.neg_inv[a];
+    d[3 + a] = (p.o[a] - load8(n.box[a] + p.far_off[a])) * p.neg_inv[a];
+  }
+}
 #else
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
@@ -134,8 +150,12 @@ inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
 template <class Node>
 inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
 #ifdef RAYCAST_KERNEL_NODE16
-  return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
-#else
+#ifdef RAYCAST_KERNEL_FLOAT_NODE8
+  if constexpr (!std::is_same_v<Node, WideNode>)
+#endif
+    return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
+#endif
+#if !defined(RAYCAST_KERNEL_NODE16) || defined(RAYCAST_KERNEL_FLOAT_NODE8)
   V8 d[6];
   node_distances(n, p, d);
   const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
@@ -300,7 +320,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   if (bvh.empty()) return false;
   const Node* nodes = node_array<Node>(bvh);
   RayData p;
-  prepare(ray, p);
+  prepare<Node>(ray, p);
   float tmax_s = ray.tmax;
   V8 tmax = splat(tmax_s);
   int top = 0;
