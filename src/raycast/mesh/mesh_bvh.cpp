@@ -111,31 +111,27 @@ class Collapser {
     return kLeafBit | ((count - 1) << 29) | leaf_group_[node];
   }
 
-  // The leaf's blocks (mesh_bvh.h: TriangleGroup, leaf_block): eight lanes per pair of groups,
-  // four for an odd last group.
   void fill_leaf(const BvhFloatNode& n, std::uint32_t first_group) {
-    const std::uint32_t end = first_group + (n.count + 3) / 4;
-    for (std::uint32_t slot = first_group; slot < end; slot += 2) {
-      const int width = leaf_block_width(slot, end);
-      float* block = leaf_block(out_, slot);
-      auto* ids = reinterpret_cast<std::uint32_t*>(block + 9 * width);
-      for (int lane = 0; lane < width; ++lane) {
-        const std::uint32_t i = (slot - first_group) * 4 + std::uint32_t(lane);
+    for (std::uint32_t k = 0; k < (n.count + 3) / 4; ++k) {
+      TriangleGroup& g = out_.groups[first_group + k];
+      for (int lane = 0; lane < 4; ++lane) {
+        const std::uint32_t i = k * 4 + lane;
         if (i >= n.count) {
-          for (int row = 0; row < 9; ++row) block[row * width + lane] = kNaN;
-          ids[lane] = kNoTriangle;
-          ids[width + lane] = kNoTriangle;
+          for (auto& vertex : g.v)
+            for (auto& axis : vertex) axis[lane] = kNaN;
+          g.id[lane] = kNoTriangle;
+          g.source[lane] = kNoTriangle;
           continue;
         }
         const std::uint32_t tri = bin_.prims[n.first + i];
         for (int vtx = 0; vtx < 3; ++vtx) {
           const Vec3f& p = positions_[triangles_[tri][vtx]];
-          block[(3 * vtx + 0) * width + lane] = p.x;
-          block[(3 * vtx + 1) * width + lane] = p.y;
-          block[(3 * vtx + 2) * width + lane] = p.z;
+          g.v[vtx][0][lane] = p.x;
+          g.v[vtx][1][lane] = p.y;
+          g.v[vtx][2][lane] = p.z;
         }
-        ids[lane] = tri;
-        ids[width + lane] = source_.empty() ? tri : source_[tri];
+        g.id[lane] = tri;
+        g.source[lane] = source_.empty() ? tri : source_[tri];
       }
     }
   }
@@ -257,6 +253,16 @@ namespace {
 [[gnu::always_inline]] inline const MeshKernels& kernels() { return kernels_in_use(); }
 
 }  // namespace
+
+const TriangleGroup kEmptyTriangleGroup = [] {
+  TriangleGroup g;
+  for (auto& vertex : g.v)
+    for (auto& axis : vertex)
+      for (float& f : axis) f = kNaN;
+  for (auto& id : g.id) id = kNoTriangle;
+  for (auto& s : g.source) s = kNoTriangle;
+  return g;
+}();
 
 const MeshKernels* mesh_kernels(Isa isa) {
   if (!isa_supported(isa)) return nullptr;

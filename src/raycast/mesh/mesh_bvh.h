@@ -74,10 +74,6 @@ inline constexpr int kMaxGroupsPerLeaf = 4;
 /// vertices (never hit) and id and source kNoTriangle.
 /// The vertices (not edges) are stored so that the watertight test sees shared vertices bit for
 /// bit.
-/// A leaf's groups are tested two at a time, and stored that way (leaf_block): the two groups of
-/// slots first + 2j and first + 2j + 1 of a leaf as one block of eight lanes in their 352 bytes,
-/// v[vertex][axis][8], id[8], source[8], so that the test reads each row with one load; only a
-/// leaf's odd last group is a TriangleGroup as declared.
 struct alignas(16) TriangleGroup {
   float v[3][3][4];
   std::uint32_t id[4];
@@ -138,35 +134,14 @@ struct MeshBvhHit {
   float b2 = 0;
   std::uint32_t triangle = kNoTriangle;
   std::uint32_t source = kNoTriangle;  // source[triangle] of the build
-  std::uint32_t group = 0;  // where the triangle's vertices sit (cache-warm): the leaf block at
-  std::uint32_t lane = 0;   // slot `group` of MeshBvh::groups, its lane `lane` of `width`
-  std::uint32_t width = 4;
+  std::uint32_t group = 0;  // where the triangle's vertices sit in MeshBvh::groups (cache-warm)
+  std::uint32_t lane = 0;
 };
-
-/// A leaf block (TriangleGroup's comment) of `width` lanes (4 or 8) at slot `slot`: 9 rows of
-/// `width` floats, v[vertex][axis][lane] at (3 * vertex + axis) * width + lane, then `width` ids
-/// and `width` sources (leaf_ids).
-inline const float* leaf_block(const MeshBvh& bvh, std::uint32_t slot) {
-  return reinterpret_cast<const float*>(reinterpret_cast<const char*>(bvh.groups.data()) +
-                                        std::size_t(slot) * sizeof(TriangleGroup));
-}
-inline float* leaf_block(MeshBvh& bvh, std::uint32_t slot) {
-  return reinterpret_cast<float*>(reinterpret_cast<char*>(bvh.groups.data()) +
-                                  std::size_t(slot) * sizeof(TriangleGroup));
-}
-/// The width of the block at `slot` of a leaf whose groups end before slot `end`.
-inline int leaf_block_width(std::uint32_t slot, std::uint32_t end) {
-  return slot + 1 < end ? 8 : 4;
-}
-/// A block's ids (lanes 0 to width - 1), then its sources.
-inline const std::uint32_t* leaf_ids(const float* block, int width) {
-  return reinterpret_cast<const std::uint32_t*>(block + 9 * width);
-}
 
 /// Vertex k (0, 1, 2) of a hit triangle, read from the leaf data the test just used.
 inline Vec3f hit_vertex(const MeshBvh& bvh, const MeshBvhHit& h, int k) {
-  const float* row = leaf_block(bvh, h.group) + 3 * k * h.width + h.lane;
-  return {row[0], row[h.width], row[2 * h.width]};
+  const TriangleGroup& g = bvh.groups[h.group];
+  return {g.v[k][0][h.lane], g.v[k][1][h.lane], g.v[k][2][h.lane]};
 }
 
 /// Entries a traversal stack needs for `bvh`: each level below the root pushes at most

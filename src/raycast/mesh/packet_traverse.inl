@@ -392,23 +392,20 @@ inline int packet_child(const NodePlanes& n, int c, const PacketData<N>& p,
   return bits(cmp_le(tnear, vmin(f * widen, tmax)));
 }
 
-// Triangle `lane` of a leaf block (mesh_bvh.h leaf_block) against every lane's ray: the watertight
-// test of intersect_block.
+// Triangle `lane` of group g against every lane's ray: the watertight test of intersect_pair.
 template <int N, class V = typename PacketLanes<N>::V>
-inline int packet_triangle(const float* block, int width, int lane, const PacketData<N>& p, V tmax,
-                           V& t, V& v, V& w, V& det) {
+inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData<N>& p, V tmax, V& t,
+                           V& v, V& w, V& det) {
   using L = PacketLanes<N>;
-  // Vertex k's coordinate on axis a: row 3k + a.
-  auto at = [&](int k, int a) { return L::broadcast(block[(3 * k + a) * width + lane]); };
-  const V a_kz = at(0, p.kz) - p.okz;
-  const V b_kz = at(1, p.kz) - p.okz;
-  const V c_kz = at(2, p.kz) - p.okz;
-  const V ax = (at(0, p.kx) - p.okx) - p.sx * a_kz;
-  const V ay = (at(0, p.ky) - p.oky) - p.sy * a_kz;
-  const V bx = (at(1, p.kx) - p.okx) - p.sx * b_kz;
-  const V by = (at(1, p.ky) - p.oky) - p.sy * b_kz;
-  const V cx = (at(2, p.kx) - p.okx) - p.sx * c_kz;
-  const V cy = (at(2, p.ky) - p.oky) - p.sy * c_kz;
+  const V a_kz = L::broadcast(g.v[0][p.kz][lane]) - p.okz;
+  const V b_kz = L::broadcast(g.v[1][p.kz][lane]) - p.okz;
+  const V c_kz = L::broadcast(g.v[2][p.kz][lane]) - p.okz;
+  const V ax = (L::broadcast(g.v[0][p.kx][lane]) - p.okx) - p.sx * a_kz;
+  const V ay = (L::broadcast(g.v[0][p.ky][lane]) - p.oky) - p.sy * a_kz;
+  const V bx = (L::broadcast(g.v[1][p.kx][lane]) - p.okx) - p.sx * b_kz;
+  const V by = (L::broadcast(g.v[1][p.ky][lane]) - p.oky) - p.sy * b_kz;
+  const V cx = (L::broadcast(g.v[2][p.kx][lane]) - p.okx) - p.sx * c_kz;
+  const V cy = (L::broadcast(g.v[2][p.ky][lane]) - p.oky) - p.sy * c_kz;
   V u = cx * by - cy * bx;
   v = ax * cy - ay * cx;
   w = bx * ay - by * ax;
@@ -460,14 +457,12 @@ inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint3
                              const PacketData<N>& p, int lanes, float* tmax_s, MeshBvhHit* hits,
                              int& found) {
   using L = PacketLanes<N>;
-  for (std::uint32_t gi = first; gi < end; gi += 2) {
-    const int width = leaf_block_width(gi, end);
-    const float* block = leaf_block(bvh, gi);
-    const std::uint32_t* ids = leaf_ids(block, width);
-    for (int k = 0; k < width; ++k) {
-      if (ids[k] == kNoTriangle) continue;
+  for (std::uint32_t gi = first; gi < end; ++gi) {
+    const TriangleGroup& g = bvh.groups[gi];
+    for (int k = 0; k < 4; ++k) {
+      if (g.id[k] == kNoTriangle) continue;
       typename L::V t, v, w, det;
-      int m = packet_triangle<N>(block, width, k, p, L::load(tmax_s), t, v, w, det) & lanes;
+      int m = packet_triangle<N>(g, k, p, L::load(tmax_s), t, v, w, det) & lanes;
       if (!m) continue;
       alignas(64) float tl[N], vl[N], wl[N], dl[N];
       L::store(tl, t), L::store(vl, v), L::store(wl, w), L::store(dl, det);
@@ -475,8 +470,8 @@ inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint3
         const int l = __builtin_ctz(m);
         m &= m - 1;
         keep_hit(l,
-                 MeshBvhHit{tl[l], vl[l] / dl[l], wl[l] / dl[l], ids[k], ids[width + k], gi,
-                            static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(width)},
+                 MeshBvhHit{tl[l], vl[l] / dl[l], wl[l] / dl[l], g.id[k], g.source[k], gi,
+                            static_cast<std::uint32_t>(k)},
                  tmax_s, hits, found);
       }
     }
@@ -494,17 +489,16 @@ inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t 
     const int l = __builtin_ctz(lanes);
     const RayData& r = p.lane_ray[l];
     for (std::uint32_t gi = first; gi < end; gi += 2) {
-      const int width = leaf_block_width(gi, end);
-      const float* block = leaf_block(bvh, gi);
-      int m = intersect_block(block, width, r, splat(tmax_s[l]), res);
-      const std::uint32_t* ids = leaf_ids(block, width);
+      const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
+      int m = intersect_pair(bvh.groups[gi], g1, r, splat(tmax_s[l]), res);
       while (m) {
         const int i = __builtin_ctz(m);
         m &= m - 1;
+        const std::uint32_t g = gi + (i >> 2);
         keep_hit(l,
-                 MeshBvhHit{res.t[i], res.v[i] / res.det[i], res.w[i] / res.det[i], ids[i],
-                            ids[width + i], gi, static_cast<std::uint32_t>(i),
-                            static_cast<std::uint32_t>(width)},
+                 MeshBvhHit{res.t[i], res.v[i] / res.det[i], res.w[i] / res.det[i],
+                            bvh.groups[g].id[i & 3], bvh.groups[g].source[i & 3], g,
+                            static_cast<std::uint32_t>(i & 3)},
                  tmax_s, hits, found);
       }
     }

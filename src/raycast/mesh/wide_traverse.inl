@@ -2,8 +2,8 @@
 // includes: a mesh/wide_kernels_<isa>.cpp file includes it after its headers, inside its own
 // `#pragma GCC target` region, having defined RAYCAST_KERNEL_NS and, in that namespace, the lane
 // type V8 (8 floats) and its mask type M8 with:
-//   load8(p) (32-byte aligned), load8_u8(p) (8 bytes, converted to float), load8u(p) (16-byte
-//   aligned), splat(x), store8(p, v),
+//   load8(p) (32-byte aligned), load8_u8(p) (8 bytes, converted to float), load44(a, b) (two
+//   16-byte aligned halves), splat(x), store8(p, v),
 //   + - * /, vmin(a, b) and vmax(a, b) (the second operand when either is NaN, as SSE's minps),
 //   cmp_le, cmp_ge, cmp_eq (ordered: false on NaN), cmp_ne (true on NaN), mand, mor, bits(m)
 //   (lane i -> bit i), select(m, a, b) (a where m).
@@ -180,26 +180,20 @@ struct PairResult {
   alignas(32) float det[8];
 };
 
-// Watertight test of a leaf block's triangles (mesh_bvh.h leaf_block; width 8, or 4: lanes 4-7
-// then read the next row's lanes, or the ids, and are masked out): the hit mask (tmin <= t <=
-// tmax) and, when it is not empty, the lane results.
-inline int intersect_block(const float* block, int width, const RayData& p, V8 tmax,
-                           PairResult& res) {
-  const int lanes = width == 8 ? 0xFF : 0x0F;
-  const float* v0 = block;
-  const float* v1 = block + 3 * width;
-  const float* v2 = block + 6 * width;
-  const int kx = p.kx * width, ky = p.ky * width, kz = p.kz * width;
+// Watertight test of two groups' eight triangles (lanes 0-3 from g0, 4-7 from g1): the hit mask
+// (tmin <= t <= tmax) and, when it is not empty, the lane results.
+inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
+                          V8 tmax, PairResult& res) {
   // Shear and scale the vertices into ray space (per vertex, so shared vertices agree exactly).
-  const V8 a_kz = load8u(v0 + kz) - p.okz;
-  const V8 b_kz = load8u(v1 + kz) - p.okz;
-  const V8 c_kz = load8u(v2 + kz) - p.okz;
-  const V8 ax = (load8u(v0 + kx) - p.okx) - p.sx * a_kz;
-  const V8 ay = (load8u(v0 + ky) - p.oky) - p.sy * a_kz;
-  const V8 bx = (load8u(v1 + kx) - p.okx) - p.sx * b_kz;
-  const V8 by = (load8u(v1 + ky) - p.oky) - p.sy * b_kz;
-  const V8 cx = (load8u(v2 + kx) - p.okx) - p.sx * c_kz;
-  const V8 cy = (load8u(v2 + ky) - p.oky) - p.sy * c_kz;
+  const V8 a_kz = load44(g0.v[0][p.kz], g1.v[0][p.kz]) - p.okz;
+  const V8 b_kz = load44(g0.v[1][p.kz], g1.v[1][p.kz]) - p.okz;
+  const V8 c_kz = load44(g0.v[2][p.kz], g1.v[2][p.kz]) - p.okz;
+  const V8 ax = (load44(g0.v[0][p.kx], g1.v[0][p.kx]) - p.okx) - p.sx * a_kz;
+  const V8 ay = (load44(g0.v[0][p.ky], g1.v[0][p.ky]) - p.oky) - p.sy * a_kz;
+  const V8 bx = (load44(g0.v[1][p.kx], g1.v[1][p.kx]) - p.okx) - p.sx * b_kz;
+  const V8 by = (load44(g0.v[1][p.ky], g1.v[1][p.ky]) - p.oky) - p.sy * b_kz;
+  const V8 cx = (load44(g0.v[2][p.kx], g1.v[2][p.kx]) - p.okx) - p.sx * c_kz;
+  const V8 cy = (load44(g0.v[2][p.ky], g1.v[2][p.ky]) - p.oky) - p.sy * c_kz;
   V8 u = cx * by - cy * bx;
   V8 v = ax * cy - ay * cx;
   V8 w = bx * ay - by * ax;
@@ -210,10 +204,9 @@ inline int intersect_block(const float* block, int width, const RayData& p, V8 t
   // (rounding is monotonic, so a non-zero float edge function already has the exact sign), which
   // can take a lane out of pos or neg but never put one in: a pair with no candidate lane is a
   // miss without looking for zeros.
-  const int candidates = bits(mor(pos, neg)) & lanes;
-  if (!candidates) return 0;
+  if (!bits(mor(pos, neg))) return 0;
   const int zero_mask =
-      candidates & bits(mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero)));
+      bits(mand(mor(pos, neg), mor(mor(cmp_eq(u, zero), cmp_eq(v, zero)), cmp_eq(w, zero))));
   if (zero_mask) [[unlikely]] {
     // An edge function exactly 0 in float: recompute that lane's three in double (the paper's
     // fallback), so the sign of a ray exactly through an edge or vertex is exact.
@@ -237,11 +230,11 @@ inline int intersect_block(const float* block, int width, const RayData& p, V8 t
   }
   const V8 det = (u + v) + w;
   const auto same_sign = mand(mor(pos, neg), cmp_ne(det, zero));
-  if (!(bits(same_sign) & lanes)) return 0;
+  if (!bits(same_sign)) return 0;
   const V8 az = p.sz * a_kz, bz = p.sz * b_kz, cz = p.sz * c_kz;
   const V8 ts = (u * az + v * bz) + w * cz;
   const V8 t = ts / det;
-  const int m = bits(mand(same_sign, mand(cmp_ge(t, p.tmin), cmp_le(t, tmax)))) & lanes;
+  const int m = bits(mand(same_sign, mand(cmp_ge(t, p.tmin), cmp_le(t, tmax))));
   if (m) {
     store8(res.t, t);
     store8(res.v, v);
@@ -360,23 +353,21 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
     } else {
       const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
       for (std::uint32_t gi = first; gi < end; gi += 2) {
-        const int width = leaf_block_width(gi, end);
-        const float* block = leaf_block(bvh, gi);
-        int m = intersect_block(block, width, p, tmax, res);
+        const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
+        int m = intersect_pair(bvh.groups[gi], g1, p, tmax, res);
         if (!m) continue;
         if constexpr (Q == Query::kAny) return true;
-        const std::uint32_t* ids = leaf_ids(block, width);
         while (m) {
           const int l = __builtin_ctz(m);
           m &= m - 1;
+          const std::uint32_t g = gi + (l >> 2);
           const MeshBvhHit h{res.t[l],
                              res.v[l] / res.det[l],
                              res.w[l] / res.det[l],
-                             ids[l],
-                             ids[width + l],
-                             gi,
-                             static_cast<std::uint32_t>(l),
-                             static_cast<std::uint32_t>(width)};
+                             bvh.groups[g].id[l & 3],
+                             bvh.groups[g].source[l & 3],
+                             g,
+                             static_cast<std::uint32_t>(l & 3)};
           if constexpr (Q == Query::kNearest) {
             // Ties in t go to the smaller triangle index, so that the answer does not depend on
             // the visiting order (packets visit leaves in another order).
