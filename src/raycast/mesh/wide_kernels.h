@@ -73,9 +73,16 @@ std::unique_ptr<TraversalEntry[]> deep_traversal_stack(const MeshBvh& bvh);
 /// every tree up to 128 levels deep, the heap only beyond (the one choice of every single-ray
 /// query; inlined, so the common path costs one compare).
 template <class F>
+[[gnu::noinline, gnu::cold]] decltype(auto) with_deep_traversal_stack(const MeshBvh& bvh, F& f) {
+  const std::unique_ptr<TraversalEntry[]> stack = deep_traversal_stack(bvh);
+  return f(stack.get());
+}
+
+template <class F>
 [[gnu::always_inline]] inline decltype(auto) with_traversal_stack(const MeshBvh& bvh, F&& f) {
+  // The heap stack out of line: its unique_ptr inlined here cost ~3 instructions per query.
   if (traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]]
-    return f(deep_traversal_stack(bvh).get());
+    return with_deep_traversal_stack(bvh, f);
   TraversalEntry stack[kLocalTraversalStack];
   return f(static_cast<TraversalEntry*>(stack));
 }
