@@ -13,7 +13,7 @@
 // (o - plane) * (-1/d), so that each plane load folds into its subtraction (same results).
 // A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
-// (AVX-512: 16 lanes); with RAYCAST_KERNEL_FLOAT_NODE8 too, only quantised nodes use it.
+// (AVX-512: 16 lanes), which the walks use where uses_node16 says.
 // Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
 // with an add, so every ISA returns the same hits bit for bit (the tests compare them).
 
@@ -29,6 +29,22 @@ constexpr float kSlabNarrow = 2.0f - kSlabWiden;
 // its largest component is in [1, 2)).
 constexpr float kMinDirection = 0x1p-64f;
 constexpr float kInfinityF = __builtin_huge_valf();
+
+enum class Query { kNearest, kAny, kAll };
+
+// Whether query Q on a tree of Node takes the kernel's 16-lane node test (RAYCAST_KERNEL_NODE16,
+// AVX-512) rather than the 8-lane one. Measured (docs/performance-mesh.md, session 10): the
+// 8-lane test wins on float nodes, and on quantised ones for any-hit queries (shadow rays, 10M
+// sphere ~0.75 -> ~0.9 of Embree's rate); quantised nearest-hit walks keep the 16-lane test (the
+// 10M sphere's incoherent rays were ahead with it in 4 of 5 rounds).
+template <Query Q, class Node>
+constexpr bool uses_node16() {
+#ifdef RAYCAST_KERNEL_NODE16
+  return std::is_same_v<Node, QuantisedNode> && Q != Query::kAny;
+#else
+  return false;
+#endif
+}
 
 // Per-ray constants of the box and triangle tests.
 struct RayData {
@@ -50,8 +66,8 @@ struct RayData {
 };
 
 // Fills p in place (returning RayData by value made GCC copy the AVX-512 part, nine 64-byte
-// vectors, through the stack twice per ray), for a tree of Node.
-template <class Node>
+// vectors, through the stack twice per ray), for query Q on a tree of Node.
+template <Query Q, class Node>
 inline void prepare(const MeshRay& r, RayData& p) {
   const float* o = &r.o.x;
   const float* d = &r.d.x;
@@ -82,10 +98,7 @@ inline void prepare(const MeshRay& r, RayData& p) {
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
 #ifdef RAYCAST_KERNEL_NODE16
-#ifdef RAYCAST_KERNEL_FLOAT_NODE8
-  if constexpr (!std::is_same_v<Node, WideNode>)
-#endif
-    prepare_node16(o, invs, p.node16);
+  if constexpr (uses_node16<Q, Node>()) prepare_node16(o, invs, p.node16);
 #endif
   (void)invs;
 }
@@ -148,14 +161,7 @@ inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
 
 // Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
 template <class Node>
-inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
-#ifdef RAYCAST_KERNEL_NODE16
-#ifdef RAYCAST_KERNEL_FLOAT_NODE8
-  if constexpr (!std::is_same_v<Node, WideNode>)
-#endif
-    return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
-#endif
-#if !defined(RAYCAST_KERNEL_NODE16) || defined(RAYCAST_KERNEL_FLOAT_NODE8)
+inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
   V8 d[6];
   node_distances(n, p, d);
   const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
@@ -169,7 +175,16 @@ inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
   const V8 far = vmin(vmin(fx, fy), fz);
   const V8 tfar = vmin(vmax(far * splat(kSlabWiden), far * splat(kSlabNarrow)), tmax);
   return bits(cmp_le(tnear, tfar)) & n.used;
+}
+
+// The node test of query Q on Node: the 8-lane one, or the kernel's 16-lane one (same results).
+template <Query Q, class Node>
+inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
+#ifdef RAYCAST_KERNEL_NODE16
+  if constexpr (uses_node16<Q, Node>())
+    return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
 #endif
+  return intersect_node8(n, p, tmax, tnear);
 }
 
 // Lane results of a two-group triangle test: t, and the edge functions v, w and det = u + v + w.
@@ -309,8 +324,6 @@ inline std::uint32_t order_children(const MeshBvh& bvh, const Node& node, int ma
 inline std::uint32_t leaf_first(std::uint32_t ref) { return ref & 0x1FFFFFFFu; }
 inline std::uint32_t leaf_groups(std::uint32_t ref) { return ((ref >> 29) & 3u) + 1; }
 
-enum class Query { kNearest, kAny, kAll };
-
 // The one traversal of the three queries (the shape of madmann91/bvh's intersect<IsAnyHit>):
 // nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
 // first hit (kAny), or every hit appended to `out` (kAll).
@@ -320,7 +333,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   if (bvh.empty()) return false;
   const Node* nodes = node_array<Node>(bvh);
   RayData p;
-  prepare<Node>(ray, p);
+  prepare<Q, Node>(ray, p);
   float tmax_s = ray.tmax;
   V8 tmax = splat(tmax_s);
   int top = 0;
@@ -331,7 +344,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
     if (!(ref & kLeafBit)) {
       const Node& node = nodes[ref];
       V8 tn;
-      int mask = intersect_node(node, p, tmax, tn);
+      int mask = intersect_node<Q>(node, p, tmax, tn);
       if (mask) {
         if constexpr (Q == Query::kNearest) {
           ref = order_children(bvh, node, mask, tn, stack, top);
