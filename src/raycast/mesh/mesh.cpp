@@ -370,13 +370,11 @@ bool intersect(const Mesh& m, const Ray& ray, LocalHit& hit) {
   double scale;
   const MeshRay r = convert_ray(ray, scale);
   MeshBvhHit h;
-  // The kernel called from here (intersect_closest's common path without its call level).
-  if (traversal_stack_size(m.bvh) > kLocalTraversalStack) [[unlikely]] {
-    if (!intersect_closest(m.bvh, r, h)) return false;
-  } else {
-    TraversalEntry stack[kLocalTraversalStack];
-    if (!kernels_in_use().closest(m.bvh, r, h, stack)) return false;
-  }
+  // The kernel called from here (intersect_closest without its call level).
+  if (!with_traversal_stack(m.bvh, [&](TraversalEntry* stack) {
+        return kernels_in_use().closest(m.bvh, r, h, stack);
+      }))
+    return false;
   // The double refinement and the record for the winning hit only.
   const double t = std::clamp(refine_hit(m, h, ray, scale), ray.tmin, ray.tmax);
   hit = LocalHit{t, static_cast<std::int32_t>(h.source), static_cast<std::int32_t>(h.triangle),
@@ -413,11 +411,9 @@ int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits) {
 bool occluded(const Mesh& m, const Ray& ray) {
   double scale;
   const MeshRay r = convert_ray(ray, scale);
-  // The kernel called from here (intersect_any's common path without its call level).
-  if (traversal_stack_size(m.bvh) > kLocalTraversalStack) [[unlikely]]
-    return intersect_any(m.bvh, r);
-  TraversalEntry stack[kLocalTraversalStack];
-  return kernels_in_use().any(m.bvh, r, stack);
+  // The kernel called from here (intersect_any without its call level).
+  return with_traversal_stack(
+      m.bvh, [&](TraversalEntry* stack) { return kernels_in_use().any(m.bvh, r, stack); });
 }
 
 bool occluded(const MeshShape& s, const Ray& ray) { return occluded(*s.mesh, ray); }

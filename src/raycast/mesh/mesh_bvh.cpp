@@ -250,29 +250,6 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
 
 namespace {
 
-// A traversal stack: on the C stack for every tree of sane depth (up to 128 levels of 8-wide
-// nodes); on the heap (one allocation per query) only for deeper trees, which the SAH build makes
-// only for pathological inputs. Never too small: sized from the tree's depth.
-class Stack {
- public:
-  explicit Stack(const MeshBvh& bvh) {
-    const std::size_t need = traversal_stack_size(bvh);
-    if (need > kLocal) [[unlikely]] {
-      heap_ = std::make_unique<TraversalEntry[]>(need);
-      data_ = heap_.get();
-    }
-  }
-  TraversalEntry* data() { return data_; }
-
- private:
-  static constexpr std::size_t kLocal = kLocalTraversalStack;
-  // Uninitialised (the kernels write before they read); a unique_ptr rather than a vector: its
-  // construction and destruction cost a few instructions per query, a vector's a dozen or more.
-  TraversalEntry local_[kLocal];
-  std::unique_ptr<TraversalEntry[]> heap_;
-  TraversalEntry* data_ = local_;
-};
-
 [[gnu::always_inline]] inline const MeshKernels& kernels() { return kernels_in_use(); }
 
 }  // namespace
@@ -313,12 +290,13 @@ const MeshKernels& active_mesh_kernels() {
 void append_mesh_hit(std::vector<MeshBvhHit>& out, const MeshBvhHit& hit) { out.push_back(hit); }
 
 bool intersect_closest(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit& hit) {
-  if (traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]] {
-    Stack stack(bvh);
-    return kernels().closest(bvh, ray, hit, stack.data());
-  }
-  TraversalEntry stack[kLocalTraversalStack];
-  return kernels().closest(bvh, ray, hit, stack);
+  return with_traversal_stack(
+      bvh, [&](TraversalEntry* stack) { return kernels().closest(bvh, ray, hit, stack); });
+}
+
+std::unique_ptr<TraversalEntry[]> deep_traversal_stack(const MeshBvh& bvh) {
+  // Uninitialised (the kernels write before they read).
+  return std::make_unique_for_overwrite<TraversalEntry[]>(traversal_stack_size(bvh));
 }
 
 namespace {
@@ -326,7 +304,6 @@ namespace {
 // The packet stack (on the C++ stack up to depth 128) and the single-ray one of closest8.
 template <class F>
 int with_packet_stacks(const MeshBvh& bvh, F&& trace) {
-  Stack stack(bvh);
   constexpr std::size_t kLocal = 128 * (kNodeWidth - 1) + 2;  // depth 128 without the heap
   std::vector<PacketEntry> heap;
   PacketEntry local[kLocal];
@@ -335,7 +312,8 @@ int with_packet_stacks(const MeshBvh& bvh, F&& trace) {
     heap.resize(traversal_stack_size(bvh));
     packet_stack = heap.data();
   }
-  return trace(packet_stack, stack.data());
+  return with_traversal_stack(bvh,
+                              [&](TraversalEntry* stack) { return trace(packet_stack, stack); });
 }
 
 }  // namespace
@@ -355,20 +333,17 @@ int intersect_closest8(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit
 }
 
 bool intersect_any(const MeshBvh& bvh, const MeshRay& ray) {
-  // A plain array on the common path (no Stack: its heap pointer is set and tested per query);
-  // the kernel tests bvh.empty() itself.
-  if (traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]] {
-    Stack stack(bvh);
-    return kernels().any(bvh, ray, stack.data());
-  }
-  TraversalEntry stack[kLocalTraversalStack];
-  return kernels().any(bvh, ray, stack);
+  // The kernel tests bvh.empty() itself.
+  return with_traversal_stack(
+      bvh, [&](TraversalEntry* stack) { return kernels().any(bvh, ray, stack); });
 }
 
 void intersect_every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out) {
   if (bvh.empty()) return;
-  Stack stack(bvh);
-  kernels().every(bvh, ray, out, stack.data());
+  with_traversal_stack(bvh, [&](TraversalEntry* stack) {
+    kernels().every(bvh, ray, out, stack);
+    return 0;
+  });
 }
 
 }  // namespace raycast

@@ -4,6 +4,7 @@
 // and picked at run time (math/isa.h; docs/architecture.md "ISA dispatch").
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "geometry/ray.h"
@@ -62,9 +63,29 @@ inline const MeshKernels& kernels_in_use() {
 }
 
 /// Traversal stack entries a single-ray query keeps on the C stack: every tree up to 128 levels
-/// deep (deeper ones, which the SAH build makes only for pathological inputs, go through
-/// intersect_any / intersect_closest, which then use the heap).
+/// deep (deeper ones, which the SAH build makes only for pathological inputs, get a heap stack).
 inline constexpr std::size_t kLocalTraversalStack = 128 * (kNodeWidth - 1) + 2;
+
+/// A heap stack of traversal_stack_size(bvh) entries (out of line: only for pathological trees).
+std::unique_ptr<TraversalEntry[]> deep_traversal_stack(const MeshBvh& bvh);
+
+/// Returns f(stack) with a traversal stack big enough for `bvh`: a plain array on the C stack for
+/// every tree up to 128 levels deep, the heap only beyond (the one choice of every single-ray
+/// query; inlined, so the common path costs one compare).
+template <class F>
+[[gnu::noinline, gnu::cold]] decltype(auto) with_deep_traversal_stack(const MeshBvh& bvh, F& f) {
+  const std::unique_ptr<TraversalEntry[]> stack = deep_traversal_stack(bvh);
+  return f(stack.get());
+}
+
+template <class F>
+[[gnu::always_inline]] inline decltype(auto) with_traversal_stack(const MeshBvh& bvh, F&& f) {
+  // The heap stack out of line: its unique_ptr inlined here cost ~3 instructions per query.
+  if (traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]]
+    return with_deep_traversal_stack(bvh, f);
+  TraversalEntry stack[kLocalTraversalStack];
+  return f(static_cast<TraversalEntry*>(stack));
+}
 
 /// Appends to a hit list (out of line, so that ISA-specific code never instantiates vector code).
 void append_mesh_hit(std::vector<MeshBvhHit>& out, const MeshBvhHit& hit);

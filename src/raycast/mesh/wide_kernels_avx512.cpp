@@ -115,12 +115,18 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 }  // namespace raycast::kernels_avx512
 
 #define RAYCAST_KERNEL_NODE16 1
+// The 16-lane node test only where uses_node16 (mesh/wide_traverse.inl) says: elsewhere the 8-lane
+// one (rows by the sign of d, loads folded), whose dependency chain has no lane-crossing permute
+// or half extraction between a node's loads and its mask (docs/performance-mesh.md, session 10:
+// 1M shadow rays ~0.75 -> ~0.85 of Embree's rate).
+#define RAYCAST_KERNEL_FOLDED_ROWS 1
 #define RAYCAST_KERNEL_NS kernels_avx512
 #include "mesh/wide_traverse.inl"
 // After the single-ray traversal, which it uses.
 #include "mesh/packet_traverse.inl"
 #undef RAYCAST_KERNEL_NS
 #undef RAYCAST_KERNEL_NODE16
+#undef RAYCAST_KERNEL_FOLDED_ROWS
 
 #pragma GCC diagnostic pop
 #pragma GCC pop_options

@@ -9,9 +9,11 @@
 //   (lane i -> bit i), select(m, a, b) (a where m).
 // A kernel may define RAYCAST_KERNEL_MINMAX_SLABS to compute a float node's slab distances from
 // both rows at fixed offsets (min and max) instead of rows chosen by the sign of d: same results.
+// A kernel may define RAYCAST_KERNEL_FOLDED_ROWS instead: the rows chosen by the sign of d, as
+// (o - plane) * (-1/d), so that each plane load folds into its subtraction (same results).
 // A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
-// (AVX-512: 16 lanes).
+// (AVX-512: 16 lanes), which the walks use where uses_node16 says.
 // Every lane operation is one IEEE single-precision operation and the code never fuses a multiply
 // with an add, so every ISA returns the same hits bit for bit (the tests compare them).
 
@@ -28,11 +30,27 @@ constexpr float kSlabNarrow = 2.0f - kSlabWiden;
 constexpr float kMinDirection = 0x1p-64f;
 constexpr float kInfinityF = __builtin_huge_valf();
 
+enum class Query { kNearest, kAny, kAll };
+
+// Whether query Q on a tree of Node takes the kernel's 16-lane node test (RAYCAST_KERNEL_NODE16,
+// AVX-512) rather than the 8-lane one. Measured (docs/performance-mesh.md, session 10): the
+// 8-lane test wins on float nodes, and on quantised ones for any-hit queries (shadow rays, 10M
+// sphere ~0.75 -> ~0.9 of Embree's rate); quantised nearest-hit walks keep the 16-lane test (the
+// 10M sphere's incoherent rays were ahead with it in 4 of 5 rounds).
+template <Query Q, class Node>
+constexpr bool uses_node16() {
+#ifdef RAYCAST_KERNEL_NODE16
+  return std::is_same_v<Node, QuantisedNode> && Q != Query::kAny;
+#else
+  return false;
+#endif
+}
+
 // Per-ray constants of the box and triangle tests.
 struct RayData {
   V8 o[3];    // origin, broadcast
   V8 inv[3];  // 1 / d, broadcast
-#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+#if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
   V8 neg_inv[3];  // -1 / d, broadcast
 #endif
   int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis] (and in
@@ -48,7 +66,8 @@ struct RayData {
 };
 
 // Fills p in place (returning RayData by value made GCC copy the AVX-512 part, nine 64-byte
-// vectors, through the stack twice per ray).
+// vectors, through the stack twice per ray), for query Q on a tree of Node.
+template <Query Q, class Node>
 inline void prepare(const MeshRay& r, RayData& p) {
   const float* o = &r.o.x;
   const float* d = &r.d.x;
@@ -60,7 +79,7 @@ inline void prepare(const MeshRay& r, RayData& p) {
     const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
-#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+#if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
     p.neg_inv[a] = splat(-inv);
 #endif
     // WideNode::box[a] and QuantisedNode::q[2a], q[2a + 1]: the lo planes, then the hi planes.
@@ -79,10 +98,9 @@ inline void prepare(const MeshRay& r, RayData& p) {
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
 #ifdef RAYCAST_KERNEL_NODE16
-  prepare_node16(o, invs, p.node16);
-#else
-  (void)invs;
+  if constexpr (uses_node16<Q, Node>()) prepare_node16(o, invs, p.node16);
 #endif
+  (void)invs;
 }
 
 // The node arrays of the two formats (mesh/mesh_bvh.h).
@@ -110,6 +128,17 @@ inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
     d[3 + a] = vmax(lo, hi);
   }
 }
+#elif defined(RAYCAST_KERNEL_FOLDED_ROWS)
+// The rows chosen by the sign of d, as (o - plane) * (-1/d): the plane loads fold into the
+// subtractions. The same value as (plane - o) * (1/d) but for the sign of a zero distance (plane
+// == o), which no comparison of the walk tells apart. AVX-512 (32 registers: the row offsets and
+// the negated reciprocals stay in registers).
+inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
+  for (int a = 0; a < 3; ++a) {
+    d[a] = (p.o[a] - load8(n.box[a] + p.near_off[a])) * p.neg_inv[a];
+    d[3 + a] = (p.o[a] - load8(n.box[a] + p.far_off[a])) * p.neg_inv[a];
+  }
+}
 #else
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
@@ -132,10 +161,7 @@ inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
 
 // Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
 template <class Node>
-inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
-#ifdef RAYCAST_KERNEL_NODE16
-  return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
-#else
+inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
   V8 d[6];
   node_distances(n, p, d);
   const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
@@ -149,7 +175,16 @@ inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
   const V8 far = vmin(vmin(fx, fy), fz);
   const V8 tfar = vmin(vmax(far * splat(kSlabWiden), far * splat(kSlabNarrow)), tmax);
   return bits(cmp_le(tnear, tfar)) & n.used;
+}
+
+// The node test of query Q on Node: the 8-lane one, or the kernel's 16-lane one (same results).
+template <Query Q, class Node>
+inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
+#ifdef RAYCAST_KERNEL_NODE16
+  if constexpr (uses_node16<Q, Node>())
+    return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
 #endif
+  return intersect_node8(n, p, tmax, tnear);
 }
 
 // Lane results of a two-group triangle test: t, and the edge functions v, w and det = u + v + w.
@@ -289,8 +324,6 @@ inline std::uint32_t order_children(const MeshBvh& bvh, const Node& node, int ma
 inline std::uint32_t leaf_first(std::uint32_t ref) { return ref & 0x1FFFFFFFu; }
 inline std::uint32_t leaf_groups(std::uint32_t ref) { return ((ref >> 29) & 3u) + 1; }
 
-enum class Query { kNearest, kAny, kAll };
-
 // The one traversal of the three queries (the shape of madmann91/bvh's intersect<IsAnyHit>):
 // nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
 // first hit (kAny), or every hit appended to `out` (kAll).
@@ -300,7 +333,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   if (bvh.empty()) return false;
   const Node* nodes = node_array<Node>(bvh);
   RayData p;
-  prepare(ray, p);
+  prepare<Q, Node>(ray, p);
   float tmax_s = ray.tmax;
   V8 tmax = splat(tmax_s);
   int top = 0;
@@ -311,7 +344,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
     if (!(ref & kLeafBit)) {
       const Node& node = nodes[ref];
       V8 tn;
-      int mask = intersect_node(node, p, tmax, tn);
+      int mask = intersect_node<Q>(node, p, tmax, tn);
       if (mask) {
         if constexpr (Q == Query::kNearest) {
           ref = order_children(bvh, node, mask, tn, stack, top);
