@@ -25,6 +25,10 @@ inline constexpr double kBallLimit = 1e100;
 /// ulps of |v|^2) many times over.
 inline constexpr double kBallSlack = 1e-12;
 
+/// A ball's radius squared widened by a relative 1e-12 (the margin the ball tests take beside
+/// kBallSlack).
+inline double widened_radius2(double radius) { return radius * radius * (1 + 1e-12); }
+
 /// Two balls (lanes 0 and 1): centre and radius squared (widened) by component, and the index
 /// of the object each bounds. An unused lane holds an empty ball (radius2 -1).
 struct alignas(16) BallPair {
@@ -42,7 +46,7 @@ inline void add_ball(std::vector<BallPair>& balls, std::size_t& count, std::uint
   p.x[lane] = centre.x;
   p.y[lane] = centre.y;
   p.z[lane] = centre.z;
-  p.radius2[lane] = radius * radius * (1 + 1e-12);
+  p.radius2[lane] = widened_radius2(radius);
   p.index[lane] = index;
   ++count;
 }

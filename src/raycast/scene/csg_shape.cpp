@@ -393,7 +393,7 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
   if (ball.is_bounded() && !ball.is_empty() &&
       max_component(abs(ball.centre)) + ball.radius <= kBallLimit) {
     out->ball_centre = ball.centre;
-    out->ball_radius2 = ball.radius * ball.radius * (1 + 1e-12);
+    out->ball_radius2 = widened_radius2(ball.radius);
   }
   return out;
 }

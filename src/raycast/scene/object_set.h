@@ -72,6 +72,15 @@ class ObjectSet {
 
   /// Whether any_along culls by balls (a flat set, not the one-mesh set, coordinates in range).
   bool walks_balls() const { return balls_usable_; }
+  /// Whether the nearest-hit walk tries the unbounded objects, then each bounded one after its
+  /// double box test, in index order (a flat set of fewer than kFloatBoxesFrom bounded objects):
+  /// the order camera-ray packets repeat (scene/scene_packets.h).
+  bool walks_double_boxes() const { return flat_ && bounded_.size() < kFloatBoxesFrom; }
+  /// The objects tested on every ray, and the bounded ones with their boxes (box(k) is
+  /// bounded()[k]'s; only where walks_double_boxes()).
+  std::span<const std::uint32_t> unbounded() const { return unbounded_; }
+  std::span<const std::uint32_t> bounded() const { return bounded_; }
+  const Aabb& box(std::size_t k) const { return boxes_[k]; }
   /// The index of the set's one object when it is an untransformed mesh and every other object's
   /// box is empty (the queries' one-mesh path), else -1.
   std::int32_t sole_mesh() const {

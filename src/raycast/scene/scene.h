@@ -74,6 +74,8 @@ struct Scene {
   /// The index of the scene's one untransformed mesh when every other object's box is empty
   /// (ObjectSet::sole_mesh), else -1.
   std::int32_t sole_mesh() const { return set_.sole_mesh(); }
+  /// The walk over the objects (its order, for camera-ray packets: scene/scene_packets.h).
+  const ObjectSet& object_set() const { return set_; }
   /// The full surface record of a hit found with this ray.
   SurfaceInfo surface(const Ray& ray, const SceneHit& hit,
                       SurfaceNeeds needs = SurfaceNeeds::kAll) const;

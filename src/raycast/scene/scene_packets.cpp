@@ -1,6 +1,5 @@
 #include "scene/scene_packets.h"
 
-#include <algorithm>
 #include <bit>
 #include <variant>
 
@@ -12,30 +11,21 @@
 namespace raycast {
 
 ScenePackets::ScenePackets(const Scene& scene) : scene_(scene), width_(packet_width(active_isa())) {
-  // Nothing to gain without a mesh (the scan below computes every object's bounds).
-  if (std::none_of(scene.objects.begin(), scene.objects.end(),
-                   [](const Object& o) { return std::holds_alternative<MeshShape>(o.shape); }))
-    return;
-  // ObjectSet::build's split: empty boxes never hit, unbounded objects on every ray, the bounded
-  // ones behind their boxes.
-  std::vector<Step> unbounded, bounded;
+  // The scene's own walk (more bounded objects: ObjectSet orders them per ray, by float boxes or
+  // its BVH, which the plan does not repeat).
+  const ObjectSet& set = scene.object_set();
+  if (!set.walks_double_boxes()) return;
+  for (const std::uint32_t index : set.unbounded())
+    steps_.push_back(Step{index, nullptr, false, {}});
   bool any_mesh = false;
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    const Object& o = scene.objects[i];
-    Step step;
-    step.object = static_cast<std::uint32_t>(i);
-    step.box = bounds(o);
-    if (step.box.is_empty()) continue;
-    step.boxed = step.box.is_bounded();
-    step.mesh = step.boxed ? std::get_if<MeshShape>(&o.shape) : nullptr;
-    any_mesh |= step.mesh != nullptr;
-    (step.boxed ? bounded : unbounded).push_back(step);
+  for (std::size_t k = 0; k < set.bounded().size(); ++k) {
+    const std::uint32_t index = set.bounded()[k];
+    const MeshShape* mesh = std::get_if<MeshShape>(&scene.objects[index].shape);
+    any_mesh |= mesh != nullptr;
+    steps_.push_back(Step{index, mesh, true, set.box(k)});
   }
-  // More bounded objects: ObjectSet orders them per ray (float boxes by entry, or its BVH).
-  if (!any_mesh || bounded.size() >= ObjectSet::kFloatBoxesFrom) return;
-  steps_ = std::move(unbounded);
-  steps_.insert(steps_.end(), bounded.begin(), bounded.end());
-  usable_ = true;
+  usable_ = any_mesh;  // nothing to gain without a mesh
+  if (!usable_) steps_.clear();
 }
 
 int ScenePackets::intersect(const Ray* rays, int mask, SceneHit* hits) const {

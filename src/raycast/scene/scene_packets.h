@@ -13,9 +13,9 @@ class ScenePackets {
  public:
   /// The plan for `scene` (built; it must outlive the plan and not change). usable() only when
   /// the scene has a bounded mesh object and its nearest-hit walk is one the plan repeats step by
-  /// step: the unbounded objects, then the bounded ones (fewer than ObjectSet::kFloatBoxesFrom,
-  /// so ObjectSet walks them flat, each after its double box test), all in index order, each
-  /// tested with the ray's tmax lowered to the nearest hit so far.
+  /// step (ObjectSet::walks_double_boxes): the unbounded objects, then the bounded ones, each
+  /// after its double box test, in the set's order, each tested with the ray's tmax lowered to the
+  /// nearest hit so far.
   explicit ScenePackets(const Scene& scene);
 
   bool usable() const { return usable_; }
