@@ -8,9 +8,12 @@
 
 #include "scene/object.h"
 #include "shape_checks.h"
+#include "support/objects.h"
 
 namespace raycast {
 namespace {
+
+using testing::object_of;
 
 // Shoots `cases` random rays at `o`; at every hit spawns a ray into the outer hemisphere (or,
 // for an open planar surface, a random hemisphere) and counts the ones that hit `o` again.
@@ -43,13 +46,6 @@ int count_rehits(const Object& o, bool open, unsigned seed, int cases, double ha
   return rehits;
 }
 
-Object make(ShapeVariant s, std::optional<Transform> xf = std::nullopt) {
-  Object o;
-  o.shape = std::move(s);
-  o.xf = xf;
-  return o;
-}
-
 constexpr int kCases = 100000;
 
 const Transform kPlacement = Transform::translate({1e3, -2.5, 7}) *
@@ -75,43 +71,46 @@ TEST(Spawn, ZeroErrorPoint_StillLeavesTheSurface) {
 }
 
 TEST(Spawn, Sphere_NeverRehit) {
-  EXPECT_EQ(count_rehits(make(make_sphere({0.3, -0.2, 0.1}, 1.7)), false, 1, kCases, 6), 0);
+  EXPECT_EQ(count_rehits(object_of(make_sphere({0.3, -0.2, 0.1}, 1.7)), false, 1, kCases, 6), 0);
 }
 
 TEST(Spawn, FarAwayTransformedSphere_NeverRehit) {
-  EXPECT_EQ(count_rehits(make(make_sphere({0, 0, 0}, 1), kPlacement), false, 2, kCases, 6), 0);
+  EXPECT_EQ(count_rehits(object_of(make_sphere({0, 0, 0}, 1), kPlacement), false, 2, kCases, 6), 0);
 }
 
 TEST(Spawn, BoxWithFaceThroughZero_NeverRehit) {
-  EXPECT_EQ(count_rehits(make(make_box({-1, -0.5, 0}, {0, 0.5, 2})), false, 12, kCases, 6), 0);
-  EXPECT_EQ(count_rehits(make(make_disk(2)), true, 13, kCases, 5), 0);
+  EXPECT_EQ(count_rehits(object_of(make_box({-1, -0.5, 0}, {0, 0.5, 2})), false, 12, kCases, 6), 0);
+  EXPECT_EQ(count_rehits(object_of(make_disk(2)), true, 13, kCases, 5), 0);
 }
 
 TEST(Spawn, Box_NeverRehit) {
-  EXPECT_EQ(count_rehits(make(make_box({-1, -0.5, 0.25}, {1.5, 0.5, 2})), false, 3, kCases, 6), 0);
+  EXPECT_EQ(count_rehits(object_of(make_box({-1, -0.5, 0.25}, {1.5, 0.5, 2})), false, 3, kCases, 6),
+            0);
 }
 
 TEST(Spawn, TransformedBox_NeverRehit) {
-  EXPECT_EQ(count_rehits(make(make_box({-1, -1, -1}, {1, 1, 1}), kPlacement), false, 4, kCases, 6),
-            0);
+  EXPECT_EQ(
+      count_rehits(object_of(make_box({-1, -1, -1}, {1, 1, 1}), kPlacement), false, 4, kCases, 6),
+      0);
 }
 
 TEST(Spawn, Triangle_NeverRehit) {
   const Triangle t = make_triangle({-2, -1, 0.3}, {2, -1.5, -0.2}, {0.5, 2, 0.7});
-  EXPECT_EQ(count_rehits(make(t), true, 5, kCases, 5), 0);
-  EXPECT_EQ(count_rehits(make(t, kPlacement), true, 6, kCases, 5), 0);
+  EXPECT_EQ(count_rehits(object_of(t), true, 5, kCases, 5), 0);
+  EXPECT_EQ(count_rehits(object_of(t, kPlacement), true, 6, kCases, 5), 0);
 }
 
 TEST(Spawn, Parallelogram_NeverRehit) {
   const Parallelogram q = make_parallelogram({-1.5, -1, 0.2}, {3, 0.5, -0.3}, {0.2, 2.5, 0.6});
-  EXPECT_EQ(count_rehits(make(q), true, 7, kCases, 5), 0);
-  EXPECT_EQ(count_rehits(make(q, kPlacement), true, 8, kCases, 5), 0);
+  EXPECT_EQ(count_rehits(object_of(q), true, 7, kCases, 5), 0);
+  EXPECT_EQ(count_rehits(object_of(q, kPlacement), true, 8, kCases, 5), 0);
 }
 
 TEST(Spawn, Disk_NeverRehit) {
-  EXPECT_EQ(count_rehits(make(make_disk(2, 0.5, 0.3, 300)), true, 9, kCases, 5), 0);
-  EXPECT_EQ(count_rehits(make(make_disk({0.2, 0.1, -0.3}, {1, 2, 3}, 2)), true, 10, kCases, 5), 0);
-  EXPECT_EQ(count_rehits(make(make_disk(2), kPlacement), true, 11, kCases, 5), 0);
+  EXPECT_EQ(count_rehits(object_of(make_disk(2, 0.5, 0.3, 300)), true, 9, kCases, 5), 0);
+  EXPECT_EQ(count_rehits(object_of(make_disk({0.2, 0.1, -0.3}, {1, 2, 3}, 2)), true, 10, kCases, 5),
+            0);
+  EXPECT_EQ(count_rehits(object_of(make_disk(2), kPlacement), true, 11, kCases, 5), 0);
 }
 
 }  // namespace

@@ -7,22 +7,12 @@
 
 #include "scene/object.h"
 #include "shape_checks.h"
+#include "support/objects.h"
 
 namespace raycast {
 namespace {
 
-Object placed(ShapeVariant shape, const Transform& xf) {
-  Object o;
-  o.shape = std::move(shape);
-  o.xf = xf;
-  return o;
-}
-
-Object bare(ShapeVariant shape) {
-  Object o;
-  o.shape = std::move(shape);
-  return o;
-}
+using testing::object_of;
 
 Transform random_placement(testing::Rng& rng, bool uniform_scale) {
   std::uniform_real_distribution<double> s(0.3, 2.5), deg(-180, 180);
@@ -64,8 +54,8 @@ void compare(const Object& a, const Object& b, testing::Rng& rng, bool uv, int* 
 TEST(Transformed, Box_MatchesTranslatedBox) {
   const Box b = make_box({-1, -2, -0.5}, {1, 0.5, 2});
   const Vec3 shift{3, -1, 0.25};
-  const Object moved = placed(b, Transform::translate(shift));
-  const Object world = bare(make_box(b.lo + shift, b.hi + shift));
+  const Object moved = object_of(b, Transform::translate(shift));
+  const Object world = object_of(make_box(b.lo + shift, b.hi + shift));
   const unsigned seed = 41;
   SCOPED_TRACE("seed " + std::to_string(seed));
   testing::Rng rng(seed);
@@ -82,8 +72,8 @@ TEST(Transformed, Sphere_MatchesScaledAndMovedSphere) {
   for (int i = 0; i < 5000; ++i) {
     const Transform xf = random_placement(rng, true);
     const double k = length(xf.vector({1, 0, 0}));
-    const Object a = placed(make_sphere({0, 0, 0}, 1), xf);
-    const Object b = bare(make_sphere(xf.point({0, 0, 0}), k));
+    const Object a = object_of(make_sphere({0, 0, 0}, 1), xf);
+    const Object b = object_of(make_sphere(xf.point({0, 0, 0}), k));
     compare(a, b, rng, false, &hits);
   }
   EXPECT_GT(hits, 500);
@@ -97,8 +87,8 @@ TEST(Transformed, Triangle_MatchesTriangleOfTransformedVertices) {
   const Vec3 p0{-1, -1, 0}, p1{2, -1, 0.5}, p2{0, 2, -0.5};
   for (int i = 0; i < 5000; ++i) {
     const Transform xf = random_placement(rng, false);
-    const Object a = placed(make_triangle(p0, p1, p2), xf);
-    const Object b = bare(make_triangle(xf.point(p0), xf.point(p1), xf.point(p2)));
+    const Object a = object_of(make_triangle(p0, p1, p2), xf);
+    const Object b = object_of(make_triangle(xf.point(p0), xf.point(p1), xf.point(p2)));
     compare(a, b, rng, true, &hits);  // barycentrics are affine invariants
   }
   EXPECT_GT(hits, 500);
@@ -112,8 +102,8 @@ TEST(Transformed, Parallelogram_MatchesTransformedEdges) {
   const Vec3 o{-1, -1, 0.5}, u{2, 0.5, 0}, v{0.25, 2, 0.5};
   for (int i = 0; i < 5000; ++i) {
     const Transform xf = random_placement(rng, false);
-    const Object a = placed(make_parallelogram(o, u, v), xf);
-    const Object b = bare(make_parallelogram(xf.point(o), xf.vector(u), xf.vector(v)));
+    const Object a = object_of(make_parallelogram(o, u, v), xf);
+    const Object b = object_of(make_parallelogram(xf.point(o), xf.vector(u), xf.vector(v)));
     compare(a, b, rng, true, &hits);
   }
   EXPECT_GT(hits, 500);
@@ -127,9 +117,9 @@ TEST(Transformed, Disk_MatchesCenterNormalForm) {
   for (int i = 0; i < 5000; ++i) {
     const Transform xf = random_placement(rng, true);
     const double k = length(xf.vector({1, 0, 0}));
-    const Object a = placed(make_disk(1.5, 0.5, 0.25), xf);
+    const Object a = object_of(make_disk(1.5, 0.5, 0.25), xf);
     const Object b =
-        bare(make_disk(xf.point({0, 0, 0.25}), xf.normal({0, 0, 1}), 1.5 * k, 0.5 * k));
+        object_of(make_disk(xf.point({0, 0, 0.25}), xf.normal({0, 0, 1}), 1.5 * k, 0.5 * k));
     const Ray ray = testing::random_ray(rng, 6, 2.5);
     LocalHit ha, hb;
     const bool hit_a = intersect(a, ray, ha), hit_b = intersect(b, ray, hb);
@@ -154,7 +144,7 @@ TEST(Transformed, RotatedScaledBox_SpansMatchContainsAndNormalsPointOut) {
   SCOPED_TRACE("seed " + std::to_string(seed));
   testing::Rng rng(seed);
   for (int i = 0; i < 300; ++i) {
-    const Object o = placed(make_box({-1, -0.5, -2}, {1, 0.5, 1}), random_placement(rng, false));
+    const Object o = object_of(make_box({-1, -0.5, -2}, {1, 0.5, 1}), random_placement(rng, false));
     const Ray ray = testing::random_ray(rng, 6, 2);
     testing::check_spans_against_oracle(o, ray, [&](const Vec3& p) { return contains(o, p); });
     LocalHit h;
@@ -167,7 +157,7 @@ TEST(Transformed, RotatedScaledBox_SpansMatchContainsAndNormalsPointOut) {
 }
 
 TEST(Transformed, MirroredBox_NormalsStillPointOut) {
-  const Object o = placed(make_box({0, -1, -1}, {2, 1, 1}), Transform::scale({-1, 1, 1}));
+  const Object o = object_of(make_box({0, -1, -1}, {2, 1, 1}), Transform::scale({-1, 1, 1}));
   LocalHit h;
   const Ray ray{{-5, 0, 0}, {1, 0, 0}};
   ASSERT_TRUE(intersect(o, ray, h));
