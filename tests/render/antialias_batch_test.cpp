@@ -87,11 +87,13 @@ lights:
 objects:
   - {plane: {normal: [0, 1, 0], point: [0, -0.6, 0]}, material: floor}
 )") + mesh_entry(6, "    transform: [{translate: [-0.5, 0.4, 0]}]\n    material: mirror\n") +
-      mesh_entry(3, "    transform: [{scale: 0.6}, {translate: [0.9, 1.0, -0.8]}]\n"
-                    "    material: clay\n"));
+      mesh_entry(3,
+                 "    transform: [{scale: 0.6}, {translate: [0.9, 1.0, -0.8]}]\n"
+                 "    material: clay\n"));
   ASSERT_TRUE(ScenePackets(scene).usable());
   for (int threads : {1, 2}) {
-    for (const auto& region : {std::optional<PixelRect>{}, std::optional(PixelRect{5, 3, 38, 20})}) {
+    for (const auto& region :
+         {std::optional<PixelRect>{}, std::optional(PixelRect{5, 3, 38, 20})}) {
       RenderOptions options;
       options.progress = false;
       options.threads = threads;
