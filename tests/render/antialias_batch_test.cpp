@@ -91,23 +91,26 @@ objects:
                  "    transform: [{scale: 0.6}, {translate: [0.9, 1.0, -0.8]}]\n"
                  "    material: clay\n"));
   ASSERT_TRUE(ScenePackets(scene).usable());
-  for (int threads : {1, 2}) {
-    for (const auto& region :
-         {std::optional<PixelRect>{}, std::optional(PixelRect{5, 3, 38, 20})}) {
-      RenderOptions options;
-      options.progress = false;
-      options.threads = threads;
-      options.region = region;
-      options.antialias = AntialiasSettings{AntialiasMethod::kNeighbour, 0.2, 3};
-      RenderStats single_stats, packet_stats;
-      options.camera_packets = false;
-      const Image single = render(scene, options, &single_stats);
-      options.camera_packets = true;
-      const Image packets = render(scene, options, &packet_stats);
-      EXPECT_EQ(single.rgb, packets.rgb) << threads;  // bit-identical
-      EXPECT_EQ(single_stats.rays, packet_stats.rays) << threads;
-      EXPECT_EQ(single_stats.samples, packet_stats.samples) << threads;
-      EXPECT_GT(single_stats.samples, std::uint64_t(single.width) * single.height);
+  // Method 1 (both passes batched) and variance (its first pass).
+  for (const AntialiasMethod method : {AntialiasMethod::kNeighbour, AntialiasMethod::kVariance}) {
+    for (int threads : {1, 2}) {
+      for (const auto& region :
+           {std::optional<PixelRect>{}, std::optional(PixelRect{5, 3, 38, 20})}) {
+        RenderOptions options;
+        options.progress = false;
+        options.threads = threads;
+        options.region = region;
+        options.antialias = AntialiasSettings{method, 0.2, 3};
+        RenderStats single_stats, packet_stats;
+        options.camera_packets = false;
+        const Image single = render(scene, options, &single_stats);
+        options.camera_packets = true;
+        const Image packets = render(scene, options, &packet_stats);
+        EXPECT_EQ(single.rgb, packets.rgb) << threads;  // bit-identical
+        EXPECT_EQ(single_stats.rays, packet_stats.rays) << threads;
+        EXPECT_EQ(single_stats.samples, packet_stats.samples) << threads;
+        EXPECT_GT(single_stats.samples, std::uint64_t(single.width) * single.height);
+      }
     }
   }
 }

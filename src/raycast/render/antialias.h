@@ -54,8 +54,8 @@ struct RasterWindow {
 /// `row_done` is called once per image row of each of the two passes (for progress reports).
 /// With a window, `image` is that part of the full picture, each pixel bit-identical to the
 /// full render's: the decisions that look at neighbours sample one pixel beyond the window.
-/// Method 1 traces through `batch` when it is given (the same image: every pixel draws its
-/// numbers in the same order), else through `sample`.
+/// Method 1 and the first pass of `variance` trace through `batch` when it is given (the same
+/// image: every pixel draws its numbers in the same order), else through `sample`.
 /// Throws std::invalid_argument for a threshold that is negative or not finite, a depth
 /// outside [1, 16] or a window that does not fit in the full picture.
 void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
