@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "scene/lane_array.h"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -103,7 +105,7 @@ inline __attribute__((always_inline)) bool differs(const FirstPass& first, int x
 /// window (wx0, wy0, w x h) grown by one pixel inside the full picture; the window's values go
 /// into `image` (pixel (wx0, wy0) at (0, 0)); row_done for the window's rows only.
 FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_height,
-                      unsigned seed, const RasterSampler& sample, Image& image,
+                      unsigned seed, const RasterBatchSampler& trace, Image& image,
                       tbb::enumerable_thread_specific<Counters>& counters,
                       const std::function<void()>& row_done) {
   FirstPass first;
@@ -120,18 +122,69 @@ FirstPass centre_pass(int wx0, int wy0, int w, int h, int full_width, int full_h
     const bool in_rows = y >= wy0 && y < wy0 + h;
     std::uint32_t* const shown = first.shown.data() + first.index(first.x0, y);
     std::uint64_t rays = 0;  // summed here, added to the thread's counters once per row
-    for (int x = first.x0; x < first.x1; ++x) {
-      SampleState state{Rng::for_pixel(x, y, seed), 0};
-      const Color value = sample(x + 0.5, y + 0.5, state);
-      shown[x - first.x0] = display_codes(value);
-      if (in_rows && x >= wx0 && x < wx0 + w) image.set(x - wx0, y - wy0, Vec3f(value));
-      rays += state.rays;
+    // Batches of neighbouring pixels of the row (coherent camera rays).
+    LaneArray<SampleState, kMaxRasterBatch> state;  // each written before it is read
+    RasterSample at[kMaxRasterBatch];
+    Color value[kMaxRasterBatch];
+    for (int xb = first.x0; xb < first.x1; xb += kMaxRasterBatch) {
+      const int count = std::min(kMaxRasterBatch, first.x1 - xb);
+      for (int i = 0; i < count; ++i) {
+        state[i] = SampleState{Rng::for_pixel(xb + i, y, seed), 0};
+        at[i] = RasterSample{xb + i + 0.5, y + 0.5, &state[i]};
+      }
+      trace(at, count, value);
+      for (int i = 0; i < count; ++i) {
+        const int x = xb + i;
+        shown[x - first.x0] = display_codes(value[i]);
+        if (in_rows && x >= wx0 && x < wx0 + w) image.set(x - wx0, y - wy0, Vec3f(value[i]));
+        rays += state[i].rays;
+      }
     }
     c.rays += rays;
     c.samples += std::uint64_t(first.x1 - first.x0);
     if (row_done && in_rows) row_done();
   });
   return first;
+}
+
+/// Method 1's refinement of the pixels xs[0..count) of row y (count <= kMaxRasterBatch, each
+/// differing from a neighbour): depth x depth stratified, jittered samples in place of each
+/// centre sample; with depth odd the middle stratum keeps the centre sample (it lies in that
+/// stratum), so depth^2 - 1 new samples. Stratum k of every pixel is one batch; each pixel
+/// draws its jitter and traces in stratum order with its own generator, so its value is the
+/// same whatever pixels share its batches.
+void refine_pixels(const int* xs, int count, int y, int x0, int y0, int n, unsigned seed,
+                   const RasterBatchSampler& trace, Image& image, Counters& c) {
+  LaneArray<SampleState, kMaxRasterBatch> state;  // each written before it is read
+  RasterSample at[kMaxRasterBatch];
+  Color value[kMaxRasterBatch], centre[kMaxRasterBatch], sum[kMaxRasterBatch];
+  for (int p = 0; p < count; ++p) {
+    state[p] = SampleState{Rng::for_pixel(xs[p], y, seed + kRefineSalt), 0};
+    // The centre sample as the first pass stored it (in float, as every pixel is kept).
+    centre[p] = Color(image.at(xs[p] - x0, y - y0));
+    sum[p] = Color{0, 0, 0};
+  }
+  const int middle = n % 2 ? n * n / 2 : -1;
+  // Stratum k = j n + i (row j, column i), in that order: no division per sample.
+  for (int j = 0, k = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i, ++k) {
+      for (int p = 0; p < count; ++p) {
+        const double jx = state[p].rng.uniform(), jy = state[p].rng.uniform();
+        at[p] = RasterSample{xs[p] + (i + jx) / n, y + (j + jy) / n, &state[p]};
+      }
+      if (k == middle) {
+        for (int p = 0; p < count; ++p) sum[p] += centre[p];
+        continue;
+      }
+      trace(at, count, value);
+      for (int p = 0; p < count; ++p) sum[p] += value[p];
+    }
+  }
+  for (int p = 0; p < count; ++p) {
+    image.set(xs[p] - x0, y - y0, Vec3f(sum[p] / double(n * n)));
+    c.rays += state[p].rays;
+  }
+  c.samples += std::uint64_t(count) * (std::uint64_t(n) * n - (middle >= 0));
 }
 
 /// Method 2's recursion over the square [x0, x0 + size] x [y0, y0 + size] with corner values
@@ -167,7 +220,7 @@ double colour_distance(const Color& a, const Color& b) {
 
 void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSampler& sample,
                      Image& image, AdaptiveStats& stats, const std::function<void()>& row_done,
-                     const RasterWindow& window) {
+                     const RasterWindow& window, const RasterBatchSampler& batch) {
   if (!(aa.threshold >= 0) || !std::isfinite(aa.threshold))
     throw std::invalid_argument("antialias threshold must be finite and >= 0");
   if (aa.depth < 1 || aa.depth > 16)
@@ -181,39 +234,35 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
     throw std::invalid_argument("render_adaptive: the window does not fit in the picture");
   tbb::enumerable_thread_specific<Counters> counters;
   const int limit = code_limit(aa.threshold);
+  // The batches of the passes that take them: `batch`, else `sample` one by one.
+  const RasterBatchSampler one_by_one = [&](const RasterSample* at, int count, Color* values) {
+    for (int i = 0; i < count; ++i) values[i] = sample(at[i].x, at[i].y, *at[i].state);
+  };
+  const RasterBatchSampler& trace = batch ? batch : one_by_one;
 
   switch (aa.method) {
     case AntialiasMethod::kNone:
       throw std::invalid_argument("render_adaptive: no adaptive method");
 
     case AntialiasMethod::kNeighbour: {
-      // Method 1: a pixel that differs from a neighbour gets depth x depth stratified, jittered
-      // samples in place of its centre sample; with depth odd the middle stratum keeps the
-      // centre sample (it lies in that stratum), so depth^2 - 1 new samples.
+      // Method 1: a pixel that differs from a neighbour is refined (refine_pixels), up to
+      // kMaxRasterBatch pixels of a row at once.
       const FirstPass first = centre_pass(x0, y0, width, height, full_width, full_height, seed,
-                                          sample, image, counters, row_done);
+                                          trace, image, counters, row_done);
       const int n = aa.depth;
       for_rows(height, counters, row_done, [&](int row, Counters& c) {
+        if (n <= 1) return;
         const int y = y0 + row;
+        int xs[kMaxRasterBatch], count = 0;
         for (int x = x0; x < x0 + width; ++x) {
-          if (n > 1 && differs(first, x, y, limit)) {
-            // The centre sample as the first pass stored it (in float, as every pixel is kept).
-            const Color value(image.at(x - x0, row));
-            SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
-            Color sum{0, 0, 0};
-            const int middle = n % 2 ? n * n / 2 : -1;
-            // Stratum k = j n + i (row j, column i), in that order: no division per sample.
-            for (int j = 0, k = 0; j < n; ++j) {
-              for (int i = 0; i < n; ++i, ++k) {
-                const double jx = state.rng.uniform(), jy = state.rng.uniform();
-                sum += k == middle ? value : sample(x + (i + jx) / n, y + (j + jy) / n, state);
-              }
-            }
-            image.set(x - x0, row, Vec3f(sum / double(n * n)));
-            c.rays += state.rays;
-            c.samples += std::uint64_t(n) * n - (middle >= 0);
+          if (!differs(first, x, y, limit)) continue;
+          xs[count++] = x;
+          if (count == kMaxRasterBatch) {
+            refine_pixels(xs, count, y, x0, y0, n, seed, trace, image, c);
+            count = 0;
           }
         }
+        if (count > 0) refine_pixels(xs, count, y, x0, y0, n, seed, trace, image, c);
       });
       break;
     }
@@ -254,7 +303,7 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       // jittered) until the standard error of its mean is at most threshold / 4 in every
       // channel (after at least two rounds) or it has depth x depth samples (rounded up to 4).
       const FirstPass first = centre_pass(x0, y0, width, height, full_width, full_height, seed,
-                                          sample, image, counters, row_done);
+                                          trace, image, counters, row_done);
       const int most = std::max(8, (aa.depth * aa.depth + 3) / 4 * 4);
       const double target = aa.threshold / 4;
       for_rows(height, counters, row_done, [&](int row, Counters& c) {

@@ -18,6 +18,7 @@
 #include "render/camera.h"
 #include "render/camera_packets.h"
 #include "render/integrator.h"
+#include "scene/lane_array.h"
 
 namespace raycast {
 
@@ -112,18 +113,45 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   const AntialiasSettings aa = options.antialias ? *options.antialias
                                : options.spp > 0 ? AntialiasSettings{}
                                                  : scene.render.antialias;
+  // Camera-ray packets where the scene has meshes that ScenePackets can trace as packets.
+  const ScenePackets packets(scene);
+  const bool use_packets = options.camera_packets && packets.usable();
+  const auto cancelled = [&] {
+    return options.cancel && options.cancel->load(std::memory_order_relaxed);
+  };
   if (aa.method != AntialiasMethod::kNone) {
     Progress rows(options.progress && isatty(STDERR_FILENO), 2 * std::size_t(region_height));
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = process_cpu_seconds();
     AdaptiveStats adaptive;
+    const RasterSampler sample = [&](double x, double y, SampleState& state) {
+      if (cancelled()) return Color{};
+      return integrator.li(camera.ray(x, y), state);
+    };
+    // The passes' batches: packets of packets.width() rays, or one ray at a time.
+    const RasterBatchSampler batch = [&](const RasterSample* at, int count, Color* values) {
+      if (cancelled()) {
+        for (int i = 0; i < count; ++i) values[i] = Color{};
+        return;
+      }
+      if (!use_packets) {
+        for (int i = 0; i < count; ++i)
+          values[i] = integrator.li(camera.ray(at[i].x, at[i].y), *at[i].state);
+        return;
+      }
+      LaneArray<Ray, kMaxRasterBatch> ray;
+      LaneArray<SceneHit, kMaxRasterBatch> hit;
+      for (int b = 0; b < count; b += packets.width()) {
+        const int lanes = std::min(packets.width(), count - b);
+        for (int l = 0; l < lanes; ++l) ray[l] = camera.ray(at[b + l].x, at[b + l].y);
+        const int found = packets.intersect(ray.data(), (1 << lanes) - 1, hit.data());
+        for (int l = 0; l < lanes; ++l)
+          values[b + l] = integrator.li_hit(ray[l], found >> l & 1, hit[l], *at[b + l].state);
+      }
+    };
     render_adaptive(
-        aa, seed,
-        [&](double x, double y, SampleState& state) {
-          if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return Color{};
-          return integrator.li(camera.ray(x, y), state);
-        },
-        image, adaptive, [&] { rows.advance(); }, RasterWindow{rect.x0, rect.y0, width, height});
+        aa, seed, sample, image, adaptive, [&] { rows.advance(); },
+        RasterWindow{rect.x0, rect.y0, width, height}, batch);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double cpu_seconds = process_cpu_seconds() - cpu_start;
@@ -143,9 +171,6 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     return image;
   }
 
-  // Camera-ray packets where the scene has meshes that ScenePackets can trace as packets.
-  const ScenePackets packets(scene);
-  const bool use_packets = options.camera_packets && packets.usable();
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = process_cpu_seconds();
   tbb::parallel_for(
@@ -153,7 +178,7 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
         std::uint64_t& counter = rays.local();
         for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
           for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
-            if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
+            if (cancelled()) return;
             const int y1 = std::min(rect.y1, rect.y0 + (ty + 1) * kTileSize);
             const int x1 = std::min(rect.x1, rect.x0 + (tx + 1) * kTileSize);
             if (use_packets) {

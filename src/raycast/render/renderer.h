@@ -36,8 +36,9 @@ struct RenderOptions {
   /// When set and true, the render stops early and its image is incomplete (`raycast serve`
   /// restarts a pass when the scene or the view changes).
   const std::atomic<bool>* cancel = nullptr;
-  /// Fixed samples only: trace the camera rays as packets where the scene allows it
-  /// (render/camera_packets.h; the same image either way). False: one by one.
+  /// Fixed samples and antialiasing method 1: trace the camera rays as packets where the scene
+  /// allows it (render/camera_packets.h, render/antialias.h; the same image either way). False:
+  /// one by one.
   bool camera_packets = true;
 };
 
