@@ -13,6 +13,8 @@
 // (o - plane) * (-1/d), so that each plane load folds into its subtraction (same results).
 // With RAYCAST_KERNEL_FOLDED_ROWS, the walks of uses_octant_walks take the row offsets as
 // constants, one walk per direction octant (same results).
+// A kernel may define RAYCAST_KERNEL_ROW_OFFSETS: the triangle test addresses its rows through
+// three per-ray byte offsets (same loads).
 // A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
 // (AVX-512: 16 lanes), which the walks use where uses_node16 says.
@@ -214,15 +216,33 @@ struct PairResult {
 inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
                           V8 tmax, PairResult& res) {
   // Shear and scale the vertices into ray space (per vertex, so shared vertices agree exactly).
-  const V8 a_kz = load44(g0.v[0][p.kz], g1.v[0][p.kz]) - p.okz;
-  const V8 b_kz = load44(g0.v[1][p.kz], g1.v[1][p.kz]) - p.okz;
-  const V8 c_kz = load44(g0.v[2][p.kz], g1.v[2][p.kz]) - p.okz;
-  const V8 ax = (load44(g0.v[0][p.kx], g1.v[0][p.kx]) - p.okx) - p.sx * a_kz;
-  const V8 ay = (load44(g0.v[0][p.ky], g1.v[0][p.ky]) - p.oky) - p.sy * a_kz;
-  const V8 bx = (load44(g0.v[1][p.kx], g1.v[1][p.kx]) - p.okx) - p.sx * b_kz;
-  const V8 by = (load44(g0.v[1][p.ky], g1.v[1][p.ky]) - p.oky) - p.sy * b_kz;
-  const V8 cx = (load44(g0.v[2][p.kx], g1.v[2][p.kx]) - p.okx) - p.sx * c_kz;
-  const V8 cy = (load44(g0.v[2][p.ky], g1.v[2][p.ky]) - p.oky) - p.sy * c_kz;
+#ifdef RAYCAST_KERNEL_ROW_OFFSETS
+  // Each row addressed as group + vertex * 48 (a constant) + axis * 16 (one of three per-ray
+  // byte offsets), so the nine rows of both groups take three index registers, not nine.
+  const std::ptrdiff_t x = p.kx * std::ptrdiff_t(sizeof g0.v[0][0]),
+                       y = p.ky * std::ptrdiff_t(sizeof g0.v[0][0]),
+                       z = p.kz * std::ptrdiff_t(sizeof g0.v[0][0]);
+  const auto row = [](const TriangleGroup& g, int vertex, std::ptrdiff_t axis) {
+    return reinterpret_cast<const float*>(reinterpret_cast<const char*>(g.v[vertex]) + axis);
+  };
+  const auto rows = [&](int vertex, std::ptrdiff_t axis) {
+    return load44(row(g0, vertex, axis), row(g1, vertex, axis));
+  };
+#else
+  const int x = p.kx, y = p.ky, z = p.kz;
+  const auto rows = [&](int vertex, int axis) {
+    return load44(g0.v[vertex][axis], g1.v[vertex][axis]);
+  };
+#endif
+  const V8 a_kz = rows(0, z) - p.okz;
+  const V8 b_kz = rows(1, z) - p.okz;
+  const V8 c_kz = rows(2, z) - p.okz;
+  const V8 ax = (rows(0, x) - p.okx) - p.sx * a_kz;
+  const V8 ay = (rows(0, y) - p.oky) - p.sy * a_kz;
+  const V8 bx = (rows(1, x) - p.okx) - p.sx * b_kz;
+  const V8 by = (rows(1, y) - p.oky) - p.sy * b_kz;
+  const V8 cx = (rows(2, x) - p.okx) - p.sx * c_kz;
+  const V8 cy = (rows(2, y) - p.oky) - p.sy * c_kz;
   V8 u = cx * by - cy * bx;
   V8 v = ax * cy - ay * cx;
   V8 w = bx * ay - by * ax;
