@@ -11,6 +11,10 @@
 // both rows at fixed offsets (min and max) instead of rows chosen by the sign of d: same results.
 // A kernel may define RAYCAST_KERNEL_FOLDED_ROWS instead: the rows chosen by the sign of d, as
 // (o - plane) * (-1/d), so that each plane load folds into its subtraction (same results).
+// With RAYCAST_KERNEL_FOLDED_ROWS, the walks of uses_octant_walks take the row offsets as
+// constants, one walk per direction octant (same results).
+// A kernel may define RAYCAST_KERNEL_ROW_OFFSETS: the triangle test addresses its rows through
+// three per-ray byte offsets (same loads).
 // A kernel may also define RAYCAST_KERNEL_NODE16 with NodeRay16, prepare_node16(o, inv, out) and
 // intersect_node16(node, ...) for both node formats: its own node test with the same results
 // (AVX-512: 16 lanes), which the walks use where uses_node16 says.
@@ -131,14 +135,21 @@ inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
 #elif defined(RAYCAST_KERNEL_FOLDED_ROWS)
 // The rows chosen by the sign of d, as (o - plane) * (-1/d): the plane loads fold into the
 // subtractions. The same value as (plane - o) * (1/d) but for the sign of a zero distance (plane
-// == o), which no comparison of the walk tells apart. AVX-512 (32 registers: the row offsets and
-// the negated reciprocals stay in registers).
+// == o), which no comparison of the walk tells apart. AVX-512 (32 vector registers: the negated
+// reciprocals stay in registers). Oct >= 0: the walk of one direction octant (bit a set when
+// near_off[a] == kNodeWidth), whose row offsets are constants in the loads' addresses: the six
+// per-ray offsets no longer compete for the 16 general registers (GCC reloaded them from the
+// stack at every node; docs/performance-mesh.md, session 11).
+template <int Oct = -1>
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
-    d[a] = (p.o[a] - load8(n.box[a] + p.near_off[a])) * p.neg_inv[a];
-    d[3 + a] = (p.o[a] - load8(n.box[a] + p.far_off[a])) * p.neg_inv[a];
+    const int near_off = Oct < 0 ? p.near_off[a] : (Oct >> a & 1) * kNodeWidth;
+    const int far_off = Oct < 0 ? p.far_off[a] : kNodeWidth - near_off;
+    d[a] = (p.o[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
+    d[3 + a] = (p.o[a] - load8(n.box[a] + far_off)) * p.neg_inv[a];
   }
 }
+#define RAYCAST_KERNEL_OCTANT_WALKS 1
 #else
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
@@ -160,10 +171,15 @@ inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
 }
 
 // Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
-template <class Node>
+template <int Oct, class Node>
 inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
   V8 d[6];
-  node_distances(n, p, d);
+#ifdef RAYCAST_KERNEL_OCTANT_WALKS
+  if constexpr (std::is_same_v<Node, WideNode>)
+    node_distances<Oct>(n, p, d);
+  else
+#endif
+    node_distances(n, p, d);
   const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
   tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
   // Widen the far distance away from the near one: scale it up when it is positive, down when it
@@ -178,13 +194,13 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
 }
 
 // The node test of query Q on Node: the 8-lane one, or the kernel's 16-lane one (same results).
-template <Query Q, class Node>
+template <Query Q, int Oct, class Node>
 inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
 #ifdef RAYCAST_KERNEL_NODE16
   if constexpr (uses_node16<Q, Node>())
     return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
 #endif
-  return intersect_node8(n, p, tmax, tnear);
+  return intersect_node8<Oct>(n, p, tmax, tnear);
 }
 
 // Lane results of a two-group triangle test: t, and the edge functions v, w and det = u + v + w.
@@ -200,15 +216,33 @@ struct PairResult {
 inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
                           V8 tmax, PairResult& res) {
   // Shear and scale the vertices into ray space (per vertex, so shared vertices agree exactly).
-  const V8 a_kz = load44(g0.v[0][p.kz], g1.v[0][p.kz]) - p.okz;
-  const V8 b_kz = load44(g0.v[1][p.kz], g1.v[1][p.kz]) - p.okz;
-  const V8 c_kz = load44(g0.v[2][p.kz], g1.v[2][p.kz]) - p.okz;
-  const V8 ax = (load44(g0.v[0][p.kx], g1.v[0][p.kx]) - p.okx) - p.sx * a_kz;
-  const V8 ay = (load44(g0.v[0][p.ky], g1.v[0][p.ky]) - p.oky) - p.sy * a_kz;
-  const V8 bx = (load44(g0.v[1][p.kx], g1.v[1][p.kx]) - p.okx) - p.sx * b_kz;
-  const V8 by = (load44(g0.v[1][p.ky], g1.v[1][p.ky]) - p.oky) - p.sy * b_kz;
-  const V8 cx = (load44(g0.v[2][p.kx], g1.v[2][p.kx]) - p.okx) - p.sx * c_kz;
-  const V8 cy = (load44(g0.v[2][p.ky], g1.v[2][p.ky]) - p.oky) - p.sy * c_kz;
+#ifdef RAYCAST_KERNEL_ROW_OFFSETS
+  // Each row addressed as group + vertex * 48 (a constant) + axis * 16 (one of three per-ray
+  // byte offsets), so the nine rows of both groups take three index registers, not nine.
+  const std::ptrdiff_t x = p.kx * std::ptrdiff_t(sizeof g0.v[0][0]),
+                       y = p.ky * std::ptrdiff_t(sizeof g0.v[0][0]),
+                       z = p.kz * std::ptrdiff_t(sizeof g0.v[0][0]);
+  const auto row = [](const TriangleGroup& g, int vertex, std::ptrdiff_t axis) {
+    return reinterpret_cast<const float*>(reinterpret_cast<const char*>(g.v[vertex]) + axis);
+  };
+  const auto rows = [&](int vertex, std::ptrdiff_t axis) {
+    return load44(row(g0, vertex, axis), row(g1, vertex, axis));
+  };
+#else
+  const int x = p.kx, y = p.ky, z = p.kz;
+  const auto rows = [&](int vertex, int axis) {
+    return load44(g0.v[vertex][axis], g1.v[vertex][axis]);
+  };
+#endif
+  const V8 a_kz = rows(0, z) - p.okz;
+  const V8 b_kz = rows(1, z) - p.okz;
+  const V8 c_kz = rows(2, z) - p.okz;
+  const V8 ax = (rows(0, x) - p.okx) - p.sx * a_kz;
+  const V8 ay = (rows(0, y) - p.oky) - p.sy * a_kz;
+  const V8 bx = (rows(1, x) - p.okx) - p.sx * b_kz;
+  const V8 by = (rows(1, y) - p.oky) - p.sy * b_kz;
+  const V8 cx = (rows(2, x) - p.okx) - p.sx * c_kz;
+  const V8 cy = (rows(2, y) - p.oky) - p.sy * c_kz;
   V8 u = cx * by - cy * bx;
   V8 v = ax * cy - ay * cx;
   V8 w = bx * ay - by * ax;
@@ -327,14 +361,10 @@ inline std::uint32_t leaf_groups(std::uint32_t ref) { return ((ref >> 29) & 3u) 
 // The one traversal of the three queries (the shape of madmann91/bvh's intersect<IsAnyHit>):
 // nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
 // first hit (kAny), or every hit appended to `out` (kAll).
-template <Query Q, class Node>
-bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
-              TraversalEntry* stack) {
-  if (bvh.empty()) return false;
+template <Query Q, class Node, int Oct>
+bool walk(const MeshBvh& bvh, const RayData& p, float tmax_s, MeshBvhHit* hit,
+          std::vector<MeshBvhHit>* out, TraversalEntry* stack) {
   const Node* nodes = node_array<Node>(bvh);
-  RayData p;
-  prepare<Q, Node>(ray, p);
-  float tmax_s = ray.tmax;
   V8 tmax = splat(tmax_s);
   int top = 0;
   bool found = false;
@@ -344,7 +374,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
     if (!(ref & kLeafBit)) {
       const Node& node = nodes[ref];
       V8 tn;
-      int mask = intersect_node<Q>(node, p, tmax, tn);
+      int mask = intersect_node<Q, Oct>(node, p, tmax, tn);
       if (mask) {
         if constexpr (Q == Query::kNearest) {
           ref = order_children(bvh, node, mask, tn, stack, top);
@@ -408,6 +438,50 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
       }
     }
   }
+}
+
+// Whether query Q on Node runs one walk per direction octant (row offsets as constants): the
+// float-node walks of the folded-row kernels (AVX-512). Measured (session 11): any-hit ahead in 6
+// of 6 rounds (1M shadow rays, ~+2.5%); the nearest-hit walk, eight times larger in code, was
+// behind in 6 of 6 (1M primary rays, ~-3%).
+template <Query Q, class Node>
+constexpr bool uses_octant_walks() {
+#ifdef RAYCAST_KERNEL_OCTANT_WALKS
+  return std::is_same_v<Node, WideNode> && Q == Query::kAny;
+#else
+  return false;
+#endif
+}
+
+template <Query Q, class Node>
+bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+              TraversalEntry* stack) {
+  if (bvh.empty()) return false;
+  RayData p;
+  prepare<Q, Node>(ray, p);
+  if constexpr (uses_octant_walks<Q, Node>()) {
+    // The octant prepare chose the rows by (inv >= 0, NaN included), so the walks read the same.
+    const int oct = (p.near_off[0] != 0) | (p.near_off[1] != 0) << 1 | (p.near_off[2] != 0) << 2;
+    switch (oct) {
+      case 0:
+        return walk<Q, Node, 0>(bvh, p, ray.tmax, hit, out, stack);
+      case 1:
+        return walk<Q, Node, 1>(bvh, p, ray.tmax, hit, out, stack);
+      case 2:
+        return walk<Q, Node, 2>(bvh, p, ray.tmax, hit, out, stack);
+      case 3:
+        return walk<Q, Node, 3>(bvh, p, ray.tmax, hit, out, stack);
+      case 4:
+        return walk<Q, Node, 4>(bvh, p, ray.tmax, hit, out, stack);
+      case 5:
+        return walk<Q, Node, 5>(bvh, p, ray.tmax, hit, out, stack);
+      case 6:
+        return walk<Q, Node, 6>(bvh, p, ray.tmax, hit, out, stack);
+      default:
+        return walk<Q, Node, 7>(bvh, p, ray.tmax, hit, out, stack);
+    }
+  }
+  return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
 }
 
 template <Query Q>
