@@ -216,6 +216,11 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
     if (!(max_component(term) > 0)) return;
     const SurfaceInfo& from = dot(l, si.shading_n) > 0 ? lit : si;
+    if (!any_transmissive_) {
+      // Visibility is 0 or 1: no colour to return and multiply (1 * term is term, bit for bit).
+      if (!blocked(offset_ray_origin(from, l), target, at_infinity, state)) sum += term;
+      return;
+    }
     const Color seen = visibility(offset_ray_origin(from, l), target, at_infinity, state);
     if (max_component(seen) <= 0) return;
     sum += mul(seen, term);
@@ -281,11 +286,13 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
                          SampleState& state) const {
+  if (!any_transmissive_)
+    return blocked(from, to, to_infinity, state) ? Color{0, 0, 0} : Color{1, 1, 1};
   return visibility(from, to, to_infinity, state);
 }
 
-inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,
-                                    SampleState& state) const {
+bool Integrator::blocked(const Vec3& from, const Vec3& to, bool to_infinity,
+                         SampleState& state) const {
   const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
   ++state.rays;
   // is_valid(segment) (tmin 0 and tmax 1 or inf are valid): the scene's queries answer nothing
@@ -293,12 +300,17 @@ inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_in
   const double dd = length_squared(segment.d);
   const bool valid = is_valid_extent(length_squared(segment.o), dd);
   const Vec3 e = segment.d * (1 / std::sqrt(dd));  // the unit direction, for the balls
-  if (!any_transmissive_) {
-    const bool blocked = valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
-      return crosses(index, segment);
-    });
-    return blocked ? Color{0, 0, 0} : Color{1, 1, 1};
-  }
+  return valid && scene_.any_object_along(
+                      segment, e, [&](std::uint32_t index) { return crosses(index, segment); });
+}
+
+inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,
+                                    SampleState& state) const {
+  const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
+  ++state.rays;
+  const double dd = length_squared(segment.d);
+  const bool valid = is_valid_extent(length_squared(segment.o), dd);
+  const Vec3 e = segment.d * (1 / std::sqrt(dd));
   // One pass over the objects on the segment (docs/rendering.md "Shadow rays"): each object is
   // asked on its own whether the segment crosses it (an any-hit query, or for a composite
   // object with materials per part, a walk of its own crossings); the first opaque crossing

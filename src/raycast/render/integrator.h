@@ -81,7 +81,11 @@ class Integrator {
   /// one, std::pow).
   Color direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
                const Material& m, unsigned exponent, const Color& c, SampleState& state) const;
-  /// shadow() without the call: the query the shading makes for every light.
+  /// shadow() for a scene with no transmissive material: whether an object blocks the segment
+  /// (visibility 0) or not (1).
+  bool blocked(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
+  /// shadow() for a scene with transmissive materials, without the call: the query the shading
+  /// makes for every light.
   Color visibility(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
   /// What the shading asks of each scene object, worked out once per frame (the same answers
