@@ -201,7 +201,9 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
   // One light direction l towards `target` (a point, or a direction when at infinity).
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
     const double nl = dot(n, l);
-    if (!(nl > 0) || max_component(e) <= 0) return;
+    // A light with no positive channel (e <= 0) gives a term <= 0: the test of the term below
+    // drops it, without a test of e here for every light.
+    if (!(nl > 0)) return;
     // Diffuse and Phong highlight: e * (kd nl C + ks max(0, r.v)^shininess), r = l mirrored
     // about n. pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
     const Vec3 r = 2 * nl * n - l;
@@ -244,7 +246,11 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
         if (!(dist2 > 0)) break;
         const Vec3 l = to / std::sqrt(dist2);
         Color e = inverse_square ? emitted / dist2 : emitted;
-        if (light.type == LightType::kSpot) e *= spot_factor(light, -l);
+        if (light.type == LightType::kSpot) {
+          const double cone = spot_factor(light, -l);
+          if (!(cone > 0)) break;  // outside the cone: no term
+          e *= cone;
+        }
         add(l, light.position, false, e);
         break;
       }
