@@ -217,7 +217,8 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
     if (!(max_component(term) > 0)) return;
-    const SurfaceInfo& from = dot(l, si.shading_n) > 0 ? lit : si;
+    // (lit is si itself except on smooth meshes: then no side test.)
+    const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
     if (!any_transmissive_) {
       // Visibility is 0 or 1: no colour to return and multiply (1 * term is term, bit for bit).
       if (!blocked(offset_ray_origin(from, l), target, at_infinity, state)) sum += term;
