@@ -136,12 +136,12 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   // The material is resolved once per hit (CSG and instances search their parts for it).
   const std::size_t mi = material_index(hit);
   const Object& object = scene_.objects[hit.object];
-  const SurfaceInfo si = raycast::surface(object, ray, hit.local, needs(mi));
+  const bool imaged = needs(mi) == SurfaceNeeds::kAll;
+  const SurfaceInfo si = raycast::surface(object, ray, hit.local,
+                                          imaged ? SurfaceNeeds::kAll : SurfaceNeeds::kGeometry);
   const Material& m = scene_.materials[mi];
   // A plain colour needs no look-up (albedo() would return it).
-  const Color c = m.has_checker || needs(mi) == SurfaceNeeds::kAll
-                      ? albedo(scene_, textures_, ray, hit, si, mi)
-                      : m.color;
+  const Color c = m.has_checker || imaged ? albedo(scene_, textures_, ray, hit, si, mi) : m.color;
   const Vec3 wi = normalize(ray.d);
   const bool outside = dot(wi, si.n) < 0;
   const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer
