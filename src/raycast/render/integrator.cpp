@@ -224,9 +224,10 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
       if (!blocked(offset_ray_origin(from, l), target, at_infinity, state)) sum += term;
       return;
     }
-    const Color seen = visibility(offset_ray_origin(from, l), target, at_infinity, state);
-    if (max_component(seen) <= 0) return;
-    sum += mul(seen, term);
+    // Unblocked, the filter product has a channel above 0 (passes() stops the walk otherwise).
+    Color through{1, 1, 1};
+    if (filters(offset_ray_origin(from, l), target, at_infinity, state, through))
+      sum += mul(through, term);
   };
   // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
   const Light* const lights = scene_.lights.data();
@@ -295,7 +296,8 @@ Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
                          SampleState& state) const {
   if (!any_transmissive_)
     return blocked(from, to, to_infinity, state) ? Color{0, 0, 0} : Color{1, 1, 1};
-  return visibility(from, to, to_infinity, state);
+  Color through{1, 1, 1};
+  return filters(from, to, to_infinity, state, through) ? through : Color{0, 0, 0};
 }
 
 bool Integrator::blocked(const Vec3& from, const Vec3& to, bool to_infinity,
@@ -311,8 +313,8 @@ bool Integrator::blocked(const Vec3& from, const Vec3& to, bool to_infinity,
                       segment, e, [&](std::uint32_t index) { return crosses(index, segment); });
 }
 
-inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,
-                                    SampleState& state) const {
+inline bool Integrator::filters(const Vec3& from, const Vec3& to, bool to_infinity,
+                                SampleState& state, Color& through) const {
   const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
   ++state.rays;
   const double dd = length_squared(segment.d);
@@ -322,11 +324,9 @@ inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_in
   // asked on its own whether the segment crosses it (an any-hit query, or for a composite
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
-  Color through{1, 1, 1};
-  const bool blocked = valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
+  return !(valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
     return !passes(index, segment, through);
-  });
-  return blocked ? Color{0, 0, 0} : through;
+  }));
 }
 
 inline bool Integrator::crosses(std::uint32_t index, const Ray& segment) const {
