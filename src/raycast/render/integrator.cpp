@@ -151,9 +151,9 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   const unsigned exponent = exponents_[mi];
   Color result = m.ambient * mul(scene_.render.ambient, c);
   if (objects_[std::size_t(hit.object)].terminator)
-    result += direct(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state);
+    direct(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state, result);
   else
-    result += direct(si, si, n, v, m, exponent, c, state);
+    direct(si, si, n, v, m, exponent, c, state, result);
   if (depth >= scene_.render.max_depth) return result;
 
   // Split between the mirror and the refracted ray (fixed weights, or exact Fresnel).
@@ -193,11 +193,14 @@ Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
   return found ? whitted_hit(ray, hit, 0, state, 1) : scene_.render.background;
 }
 
-Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n,
-                         const Vec3& v, const Material& m, unsigned exponent, const Color& c,
-                         SampleState& state) const {
+void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
+                        const Material& m, unsigned exponent, const Color& c, SampleState& state,
+                        Color& result) const {
   Color sum{0, 0, 0};
-  if (m.diffuse <= 0 && m.specular <= 0) return sum;
+  if (m.diffuse <= 0 && m.specular <= 0) {
+    result += sum;
+    return;
+  }
   // One light direction l towards `target` (a point, or a direction when at infinity).
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
     const double nl = dot(n, l);
@@ -289,7 +292,7 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
       }
     }
   }
-  return sum;
+  result += sum;
 }
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
