@@ -136,12 +136,12 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   // The material is resolved once per hit (CSG and instances search their parts for it).
   const std::size_t mi = material_index(hit);
   const Object& object = scene_.objects[hit.object];
-  const SurfaceInfo si = raycast::surface(object, ray, hit.local, needs(mi));
+  const bool imaged = needs(mi) == SurfaceNeeds::kAll;
+  const SurfaceInfo si = raycast::surface(object, ray, hit.local,
+                                          imaged ? SurfaceNeeds::kAll : SurfaceNeeds::kGeometry);
   const Material& m = scene_.materials[mi];
   // A plain colour needs no look-up (albedo() would return it).
-  const Color c = m.has_checker || needs(mi) == SurfaceNeeds::kAll
-                      ? albedo(scene_, textures_, ray, hit, si, mi)
-                      : m.color;
+  const Color c = m.has_checker || imaged ? albedo(scene_, textures_, ray, hit, si, mi) : m.color;
   const Vec3 wi = normalize(ray.d);
   const bool outside = dot(wi, si.n) < 0;
   const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer
@@ -151,9 +151,9 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   const unsigned exponent = exponents_[mi];
   Color result = m.ambient * mul(scene_.render.ambient, c);
   if (objects_[std::size_t(hit.object)].terminator)
-    result += direct(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state);
+    direct(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state, result);
   else
-    result += direct(si, si, n, v, m, exponent, c, state);
+    direct(si, si, n, v, m, exponent, c, state, result);
   if (depth >= scene_.render.max_depth) return result;
 
   // Split between the mirror and the refracted ray (fixed weights, or exact Fresnel).
@@ -193,15 +193,20 @@ Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
   return found ? whitted_hit(ray, hit, 0, state, 1) : scene_.render.background;
 }
 
-Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n,
-                         const Vec3& v, const Material& m, unsigned exponent, const Color& c,
-                         SampleState& state) const {
+void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
+                        const Material& m, unsigned exponent, const Color& c, SampleState& state,
+                        Color& result) const {
   Color sum{0, 0, 0};
-  if (m.diffuse <= 0 && m.specular <= 0) return sum;
+  if (m.diffuse <= 0 && m.specular <= 0) {
+    result += sum;
+    return;
+  }
   // One light direction l towards `target` (a point, or a direction when at infinity).
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
     const double nl = dot(n, l);
-    if (!(nl > 0) || max_component(e) <= 0) return;
+    // A light with no positive channel (e <= 0) gives a term <= 0: the test of the term below
+    // drops it, without a test of e here for every light.
+    if (!(nl > 0)) return;
     // Diffuse and Phong highlight: e * (kd nl C + ks max(0, r.v)^shininess), r = l mirrored
     // about n. pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
     const Vec3 r = 2 * nl * n - l;
@@ -215,10 +220,17 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
     if (!(max_component(term) > 0)) return;
-    const SurfaceInfo& from = dot(l, si.shading_n) > 0 ? lit : si;
-    const Color seen = visibility(offset_ray_origin(from, l), target, at_infinity, state);
-    if (max_component(seen) <= 0) return;
-    sum += mul(seen, term);
+    // (lit is si itself except on smooth meshes: then no side test.)
+    const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
+    if (!any_transmissive_) {
+      // Visibility is 0 or 1: no colour to return and multiply (1 * term is term, bit for bit).
+      if (!blocked(offset_ray_origin(from, l), target, at_infinity, state)) sum += term;
+      return;
+    }
+    // Unblocked, the filter product has a channel above 0 (passes() stops the walk otherwise).
+    Color through{1, 1, 1};
+    if (filters(offset_ray_origin(from, l), target, at_infinity, state, through))
+      sum += mul(through, term);
   };
   // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
   const Light* const lights = scene_.lights.data();
@@ -239,7 +251,11 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
         if (!(dist2 > 0)) break;
         const Vec3 l = to / std::sqrt(dist2);
         Color e = inverse_square ? emitted / dist2 : emitted;
-        if (light.type == LightType::kSpot) e *= spot_factor(light, -l);
+        if (light.type == LightType::kSpot) {
+          const double cone = spot_factor(light, -l);
+          if (!(cone > 0)) break;  // outside the cone: no term
+          e *= cone;
+        }
         add(l, light.position, false, e);
         break;
       }
@@ -276,16 +292,19 @@ Color Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Ve
       }
     }
   }
-  return sum;
+  result += sum;
 }
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
                          SampleState& state) const {
-  return visibility(from, to, to_infinity, state);
+  if (!any_transmissive_)
+    return blocked(from, to, to_infinity, state) ? Color{0, 0, 0} : Color{1, 1, 1};
+  Color through{1, 1, 1};
+  return filters(from, to, to_infinity, state, through) ? through : Color{0, 0, 0};
 }
 
-inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_infinity,
-                                    SampleState& state) const {
+bool Integrator::blocked(const Vec3& from, const Vec3& to, bool to_infinity,
+                         SampleState& state) const {
   const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
   ++state.rays;
   // is_valid(segment) (tmin 0 and tmax 1 or inf are valid): the scene's queries answer nothing
@@ -293,21 +312,24 @@ inline Color Integrator::visibility(const Vec3& from, const Vec3& to, bool to_in
   const double dd = length_squared(segment.d);
   const bool valid = is_valid_extent(length_squared(segment.o), dd);
   const Vec3 e = segment.d * (1 / std::sqrt(dd));  // the unit direction, for the balls
-  if (!any_transmissive_) {
-    const bool blocked = valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
-      return crosses(index, segment);
-    });
-    return blocked ? Color{0, 0, 0} : Color{1, 1, 1};
-  }
+  return valid && scene_.any_object_along(
+                      segment, e, [&](std::uint32_t index) { return crosses(index, segment); });
+}
+
+inline bool Integrator::filters(const Vec3& from, const Vec3& to, bool to_infinity,
+                                SampleState& state, Color& through) const {
+  const Ray segment{from, to_infinity ? to : to - from, 0, to_infinity ? kInfinity : 1};
+  ++state.rays;
+  const double dd = length_squared(segment.d);
+  const bool valid = is_valid_extent(length_squared(segment.o), dd);
+  const Vec3 e = segment.d * (1 / std::sqrt(dd));
   // One pass over the objects on the segment (docs/rendering.md "Shadow rays"): each object is
   // asked on its own whether the segment crosses it (an any-hit query, or for a composite
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
-  Color through{1, 1, 1};
-  const bool blocked = valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
+  return !(valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
     return !passes(index, segment, through);
-  });
-  return blocked ? Color{0, 0, 0} : through;
+  }));
 }
 
 inline bool Integrator::crosses(std::uint32_t index, const Ray& segment) const {

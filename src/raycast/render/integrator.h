@@ -78,11 +78,18 @@ class Integrator {
   std::size_t material_index(const SceneHit& hit) const;
   /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
   /// (render/terminator.h), the others from si. `exponent`: m.shininess as an integer (0: not
-  /// one, std::pow).
-  Color direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
-               const Material& m, unsigned exponent, const Color& c, SampleState& state) const;
-  /// shadow() without the call: the query the shading makes for every light.
-  Color visibility(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
+  /// one, std::pow). Adds the lights' sum to `result` in one addition (`result += sum`).
+  void direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
+              const Material& m, unsigned exponent, const Color& c, SampleState& state,
+              Color& result) const;
+  /// shadow() for a scene with no transmissive material: whether an object blocks the segment
+  /// (visibility 0) or not (1).
+  bool blocked(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
+  /// shadow() for a scene with transmissive materials, without the call: false when the segment
+  /// is blocked, else true with `through` (given as {1, 1, 1}) multiplied by the filters of the
+  /// transmissive objects crossed (then some channel is above 0).
+  bool filters(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state,
+               Color& through) const;
 
   /// What the shading asks of each scene object, worked out once per frame (the same answers
   /// the per-hit look-ups would give).
