@@ -153,9 +153,13 @@ TEST(ObjectSet, SoleCsgObject_MatchesTheObject) {
 }
 
 TEST(ObjectSet, PairedBoxWalk_MatchesBruteForce) {
-  static_assert(ObjectSet::kBoxPairsFrom > 1 && ObjectSet::kBoxPairsFrom < ObjectSet::kFlatLimit);
-  for (std::size_t n : {ObjectSet::kBoxPairsFrom - 1, ObjectSet::kBoxPairsFrom, std::size_t(8),
-                        std::size_t(9), ObjectSet::kFlatLimit})
+  static_assert(ObjectSet::kBoxPairsFrom > 1 &&
+                ObjectSet::kBoxPairsFrom < ObjectSet::kFloatBoxesFrom &&
+                ObjectSet::kFloatBoxesFrom <= ObjectSet::kFlatLimit);
+  // Both sides of each switch-over: one box at a time, pairs (even and odd counts), float groups.
+  for (std::size_t n :
+       {ObjectSet::kBoxPairsFrom - 1, ObjectSet::kBoxPairsFrom, std::size_t(5),
+        ObjectSet::kFloatBoxesFrom - 1, ObjectSet::kFloatBoxesFrom, ObjectSet::kFlatLimit})
     check_against_brute_force(n, true);
 }
 
