@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "csg/first_crossing.h"
@@ -189,9 +190,9 @@ struct Gather {
     // The leaf's ray for the kinds below (a generic leaf's spans() moves it itself); most leaves
     // have no transform of their own: no copy then.
     const CsgTree::LeafKind kind = tree.leaf_kind[leaf];
-    Ray moved;
+    std::optional<Ray> moved;  // not a Ray: its default members would be stored on every call
     const Ray& local = kind != CsgTree::LeafKind::kGeneric && object.xf
-                           ? (moved = to_object_space(object, ray))
+                           ? moved.emplace(to_object_space(object, ray))
                            : ray;
     if (kind != CsgTree::LeafKind::kGeneric && count + 4 > kMaxEnds) {
       overflow = true;  // a leaf of these kinds adds at most 4 ends
