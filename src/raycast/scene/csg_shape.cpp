@@ -151,21 +151,17 @@ struct Gather {
 
   const CsgTree& tree;
   const Ray& ray;
-  CullRay cull;  // made on the first box test
-  bool cull_ready = false;
-  SpanList* lists = nullptr;  // one per leaf, fetched by the first generic leaf
-  LeafEnd ends[kMaxEnds];     // left uninitialised: [0, count) is written before it is read
+  std::optional<CullRay> cull;  // made on the first box test
+  SpanList* lists = nullptr;    // one per leaf, fetched by the first generic leaf
+  LeafEnd ends[kMaxEnds];       // left uninitialised: [0, count) is written before it is read
   std::size_t count = 0;
   bool overflow = false;  // more ends than kMaxEnds: the caller falls back to the evaluator
 
   Gather(const CsgTree& t, const Ray& r) : tree(t), ray(r) {}
 
   bool meets(const Aabb& box, double lo, double hi) {
-    if (!cull_ready) {
-      cull = CullRay(tree, ray);
-      cull_ready = true;
-    }
-    return box_meets(box, cull, lo, hi);
+    if (!cull) cull.emplace(tree, ray);
+    return box_meets(box, *cull, lo, hi);
   }
 
   // Appends one interval of `leaf`; false when it misses [lo, hi] (NaN ends count as meeting),
