@@ -1,6 +1,6 @@
 // ObjectSet's walks against a brute-force loop over every object, on each of its paths: the flat
-// list of double boxes (fewer than kFloatBoxesFrom bounded objects), of float boxes four at a time
-// (up to kFlatLimit), and the BVH (more); random rays, rays parallel to the box slabs, and rays
+// list of boxes one at a time (fewer than kBoxPairsFrom bounded objects), two at a time (up to
+// kFlatLimit), and the BVH (more); random rays, rays parallel to the box slabs, and rays
 // with NaN or infinite directions.
 #include "scene/object_set.h"
 
@@ -152,11 +152,14 @@ TEST(ObjectSet, SoleCsgObject_MatchesTheObject) {
   }
 }
 
-TEST(ObjectSet, FloatBoxWalk_MatchesBruteForce) {
-  static_assert(ObjectSet::kFloatBoxesFrom > 1 &&
-                ObjectSet::kFloatBoxesFrom < ObjectSet::kFlatLimit);
-  for (std::size_t n : {ObjectSet::kFloatBoxesFrom - 1, ObjectSet::kFloatBoxesFrom, std::size_t(8),
-                        std::size_t(9), ObjectSet::kFlatLimit})
+TEST(ObjectSet, PairedBoxWalk_MatchesBruteForce) {
+  static_assert(ObjectSet::kBoxPairsFrom > 1 &&
+                ObjectSet::kBoxPairsFrom < ObjectSet::kFloatBoxesFrom &&
+                ObjectSet::kFloatBoxesFrom <= ObjectSet::kFlatLimit);
+  // Both sides of each switch-over: one box at a time, pairs (even and odd counts), float groups.
+  for (std::size_t n :
+       {ObjectSet::kBoxPairsFrom - 1, ObjectSet::kBoxPairsFrom, std::size_t(5),
+        ObjectSet::kFloatBoxesFrom - 1, ObjectSet::kFloatBoxesFrom, ObjectSet::kFlatLimit})
     check_against_brute_force(n, true);
 }
 

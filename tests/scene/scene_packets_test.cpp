@@ -95,7 +95,7 @@ TEST(ScenePackets, UsableOnlyForMeshScenesItCanRepeat) {
   EXPECT_FALSE(ScenePackets(analytic).usable());  // no mesh: nothing to gain
   // ObjectSet orders four or more bounded objects per ray: not repeated.
   Scene many;
-  for (int i = 0; i < int(ObjectSet::kFloatBoxesFrom); ++i)
+  for (int i = 0; i < int(ObjectSet::kBoxPairsFrom); ++i)
     many.objects.push_back(mesh_object(make_octa_sphere(2, 0.0, {3.0 * i, 0, 0})));
   many.build();
   EXPECT_FALSE(ScenePackets(many).usable());

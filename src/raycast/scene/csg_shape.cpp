@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "csg/first_crossing.h"
@@ -150,21 +151,17 @@ struct Gather {
 
   const CsgTree& tree;
   const Ray& ray;
-  CullRay cull;  // made on the first box test
-  bool cull_ready = false;
-  SpanList* lists = nullptr;  // one per leaf, fetched by the first generic leaf
-  LeafEnd ends[kMaxEnds];     // left uninitialised: [0, count) is written before it is read
+  std::optional<CullRay> cull;  // made on the first box test
+  SpanList* lists = nullptr;    // one per leaf, fetched by the first generic leaf
+  LeafEnd ends[kMaxEnds];       // left uninitialised: [0, count) is written before it is read
   std::size_t count = 0;
   bool overflow = false;  // more ends than kMaxEnds: the caller falls back to the evaluator
 
   Gather(const CsgTree& t, const Ray& r) : tree(t), ray(r) {}
 
   bool meets(const Aabb& box, double lo, double hi) {
-    if (!cull_ready) {
-      cull = CullRay(tree, ray);
-      cull_ready = true;
-    }
-    return box_meets(box, cull, lo, hi);
+    if (!cull) cull.emplace(tree, ray);
+    return box_meets(box, *cull, lo, hi);
   }
 
   // Appends one interval of `leaf`; false when it misses [lo, hi] (NaN ends count as meeting),
@@ -186,28 +183,33 @@ struct Gather {
     const auto index = static_cast<std::uint16_t>(leaf);
     double elo = kInfinity, ehi = -kInfinity;
     bool any = false;
-    if (tree.leaf_kind[leaf] != CsgTree::LeafKind::kGeneric && count + 4 > kMaxEnds) {
+    // The leaf's ray for the kinds below (a generic leaf's spans() moves it itself); most leaves
+    // have no transform of their own: no copy then.
+    const CsgTree::LeafKind kind = tree.leaf_kind[leaf];
+    std::optional<Ray> moved;  // not a Ray: its default members would be stored on every call
+    const Ray& local = kind != CsgTree::LeafKind::kGeneric && object.xf
+                           ? moved.emplace(to_object_space(object, ray))
+                           : ray;
+    if (kind != CsgTree::LeafKind::kGeneric && count + 4 > kMaxEnds) {
       overflow = true;  // a leaf of these kinds adds at most 4 ends
       return true;
     }
-    switch (tree.leaf_kind[leaf]) {
+    switch (kind) {
       case CsgTree::LeafKind::kSphere: {
         const Sphere& s = *std::get_if<Sphere>(&object.shape);
-        const Ray r = to_object_space(object, ray);
-        const Vec3 o = r.o - s.center;
+        const Vec3 o = local.o - s.center;
         // Outside and moving away: both roots are negative (exact signs, see intersect(Sphere)),
         // so a window from t >= 0 sees nothing.
-        if (lo >= 0 && dot(o, o) > s.radius * s.radius && dot(o, r.d) > 0) return false;
+        if (lo >= 0 && dot(o, o) > s.radius * s.radius && dot(o, local.d) > 0) return false;
         double t0, t1;
-        if (!sphere_line_roots(o, r.d, s.radius, t0, t1)) return false;
+        if (!sphere_line_roots(o, local.d, s.radius, t0, t1)) return false;
         any = add(index, t0, 0, nullptr, t1, 1, nullptr, lo, hi, elo, ehi);
         break;
       }
       case CsgTree::LeafKind::kBox: {
         double t0, t1;
         int f0, f1;
-        if (!box_line_interval(*std::get_if<Box>(&object.shape), to_object_space(object, ray), t0,
-                               f0, t1, f1))
+        if (!box_line_interval(*std::get_if<Box>(&object.shape), local, t0, f0, t1, f1))
           return false;
         any = add(index, t0, f0, nullptr, t1, f1, nullptr, lo, hi, elo, ehi);
         break;
@@ -215,7 +217,7 @@ struct Gather {
       case CsgTree::LeafKind::kFrustum: {
         const Frustum& f = *leaf_frustum(object.shape);
         LineInterval iv[2];
-        const int n = frustum_solid_intervals(f, to_object_space(object, ray), iv);
+        const int n = frustum_solid_intervals(f, local, iv);
         for (int i = 0; i < n; ++i)
           any |= add(index, iv[i].in.t, iv[i].in.part, nullptr, iv[i].out.t, iv[i].out.part,
                      nullptr, lo, hi, elo, ehi);

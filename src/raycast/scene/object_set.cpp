@@ -12,6 +12,8 @@ void ObjectSet::build(std::span<const Object> objects) {
   std::vector<Vec3> centres;
   bounded_.clear();
   unbounded_.clear();
+  pairs_.clear();
+  pair_count_ = 0;
   groups_.clear();
   group_count_ = 0;
   bounds_ = finite_bounds_ = Aabb{};
@@ -55,43 +57,21 @@ void ObjectSet::build(std::span<const Object> objects) {
   if (!balls_usable_) balls_.clear();
   if (flat_) {
     bvh_ = Bvh{};
-    if (boxes.size() < kFloatBoxesFrom) {
+    if (boxes.size() < kBoxPairsFrom) {
       boxes_ = std::move(boxes);
       return;
     }
     boxes_.clear();
-    group_count_ = (boxes.size() + 3) / 4;
-    std::vector<Box4> plain(group_count_);
-    for (std::size_t k = 0; k < group_count_ * 4; ++k) {
-      Box4& g = plain[k / 4];
-      const int lane = static_cast<int>(k % 4);
-      if (k < boxes.size())
-        set_box4_lane(g, lane, boxes[k]);
-      else
-        clear_box4_lane(g, lane);
+    if (boxes.size() >= kFloatBoxesFrom) {
+      build_float_groups(boxes);
+      return;
     }
-    const std::size_t last = boxes.size() % 4;
-    last_lanes_ = last == 0 ? 0xFu : (1u << last) - 1;
-    double magnitude[3] = {0, 0, 0};
-    for (int a = 0; a < 3; ++a)
-      for (const Box4& g : plain)
-        for (int row : {a, 3 + a})
-          for (float p : g.plane[row])
-            if (std::isfinite(p)) magnitude[a] = std::max(magnitude[a], double(std::abs(p)));
-    scale_ = make_box4_scale(magnitude);
-    // One copy per octant, rows ordered as make_box4_ray would pick them for its signs.
-    groups_.resize(8 * group_count_);
-    for (std::size_t octant = 0; octant < 8; ++octant)
-      for (std::size_t g = 0; g < group_count_; ++g) {
-        Box4& copy = groups_[octant * group_count_ + g];
-        for (int a = 0; a < 3; ++a) {
-          const bool negative = (octant >> a) & 1;
-          for (int l = 0; l < 4; ++l) {
-            copy.plane[a][l] = plain[g].plane[negative ? 3 + a : a][l];
-            copy.plane[3 + a][l] = plain[g].plane[negative ? a : 3 + a][l];
-          }
-        }
-      }
+    pair_count_ = (boxes.size() + 1) / 2;
+    pairs_.resize(8 * pair_count_);
+    for (unsigned octant = 0; octant < 8; ++octant)
+      for (std::size_t k = 0; k < 2 * pair_count_; ++k)
+        set_box_pair_lane(pairs_[octant * pair_count_ + k / 2], static_cast<int>(k % 2),
+                          k < boxes.size() ? boxes[k] : Aabb{}, octant);
     return;
   }
   // One object per leaf: its own box is the last test before its shape's (a leaf of four tested
@@ -99,6 +79,41 @@ void ObjectSet::build(std::span<const Object> objects) {
   BvhBuildConfig config;
   config.max_leaf_size = 1;
   bvh_ = build_bvh(boxes, centres, config);
+}
+
+void ObjectSet::build_float_groups(const std::vector<Aabb>& boxes) {
+  group_count_ = (boxes.size() + 3) / 4;
+  std::vector<Box4> plain(group_count_);
+  for (std::size_t k = 0; k < group_count_ * 4; ++k) {
+    Box4& g = plain[k / 4];
+    const int lane = static_cast<int>(k % 4);
+    if (k < boxes.size())
+      set_box4_lane(g, lane, boxes[k]);
+    else
+      clear_box4_lane(g, lane);
+  }
+  const std::size_t last = boxes.size() % 4;
+  last_lanes_ = last == 0 ? 0xFu : (1u << last) - 1;
+  double magnitude[3] = {0, 0, 0};
+  for (int a = 0; a < 3; ++a)
+    for (const Box4& g : plain)
+      for (int row : {a, 3 + a})
+        for (float p : g.plane[row])
+          if (std::isfinite(p)) magnitude[a] = std::max(magnitude[a], double(std::abs(p)));
+  scale_ = make_box4_scale(magnitude);
+  // One copy per octant, rows ordered as make_box4_ray would pick them for its signs.
+  groups_.resize(8 * group_count_);
+  for (std::size_t octant = 0; octant < 8; ++octant)
+    for (std::size_t g = 0; g < group_count_; ++g) {
+      Box4& copy = groups_[octant * group_count_ + g];
+      for (int a = 0; a < 3; ++a) {
+        const bool negative = (octant >> a) & 1;
+        for (int l = 0; l < 4; ++l) {
+          copy.plane[a][l] = plain[g].plane[negative ? 3 + a : a][l];
+          copy.plane[3 + a][l] = plain[g].plane[negative ? a : 3 + a][l];
+        }
+      }
+    }
 }
 
 namespace {
@@ -163,43 +178,68 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   }
   if (bounded_.empty()) return test.found;
   const Vec3 inv_d = reciprocal(ray.d);
-  if (bounded_.size() < kFloatBoxesFrom) {
+  if (bounded_.size() < kBoxPairsFrom) {
     for (std::size_t k = 0; k < boxes_.size(); ++k)
       if (box_meets(k, ray, inv_d, r.tmax)) test(bounded_[k]);
     return test.found;
   }
-  // The boxes that may meet [tmin, tmax], then their objects nearest entry first (ties in index
+  // The boxes that meet [tmin, tmax], then their objects nearest entry first (ties in index
   // order), each while its entry is not beyond the tmax lowered by the hits found so far.
-  const Box4Ray br = float_ray(ray, inv_d);
-  float tmax_up = float_up(r.tmax);
+  if (bounded_.size() >= kFloatBoxesFrom) {  // the same in float (a few more boxes pass)
+    const Box4Ray br = float_ray(ray, inv_d);
+    float tmax_up = float_up(r.tmax);
+    struct Candidate {
+      float t;
+      std::uint32_t k;
+    };
+    Candidate c[kFlatLimit];
+    std::size_t n = 0;
+    each_float_box(br, inv_d, tmax_up, [&](std::size_t k, float t_enter) {
+      std::size_t at = n++;
+      for (; at > 0 && c[at - 1].t > t_enter; --at) c[at] = c[at - 1];
+      c[at] = {t_enter, static_cast<std::uint32_t>(k)};
+      return false;
+    });
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!box4_enters_before(c[j].t, tmax_up)) break;
+      if (test(bounded_[c[j].k])) tmax_up = float_up(r.tmax);
+    }
+    return test.found;
+  }
   struct Candidate {
-    float t;
+    double t;
     std::uint32_t k;
   };
   Candidate c[kFlatLimit];
   std::size_t n = 0;
-  each_float_box(br, octant_groups(inv_d), tmax_up, [&](std::size_t k, float t_enter) {
+  each_paired_box(ray.o, inv_d, ray.tmin, r.tmax, [&](std::size_t k, double t_enter) {
     // Insertion by entry, after equal entries: the order is a function of the ray.
     std::size_t at = n++;
     for (; at > 0 && c[at - 1].t > t_enter; --at) c[at] = c[at - 1];
     c[at] = {t_enter, static_cast<std::uint32_t>(k)};
     return false;
   });
-  for (std::size_t j = 0; j < n; ++j) {
-    if (!box4_enters_before(c[j].t, tmax_up)) break;
-    if (test(bounded_[c[j].k])) tmax_up = float_up(r.tmax);
-  }
+  for (std::size_t j = 0; j < n && c[j].t <= r.tmax; ++j) test(bounded_[c[j].k]);
   return test.found;
 }
 
 std::size_t ObjectSet::float_candidates(const Ray& ray, const Vec3& inv_d,
                                         std::uint32_t* out) const {
   std::size_t n = 0;
-  each_float_box(float_ray(ray, inv_d), octant_groups(inv_d), float_up(ray.tmax),
-                 [&](std::size_t k, float) {
-                   out[n++] = bounded_[k];
-                   return false;
-                 });
+  each_float_box(float_ray(ray, inv_d), inv_d, float_up(ray.tmax), [&](std::size_t k, float) {
+    out[n++] = bounded_[k];
+    return false;
+  });
+  return n;
+}
+
+std::size_t ObjectSet::paired_candidates(const Ray& ray, const Vec3& inv_d,
+                                         std::uint32_t* out) const {
+  std::size_t n = 0;
+  each_paired_box(ray.o, inv_d, ray.tmin, ray.tmax, [&](std::size_t k, double) {
+    out[n++] = bounded_[k];
+    return false;
+  });
   return n;
 }
 

@@ -2,9 +2,10 @@
 // A set of objects with a BVH over the bounded ones (unbounded ones, planes and the like, are
 // tried on every ray): the one implementation of the nearest / any / all walks over objects,
 // used by the scene's top level and by instance prototypes. A set of few bounded objects is
-// walked as a flat list of their boxes instead (docs/performance-render.md, rounds 4 and 6): their
-// boxes in float, four per SIMD test (accel/box4.h, conservative: the objects' own tests decide),
-// without the tree's stack and node boxes; a set of one bounded object tests its double box.
+// walked as a flat list of their boxes instead (docs/performance-render.md, rounds 4 and 6, session
+// 11), without the tree's stack and node boxes: two double boxes per SIMD test (accel/box_pair.h,
+// intersect_slabs's test), or for the larger flat sets four float boxes per test (accel/box4.h,
+// conservative: the objects' own tests decide); a set of one bounded object tests its box alone.
 // Shadow rays walk a flat set by a ball around each object instead (any_along).
 #include <bit>
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "accel/box4.h"
+#include "accel/box_pair.h"
 #include "accel/bvh.h"
 #include "accel/bvh_traverse.h"
 #include "scene/ball_list.h"
@@ -73,9 +75,9 @@ class ObjectSet {
   /// Whether any_along culls by balls (a flat set, not the one-mesh set, coordinates in range).
   bool walks_balls() const { return balls_usable_; }
   /// Whether the nearest-hit walk tries the unbounded objects, then each bounded one after its
-  /// double box test, in index order (a flat set of fewer than kFloatBoxesFrom bounded objects):
-  /// the order camera-ray packets repeat (scene/scene_packets.h).
-  bool walks_double_boxes() const { return flat_ && bounded_.size() < kFloatBoxesFrom; }
+  /// box test, in index order (a flat set of fewer than kBoxPairsFrom bounded objects): the order
+  /// camera-ray packets repeat (scene/scene_packets.h).
+  bool walks_double_boxes() const { return flat_ && bounded_.size() < kBoxPairsFrom; }
   /// The objects tested on every ray, and the bounded ones with their boxes (box(k) is
   /// bounded()[k]'s; only where walks_double_boxes()).
   std::span<const std::uint32_t> unbounded() const { return unbounded_; }
@@ -90,19 +92,24 @@ class ObjectSet {
   const Aabb& bounds() const { return bounds_; }
   const Aabb& finite_bounds() const { return finite_bounds_; }
   std::size_t memory_bytes() const {
-    return bvh_.memory_bytes() + groups_.capacity() * sizeof(Box4) +
-           boxes_.capacity() * sizeof(Aabb) + balls_.capacity() * sizeof(BallPair) +
+    return bvh_.memory_bytes() + pairs_.capacity() * sizeof(BoxPair) +
+           groups_.capacity() * sizeof(Box4) + boxes_.capacity() * sizeof(Aabb) +
+           balls_.capacity() * sizeof(BallPair) +
            (bounded_.capacity() + unbounded_.capacity()) * sizeof(std::uint32_t);
   }
 
   /// Sets of at most this many bounded objects are walked flat (no BVH); measured on the
   /// benchmark scenes (docs/performance-render.md, rounds 4 and 6).
   static constexpr std::size_t kFlatLimit = 16;
-  /// Flat sets of at least this many bounded objects test their boxes four at a time in float
-  /// (accel/box4.h); fewer test each double box. Measured with the octant copies
-  /// (docs/performance-render.md, session 8: top8): float from 4 objects saves 2.3 % on
-  /// textured (4), from 2 costs 8.6 % on whitted (2).
-  static constexpr std::size_t kFloatBoxesFrom = 4;
+  /// Flat sets of at least this many bounded objects test their boxes two at a time
+  /// (accel/box_pair.h) and visit the objects nearest entry first; fewer test each box in index
+  /// order (docs/performance-render.md, sessions 8 and 11).
+  static constexpr std::size_t kBoxPairsFrom = 4;
+  /// Flat sets of at least this many test four float boxes at a time (accel/box4.h) instead: its
+  /// per-ray set-up (rounding the ray and the slack, about 110 instructions more than the pairs')
+  /// pays where it saves three pair tests or more (about 37 instructions each; session 11: the
+  /// pairs save 2.5-2.8 % on textured (4) and glass (6), cost 0.7 % on csg (12)).
+  static constexpr std::size_t kFloatBoxesFrom = 11;
 
  private:
   /// visit(index) for each bounded object whose box may meet the segment, in index order; stops
@@ -111,24 +118,45 @@ class ObjectSet {
   bool flat_any(const Ray& ray, F&& visit) const {
     if (bounded_.empty()) return false;
     const Vec3 inv_d = reciprocal(ray.d);
-    if (bounded_.size() < kFloatBoxesFrom) {
+    if (bounded_.size() < kBoxPairsFrom) {
       for (std::size_t k = 0; k < boxes_.size(); ++k)
         if (box_meets(k, ray, inv_d, ray.tmax) && visit(bounded_[k])) return true;
       return false;
     }
     std::uint32_t candidates[kFlatLimit];
-    const std::size_t n = float_candidates(ray, inv_d, candidates);
+    const std::size_t n = bounded_.size() < kFloatBoxesFrom
+                              ? paired_candidates(ray, inv_d, candidates)
+                              : float_candidates(ray, inv_d, candidates);
     for (std::size_t j = 0; j < n; ++j)
       if (visit(candidates[j])) return true;
     return false;
   }
-  /// The objects whose float boxes may meet the ray's segment, in index order (out of line: the
-  /// callers' visitors inline the walk around it); returns their count.
+  /// The objects whose boxes meet the ray's segment, in index order (out of line: the callers'
+  /// visitors inline the walk around it); returns their count.
+  std::size_t paired_candidates(const Ray& ray, const Vec3& inv_d, std::uint32_t* out) const;
+  /// The same from the float boxes (kFloatBoxesFrom objects or more): those that may meet it.
   std::size_t float_candidates(const Ray& ray, const Vec3& inv_d, std::uint32_t* out) const;
-  /// Whether boxes_[k] (double) meets the ray's segment [tmin, tmax].
+  /// build's float groups of `boxes` (groups_, last_lanes_, scale_).
+  void build_float_groups(const std::vector<Aabb>& boxes);
+  /// Whether boxes_[k] meets the ray's segment [tmin, tmax].
   bool box_meets(std::size_t k, const Ray& ray, const Vec3& inv_d, double tmax) const {
     double t_enter;
     return intersect_slabs(boxes_[k], ray.o, inv_d, ray.tmin, tmax, t_enter);
+  }
+  /// f(k, t_enter) for each k whose box meets the segment [tmin, tmax] of o + t d (inv_d =
+  /// reciprocal(d)), in index order, t_enter its entry; stops when f returns true (returned).
+  template <class F>
+  bool each_paired_box(const Vec3& o, const Vec3& inv_d, double tmin, double tmax, F&& f) const {
+    const BoxPair* pairs = pairs_.data() + ray_octant(inv_d) * pair_count_;
+    for (std::size_t q = 0; q < pair_count_; ++q) {
+      double t_enter[2];
+      unsigned mask = box_pair_hits(pairs[q], o, inv_d, tmin, tmax, t_enter);
+      for (; mask != 0; mask &= mask - 1) {
+        const unsigned l = static_cast<unsigned>(std::countr_zero(mask));
+        if (f(2 * q + l, t_enter[l])) return true;
+      }
+    }
+    return false;
   }
   /// The float test's constants for the ray, its slab rows fixed to the octant copies' order
   /// (near planes in rows 0-2, far in 3-5): box4_hits then loads them at constant offsets, and
@@ -141,18 +169,12 @@ class ObjectSet {
     }
     return r;
   }
-  /// The groups of the ray's octant (by the signs of 1 / d, as make_box4_ray chooses its rows).
-  const Box4* octant_groups(const Vec3& inv_d) const {
-    const std::size_t octant = (std::signbit(inv_d.x) ? 1u : 0u) |
-                               (std::signbit(inv_d.y) ? 2u : 0u) |
-                               (std::signbit(inv_d.z) ? 4u : 0u);
-    return groups_.data() + octant * group_count_;
-  }
-  /// f(k, t_enter) for each k whose box in `groups` (one octant's float copies) may meet the
-  /// segment [r.tmin, tmax_up], in index order, t_enter its entry; stops when f returns true
+  /// f(k, t_enter) for each k whose float box (groups_, the copies of inv_d's octant) may meet
+  /// the segment [r.tmin, tmax_up], in index order, t_enter its entry; stops when f returns true
   /// (returned).
   template <class F>
-  bool each_float_box(const Box4Ray& r, const Box4* groups, float tmax_up, F&& f) const {
+  bool each_float_box(const Box4Ray& r, const Vec3& inv_d, float tmax_up, F&& f) const {
+    const Box4* groups = groups_.data() + ray_octant(inv_d) * group_count_;
     for (std::size_t g = 0; g < group_count_; ++g) {
       alignas(16) float t_enter[4];
       unsigned mask = box4_hits(groups[g], r, tmax_up, t_enter);
@@ -176,14 +198,18 @@ class ObjectSet {
   // sole_: whether its box is tested first; not for a CSG object whose leaves are all whole
   // spheres and boxes (their own intervals are as cheap as the box test).
   bool sole_box_ = true;
-  // flat_, from kFloatBoxesFrom: bounded_[4 g + l]'s box in lane l of group g, stored once per
-  // ray octant o (the signs of d's x, y, z in bits 0, 1, 2) at groups_[o * group_count_ + g],
-  // its rows the near planes then the far ones for that octant (lo or hi by the sign).
+  // flat_, from kBoxPairsFrom: bounded_[2 q + l]'s box in lane l of pair q, stored once per ray
+  // octant o (ray_octant) at pairs_[o * pair_count_ + q]; an odd count's last lane is empty.
+  std::vector<BoxPair> pairs_;
+  std::size_t pair_count_ = 0;
+  // flat_, from kFloatBoxesFrom instead: bounded_[4 g + l]'s box in lane l of group g, stored
+  // once per ray octant o at groups_[o * group_count_ + g], its rows the near planes then the far
+  // ones for that octant (lo or hi by the sign).
   std::vector<Box4> groups_;
   std::size_t group_count_ = 0;
   unsigned last_lanes_ = 0;  // the lanes of the last group that hold a box
   Box4Scale scale_{};        // from a bound on |coordinate| over groups_' planes
-  std::vector<Aabb> boxes_;  // flat_, fewer than kFloatBoxesFrom: bounded_[k]'s box
+  std::vector<Aabb> boxes_;  // flat_, fewer than kBoxPairsFrom: bounded_[k]'s box
   // flat_, not sole_mesh_: a ball around each bounded object with a non-empty one, in index order
   // (any_along), when every ball lies within kBallLimit (balls_usable_).
   std::vector<BallPair> balls_;
