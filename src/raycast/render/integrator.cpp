@@ -201,6 +201,21 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     result += sum;
     return;
   }
+  // offset_ray_origin depends on the direction only through the side of the surface it points
+  // to: every shadow ray that leaves the same point to the same side starts at one origin,
+  // computed once (the side test is offset_ray_origin's own, NaN included).
+  const SurfaceInfo* origin_from = nullptr;
+  bool origin_inward = false;
+  Vec3 origin;
+  auto origin_towards = [&](const SurfaceInfo& from, const Vec3& l) -> const Vec3& {
+    const bool inward = dot(l, from.n) < 0;
+    if (origin_from != &from || origin_inward != inward) {
+      origin = offset_ray_origin(from, l);
+      origin_from = &from;
+      origin_inward = inward;
+    }
+    return origin;
+  };
   // One light direction l towards `target` (a point, or a direction when at infinity).
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
     const double nl = dot(n, l);
@@ -224,12 +239,12 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
     if (!any_transmissive_) {
       // Visibility is 0 or 1: no colour to return and multiply (1 * term is term, bit for bit).
-      if (!blocked(offset_ray_origin(from, l), target, at_infinity, state)) sum += term;
+      if (!blocked(origin_towards(from, l), target, at_infinity, state)) sum += term;
       return;
     }
     // Unblocked, the filter product has a channel above 0 (passes() stops the walk otherwise).
     Color through{1, 1, 1};
-    if (filters(offset_ray_origin(from, l), target, at_infinity, state, through))
+    if (filters(origin_towards(from, l), target, at_infinity, state, through))
       sum += mul(through, term);
   };
   // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
