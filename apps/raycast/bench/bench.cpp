@@ -21,6 +21,7 @@
 #include "mesh/mesh_file.h"
 #include "mesh/mesh_packet16.h"
 #include "mesh/procedural.h"
+#include "scene/lane_array.h"
 #include "scene/loader.h"
 #include "scene/scene_error.h"
 
@@ -252,14 +253,19 @@ BenchResult run_bench(const BenchOptions& o) {
     r.packet_width = o.packet_width;
   }
   // Packets of W consecutive rays: intersect8, or intersect16 (one 16-lane packet with AVX-512).
+  static const SceneHit kMissHit{};
   auto trace_packets = [&](const std::vector<BenchRay>& rs, std::vector<SceneHit>& out) {
     const std::size_t w = static_cast<std::size_t>(o.packet_width);
     const std::size_t packets = (rs.size() + w - 1) / w;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, packets, 128),
                       [&](const tbb::blocked_range<std::size_t>& b) {
                         for (std::size_t p = b.begin(); p < b.end(); ++p) {
-                          Ray ray[16];
-                          LocalHit local[16];
+                          // Uninitialised lanes (LaneArray) and the miss copied from a
+                          // constant: a default Ray / LocalHit array per packet, and a miss built
+                          // on the stack field by field then copied out with wider loads (a
+                          // store-forwarding stall), were ~half of this loop's samples.
+                          LaneArray<Ray, 16> ray;
+                          LaneArray<LocalHit, 16> local;
                           int mask = 0;
                           for (std::size_t l = 0; l < w; ++l) {
                             const std::size_t i = p * w + l;
@@ -267,10 +273,18 @@ BenchResult run_bench(const BenchOptions& o) {
                             ray[l] = Ray{rs[i].o, rs[i].d, rs[i].tmin, rs[i].tmax};
                             if (is_valid(ray[l])) mask |= 1 << l;
                           }
-                          const int found = w == 16 ? intersect16(*packet_mesh, ray, mask, local)
-                                                    : intersect8(*packet_mesh, ray, mask, local);
-                          for (std::size_t l = 0; l < w && p * w + l < rs.size(); ++l)
-                            out[p * w + l] = found >> l & 1 ? SceneHit{local[l], 0} : SceneHit{};
+                          const int found =
+                              w == 16 ? intersect16(*packet_mesh, ray.data(), mask, local.data())
+                                      : intersect8(*packet_mesh, ray.data(), mask, local.data());
+                          for (std::size_t l = 0; l < w && p * w + l < rs.size(); ++l) {
+                            SceneHit& h = out[p * w + l];
+                            if (found >> l & 1) {
+                              h.local = local[static_cast<int>(l)];
+                              h.object = 0;
+                            } else {
+                              h = kMissHit;
+                            }
+                          }
                         }
                       });
   };

@@ -21,6 +21,7 @@
 #include "accel/build_memory.h"
 #include "accel/progress.h"
 #include "mesh/wide_kernels.h"
+#include "scene/lane_array.h"
 
 namespace raycast {
 
@@ -389,23 +390,28 @@ bool intersect(const MeshShape& s, const Ray& ray, LocalHit& hit) {
 int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits) {
   const Mesh& m = *s.mesh;
   double scale[8];
-  MeshBvhHit h[8];
+  LaneArray<MeshBvhHit, 8> h;  // no zero-fill: the kernel writes the lanes that hit
   // The lanes converted at once (same bits as convert_ray); one by one when a direction needs
   // convert_ray's slow path.
-  int found = intersect_closest8(m.bvh, rays, mask, h, scale);
+  int found = intersect_closest8(m.bvh, rays, mask, h.data(), scale);
   if (found < 0) {
     MeshRay r[8];
     for (int l = 0; l < 8; ++l)
       if (mask >> l & 1) r[l] = convert_ray(rays[l], scale[l]);
-    found = intersect_closest8(m.bvh, r, mask, h);
+    found = intersect_closest8(m.bvh, r, mask, h.data());
   }
-  for (int l = 0; l < 8; ++l) {
-    if (!(found >> l & 1)) continue;
+  write_packet_hits(m, rays, found, h.data(), scale, hits);
+  return found;
+}
+
+void write_packet_hits(const Mesh& m, const Ray* rays, int found, const MeshBvhHit* h,
+                       const double* scale, LocalHit* hits) {
+  for (; found; found &= found - 1) {
+    const int l = __builtin_ctz(found);
     const double t = std::clamp(refine_hit(m, h[l], rays[l], scale[l]), rays[l].tmin, rays[l].tmax);
     hits[l] = LocalHit{t, static_cast<std::int32_t>(h[l].source),
                        static_cast<std::int32_t>(h[l].triangle), h[l].b1, h[l].b2};
   }
-  return found;
 }
 
 bool occluded(const Mesh& m, const Ray& ray) {

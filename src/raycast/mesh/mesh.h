@@ -96,6 +96,10 @@ bool occluded(const Mesh& m, const Ray& ray);
 /// intersect() of up to eight rays (rays[l] for each bit l of mask; each is_valid) traced as one
 /// packet: the same hits as one by one; returns the mask of the rays that hit.
 int intersect8(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits);
+/// The packets' last step (intersect8, mesh_packet16.h's intersect16): for each lane l of
+/// `found`, h[l]'s t refined in double as intersect() refines its one hit, and hits[l] written.
+void write_packet_hits(const Mesh& m, const Ray* rays, int found, const MeshBvhHit* h,
+                       const double* scale, LocalHit* hits);
 void spans(const MeshShape& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const MeshShape& s, const Ray& ray, const LocalHit& hit);
 bool contains(const MeshShape& s, const Vec3& p);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mesh/wide_kernels.h"
+#include "scene/lane_array.h"
 
 #if defined(__x86_64__)
 namespace raycast::kernels_avx512 {
@@ -66,22 +67,13 @@ int intersect_closest16(const MeshBvh& bvh, Isa isa, const Ray* rays, int mask, 
 int intersect16(const MeshShape& s, const Ray* rays, int mask, LocalHit* hits) {
   const Mesh& m = *s.mesh;
   double scale[16];
-  MeshBvhHit h[16];
-  const int found = intersect_closest16(m.bvh, active_isa(), rays, mask, h, scale);
+  LaneArray<MeshBvhHit, 16> h;  // no zero-fill: the kernel writes the lanes that hit
+  const int found = intersect_closest16(m.bvh, active_isa(), rays, mask, h.data(), scale);
   // A direction that needs to_mesh_ray's slow path: each half as intersect8 does it.
   if (found < 0)
     return intersect8(s, rays, mask & 0xFF, hits) |
            intersect8(s, rays + 8, mask >> 8 & 0xFF, hits + 8) << 8;
-  for (int l = 0; l < 16; ++l) {
-    if (!(found >> l & 1)) continue;
-    // intersect8's refinement: the t of the hit triangle's plane in double.
-    const double t = std::clamp(
-        refine_t(Vec3(hit_vertex(m.bvh, h[l], 0)), Vec3(hit_vertex(m.bvh, h[l], 1)),
-                 Vec3(hit_vertex(m.bvh, h[l], 2)), rays[l].o, rays[l].d, h[l].t * scale[l]),
-        rays[l].tmin, rays[l].tmax);
-    hits[l] = LocalHit{t, static_cast<std::int32_t>(h[l].source),
-                       static_cast<std::int32_t>(h[l].triangle), h[l].b1, h[l].b2};
-  }
+  write_packet_hits(m, rays, found, h.data(), scale, hits);
   return found;
 }
 

@@ -8,6 +8,7 @@
 #include "math/isa.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_packet16.h"
+#include "scene/lane_array.h"
 
 namespace raycast {
 
@@ -92,13 +93,21 @@ void intersect_batch(const Scene& scene, std::span<const Ray> rays, std::span<Sc
       continue;
     }
     const int mask = box_lanes(box, &rays[i], n);
-    LocalHit local[16];
+    // The lanes without zero-fill, and a miss copied from a constant rather than built on the
+    // stack (as bench --packets' loop: docs/performance-mesh.md, session 11).
+    static const SceneHit kMiss{};
+    LaneArray<LocalHit, 16> local;
     const int hit = !mask   ? 0
-                    : n > 8 ? intersect16(*mesh, &rays[i], mask, local)
-                            : intersect8(*mesh, &rays[i], mask, local);
+                    : n > 8 ? intersect16(*mesh, &rays[i], mask, local.data())
+                            : intersect8(*mesh, &rays[i], mask, local.data());
     for (int l = 0; l < n; ++l) {
       found[i + l] = hit >> l & 1;
-      hits[i + l] = found[i + l] ? SceneHit{local[l], object} : SceneHit{};
+      if (found[i + l]) {
+        hits[i + l].local = local[l];
+        hits[i + l].object = object;
+      } else {
+        hits[i + l] = kMiss;
+      }
     }
     i += static_cast<std::size_t>(n);
   }
