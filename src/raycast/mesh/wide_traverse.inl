@@ -362,8 +362,9 @@ inline std::uint32_t leaf_groups(std::uint32_t ref) { return ((ref >> 29) & 3u) 
 // nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
 // first hit (kAny), or every hit appended to `out` (kAll).
 template <Query Q, class Node, int Oct>
-bool walk(const MeshBvh& bvh, const RayData& p, float tmax_s, MeshBvhHit* hit,
-          std::vector<MeshBvhHit>* out, TraversalEntry* stack) {
+[[gnu::always_inline]] inline bool walk(const MeshBvh& bvh, const RayData& p, float tmax_s,
+                                        MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+                                        TraversalEntry* stack) {
   const Node* nodes = node_array<Node>(bvh);
   V8 tmax = splat(tmax_s);
   int top = 0;
