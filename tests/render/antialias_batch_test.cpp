@@ -13,6 +13,7 @@
 #include "render/renderer.h"
 #include "scene/loader.h"
 #include "scene/scene_packets.h"
+#include "support/scene_text.h"
 
 namespace raycast {
 namespace {
@@ -53,22 +54,7 @@ TEST(AntialiasBatch, Method1_BatchesGiveTheOneByOneImage) {
   }
 }
 
-// An inline mesh entry of the scene format: a displaced octa-sphere.
-std::string mesh_entry(int n, const std::string& extra) {
-  const TriangleSoup soup = make_octa_sphere(n, 0.1);
-  std::ostringstream s;
-  s.precision(9);
-  s << "  - mesh:\n      vertices: [";
-  for (std::size_t i = 0; i < soup.positions.size(); ++i)
-    s << (i ? ", " : "") << "[" << soup.positions[i].x << ", " << soup.positions[i].y << ", "
-      << soup.positions[i].z << "]";
-  s << "]\n      triangles: [";
-  for (std::size_t i = 0; i < soup.triangles.size(); ++i)
-    s << (i ? ", " : "") << "[" << soup.triangles[i][0] << ", " << soup.triangles[i][1] << ", "
-      << soup.triangles[i][2] << "]";
-  s << "]\n" << extra;
-  return s.str();
-}
+using testing::octa_sphere_entry;
 
 TEST(AntialiasBatch, Method1_CameraPacketsGiveTheSingleRayImage) {
   // A sphere light (shading draws random numbers), a mirror mesh and a textured plane.
@@ -86,10 +72,10 @@ lights:
   - {type: sphere, center: [4, 5, -3], radius: 0.6, samples: 2, color: [1, 1, 1], intensity: 0.5}
 objects:
   - {plane: {normal: [0, 1, 0], point: [0, -0.6, 0]}, material: floor}
-)") + mesh_entry(6, "    transform: [{translate: [-0.5, 0.4, 0]}]\n    material: mirror\n") +
-      mesh_entry(3,
-                 "    transform: [{scale: 0.6}, {translate: [0.9, 1.0, -0.8]}]\n"
-                 "    material: clay\n"));
+)") + octa_sphere_entry(6, "    transform: [{translate: [-0.5, 0.4, 0]}]\n    material: mirror\n") +
+      octa_sphere_entry(3,
+                        "    transform: [{scale: 0.6}, {translate: [0.9, 1.0, -0.8]}]\n"
+                        "    material: clay\n"));
   ASSERT_TRUE(ScenePackets(scene).usable());
   // Method 1 (both passes batched) and variance (its first pass).
   for (const AntialiasMethod method : {AntialiasMethod::kNeighbour, AntialiasMethod::kVariance}) {

@@ -12,26 +12,12 @@
 #include "render/renderer.h"
 #include "scene/loader.h"
 #include "scene/scene_packets.h"
+#include "support/scene_text.h"
 
 namespace raycast {
 namespace {
 
-// An inline mesh entry of the scene format: a displaced octa-sphere.
-std::string mesh_entry(int n, const std::string& extra) {
-  const TriangleSoup soup = make_octa_sphere(n, 0.1);
-  std::ostringstream s;
-  s.precision(9);
-  s << "  - mesh:\n      vertices: [";
-  for (std::size_t i = 0; i < soup.positions.size(); ++i)
-    s << (i ? ", " : "") << "[" << soup.positions[i].x << ", " << soup.positions[i].y << ", "
-      << soup.positions[i].z << "]";
-  s << "]\n      triangles: [";
-  for (std::size_t i = 0; i < soup.triangles.size(); ++i)
-    s << (i ? ", " : "") << "[" << soup.triangles[i][0] << ", " << soup.triangles[i][1] << ", "
-      << soup.triangles[i][2] << "]";
-  s << "]\n" << extra;
-  return s.str();
-}
+using testing::octa_sphere_entry;
 
 const char* const kHead =
     R"(camera: {type: perspective, position: [0, 1.6, -5], look_at: [0, 0.4, 0], up: [0, 1, 0], fov: 45}
@@ -49,10 +35,11 @@ objects:
 )";
 
 Scene mesh_scene() {
-  return load_scene_text(std::string(kHead) +
-                         mesh_entry(6,
-                                    "    transform: [{scale: 1.2}, {translate: [0, 0.5, 0]}]\n"
-                                    "    material: clay\n"));
+  return load_scene_text(
+      std::string(kHead) +
+      octa_sphere_entry(6,
+                        "    transform: [{scale: 1.2}, {translate: [0, 0.5, 0]}]\n"
+                        "    material: clay\n"));
 }
 
 Scene mixed_scene() {
@@ -61,10 +48,10 @@ Scene mixed_scene() {
   return load_scene_text(
       std::string(kHead) +
       "  - {plane: {normal: [0, 1, 0], point: [0, -0.6, 0]}, material: floor}\n" +
-      mesh_entry(6, "    transform: [{translate: [-0.5, 0.4, 0]}]\n    material: mirror\n") +
-      mesh_entry(3,
-                 "    transform: [{scale: 0.4}, {translate: [0.9, 1.2, -0.8]}]\n"
-                 "    material: clay\n") +
+      octa_sphere_entry(6, "    transform: [{translate: [-0.5, 0.4, 0]}]\n    material: mirror\n") +
+      octa_sphere_entry(3,
+                        "    transform: [{scale: 0.4}, {translate: [0.9, 1.2, -0.8]}]\n"
+                        "    material: clay\n") +
       "  - {sphere: {center: [0.6, 0.5, 1.4], radius: 1.0}, material: glass}\n");
 }
 

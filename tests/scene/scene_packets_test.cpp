@@ -13,6 +13,7 @@
 #include "mesh/procedural.h"
 #include "scene/scene.h"
 #include "scene/scene_packets.h"
+#include "support/objects.h"
 #include "support/random.h"
 
 namespace raycast {
@@ -20,17 +21,10 @@ namespace {
 
 constexpr std::int32_t kUntouched = -7;
 
-Object mesh_object(const TriangleSoup& soup, std::optional<Transform> xf = std::nullopt) {
-  Object o;
-  o.shape = MeshShape{make_mesh(soup.positions, soup.triangles)};
-  o.xf = xf;
-  return o;
-}
+using testing::object_of;
 
-Object shape_object(ShapeVariant shape) {
-  Object o;
-  o.shape = std::move(shape);
-  return o;
+Object mesh_object(const TriangleSoup& soup, std::optional<Transform> xf = std::nullopt) {
+  return object_of(MeshShape{make_mesh(soup.positions, soup.triangles)}, std::move(xf));
 }
 
 // The named scenes; every one has a mesh and at most three bounded objects (a usable plan).
@@ -47,12 +41,12 @@ Scene make_scene(const std::string& name) {
   } else if (name == "mixed") {
     // A plane the mesh sits in (hits of both near the same t), a sphere cutting the mesh, a
     // sphere behind it.
-    s.objects = {shape_object(make_plane({0, 1, 0}, {0, -0.7, 0})), mesh_object(ball),
-                 shape_object(make_sphere({0.8, 0.3, 0.2}, 0.45)),
-                 shape_object(make_sphere({0, 0, -3}, 1.5))};
+    s.objects = {object_of(make_plane({0, 1, 0}, {0, -0.7, 0})), mesh_object(ball),
+                 object_of(make_sphere({0.8, 0.3, 0.2}, 0.45)),
+                 object_of(make_sphere({0, 0, -3}, 1.5))};
   } else if (name == "two meshes") {
     s.objects = {mesh_object(small, Transform::translate({0.6, 0.2, 0.4})),
-                 shape_object(make_plane({0.1, 1, 0}, {0, -0.9, 0})), mesh_object(ball)};
+                 object_of(make_plane({0.1, 1, 0}, {0, -0.9, 0})), mesh_object(ball)};
   }
   s.build();
   return s;
@@ -89,8 +83,8 @@ TEST(ScenePackets, UsableOnlyForMeshScenesItCanRepeat) {
   for (const char* name : {"mesh", "moved mesh", "mixed", "two meshes"})
     EXPECT_TRUE(ScenePackets(make_scene(name)).usable()) << name;
   Scene analytic;
-  analytic.objects = {shape_object(make_plane({0, 1, 0}, {0, 0, 0})),
-                      shape_object(make_sphere({0, 1, 0}, 1))};
+  analytic.objects = {object_of(make_plane({0, 1, 0}, {0, 0, 0})),
+                      object_of(make_sphere({0, 1, 0}, 1))};
   analytic.build();
   EXPECT_FALSE(ScenePackets(analytic).usable());  // no mesh: nothing to gain
   // ObjectSet orders four or more bounded objects per ray: not repeated.
