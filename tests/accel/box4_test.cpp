@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "corner_rays.h"
 #include "support/random.h"
 
 namespace raycast {
@@ -97,17 +98,8 @@ TEST(Box4, RaysThroughCornersAndAlongFaces_Pass) {
   for (int n = 0; n < 4000; ++n) {
     const std::vector<Aabb> boxes = random_boxes(rng, 10);
     const Aabb& b = boxes[std::size_t(n % 4)];
-    // Aim at a corner, or slide along a face (one direction component 0, origin on the plane).
-    const Vec3 corner{n & 1 ? b.hi.x : b.lo.x, n & 2 ? b.hi.y : b.lo.y, n & 4 ? b.hi.z : b.lo.z};
-    Ray ray;
-    ray.o = corner + rng.in_box(30);
-    ray.d = corner - ray.o;
-    if (n % 5 == 0) {
-      const int a = n / 5 % 3;
-      ray.o[a] = corner[a];
-      ray.d[a] = n % 2 ? 0.0 : -0.0;
-    }
-    if (n % 7 == 0) ray.tmax = 1;  // ends on the corner
+    // Aim at a corner, or slide along a face (testing::corner_ray).
+    const Ray ray = testing::corner_ray(b, n & 7, n, rng);
     check(boxes, ray, "corner", n);
   }
 }

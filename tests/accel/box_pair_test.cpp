@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include "corner_rays.h"
 #include "support/random.h"
 
 namespace raycast {
@@ -67,18 +68,8 @@ TEST(BoxPair, RaysThroughCornersAndAlongFaces_AreTheSlabTest) {
   for (int n = 0; n < 4000; ++n) {
     const Aabb a = random_box(rng, 10), b = random_box(rng, 10);
     const Aabb& box = n % 2 ? a : b;
-    // Aim at a corner, or slide along a face (one direction component 0, origin on the plane).
-    const Vec3 corner{n & 2 ? box.hi.x : box.lo.x, n & 4 ? box.hi.y : box.lo.y,
-                      n & 8 ? box.hi.z : box.lo.z};
-    Ray ray;
-    ray.o = corner + rng.in_box(30);
-    ray.d = corner - ray.o;
-    if (n % 5 == 0) {
-      const int axis = n / 5 % 3;
-      ray.o[axis] = corner[axis];
-      ray.d[axis] = n % 2 ? 0.0 : -0.0;
-    }
-    if (n % 7 == 0) ray.tmax = 1;  // ends on the corner
+    // Aim at a corner, or slide along a face (testing::corner_ray).
+    const Ray ray = testing::corner_ray(box, n >> 1 & 7, n, rng);
     check(a, b, ray, "corner", n);
   }
 }
