@@ -52,6 +52,19 @@ def final_after(server, previous_frame, reloads=None):
                        and (reloads is None or s["reloads"] >= reloads))
 
 
+def settled(server, quiet=1.0):
+    """The state once the render loop is idle: final, with the same frame and reload count over
+    `quiet` seconds (ten of the file watcher's 100 ms polls, so a reload of a file written just
+    before has started and finished)."""
+    state = server.wait(lambda s: s["final"])
+    while True:
+        time.sleep(quiet)
+        again = server.wait(lambda s: s["final"])
+        if (again["frame"], again["reloads"]) == (state["frame"], state["reloads"]):
+            return again
+        state = again
+
+
 def image(server):
     status, headers, data = server.request("GET", "/image.png")
     assert status == 200 and headers["Content-Type"] == "image/png", (status, headers)
@@ -245,8 +258,9 @@ def main():
         assert server.get_json("/state")["camera"]["fov"] == 35  # nothing bad was applied
 
         # Open pages share one render loop: 16 event streams at most, more get 503, and opening
-        # them starts no rendering.
-        frame_before = server.get_json("/state")["frame"]
+        # them starts no rendering. The camera save above rewrote the scene file: its reload and
+        # render finish first (an asynchronous frame would otherwise land in the window).
+        frame_before = settled(server)["frame"]
         import http.client
         streams = []
         for _ in range(16):
