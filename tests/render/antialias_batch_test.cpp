@@ -59,20 +59,9 @@ using testing::octa_sphere_entry;
 TEST(AntialiasBatch, Method1_CameraPacketsGiveTheSingleRayImage) {
   // A sphere light (shading draws random numbers), a mirror mesh and a textured plane.
   const Scene scene = load_scene_text(
-      std::string(
-          R"(camera: {type: perspective, position: [0, 1.6, -5], look_at: [0, 0.4, 0], up: [0, 1, 0], fov: 45}
-image: {width: 45, height: 29, samples: 1}
-render: {integrator: whitted, max_depth: 4, background: [0.3, 0.4, 0.7], ambient: [0.1, 0.1, 0.1]}
-materials:
-  floor: {texture: {checker: {colors: [[0.9, 0.9, 0.85], [0.25, 0.3, 0.3]], scale: 0.5}}}
-  clay: {color: [0.8, 0.45, 0.3], specular: 0.4, shininess: 50}
-  mirror: {color: [0.9, 0.9, 0.9], reflection: 0.7, specular: 0.5, shininess: 80}
-lights:
-  - {type: point, position: [-5, 8, -6], color: [1, 1, 1], intensity: 0.8}
-  - {type: sphere, center: [4, 5, -3], radius: 0.6, samples: 2, color: [1, 1, 1], intensity: 0.5}
-objects:
-  - {plane: {normal: [0, 1, 0], point: [0, -0.6, 0]}, material: floor}
-)") + octa_sphere_entry(6, "    transform: [{translate: [-0.5, 0.4, 0]}]\n    material: mirror\n") +
+      testing::lit_scene_head(45, 29) +
+      "  - {plane: {normal: [0, 1, 0], point: [0, -0.6, 0]}, material: floor}\n" +
+      octa_sphere_entry(6, "    transform: [{translate: [-0.5, 0.4, 0]}]\n    material: mirror\n") +
       octa_sphere_entry(3,
                         "    transform: [{scale: 0.6}, {translate: [0.9, 1.0, -0.8]}]\n"
                         "    material: clay\n"));

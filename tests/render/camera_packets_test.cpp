@@ -19,24 +19,9 @@ namespace {
 
 using testing::octa_sphere_entry;
 
-const char* const kHead =
-    R"(camera: {type: perspective, position: [0, 1.6, -5], look_at: [0, 0.4, 0], up: [0, 1, 0], fov: 45}
-image: {width: 37, height: 23, samples: 1}
-render: {integrator: whitted, max_depth: 4, background: [0.3, 0.4, 0.7], ambient: [0.1, 0.1, 0.1]}
-materials:
-  floor: {texture: {checker: {colors: [[0.9, 0.9, 0.85], [0.25, 0.3, 0.3]], scale: 0.5}}}
-  clay: {color: [0.8, 0.45, 0.3], specular: 0.4, shininess: 50}
-  mirror: {color: [0.9, 0.9, 0.9], reflection: 0.7, specular: 0.5, shininess: 80}
-  glass: {color: [0.95, 0.97, 1.0], ambient: 0, diffuse: 0, specular: 0.8, shininess: 200, transmission: 0.9, ior: 1.5, fresnel: true}
-lights:
-  - {type: point, position: [-5, 8, -6], color: [1, 1, 1], intensity: 0.8}
-  - {type: sphere, center: [4, 5, -3], radius: 0.6, samples: 2, color: [1, 1, 1], intensity: 0.5}
-objects:
-)";
-
 Scene mesh_scene() {
   return load_scene_text(
-      std::string(kHead) +
+      testing::lit_scene_head(37, 23) +
       octa_sphere_entry(6,
                         "    transform: [{scale: 1.2}, {translate: [0, 0.5, 0]}]\n"
                         "    material: clay\n"));
@@ -46,7 +31,7 @@ Scene mixed_scene() {
   // Two meshes (one small, in front of the glass), then a glass sphere partly behind the mirror
   // mesh: rays meet objects later in the walk beyond an earlier hit.
   return load_scene_text(
-      std::string(kHead) +
+      testing::lit_scene_head(37, 23) +
       "  - {plane: {normal: [0, 1, 0], point: [0, -0.6, 0]}, material: floor}\n" +
       octa_sphere_entry(6, "    transform: [{translate: [-0.5, 0.4, 0]}]\n    material: mirror\n") +
       octa_sphere_entry(3,
