@@ -307,14 +307,31 @@ std::shared_ptr<const Mesh> make_mesh(std::vector<Vec3f> positions,
 
 namespace {
 
+// One component of a ray, read by an 8-byte load of its own. Callers write their Ray in pieces
+// of the compiler's choosing (the bench: o.x and o.y in one 16-byte store, o.z alone, d.x and d.y
+// together, d.z alone) just before the call, and a 16-byte load that spans two such stores (GCC
+// paired d.y with d.z) cannot take its bytes from the store buffer: it waits until both stores
+// have reached the cache (the hottest instruction of this function in perf, session 11). The
+// empty asm keeps the value a scalar of its own, so GCC cannot merge neighbouring loads.
+[[gnu::always_inline]] inline double ray_component(const double& x) {
+  double v = x;
+#if defined(__x86_64__)
+  asm("" : "+x"(v));
+#endif
+  return v;
+}
+
 // to_mesh_ray's body, inlined into intersect, occluded and the per-lane loop of intersect8 (a
 // call per lane was ~10% of intersect8's instructions).
 [[gnu::always_inline]] inline MeshRay convert_ray(const Ray& ray, double& scale) {
+  const double ox = ray_component(ray.o.x), oy = ray_component(ray.o.y),
+               oz = ray_component(ray.o.z), dx = ray_component(ray.d.x),
+               dy = ray_component(ray.d.y), dz = ray_component(ray.d.z);
   // Scale d by a power of two (exact) so that its largest component lies in [1, 2): then it is a
   // normal float whatever the caller's units, and t scales by the same power. The exponent is read
   // from the bits (the direction is finite and non-zero: is_valid rays only). std::fabs and
   // std::max rather than abs/max_component: the same exponent, without branches.
-  const double m = std::max(std::fabs(ray.d.x), std::max(std::fabs(ray.d.y), std::fabs(ray.d.z)));
+  const double m = std::max(std::fabs(dx), std::max(std::fabs(dy), std::fabs(dz)));
   const int e = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7FF) - 1023;
   double inv_scale;
   if (e > -1022 && e < 1022) [[likely]] {
@@ -325,10 +342,10 @@ namespace {
     inv_scale = 1 / scale;
   }
   MeshRay r;
-  r.o = Vec3f(ray.o);
-  r.d = Vec3f(ray.d * scale);
-  r.tmin = round_down(ray.tmin * inv_scale);
-  r.tmax = round_up(ray.tmax * inv_scale);
+  r.o = Vec3f(Vec3{ox, oy, oz});
+  r.d = Vec3f(Vec3{dx, dy, dz} * scale);
+  r.tmin = round_down(ray_component(ray.tmin) * inv_scale);
+  r.tmax = round_up(ray_component(ray.tmax) * inv_scale);
   return r;
 }
 
@@ -370,12 +387,18 @@ Aabb bounds(const MeshShape& s) { return s.mesh->box; }
 bool intersect(const Mesh& m, const Ray& ray, LocalHit& hit) {
   double scale;
   const MeshRay r = convert_ray(ray, scale);
-  MeshBvhHit h;
-  // The kernel called from here (intersect_closest without its call level).
-  if (!with_traversal_stack(m.bvh, [&](TraversalEntry* stack) {
-        return kernels_in_use().closest(m.bvh, r, h, stack);
-      }))
-    return false;
+  LaneArray<MeshBvhHit, 1> hl;  // no zero-fill: the kernel writes it when it returns true
+  MeshBvhHit& h = hl[0];
+  // The kernel called from here (intersect_closest, which also handles trees too deep for the
+  // local stack, without its call level and without a lambda whose captures went through memory).
+  bool found;
+  if (traversal_stack_size(m.bvh) <= kLocalTraversalStack) [[likely]] {
+    TraversalEntry stack[kLocalTraversalStack];  // uninitialised: the kernel writes before it reads
+    found = kernels_in_use().closest(m.bvh, r, h, stack);
+  } else {
+    found = intersect_closest(m.bvh, r, h);
+  }
+  if (!found) return false;
   // The double refinement and the record for the winning hit only.
   const double t = std::clamp(refine_hit(m, h, ray, scale), ray.tmin, ray.tmax);
   hit = LocalHit{t, static_cast<std::int32_t>(h.source), static_cast<std::int32_t>(h.triangle),
