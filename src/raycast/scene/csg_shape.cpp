@@ -296,60 +296,66 @@ struct Gather {
 // iv[0, leaves) with `present` marking the non-empty ones. Returns 1 when filled, 0 when the tree
 // is outside all along [tmin, tmax] (a leaf it needs misses the segment), -1 when a leaf gave two
 // intervals (a cone, by rounding): the gather answers then.
+// One leaf's interval on its own space's ray `local`: 1 when it has one, 0 when it is empty,
+// -1 when it has two (a cone, by rounding).
+int leaf_interval(CsgTree::LeafKind kind, const Object& object, const Ray& local, LeafInterval& v) {
+  switch (kind) {
+    case CsgTree::LeafKind::kSphere: {
+      const Sphere& s = *std::get_if<Sphere>(&object.shape);
+      const Vec3 o = local.o - s.center;
+      const double oo = dot(o, o);
+      // Outside and moving away: both roots negative (see intersect(Sphere)), before a tmin
+      // >= 0, as the gather skips it.
+      if (local.tmin >= 0 && oo > s.radius * s.radius && dot(o, local.d) > 0) return 0;
+      v.part0 = 0;
+      v.part1 = 1;
+      return sphere_line_roots(o, local.d, oo, s.radius, v.t0, v.t1);
+    }
+    case CsgTree::LeafKind::kBox:
+      return box_line_interval(*std::get_if<Box>(&object.shape), local, v.t0, v.part0, v.t1,
+                               v.part1);
+    case CsgTree::LeafKind::kFrustum: {
+      LineInterval two[2];
+      const int k = frustum_solid_intervals(*leaf_frustum(object.shape), local, two);
+      v = {two[0].in.t, two[0].out.t, two[0].in.part, two[0].out.part};
+      return k == 2 ? -1 : k;
+    }
+    case CsgTree::LeafKind::kPlane: {
+      // spans(Plane)'s interval: the half-space behind the normal.
+      const Plane& p = *std::get_if<Plane>(&object.shape);
+      const double dn = dot(p.n, local.d), on = dot(p.n, local.o);
+      const double t = (p.offset - on) / dn;
+      if (dn == 0 || !std::isfinite(t)) {
+        v = {-kInfinity, kInfinity, kNoSurface, kNoSurface};
+        return on <= p.offset;
+      }
+      v = dn > 0 ? LeafInterval{-kInfinity, t, kNoSurface, 0}
+                 : LeafInterval{t, kInfinity, 0, kNoSurface};
+      return 1;
+    }
+    case CsgTree::LeafKind::kGeneric:
+      break;  // not taken: finish_csg_tree sets interval_leaves only without these
+  }
+  return -1;
+}
+
+// The leaves' intervals for interval_crossing (every leaf one of the kinds it takes), into
+// iv[0, leaves) with `present` marking the non-empty ones. Returns 1 when filled, 0 when the tree
+// is outside all along [tmin, tmax] (a leaf it needs misses the segment), -1 when a leaf gave two
+// intervals: the gather answers then.
 int leaf_intervals(const CsgTree& tree, const Ray& ray, LeafInterval* iv, std::uint64_t& present) {
   present = 0;
   const std::size_t n = tree.leaves.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Object& object = tree.leaves[i];
-    std::optional<Ray> moved;
-    const Ray& local = object.xf ? moved.emplace(to_object_space(object, ray)) : ray;
     LeafInterval& v = iv[i];
-    bool some = false;
-    switch (tree.leaf_kind[i]) {
-      case CsgTree::LeafKind::kSphere: {
-        const Sphere& s = *std::get_if<Sphere>(&object.shape);
-        const Vec3 o = local.o - s.center;
-        const double oo = dot(o, o);
-        // Outside and moving away: both roots negative (see intersect(Sphere)), before a tmin
-        // >= 0, as the gather skips it.
-        if (ray.tmin >= 0 && oo > s.radius * s.radius && dot(o, local.d) > 0) break;
-        some = sphere_line_roots(o, local.d, oo, s.radius, v.t0, v.t1);
-        v.part0 = 0;
-        v.part1 = 1;
-        break;
-      }
-      case CsgTree::LeafKind::kBox:
-        some = box_line_interval(*std::get_if<Box>(&object.shape), local, v.t0, v.part0, v.t1,
-                                 v.part1);
-        break;
-      case CsgTree::LeafKind::kFrustum: {
-        LineInterval two[2];
-        const int k = frustum_solid_intervals(*leaf_frustum(object.shape), local, two);
-        if (k == 2) return -1;
-        some = k == 1;
-        v = {two[0].in.t, two[0].out.t, two[0].in.part, two[0].out.part};
-        break;
-      }
-      case CsgTree::LeafKind::kPlane: {
-        // spans(Plane)'s interval: the half-space behind the normal.
-        const Plane& p = *std::get_if<Plane>(&object.shape);
-        const double dn = dot(p.n, local.d), on = dot(p.n, local.o);
-        const double t = (p.offset - on) / dn;
-        if (dn == 0 || !std::isfinite(t)) {
-          some = on <= p.offset;
-          v = {-kInfinity, kInfinity, kNoSurface, kNoSurface};
-        } else {
-          some = true;
-          v = dn > 0 ? LeafInterval{-kInfinity, t, kNoSurface, 0}
-                     : LeafInterval{t, kInfinity, 0, kNoSurface};
-        }
-        break;
-      }
-      case CsgTree::LeafKind::kGeneric:
-        return -1;  // not taken: finish_csg_tree sets interval_leaves only without these
-    }
+    const CsgTree::LeafKind kind = tree.leaf_kind[i];
+    // No ray copy for leaves without a transform of their own (most).
+    const int some = object.xf ? leaf_interval(kind, object, to_object_space(object, ray), v)
+                               : leaf_interval(kind, object, ray, v);
+    if (some < 0) return -1;
     const bool needed = (tree.required >> i) & 1;
-    if (!some) {
+    if (some == 0) {
       if (needed) return 0;
       continue;
     }
