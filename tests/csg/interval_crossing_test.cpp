@@ -107,6 +107,46 @@ TEST(IntervalCrossing, RandomTreesAndIntervals_SameAsFirstCrossing) {
   EXPECT_GT(ties, 10000);  // crossings of several leaves at one t are exercised
 }
 
+// Two leaves (the unrolled walk), every operation and flip, on a fine grid of ends.
+TEST(IntervalCrossing, TwoLeaves_SameAsFirstCrossing) {
+  std::mt19937 rng(12);
+  std::uniform_int_distribution<int> grid(-4, 4), len(0, 2), op(0, 2), coin(0, 7);
+  int hits = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    CsgFormula f;
+    const std::int32_t operands[] = {csg_leaf_code(0), csg_leaf_code(1)};
+    f.add(static_cast<CsgOp>(op(rng)), operands);
+    f.finish(2, std::vector<char>{static_cast<char>(coin(rng) == 0), 0});
+    LeafInterval iv[2];
+    for (std::int32_t i = 0; i < 2; ++i) {
+      iv[i] = {static_cast<double>(grid(rng)), 0, 2 * i, 2 * i + 1};
+      iv[i].t1 = iv[i].t0 + len(rng);
+      if (coin(rng) == 0) iv[i] = {-kInfinity, iv[i].t1, kNoSurface, iv[i].part1};
+      if (coin(rng) == 0) iv[i] = {iv[i].t0, kInfinity, iv[i].part0, kNoSurface};
+    }
+    if (trial % 50 == 0) iv[trial % 100 == 0 ? 0 : 1].t1 = std::numeric_limits<double>::quiet_NaN();
+    LeafEnd ends[4];
+    for (std::uint16_t i = 0; i < 2; ++i) {
+      ends[2 * i] = {iv[i].t0, nullptr, iv[i].part0, i, false};
+      ends[2 * i + 1] = {iv[i].t1, nullptr, iv[i].part1, i, true};
+    }
+    double tmin = grid(rng), tmax = grid(rng);
+    if (tmin > tmax) std::swap(tmin, tmax);
+    if (coin(rng) == 0) tmax = kInfinity;
+    LocalHit want, got;
+    const bool expect = first_crossing(f, ends, tmin, tmax, want);
+    ASSERT_EQ(interval_crossing(f, iv, 3, tmin, tmax, got), expect) << "trial " << trial;
+    if (!expect) continue;
+    ++hits;
+    EXPECT_EQ(got.t, want.t) << "trial " << trial;
+    EXPECT_EQ(got.part, want.part) << "trial " << trial;
+    EXPECT_EQ(got.leaf, want.leaf) << "trial " << trial;
+    EXPECT_EQ(got.flip, want.flip) << "trial " << trial;
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(hits, 5000);
+}
+
 // A random tree of the leaves the interval walk takes, on a grid of quarters so that box faces,
 // cylinder caps and planes coincide and spheres share centres and radii.
 std::string convex_object(std::mt19937& rng, int depth, const std::string& indent) {
