@@ -292,10 +292,6 @@ struct Gather {
   }
 };
 
-// The leaves' intervals for interval_crossing (every leaf one of the kinds it takes), into
-// iv[0, leaves) with `present` marking the non-empty ones. Returns 1 when filled, 0 when the tree
-// is outside all along [tmin, tmax] (a leaf it needs misses the segment), -1 when a leaf gave two
-// intervals (a cone, by rounding): the gather answers then.
 // One leaf's interval on its own space's ray `local`: 1 when it has one, 0 when it is empty,
 // -1 when it has two (a cone, by rounding).
 int leaf_interval(CsgTree::LeafKind kind, const Object& object, const Ray& local, LeafInterval& v) {
