@@ -29,6 +29,7 @@ void CsgFormula::finish(std::size_t leaves, std::span<const char> leaf_flipped) 
   is_tree_ = leaves_ <= kMaxLeaves && !nodes_.empty() && uses[0] == 0;
   for (std::size_t k = 1; k < uses.size(); ++k) is_tree_ = is_tree_ && uses[k] == 1;
   table_.clear();
+  subtracted_ = 0;
   if (!is_tree_) return;
   // Flip parities, top-down: operands have larger indices than their node.
   std::vector<char> node_flip(nodes_.size(), 0);
@@ -44,6 +45,9 @@ void CsgFormula::finish(std::size_t leaves, std::span<const char> leaf_flipped) 
         leaf_flip_[static_cast<std::size_t>(-code - 1)] ^= f;
     }
   }
+  subtracted_ = 0;
+  for (std::size_t i = 0; i < leaves_; ++i)
+    if (leaf_flip_[i] != leaf_flipped_[i]) subtracted_ |= std::uint64_t{1} << i;
   if (leaves_ > kTableLeaves) return;
   const std::uint64_t masks = std::uint64_t{1} << leaves_;
   table_.assign((masks + 63) / 64, 0);

@@ -46,6 +46,9 @@ class CsgFormula {
   /// toggled by every difference that subtracts it (as combine_spans toggles it level by level).
   bool leaf_flip(std::size_t leaf) const { return leaf_flip_[leaf] != 0; }
   bool leaf_flipped(std::size_t leaf) const { return leaf_flipped_[leaf] != 0; }
+  /// The leaves subtracted an odd number of times (bit per leaf): the tree's membership grows
+  /// with each other leaf's and shrinks with each of these.
+  std::uint64_t subtracted() const { return subtracted_; }
 
  private:
   bool evaluate(std::int32_t code, std::uint64_t mask) const;
@@ -54,6 +57,7 @@ class CsgFormula {
   std::vector<std::int32_t> operands_;
   std::vector<std::uint64_t> table_;
   std::vector<char> leaf_flip_, leaf_flipped_;
+  std::uint64_t subtracted_ = 0;
   std::size_t leaves_ = 0;
   bool is_tree_ = false;
 };

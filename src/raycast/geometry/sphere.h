@@ -1,5 +1,9 @@
 #pragma once
 // Spheres, whole or partial (pbrt-style z range and phi_max), in object space.
+#include <cmath>
+#include <limits>
+#include <utility>
+
 #include "geometry/shape.h"
 
 namespace raycast {
@@ -36,5 +40,34 @@ bool is_closed(const Sphere& s);
 /// Both crossings of the full sphere's line (t0 <= t1), in units of ray.d; false when the line
 /// misses. Shared by the sphere and the ellipsoid.
 bool sphere_line_roots(const Vec3& o, const Vec3& d, double radius, double& t0, double& t1);
+
+/// sphere_line_roots with dot(o, o) already computed (`oo`), inline for CSG's interval walk; the
+/// same arithmetic, so the same roots bit for bit.
+inline bool sphere_line_roots(const Vec3& o, const Vec3& d, double oo, double radius, double& t0,
+                              double& t1) {
+  // Hearn and Baker's refinement (used by pbrt-v4): b^2 - 4ac = 4a (r^2 - |f|^2) with f the
+  // line's closest point to the centre, computed as (r - |f|)(r + |f|) without cancellation.
+  const double a = dot(d, d);
+  const double b = 2 * dot(o, d);
+  const double c = oo - radius * radius;
+  const Vec3 f = o - (b / (2 * a)) * d;
+  const double f2 = dot(f, f);
+  // Early out before both square roots: |f|^2 above r^2 (1 + 8 eps) makes the rounded |f|
+  // exceed r (sqrt and the two products round by at most 3 eps), which the test below rejects.
+  if (f2 > radius * radius * (1 + 8 * std::numeric_limits<double>::epsilon())) return false;
+  const double lf = std::sqrt(f2);
+  const double disc = 4 * a * (radius + lf) * (radius - lf);
+  if (!(disc >= 0)) return false;
+  const double root = std::sqrt(disc);
+  const double q = b < 0 ? -0.5 * (b - root) : -0.5 * (b + root);
+  if (q == 0) {
+    t0 = t1 = 0;
+  } else {
+    t0 = q / a;
+    t1 = c / q;
+  }
+  if (t0 > t1) std::swap(t0, t1);
+  return true;
+}
 
 }  // namespace raycast

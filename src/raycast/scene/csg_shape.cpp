@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "csg/first_crossing.h"
+#include "csg/interval_crossing.h"
 #include "scene/ball_list.h"
 #include "scene/bounding_ball.h"
 #include "scene/csg_tree.h"
@@ -47,13 +48,17 @@ const Frustum* leaf_frustum(const ShapeVariant& shape) {
 // Whether the line through the ray may meet the tree's ball: |v|^2 |d|^2 - (v . d)^2 (|d|^2 times
 // the distance squared of the centre from the line, v = centre - o) against radius^2 |d|^2, with
 // |v|^2 shrunk by kBallSlack (far beyond the products' rounding, a few ulps of |v|^2 |d|^2).
-// Outside [1e-280, 1e300] for |v|^2 |d|^2 the rounding is not relative: no test.
-bool line_meets_ball(const CsgTree& tree, const Ray& ray) {
+// Outside [1e-280, 1e300] for |v|^2 |d|^2 the rounding is not relative: no test (kUntested).
+// Inside it |v|^2 and |d|^2 are finite, so o and d are: the interval walk takes only such rays
+// (scene queries pass no others: geometry/ray.h is_valid), the gather the rest.
+enum class BallTest { kMiss, kMeets, kUntested };
+BallTest line_meets_ball(const CsgTree& tree, const Ray& ray) {
   const Vec3 v = tree.ball_centre - ray.o;
   const double dd = dot(ray.d, ray.d), k = dot(v, ray.d);
   const double vvdd = dot(v, v) * dd;
-  return !(vvdd >= 1e-280 && vvdd <= 1e300 &&
-           vvdd * (1 - kBallSlack) - k * k > tree.ball_radius2 * dd);
+  if (!(vvdd >= 1e-280 && vvdd <= 1e300)) return BallTest::kUntested;
+  return vvdd * (1 - kBallSlack) - k * k > tree.ball_radius2 * dd ? BallTest::kMiss
+                                                                  : BallTest::kMeets;
 }
 
 // Whether the line o + t d may meet box b for some t in [lo, hi] (either may be infinite).
@@ -186,11 +191,10 @@ struct Gather {
     // The leaf's ray for the kinds below (a generic leaf's spans() moves it itself); most leaves
     // have no transform of their own: no copy then.
     const CsgTree::LeafKind kind = tree.leaf_kind[leaf];
+    const bool typed = kind != CsgTree::LeafKind::kGeneric && kind != CsgTree::LeafKind::kPlane;
     std::optional<Ray> moved;  // not a Ray: its default members would be stored on every call
-    const Ray& local = kind != CsgTree::LeafKind::kGeneric && object.xf
-                           ? moved.emplace(to_object_space(object, ray))
-                           : ray;
-    if (kind != CsgTree::LeafKind::kGeneric && count + 4 > kMaxEnds) {
+    const Ray& local = typed && object.xf ? moved.emplace(to_object_space(object, ray)) : ray;
+    if (typed && count + 4 > kMaxEnds) {
       overflow = true;  // a leaf of these kinds adds at most 4 ends
       return true;
     }
@@ -223,6 +227,7 @@ struct Gather {
                      nullptr, lo, hi, elo, ehi);
         break;
       }
+      case CsgTree::LeafKind::kPlane:
       case CsgTree::LeafKind::kGeneric: {
         if (!lists) lists = scratch(tree.leaves.size());
         SpanList& list = lists[leaf];
@@ -286,6 +291,75 @@ struct Gather {
     return true;
   }
 };
+
+// One leaf's interval on its own space's ray `local`: 1 when it has one, 0 when it is empty,
+// -1 when it has two (a cone, by rounding).
+int leaf_interval(CsgTree::LeafKind kind, const Object& object, const Ray& local, LeafInterval& v) {
+  switch (kind) {
+    case CsgTree::LeafKind::kSphere: {
+      const Sphere& s = *std::get_if<Sphere>(&object.shape);
+      const Vec3 o = local.o - s.center;
+      const double oo = dot(o, o);
+      // Outside and moving away: both roots negative (see intersect(Sphere)), before a tmin
+      // >= 0, as the gather skips it.
+      if (local.tmin >= 0 && oo > s.radius * s.radius && dot(o, local.d) > 0) return 0;
+      v.part0 = 0;
+      v.part1 = 1;
+      return sphere_line_roots(o, local.d, oo, s.radius, v.t0, v.t1);
+    }
+    case CsgTree::LeafKind::kBox:
+      return box_line_interval(*std::get_if<Box>(&object.shape), local, v.t0, v.part0, v.t1,
+                               v.part1);
+    case CsgTree::LeafKind::kFrustum: {
+      LineInterval two[2];
+      const int k = frustum_solid_intervals(*leaf_frustum(object.shape), local, two);
+      v = {two[0].in.t, two[0].out.t, two[0].in.part, two[0].out.part};
+      return k == 2 ? -1 : k;
+    }
+    case CsgTree::LeafKind::kPlane: {
+      // spans(Plane)'s interval: the half-space behind the normal.
+      const Plane& p = *std::get_if<Plane>(&object.shape);
+      const double dn = dot(p.n, local.d), on = dot(p.n, local.o);
+      const double t = (p.offset - on) / dn;
+      if (dn == 0 || !std::isfinite(t)) {
+        v = {-kInfinity, kInfinity, kNoSurface, kNoSurface};
+        return on <= p.offset;
+      }
+      v = dn > 0 ? LeafInterval{-kInfinity, t, kNoSurface, 0}
+                 : LeafInterval{t, kInfinity, 0, kNoSurface};
+      return 1;
+    }
+    case CsgTree::LeafKind::kGeneric:
+      break;  // not taken: finish_csg_tree sets interval_leaves only without these
+  }
+  return -1;
+}
+
+// The leaves' intervals for interval_crossing (every leaf one of the kinds it takes), into
+// iv[0, leaves) with `present` marking the non-empty ones. Returns 1 when filled, 0 when the tree
+// is outside all along [tmin, tmax] (a leaf it needs misses the segment), -1 when a leaf gave two
+// intervals: the gather answers then.
+int leaf_intervals(const CsgTree& tree, const Ray& ray, LeafInterval* iv, std::uint64_t& present) {
+  present = 0;
+  const std::size_t n = tree.leaves.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Object& object = tree.leaves[i];
+    LeafInterval& v = iv[i];
+    const CsgTree::LeafKind kind = tree.leaf_kind[i];
+    // No ray copy for leaves without a transform of their own (most).
+    const int some = object.xf ? leaf_interval(kind, object, to_object_space(object, ray), v)
+                               : leaf_interval(kind, object, ray, v);
+    if (some < 0) return -1;
+    const bool needed = (tree.required >> i) & 1;
+    if (some == 0) {
+      if (needed) return 0;
+      continue;
+    }
+    if (needed && (v.t1 < ray.tmin || v.t0 > ray.tmax)) return 0;
+    present |= std::uint64_t{1} << i;
+  }
+  return 1;
+}
 
 }  // namespace
 
@@ -361,6 +435,8 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
       tree.leaf_kind[i] = CsgTree::LeafKind::kBox;
     else if (const Frustum* f = leaf_frustum(shape); f && f->is_closed())
       tree.leaf_kind[i] = CsgTree::LeafKind::kFrustum;
+    else if (std::holds_alternative<Plane>(shape))
+      tree.leaf_kind[i] = CsgTree::LeafKind::kPlane;
   }
   tree.leaf_cull.assign(tree.leaves.size(), 1);
   tree.node_cull.assign(tree.nodes.size(), 1);
@@ -388,6 +464,18 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
   tree.formula = CsgFormula{};
   for (const CsgNode& node : tree.nodes) tree.formula.add(node.op, node.operands);
   tree.formula.finish(tree.leaves.size(), tree.leaf_flipped);
+  tree.interval_leaves = tree.formula.is_tree() && tree.leaves.size() <= CsgTree::kIntervalLeaves;
+  for (const CsgTree::LeafKind kind : tree.leaf_kind)
+    tree.interval_leaves = tree.interval_leaves && kind != CsgTree::LeafKind::kGeneric;
+  tree.required = 0;
+  if (tree.interval_leaves) {
+    // Leaf i is needed when the tree is empty without it even with every leaf it grows by.
+    const std::uint64_t all = (std::uint64_t{1} << tree.leaves.size()) - 1;
+    const std::uint64_t grow = all & ~tree.formula.subtracted();
+    for (std::size_t i = 0; i < tree.leaves.size(); ++i)
+      if (!tree.formula.inside(grow & ~(std::uint64_t{1} << i)))
+        tree.required |= std::uint64_t{1} << i;
+  }
   auto out = std::make_shared<CsgTree>(std::move(tree));
   Object whole;  // the tree as an object of its own space
   whole.shape = CsgShape{out};
@@ -418,12 +506,11 @@ bool intersect_by_spans(const CsgShape& s, const Ray& ray, LocalHit& hit) {
   return false;
 }
 
-bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
+namespace {
+
+// intersect() after the ball test, by the gather.
+bool gather_walk(const CsgShape& s, const Ray& ray, LocalHit& hit) {
   const CsgTree& tree = *s.tree;
-  // The tree's ball first: a ray that misses it misses every leaf, and rays that pass the
-  // object's box (in world space, loose for turned objects) often miss it
-  // (docs/performance-render.md, session 10).
-  if (!line_meets_ball(tree, ray)) return false;
   if (tree.formula.is_tree()) {
     Gather g(tree, ray);
     double lo = ray.tmin, hi = ray.tmax;
@@ -432,6 +519,31 @@ bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
       return first_crossing(tree.formula, std::span(g.ends, g.count), ray.tmin, ray.tmax, hit);
   }
   return intersect_by_spans(s, ray, hit);
+}
+
+}  // namespace
+
+bool intersect_by_gather(const CsgShape& s, const Ray& ray, LocalHit& hit) {
+  return line_meets_ball(*s.tree, ray) != BallTest::kMiss && gather_walk(s, ray, hit);
+}
+
+bool intersect(const CsgShape& s, const Ray& ray, LocalHit& hit) {
+  const CsgTree& tree = *s.tree;
+  // The tree's ball first: a ray that misses it misses every leaf, and rays that pass the
+  // object's box (in world space, loose for turned objects) often miss it
+  // (docs/performance-render.md, session 10).
+  const BallTest ball = line_meets_ball(tree, ray);
+  if (ball == BallTest::kMiss) return false;
+  if (tree.interval_leaves && ball == BallTest::kMeets) {
+    LeafInterval iv[CsgTree::kIntervalLeaves];
+    std::uint64_t present;
+    const int filled = leaf_intervals(tree, ray, iv, present);
+    if (filled == 0) return false;
+    if (filled > 0)
+      return interval_crossing(tree.formula, std::span(iv, tree.leaves.size()), present, ray.tmin,
+                               ray.tmax, hit);
+  }
+  return gather_walk(s, ray, hit);
 }
 
 bool occluded(const CsgShape& s, const Ray& ray) {

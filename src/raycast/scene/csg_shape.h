@@ -26,6 +26,10 @@ bool occluded(const CsgShape& s, const Ray& ray);
 /// [tmin, tmax]), which intersect() itself uses only for trees its walk does not take (more than
 /// 64 leaves or ends); the reference its walk is tested against.
 bool intersect_by_spans(const CsgShape& s, const Ray& ray, LocalHit& hit);
+/// intersect() without the interval walk (csg/interval_crossing.h) that it takes for trees of
+/// one-interval leaves: the gathered leaf ends walked by first_crossing (or the span lists, as
+/// intersect() falls back); the reference the interval walk is tested against.
+bool intersect_by_gather(const CsgShape& s, const Ray& ray, LocalHit& hit);
 /// The final solid's spans over the whole line (so rays starting inside are right).
 void spans(const CsgShape& s, const Ray& ray, SpanList& out);
 /// The leaf's surface record, its normal not yet flipped (the enclosing Object flips by hit.flip).

@@ -33,9 +33,18 @@ struct CsgTree {
   // For the nearest-hit walk, set by finish_csg_tree: each leaf's kind (its intervals computed
   // without a span list when not kGeneric), and whether a leaf's or node's box is worth testing
   // (not when the test is as dear as the leaf's own, nor when it always passes).
-  enum class LeafKind : std::uint8_t { kGeneric, kSphere, kBox, kFrustum };
+  // A half-space (kPlane) gives its span list to the gather, as kGeneric, and its one interval
+  // to the interval walk.
+  enum class LeafKind : std::uint8_t { kGeneric, kSphere, kBox, kFrustum, kPlane };
   std::vector<LeafKind> leaf_kind;
   std::vector<char> leaf_cull, node_cull;
+  // Whether the interval walk (csg/interval_crossing.h) answers nearest-hit queries: a tree of
+  // at most kIntervalLeaves leaves, each a whole sphere, a box, a closed frustum or a half-space
+  // (at most one interval on any line). `required`: the leaves without which the tree is empty
+  // (bit per leaf). Set by finish_csg_tree.
+  static constexpr std::size_t kIntervalLeaves = 16;
+  bool interval_leaves = false;
+  std::uint64_t required = 0;
   // A ball around the tree in its own space (scene/bounding_ball.h, widened), tested before the
   // walk: radius squared infinite when there is none to test. Set by finish_csg_tree.
   Vec3 ball_centre;
