@@ -240,6 +240,50 @@ void print_counts(const char* name, const MeshBvh& bvh, const std::vector<DiagRa
   line("unblocked", unblocked);
 }
 
+// Triangles under a child reference.
+double subtree_tris(const MeshBvh& bvh, std::uint32_t ref) {
+  if (ref & kLeafBit) {
+    const std::uint32_t first = ref & 0x1FFFFFFFu, count = ((ref >> 29) & 3u) + 1;
+    double n = 0;
+    for (std::uint32_t gi = first; gi < first + count; ++gi)
+      for (int l = 0; l < 4; ++l) n += bvh.groups[gi].id[l] != kNoTriangle;
+    return n;
+  }
+  const WideNode& w = bvh.nodes[ref];
+  double n = 0;
+  for (int i = 0; i < kNodeWidth; ++i)
+    if (w.used >> i & 1) n += subtree_tris(bvh, w.child[i]);
+  return n;
+}
+
+// The same tree with each node's children ordered by key (largest first): "tris" (Embree's
+// order: subtree size), or "area" (surface area).
+MeshBvh sorted_children(const MeshBvh& in, bool by_area) {
+  MeshBvh out = in;
+  for (WideNode& w : out.nodes) {
+    const int n = std::popcount(unsigned(w.used));
+    int order[kNodeWidth];
+    double key[kNodeWidth];
+    for (int i = 0; i < n; ++i) {
+      order[i] = i;
+      const float lo[3] = {w.box[0][i], w.box[1][i], w.box[2][i]};
+      const float hi[3] = {w.box[0][kNodeWidth + i], w.box[1][kNodeWidth + i],
+                           w.box[2][kNodeWidth + i]};
+      key[i] = by_area ? half_area(lo, hi) : subtree_tris(in, w.child[i]);
+    }
+    std::stable_sort(order, order + n, [&](int a, int b) { return key[a] > key[b]; });
+    const WideNode old = w;
+    for (int i = 0; i < n; ++i) {
+      w.child[i] = old.child[order[i]];
+      for (int a = 0; a < 3; ++a) {
+        w.box[a][i] = old.box[a][order[i]];
+        w.box[a][kNodeWidth + i] = old.box[a][kNodeWidth + order[i]];
+      }
+    }
+  }
+  return out;
+}
+
 // ---- Embree's builder into raycast's layout ---------------------------------------------------
 
 #ifdef RAYCAST_HAVE_EMBREE
@@ -419,8 +463,51 @@ int main(int argc, char** argv) {
   }
   std::printf("%s %s: %zu triangles, %zu shadow rays\n", argv[1], argv[2], mesh.triangles.size(),
               rays.size());
+  if (const char* ab = std::getenv("DIAG_AB_BLOCKS")) {
+    // Two trees of this build, SAH leaf blocks A and B (e.g. "4,8"), timed alternately in this
+    // process on the shadow (any hit), primary and incoherent (nearest hit) rays.
+    MeshBvhConfig ca = config, cb = config;
+    std::sscanf(ab, "%d,%d", &ca.leaf_block, &cb.leaf_block);
+    const MeshBvh ta = build_mesh_bvh(mesh.positions, mesh.triangles, ca);
+    const MeshBvh tb = build_mesh_bvh(mesh.positions, mesh.triangles, cb);
+    if (!ours.quantised) {
+      print_tree("A", ta);
+      print_tree("B", tb);
+    }
+    std::vector<DiagRay> primary, incoherent;
+    for (const BenchRay& b : primary_rays(box, 1024, 1024))
+      primary.push_back(make_ray(b.o, b.d, b.tmin, std::min(b.tmax, 1e30)));
+    for (const BenchRay& b : incoherent_rays(box, 1 << 20))
+      incoherent.push_back(make_ray(b.o, b.d, b.tmin, std::min(b.tmax, 1e30)));
+    const auto closest = [](const MeshBvh& t, const std::vector<DiagRay>& rs) {
+      std::size_t hits = 0;
+      MeshBvhHit h;
+      const double t0 = thread_cpu_s();
+      for (const DiagRay& r : rs) hits += intersect_closest(t, r.scaled, h);
+      return thread_cpu_s() - t0;
+    };
+    for (int round = 0; round < rounds; ++round) {
+      std::size_t b = 0;
+      double s[2], p[2], q[2];
+      for (int k = 0; k < 2; ++k) {
+        const MeshBvh& t = (k ^ (round & 1)) ? tb : ta;
+        const int slot = (k ^ (round & 1));
+        s[slot] = p[slot] = q[slot] = 1e30;
+        for (int pass = 0; pass < 3; ++pass) {  // the fastest of three passes
+          s[slot] = std::min(s[slot], time_ours(t, rays, b));
+          p[slot] = std::min(p[slot], closest(t, primary));
+          q[slot] = std::min(q[slot], closest(t, incoherent));
+        }
+      }
+      std::printf("  round %d, B/A speed: shadow %.3f, primary %.3f, incoherent %.3f\n", round,
+                  s[0] / s[1], p[0] / p[1], q[0] / q[1]);
+    }
+    return 0;
+  }
   print_tree("ours", ours);
   print_counts("ours", ours, rays);
+  const MeshBvh sorted = sorted_children(ours, std::getenv("DIAG_SORT_AREA") != nullptr);
+  print_counts("ours, children largest first", sorted, rays);
 
 #ifdef RAYCAST_HAVE_EMBREE
   RTCDevice device = rtcNewDevice("threads=1");
@@ -464,7 +551,11 @@ int main(int argc, char** argv) {
     const double t0 = time_ours(ours, rays, b0);
     const double t1 = time_ours(theirs, rays, b1);
     const double t2 = time_embree(b2);
+    std::size_t b3 = 0;
+    const double t3 = time_ours(sorted, rays, b3);
     const double n = double(rays.size()) * 1e-6;
+    std::printf("  round %d: ours with children largest first %.2f, /embree %.3f\n", round, n / t3,
+                t2 / t3);
     std::printf(
         "  round %d: %.2f | %.2f | %.2f; ours/embree %.3f, ours-on-embree-tree/embree %.3f "
         "(blocked %zu %zu %zu)\n",
