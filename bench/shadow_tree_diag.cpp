@@ -284,6 +284,33 @@ MeshBvh sorted_children(const MeshBvh& in, bool by_area) {
   return out;
 }
 
+// The same tree with its leaf groups re-laid in the wide tree's depth-first order, a node's leaf
+// children next to each other (the builder numbers groups in the binary tree's node order, which
+// depends on the order its tasks finish).
+void relay_groups(const MeshBvh& in, std::uint32_t ref, MeshBvh& out) {
+  WideNode& w = out.nodes[ref];
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = 0; i < kNodeWidth; ++i) {
+      if (!(w.used >> i & 1)) continue;
+      const std::uint32_t c = w.child[i];
+      if (pass == 0 && (c & kLeafBit)) {
+        const std::uint32_t first = c & 0x1FFFFFFFu, count = ((c >> 29) & 3u) + 1;
+        const std::uint32_t at = std::uint32_t(out.groups.size());
+        for (std::uint32_t g = first; g < first + count; ++g) out.groups.push_back(in.groups[g]);
+        w.child[i] = (c & ~0x1FFFFFFFu) | at;
+      } else if (pass == 1 && !(c & kLeafBit)) {
+        relay_groups(in, c, out);
+      }
+    }
+}
+
+MeshBvh relaid_groups(const MeshBvh& in) {
+  MeshBvh out = in;
+  out.groups.clear();
+  relay_groups(in, in.root, out);
+  return out;
+}
+
 // ---- Embree's builder into raycast's layout ---------------------------------------------------
 
 #ifdef RAYCAST_HAVE_EMBREE
@@ -469,7 +496,9 @@ int main(int argc, char** argv) {
     MeshBvhConfig ca = config, cb = config;
     std::sscanf(ab, "%d,%d", &ca.leaf_block, &cb.leaf_block);
     const MeshBvh ta = build_mesh_bvh(mesh.positions, mesh.triangles, ca);
-    const MeshBvh tb = build_mesh_bvh(mesh.positions, mesh.triangles, cb);
+    const MeshBvh tb = std::getenv("DIAG_RELAY")
+                           ? relaid_groups(ta)
+                           : build_mesh_bvh(mesh.positions, mesh.triangles, cb);
     if (!ours.quantised) {
       print_tree("A", ta);
       print_tree("B", tb);
