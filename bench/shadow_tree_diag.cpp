@@ -126,7 +126,16 @@ Counts count_walk(const MeshBvh& bvh, const MeshRay& r) {
       }
       c.child_hits += std::popcount(unsigned(mask));
       if (mask) {
-        const int first = std::countr_zero(unsigned(mask));
+        // DIAG_ENTER_LAST: enter the last hit child (Embree's any-hit step), push the others.
+        static const bool enter_last = std::getenv("DIAG_ENTER_LAST") != nullptr;
+        const int first =
+            enter_last ? 31 - std::countl_zero(unsigned(mask)) : std::countr_zero(unsigned(mask));
+        if (enter_last) {
+          for (int m = mask & ~(1 << first); m; m &= m - 1)
+            stack.push_back(n.child[std::countr_zero(unsigned(m))]);
+          ref = n.child[first];
+          continue;
+        }
         for (int m = mask & (mask - 1); m; m &= m - 1)
           stack.push_back(n.child[std::countr_zero(unsigned(m))]);
         ref = n.child[first];
