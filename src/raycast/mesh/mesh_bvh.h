@@ -86,7 +86,10 @@ inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
 struct MeshBvhConfig {
   int bins = 16;          // SAH bins per axis
   int max_leaf_size = 8;  // triangles per leaf (at most 4 groups of 4)
-  int leaf_block = 4;     // the SAH counts leaf cost per group of this many triangles
+  // The SAH counts leaf cost per block of this many triangles: 8, one pass of the AVX2 and
+  // AVX-512 leaf test (two groups). With 4 the tree had 21 % more nodes and smaller leaves for the
+  // same node visits per ray (docs/performance-mesh.md, session 12: shadow12).
+  int leaf_block = 8;
   double traversal_cost = 1.0;
   // Meshes of more triangles than this get quantised nodes, smaller ones float nodes (measured:
   // float wins at 1M, quantised at 10M; the threshold in between is not measured more finely).
