@@ -29,6 +29,17 @@ decltype(auto) visit_shape(const ShapeVariant& v, F&& f) {
   return std::visit(f, v);
 }
 
+/// visit_shape for surface(): composites too, whose hits are a good share of a CSG scene's.
+template <class F>
+decltype(auto) visit_surface_shape(const ShapeVariant& v, F&& f) {
+  if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
+  if (const auto* s = std::get_if<Sphere>(&v)) return f(*s);
+  if (const auto* s = std::get_if<Box>(&v)) return f(*s);
+  if (const auto* s = std::get_if<CsgShape>(&v)) return f(*s);
+  if (const auto* s = std::get_if<InstanceShape>(&v)) return f(*s);
+  return std::visit(f, v);
+}
+
 }  // namespace
 
 Aabb bounds(const Object& o) {
@@ -55,9 +66,11 @@ void spans(const Object& o, const Ray& ray, SpanList& out) {
 }
 
 SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, SurfaceNeeds needs) {
-  Ray moved;
-  const Ray& r = o.xf ? (moved = to_object_space(o, ray)) : ray;
-  SurfaceInfo si = visit_shape(o.shape, [&](const auto& s) {
+  // The object-space ray only for a transformed object (a default Ray was stored on every call).
+  std::optional<Ray> moved;
+  if (o.xf) moved.emplace(to_object_space(o, ray));
+  const Ray& r = moved ? *moved : ray;
+  SurfaceInfo si = visit_surface_shape(o.shape, [&](const auto& s) {
     if constexpr (requires { surface_geometry(s, r, hit); }) {
       if (needs == SurfaceNeeds::kGeometry) return surface_geometry(s, r, hit);
     }
