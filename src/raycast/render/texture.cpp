@@ -27,19 +27,7 @@ Color lookup(const ImageTexture& texture, double u, double v) {
   return (1 - fy) * top + fy * bottom;
 }
 
-Color checker(const CheckerTexture& texture, const Vec3& p) {
-  const double s = texture.scale;
-  const double x = p.x / s, y = p.y / s, z = p.z / s;
-  // Cells within 2^51 of the origin (all of any real scene): the floors as integers, which are
-  // exact there, and the parity of their sum (the sum below is exact for them too: < 2^53).
-  constexpr double kNear = 0x1p51;
-  if (std::abs(x) < kNear && std::abs(y) < kNear && std::abs(z) < kNear) {
-    auto floor_int = [](double v) {
-      const auto k = static_cast<std::int64_t>(v);  // towards zero
-      return k - (v < static_cast<double>(k));
-    };
-    return ((floor_int(x) + floor_int(y) + floor_int(z)) & 1) == 0 ? texture.c0 : texture.c1;
-  }
+Color checker_far(const CheckerTexture& texture, double x, double y, double z) {
   const double sum = std::floor(x) + std::floor(y) + std::floor(z);
   if (!std::isfinite(sum)) return texture.c0;
   // sum is a whole number: its parity without fmod (every double from 2^53 up is even).
