@@ -60,15 +60,4 @@ Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTe
   return albedo(scene, textures, ray, hit, si, std::size_t(own >= 0 ? own : 0));
 }
 
-Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
-             const Ray& ray, const SceneHit& hit, const SurfaceInfo& si, std::size_t index) {
-  const Material& m = scene.materials[index];
-  if (m.has_checker) {
-    // The object-space point from the object-space ray, as the shape itself computed it.
-    return checker(m.checker, to_object_space(scene.objects[hit.object], ray).at(hit.local.t));
-  }
-  if (index < textures.size() && textures[index]) return lookup(*textures[index], si.u, si.v);
-  return m.color;
-}
-
 }  // namespace raycast

@@ -45,7 +45,19 @@ std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scen
 Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
              const Ray& ray, const SceneHit& hit, const SurfaceInfo& si);
 /// The same with the hit's material index already resolved (material_of, negative taken as 0).
-Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
-             const Ray& ray, const SceneHit& hit, const SurfaceInfo& si, std::size_t material);
+/// Inline: once per shaded hit.
+inline Color albedo(const Scene& scene,
+                    const std::vector<std::shared_ptr<const ImageTexture>>& textures,
+                    const Ray& ray, const SceneHit& hit, const SurfaceInfo& si,
+                    std::size_t material) {
+  const Material& m = scene.materials[material];
+  if (m.has_checker) {
+    // The object-space point from the object-space ray, as the shape itself computed it.
+    return checker(m.checker, to_object_space(scene.objects[hit.object], ray).at(hit.local.t));
+  }
+  if (material < textures.size() && textures[material])
+    return lookup(*textures[material], si.u, si.v);
+  return m.color;
+}
 
 }  // namespace raycast
