@@ -452,13 +452,6 @@ SurfaceInfo surface(const CsgShape& s, const Ray& ray, const LocalHit& hit) {
   return surface(s.tree->leaves[static_cast<std::size_t>(hit.leaf)], ray, h);
 }
 
-SurfaceInfo surface_geometry(const CsgShape& s, const Ray& ray, const LocalHit& hit) {
-  LocalHit h = hit;
-  h.flip = false;
-  return surface(s.tree->leaves[static_cast<std::size_t>(hit.leaf)], ray, h,
-                 SurfaceNeeds::kGeometry);
-}
-
 bool contains(const CsgShape& s, const Vec3& p) {
   const Ray unused{};
   return Evaluator{*s.tree, unused, CullRay(*s.tree, unused)}.contains(0, p);

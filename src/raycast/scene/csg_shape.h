@@ -30,8 +30,6 @@ bool intersect_by_spans(const CsgShape& s, const Ray& ray, LocalHit& hit);
 void spans(const CsgShape& s, const Ray& ray, SpanList& out);
 /// The leaf's surface record, its normal not yet flipped (the enclosing Object flips by hit.flip).
 SurfaceInfo surface(const CsgShape& s, const Ray& ray, const LocalHit& hit);
-/// surface() without (u, v) where the leaf's shape can leave them out (SurfaceNeeds::kGeometry).
-SurfaceInfo surface_geometry(const CsgShape& s, const Ray& ray, const LocalHit& hit);
 bool contains(const CsgShape& s, const Vec3& p);
 inline bool is_closed(const CsgShape&) { return true; }
 

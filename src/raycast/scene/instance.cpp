@@ -56,13 +56,6 @@ SurfaceInfo surface(const InstanceShape& s, const Ray& ray, const LocalHit& hit)
   return surface(s.proto->objects[static_cast<std::size_t>(hit.inner)], ray, h);
 }
 
-SurfaceInfo surface_geometry(const InstanceShape& s, const Ray& ray, const LocalHit& hit) {
-  LocalHit h = hit;
-  h.flip = false;
-  return surface(s.proto->objects[static_cast<std::size_t>(hit.inner)], ray, h,
-                 SurfaceNeeds::kGeometry);
-}
-
 bool contains(const InstanceShape& s, const Vec3& p) {
   for (const Object& o : s.proto->objects)
     if (contains(o, p)) return true;
