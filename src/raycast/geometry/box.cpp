@@ -71,7 +71,7 @@ void spans(const Box& b, const Ray& ray, SpanList& out) {
   out.add(LocalHit{.t = t0, .part = f0}, LocalHit{.t = t1, .part = f1});
 }
 
-SurfaceInfo surface(const Box& b, const Ray& ray, const LocalHit& hit) {
+SurfaceInfo surface_geometry(const Box& b, const Ray& ray, const LocalHit& hit) {
   SurfaceInfo si;
   const int face = hit.part >= 0 && hit.part < 6 ? hit.part : 0;
   const int a = face / 2;
@@ -82,15 +82,27 @@ SurfaceInfo surface(const Box& b, const Ray& ray, const LocalHit& hit) {
   si.p_error = gamma(5) * (abs(ray.o) + abs(hit.t * ray.d));
   p[a] = at_hi ? b.hi[a] : b.lo[a];
   si.p_error[a] = 0;
-  // The true point lies on the face rectangle: clamping onto it only removes error.
-  for (int c : {(a + 1) % 3, (a + 2) % 3}) p[c] = std::fmin(std::fmax(p[c], b.lo[c]), b.hi[c]);
+  // The true point lies on the face rectangle: clamping onto it only removes error. Inline:
+  // std::fmax then std::fmin were two library calls per coordinate. The same values (a NaN
+  // coordinate gives the lower bound, as fmax does); on a tie of zeros the point keeps its own
+  // sign, where fmax / fmin leave the sign unspecified (GCC may swap their operands).
+  for (int c : {(a + 1) % 3, (a + 2) % 3}) {
+    const double above = p[c] >= b.lo[c] ? p[c] : b.lo[c];
+    p[c] = above <= b.hi[c] ? above : b.hi[c];
+  }
   si.p = p;
   si.n = Vec3{};
   si.n[a] = at_hi ? 1 : -1;
   si.shading_n = si.n;
+  return si;
+}
+
+SurfaceInfo surface(const Box& b, const Ray& ray, const LocalHit& hit) {
+  SurfaceInfo si = surface_geometry(b, ray, hit);
+  const int a = (hit.part >= 0 && hit.part < 6 ? hit.part : 0) / 2;
   const int ub = (a + 1) % 3, vc = (a + 2) % 3;
-  si.u = (p[ub] - b.lo[ub]) / (b.hi[ub] - b.lo[ub]);
-  si.v = (p[vc] - b.lo[vc]) / (b.hi[vc] - b.lo[vc]);
+  si.u = (si.p[ub] - b.lo[ub]) / (b.hi[ub] - b.lo[ub]);
+  si.v = (si.p[vc] - b.lo[vc]) / (b.hi[vc] - b.lo[vc]);
   return si;
 }
 

@@ -4,10 +4,14 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <span>
 
 #include "geometry/spawn.h"
 #include "render/optics.h"
 #include "render/terminator.h"
+#include "scene/csg_tree.h"
+#include "scene/prototype.h"
 
 namespace raycast {
 
@@ -36,6 +40,20 @@ unsigned integer_exponent(double shininess) {
              : 0;
 }
 
+/// The value material_of(o, hit) takes for every hit on o, when it is one value: o.material for
+/// a plain shape; for a CSG object or an instance, the same answer from every part (and from a
+/// hit outside the parts, which gives o.material). Else nullopt.
+std::optional<int> sole_material(const Object& o) {
+  std::span<const Object> parts;
+  if (const auto* c = std::get_if<CsgShape>(&o.shape)) parts = c->tree->leaves;
+  if (const auto* i = std::get_if<InstanceShape>(&o.shape)) parts = i->proto->objects;
+  for (const Object& part : parts) {
+    const std::optional<int> m = sole_material(part);
+    if (!m || (*m >= 0 ? *m : o.material) != o.material) return std::nullopt;
+  }
+  return o.material;
+}
+
 }  // namespace
 
 Color id_color(int entry) {
@@ -59,6 +77,9 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
         std::holds_alternative<CsgShape>(o.shape) || std::holds_alternative<InstanceShape>(o.shape);
     const std::size_t mi = std::size_t(std::max(o.material, 0));
     f.material = composite ? -1 : std::int32_t(mi);
+    // Composites whose parts all resolve to the object's own material need no search per hit.
+    const std::optional<int> sole = sole_material(o);
+    f.hit_material = sole ? std::int32_t(std::max(*sole, 0)) : -1;
     f.terminator = has_terminator_origin(o);
     if (!o.xf) {
       f.plane = std::get_if<Plane>(&o.shape);
@@ -78,7 +99,7 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
 }
 
 std::size_t Integrator::material_index(const SceneHit& hit) const {
-  const std::int32_t known = objects_[std::size_t(hit.object)].material;
+  const std::int32_t known = objects_[std::size_t(hit.object)].hit_material;
   if (known >= 0) return std::size_t(known);
   const int m = material_of(scene_.objects[hit.object], hit.local);
   return m >= 0 ? std::size_t(m) : 0;

@@ -95,6 +95,9 @@ class Integrator {
   /// the per-hit look-ups would give).
   struct ObjectFacts {
     std::int32_t material = 0;  // its material index; -1 for CSG and instances (per part)
+    // The material index of every hit on it (material_index), also for a composite whose parts
+    // all resolve to one material; -1 where it depends on the part hit.
+    std::int32_t hit_material = 0;
     bool terminator = false;  // has_terminator_origin: shadow rays may start from terminator_origin
     enum Shadow : std::uint8_t { kOpaque, kFilter, kWalk } shadow = kOpaque;  // passes()'s case
     // The shape when it is an untransformed plane or sphere (crosses() calls it directly).

@@ -27,9 +27,8 @@ Color lookup(const ImageTexture& texture, double u, double v) {
   return (1 - fy) * top + fy * bottom;
 }
 
-Color checker(const CheckerTexture& texture, const Vec3& p) {
-  const double s = texture.scale;
-  const double sum = std::floor(p.x / s) + std::floor(p.y / s) + std::floor(p.z / s);
+Color checker_far(const CheckerTexture& texture, double x, double y, double z) {
+  const double sum = std::floor(x) + std::floor(y) + std::floor(z);
   if (!std::isfinite(sum)) return texture.c0;
   // sum is a whole number: its parity without fmod (every double from 2^53 up is even).
   const double a = std::abs(sum);
@@ -59,17 +58,6 @@ Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTe
   // The material of the part hit (a CSG leaf's or an instance's own), as Scene::material_of.
   const int own = material_of(scene.objects[hit.object], hit.local);
   return albedo(scene, textures, ray, hit, si, std::size_t(own >= 0 ? own : 0));
-}
-
-Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
-             const Ray& ray, const SceneHit& hit, const SurfaceInfo& si, std::size_t index) {
-  const Material& m = scene.materials[index];
-  if (m.has_checker) {
-    // The object-space point from the object-space ray, as the shape itself computed it.
-    return checker(m.checker, to_object_space(scene.objects[hit.object], ray).at(hit.local.t));
-  }
-  if (index < textures.size() && textures[index]) return lookup(*textures[index], si.u, si.v);
-  return m.color;
 }
 
 }  // namespace raycast

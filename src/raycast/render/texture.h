@@ -1,6 +1,8 @@
 #pragma once
 // Surface colours: the material's colour, a checkerboard in object space, or an image through
 // (u, v) (docs/scene-format.md "Materials").
+#include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -13,8 +15,25 @@ namespace raycast {
 /// outside [0, 1), bilinear between texel centres.
 Color lookup(const ImageTexture& texture, double u, double v);
 
+/// checker() for cells (x, y, z) = p / s not all within 2^51 of the origin (and NaN): the floors'
+/// sum in double, c0 when it is not finite or at least 2^53.
+Color checker_far(const CheckerTexture& texture, double x, double y, double z);
+
 /// c0 where floor(x/s) + floor(y/s) + floor(z/s) is even, c1 where it is odd; p in object space.
-Color checker(const CheckerTexture& texture, const Vec3& p);
+inline Color checker(const CheckerTexture& texture, const Vec3& p) {
+  const double s = texture.scale;
+  const double x = p.x / s, y = p.y / s, z = p.z / s;
+  // Cells within 2^51 of the origin (all of any real scene): the floors as integers, which are
+  // exact there, and the parity of their sum (exact too: below 2^53, as the double sum is).
+  constexpr double kNear = 0x1p51;
+  if (!(std::abs(x) < kNear && std::abs(y) < kNear && std::abs(z) < kNear))
+    return checker_far(texture, x, y, z);
+  auto floor_int = [](double v) {
+    const auto k = static_cast<std::int64_t>(v);  // towards zero
+    return k - (v < static_cast<double>(k));
+  };
+  return ((floor_int(x) + floor_int(y) + floor_int(z)) & 1) == 0 ? texture.c0 : texture.c1;
+}
 
 /// Every material's image texture (nullptr where it has none), by material index: the one already
 /// attached to the material, else loaded from its `image_file`. Throws SceneError naming the
@@ -26,7 +45,19 @@ std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scen
 Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
              const Ray& ray, const SceneHit& hit, const SurfaceInfo& si);
 /// The same with the hit's material index already resolved (material_of, negative taken as 0).
-Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
-             const Ray& ray, const SceneHit& hit, const SurfaceInfo& si, std::size_t material);
+/// Inline: once per shaded hit.
+inline Color albedo(const Scene& scene,
+                    const std::vector<std::shared_ptr<const ImageTexture>>& textures,
+                    const Ray& ray, const SceneHit& hit, const SurfaceInfo& si,
+                    std::size_t material) {
+  const Material& m = scene.materials[material];
+  if (m.has_checker) {
+    // The object-space point from the object-space ray, as the shape itself computed it.
+    return checker(m.checker, to_object_space(scene.objects[hit.object], ray).at(hit.local.t));
+  }
+  if (material < textures.size() && textures[material])
+    return lookup(*textures[material], si.u, si.v);
+  return m.color;
+}
 
 }  // namespace raycast

@@ -29,6 +29,17 @@ decltype(auto) visit_shape(const ShapeVariant& v, F&& f) {
   return std::visit(f, v);
 }
 
+/// visit_shape for surface(): composites too, whose hits are a good share of a CSG scene's.
+template <class F>
+decltype(auto) visit_surface_shape(const ShapeVariant& v, F&& f) {
+  if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
+  if (const auto* s = std::get_if<Sphere>(&v)) return f(*s);
+  if (const auto* s = std::get_if<Box>(&v)) return f(*s);
+  if (const auto* s = std::get_if<CsgShape>(&v)) return f(*s);
+  if (const auto* s = std::get_if<InstanceShape>(&v)) return f(*s);
+  return std::visit(f, v);
+}
+
 }  // namespace
 
 Aabb bounds(const Object& o) {
@@ -55,13 +66,29 @@ void spans(const Object& o, const Ray& ray, SpanList& out) {
 }
 
 SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, SurfaceNeeds needs) {
-  Ray moved;
-  const Ray& r = o.xf ? (moved = to_object_space(o, ray)) : ray;
-  SurfaceInfo si = visit_shape(o.shape, [&](const auto& s) {
-    if constexpr (requires { surface_geometry(s, r, hit); }) {
-      if (needs == SurfaceNeeds::kGeometry) return surface_geometry(s, r, hit);
+  // The object-space ray only for a transformed object (a default Ray was stored on every call).
+  std::optional<Ray> moved;
+  if (o.xf) moved.emplace(to_object_space(o, ray));
+  const Ray& r = moved ? *moved : ray;
+  SurfaceInfo si = visit_surface_shape(o.shape, [&](const auto& s) {
+    using S = std::decay_t<decltype(s)>;
+    if constexpr (std::is_same_v<S, CsgShape> || std::is_same_v<S, InstanceShape>) {
+      // A composite's part (a CSG leaf, an instance's prototype object) with the caller's needs,
+      // its normal not yet flipped (this object flips by hit.flip).
+      const Object* part;
+      if constexpr (std::is_same_v<S, CsgShape>)
+        part = &s.tree->leaves[static_cast<std::size_t>(hit.leaf)];
+      else
+        part = &s.proto->objects[static_cast<std::size_t>(hit.inner)];
+      LocalHit h = hit;
+      h.flip = false;
+      return surface(*part, r, h, needs);
+    } else {
+      if constexpr (requires { surface_geometry(s, r, hit); }) {
+        if (needs == SurfaceNeeds::kGeometry) return surface_geometry(s, r, hit);
+      }
+      return surface(s, r, hit);
     }
-    return surface(s, r, hit);
   });
   if (o.xf) {
     const Vec3 p = si.p;
