@@ -9,9 +9,20 @@
 
 namespace raycast {
 
-void Scene::build() {
+void Scene::build(bool direction_lists) {
   const auto start = std::chrono::steady_clock::now();
   set_.build(objects);
+  // Direction lists around the camera's position and the point and spot lights (rays that start
+  // or end exactly there use them; others take the usual walks).
+  if (direction_lists) {
+    const CameraDesc view = camera_or_default(*this);
+    std::vector<Vec3> light_positions;
+    for (const Light& light : lights)
+      if (light.type == LightType::kPoint || light.type == LightType::kSpot)
+        light_positions.push_back(light.position);
+    set_.set_apexes(objects, view.type == CameraType::kPerspective ? &view.position : nullptr,
+                    light_positions);
+  }
   // The direct path's condition is ObjectSet's own for its sole-mesh path: one object with
   // non-empty, bounded bounds, an untransformed mesh; every other object has empty bounds.
   mesh_ = nullptr;
