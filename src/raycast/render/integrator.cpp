@@ -327,10 +327,8 @@ bool Integrator::blocked(const Vec3& from, const Vec3& to, bool to_infinity,
   const double dd = length_squared(segment.d);
   const bool valid = is_valid_extent(length_squared(segment.o), dd);
   const Vec3 e = segment.d * (1 / std::sqrt(dd));  // the unit direction, for the balls
-  auto visit = [&](std::uint32_t index) { return crosses(index, segment); };
-  // A segment to a point light: the light's direction lists.
-  return valid && (to_infinity ? scene_.any_object_along(segment, e, visit)
-                               : scene_.any_object_along_to(segment, e, to, visit));
+  return valid && scene_.any_object_along(
+                      segment, e, [&](std::uint32_t index) { return crosses(index, segment); });
 }
 
 inline bool Integrator::filters(const Vec3& from, const Vec3& to, bool to_infinity,
@@ -344,9 +342,9 @@ inline bool Integrator::filters(const Vec3& from, const Vec3& to, bool to_infini
   // asked on its own whether the segment crosses it (an any-hit query, or for a composite
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
-  auto visit = [&](std::uint32_t index) { return !passes(index, segment, through); };
-  return !(valid && (to_infinity ? scene_.any_object_along(segment, e, visit)
-                                 : scene_.any_object_along_to(segment, e, to, visit)));
+  return !(valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
+    return !passes(index, segment, through);
+  }));
 }
 
 inline bool Integrator::crosses(std::uint32_t index, const Ray& segment) const {

@@ -73,24 +73,27 @@ class ObjectSet {
     return each_ball_near(balls_.data(), balls_.data() + balls_.size(), ray.o, e, visit);
   }
 
-  /// any_along for a segment that ends at `to` (ray.d = to - ray.o, tmin >= 0, tmax <= 1): when
-  /// `to` is one of the lights given to set_apexes, the unbounded objects and then its direction
-  /// lists' cell (scene/direction_lists.h), in index order, the objects farther from the light
-  /// than |d| left out; else any_along. Visits a subset of any_along's objects in its order, and
-  /// leaves out only objects the segment cannot cross.
+  /// any_along for a segment that ends at *to (ray.d = *to - ray.o, tmin >= 0, tmax <= 1; to
+  /// null: a segment to infinity): when *to is one of the lights given to set_apexes, the
+  /// unbounded objects and then its direction lists' cell (scene/direction_lists.h), in index
+  /// order, the objects farther from the light than |d| left out; else any_along. Visits a
+  /// subset of any_along's objects in its order, and leaves out only objects the segment cannot
+  /// cross.
   template <class F>
-  bool any_along_to(const Ray& ray, const Vec3& e, const Vec3& to, F&& visit) const {
-    for (const DirectionLists& lists : light_lists_) {
-      if (!(lists.apex() == to)) continue;
-      const double dd = length_squared(ray.d);
-      if (!(dd <= lists.reach2())) break;
-      for (std::uint32_t index : unbounded_)
-        if (visit(index)) return true;
-      // The segment's points seen from the light lie along -d (within the lists' margins).
-      // any_along's ball test (unit e: the same operations), then the visit.
-      for (const DirectionLists::Entry& entry : lists.cell(-ray.d))
-        if (entry.near2 <= dd && entry.may_meet(ray.o, e, 1.0) && visit(entry.index)) return true;
-      return false;
+  bool any_along_to(const Ray& ray, const Vec3& e, const Vec3* to, F&& visit) const {
+    if (to && !light_lists_.empty()) {
+      for (const DirectionLists& lists : light_lists_) {
+        if (!(lists.apex() == *to)) continue;
+        const double dd = length_squared(ray.d);
+        if (!(dd <= lists.reach2())) break;
+        for (std::uint32_t index : unbounded_)
+          if (visit(index)) return true;
+        // The segment's points seen from the light lie along -d (within the lists' margins);
+        // any_along's ball test (unit e: the same operations), then the visit.
+        for (const DirectionLists::Entry& entry : lists.cell(-ray.d))
+          if (entry.near2 <= dd && entry.may_meet(ray.o, e, 1.0) && visit(entry.index)) return true;
+        return false;
+      }
     }
     return any_along(ray, e, visit);
   }

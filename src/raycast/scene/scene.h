@@ -42,8 +42,8 @@ struct Scene {
   SourceMarks marks;   // where the camera, lights and entries were written (loaded scenes)
 
   /// Builds the top-level BVH; call after the objects are final and before querying.
-  /// direction_lists: also the lists around the camera and the point lights (ObjectSet::
-  /// set_apexes; false only to compare against the walks without them).
+  /// direction_lists: also the lists around the camera (ObjectSet::set_apexes; false only to
+  /// compare against the walk without them).
   void build(bool direction_lists = true);
   double build_ms() const { return build_ms_; }
   std::size_t accel_bytes() const { return set_.memory_bytes(); }
@@ -72,12 +72,6 @@ struct Scene {
   template <class F>
   bool any_object_along(const Ray& ray, const Vec3& e, F&& visit) const {
     return set_.any_along(ray, e, visit);
-  }
-  /// any_object_along for a segment that ends at `to` (ray.d = to - ray.o, tmin 0, tmax 1): a
-  /// point or spot light's position takes its direction lists (ObjectSet::any_along_to).
-  template <class F>
-  bool any_object_along_to(const Ray& ray, const Vec3& e, const Vec3& to, F&& visit) const {
-    return set_.any_along_to(ray, e, to, visit);
   }
   /// The index of the scene's one untransformed mesh when every other object's box is empty
   /// (ObjectSet::sole_mesh), else -1.
