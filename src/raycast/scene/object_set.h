@@ -145,9 +145,9 @@ class ObjectSet {
   /// pairs save 2.5-2.8 % on textured (4) and glass (6), cost 0.7 % on csg (12)).
   static constexpr std::size_t kFloatBoxesFrom = 11;
   /// Flat sets of at least this many bounded objects get direction lists (set_apexes): measured
-  /// (docs/performance-render.md, session 12) they save 9.5 % on csg (12 objects), 2.3 % on
-  /// glass (6), 1.6 % on textured (4) but cost 2.9 % on surfaces (4: its balls pass more camera
-  /// rays than its boxes, and two ball pairs are as cheap as a list's cell).
+  /// (docs/performance-render.md, session 12) the camera's save 6.7 % on csg (12 objects), 1.2 %
+  /// on glass (6); with 4 (camera and light lists) textured -1.6 %, surfaces +2.9 % (its balls
+  /// pass more camera rays than its boxes).
   static constexpr std::size_t kListsFrom = 5;
   /// Cells per cube-face side of the direction lists.
   static constexpr int kListSide = 64;
