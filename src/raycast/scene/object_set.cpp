@@ -17,6 +17,8 @@ void ObjectSet::build(std::span<const Object> objects) {
   groups_.clear();
   group_count_ = 0;
   bounds_ = finite_bounds_ = Aabb{};
+  view_lists_ = DirectionLists{};
+  light_lists_.clear();
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const Aabb b = raycast::bounds(objects[i]);
     bounds_.grow(b);
@@ -79,6 +81,44 @@ void ObjectSet::build(std::span<const Object> objects) {
   BvhBuildConfig config;
   config.max_leaf_size = 1;
   bvh_ = build_bvh(boxes, centres, config);
+}
+
+void ObjectSet::set_apexes(std::span<const Object> objects, const Vec3* view,
+                           std::span<const Vec3> lights) {
+  view_lists_ = DirectionLists{};
+  light_lists_.clear();
+  if (!flat_ || sole_ || !balls_usable_ || bounded_.size() < kListsFrom) return;
+  std::vector<DirectionLists::Ball> balls;
+  for (std::uint32_t index : bounded_) {
+    const Ball ball = bounding_ball(objects[index]);
+    if (!ball.is_empty()) balls.push_back({index, ball.centre, ball.radius});
+  }
+  // The reach: twice the farthest corner of the bounded objects' box, so that every shadow
+  // segment from a point on a bounded object is served.
+  auto reach_from = [&](const Vec3& apex) {
+    double far2 = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 p{corner & 1 ? finite_bounds_.hi.x : finite_bounds_.lo.x,
+                   corner & 2 ? finite_bounds_.hi.y : finite_bounds_.lo.y,
+                   corner & 4 ? finite_bounds_.hi.z : finite_bounds_.lo.z};
+      far2 = std::max(far2, length_squared(p - apex));
+    }
+    return 2 * std::sqrt(far2);
+  };
+  auto usable = [&](const Vec3& apex, double reach) {
+    return max_component(abs(apex)) <= kBallLimit && reach > 0 && reach <= kBallLimit;
+  };
+  if (view) {
+    const double reach = reach_from(*view);
+    if (usable(*view, reach))
+      view_lists_.build(*view, balls, reach, kListSide, DirectionLists::Order::kNearestFirst);
+  }
+  for (const Vec3& light : lights) {
+    const double reach = reach_from(light);
+    if (!usable(light, reach)) continue;
+    light_lists_.emplace_back();
+    light_lists_.back().build(light, balls, reach, kListSide, DirectionLists::Order::kIndex);
+  }
 }
 
 void ObjectSet::build_float_groups(const std::vector<Aabb>& boxes) {
@@ -169,6 +209,11 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
     index = static_cast<std::int32_t>(bounded_[0]);
     return true;
   }
+  if (view_lists_.built() && ray.o == view_lists_.apex() && ray.tmin >= 0 &&
+      length_squared(ray.d) >= 1e-30 && length_squared(ray.d) <= 1e30) {
+    const int found = view_nearest(objects, ray, hit, index);
+    if (found >= 0) return found != 0;
+  }
   Ray r = ray;
   NearestTest test{objects, r, hit, index};
   for (std::uint32_t i : unbounded_) test(i);
@@ -221,6 +266,34 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   });
   for (std::size_t j = 0; j < n && c[j].t <= r.tmax; ++j) test(bounded_[c[j].k]);
   return test.found;
+}
+
+int ObjectSet::view_nearest(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
+                            std::int32_t& index) const {
+  Ray r = ray;
+  NearestTest test{objects, r, hit, index};
+  for (std::uint32_t i : unbounded_) test(i);
+  // Entries nearest first: once an entry's lower bound of the distance (near2, squared) exceeds
+  // tmax |d| (the current hit's distance), no later entry can give a hit at t <= tmax.
+  const double dd = length_squared(ray.d);
+  double reach2 = r.tmax * r.tmax * dd;
+  bool bounded_hit = false;
+  for (const DirectionLists::Entry& entry : view_lists_.cell(ray.d)) {
+    if (entry.near2 > reach2) break;
+    if (!entry.may_meet(ray.o, ray.d, dd)) continue;
+    LocalHit h;
+    if (raycast::intersect(objects[entry.index], r, h) && h.t <= r.tmax) {
+      // A tie between two bounded objects: the box walk's order picks the one it reports.
+      if (bounded_hit && h.t == r.tmax) return -1;
+      bounded_hit = true;
+      r.tmax = h.t;
+      hit = h;
+      index = static_cast<std::int32_t>(entry.index);
+      test.found = true;
+      reach2 = r.tmax * r.tmax * dd;
+    }
+  }
+  return test.found ? 1 : 0;
 }
 
 std::size_t ObjectSet::float_candidates(const Ray& ray, const Vec3& inv_d,

@@ -42,7 +42,9 @@ struct Scene {
   SourceMarks marks;   // where the camera, lights and entries were written (loaded scenes)
 
   /// Builds the top-level BVH; call after the objects are final and before querying.
-  void build();
+  /// direction_lists: also the lists around the camera (ObjectSet::set_apexes; false only to
+  /// compare against the walk without them).
+  void build(bool direction_lists = true);
   double build_ms() const { return build_ms_; }
   std::size_t accel_bytes() const { return set_.memory_bytes(); }
   const Aabb& bounds() const { return set_.bounds(); }
