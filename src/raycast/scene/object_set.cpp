@@ -18,7 +18,6 @@ void ObjectSet::build(std::span<const Object> objects) {
   group_count_ = 0;
   bounds_ = finite_bounds_ = Aabb{};
   view_lists_ = DirectionLists{};
-  light_lists_.clear();
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const Aabb b = raycast::bounds(objects[i]);
     bounds_.grow(b);
@@ -83,42 +82,25 @@ void ObjectSet::build(std::span<const Object> objects) {
   bvh_ = build_bvh(boxes, centres, config);
 }
 
-void ObjectSet::set_apexes(std::span<const Object> objects, const Vec3* view,
-                           std::span<const Vec3> lights) {
+void ObjectSet::set_view(std::span<const Object> objects, const Vec3& view) {
   view_lists_ = DirectionLists{};
-  light_lists_.clear();
   if (!flat_ || sole_ || !balls_usable_ || bounded_.size() < kListsFrom) return;
   std::vector<DirectionLists::Ball> balls;
   for (std::uint32_t index : bounded_) {
     const Ball ball = bounding_ball(objects[index]);
     if (!ball.is_empty()) balls.push_back({index, ball.centre, ball.radius});
   }
-  // The reach: twice the farthest corner of the bounded objects' box, so that every shadow
-  // segment from a point on a bounded object is served.
-  auto reach_from = [&](const Vec3& apex) {
-    double far2 = 0;
-    for (int corner = 0; corner < 8; ++corner) {
-      const Vec3 p{corner & 1 ? finite_bounds_.hi.x : finite_bounds_.lo.x,
-                   corner & 2 ? finite_bounds_.hi.y : finite_bounds_.lo.y,
-                   corner & 4 ? finite_bounds_.hi.z : finite_bounds_.lo.z};
-      far2 = std::max(far2, length_squared(p - apex));
-    }
-    return 2 * std::sqrt(far2);
-  };
-  auto usable = [&](const Vec3& apex, double reach) {
-    return max_component(abs(apex)) <= kBallLimit && reach > 0 && reach <= kBallLimit;
-  };
-  if (view) {
-    const double reach = reach_from(*view);
-    if (usable(*view, reach))
-      view_lists_.build(*view, balls, reach, kListSide, DirectionLists::Order::kNearestFirst);
+  // The reach (the lists' unit of margins): twice the farthest corner of the bounded objects' box.
+  double far2 = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p{corner & 1 ? finite_bounds_.hi.x : finite_bounds_.lo.x,
+                 corner & 2 ? finite_bounds_.hi.y : finite_bounds_.lo.y,
+                 corner & 4 ? finite_bounds_.hi.z : finite_bounds_.lo.z};
+    far2 = std::max(far2, length_squared(p - view));
   }
-  for (const Vec3& light : lights) {
-    const double reach = reach_from(light);
-    if (!usable(light, reach)) continue;
-    light_lists_.emplace_back();
-    light_lists_.back().build(light, balls, reach, kListSide, DirectionLists::Order::kIndex);
-  }
+  const double reach = 2 * std::sqrt(far2);
+  if (max_component(abs(view)) <= kBallLimit && reach > 0 && reach <= kBallLimit)
+    view_lists_.build(view, balls, reach, kListSide, DirectionLists::Order::kNearestFirst);
 }
 
 void ObjectSet::build_float_groups(const std::vector<Aabb>& boxes) {

@@ -73,38 +73,14 @@ class ObjectSet {
     return each_ball_near(balls_.data(), balls_.data() + balls_.size(), ray.o, e, visit);
   }
 
-  /// any_along for a segment that ends at *to (ray.d = *to - ray.o, tmin >= 0, tmax <= 1; to
-  /// null: a segment to infinity): when *to is one of the lights given to set_apexes, the
-  /// unbounded objects and then its direction lists' cell (scene/direction_lists.h), in index
-  /// order, the objects farther from the light than |d| left out; else any_along. Visits a
-  /// subset of any_along's objects in its order, and leaves out only objects the segment cannot
-  /// cross.
-  template <class F>
-  bool any_along_to(const Ray& ray, const Vec3& e, const Vec3* to, F&& visit) const {
-    if (to && !light_lists_.empty()) {
-      for (const DirectionLists& lists : light_lists_) {
-        if (!(lists.apex() == *to)) continue;
-        const double dd = length_squared(ray.d);
-        if (!(dd <= lists.reach2())) break;
-        for (std::uint32_t index : unbounded_)
-          if (visit(index)) return true;
-        // The segment's points seen from the light lie along -d (within the lists' margins);
-        // any_along's ball test (unit e: the same operations), then the visit.
-        for (const DirectionLists::Entry& entry : lists.cell(-ray.d))
-          if (entry.near2 <= dd && entry.may_meet(ray.o, e, 1.0) && visit(entry.index)) return true;
-        return false;
-      }
-    }
-    return any_along(ray, e, visit);
-  }
   /// Direction lists (scene/direction_lists.h) around `view` (the nearest-hit walk's, for rays
-  /// that start there: a pinhole camera's position) and around each of `lights` (any_along_to's),
-  /// for flat sets of at least kListsFrom bounded objects; none otherwise. Call after build.
-  void set_apexes(std::span<const Object> objects, const Vec3* view, std::span<const Vec3> lights);
+  /// that start there: a pinhole camera's position), for flat sets of at least kListsFrom
+  /// bounded objects; none otherwise. Call after build. (Lists around the point lights for the
+  /// shadow walk were measured and not kept: docs/performance-render.md, session 12, lists12.)
+  void set_view(std::span<const Object> objects, const Vec3& view);
 
-  /// Whether set_apexes built the lists around its `view`, and around how many lights.
+  /// Whether set_view built the lists.
   bool has_view_lists() const { return view_lists_.built(); }
-  std::size_t light_list_count() const { return light_lists_.size(); }
   /// Whether any_along culls by balls (a flat set, not the one-mesh set, coordinates in range).
   bool walks_balls() const { return balls_usable_; }
   /// Whether the nearest-hit walk tries the unbounded objects, then each bounded one after its
@@ -128,7 +104,6 @@ class ObjectSet {
     return bvh_.memory_bytes() + pairs_.capacity() * sizeof(BoxPair) +
            groups_.capacity() * sizeof(Box4) + boxes_.capacity() * sizeof(Aabb) +
            balls_.capacity() * sizeof(BallPair) + view_lists_.memory_bytes() +
-           lists_bytes(light_lists_) +
            (bounded_.capacity() + unbounded_.capacity()) * sizeof(std::uint32_t);
   }
 
@@ -144,7 +119,7 @@ class ObjectSet {
   /// pays where it saves three pair tests or more (about 37 instructions each; session 11: the
   /// pairs save 2.5-2.8 % on textured (4) and glass (6), cost 0.7 % on csg (12)).
   static constexpr std::size_t kFloatBoxesFrom = 11;
-  /// Flat sets of at least this many bounded objects get direction lists (set_apexes): measured
+  /// Flat sets of at least this many bounded objects get direction lists (set_view): measured
   /// (docs/performance-render.md, session 12) the camera's save 6.7 % on csg (12 objects), 1.2 %
   /// on glass (6); with 4 (camera and light lists) textured -1.6 %, surfaces +2.9 % (its balls
   /// pass more camera rays than its boxes).
@@ -153,11 +128,6 @@ class ObjectSet {
   static constexpr int kListSide = 64;
 
  private:
-  static std::size_t lists_bytes(const std::vector<DirectionLists>& lists) {
-    std::size_t bytes = 0;
-    for (const DirectionLists& l : lists) bytes += l.memory_bytes();
-    return bytes;
-  }
   /// The nearest-hit walk of a ray from view_lists_'s apex: 1 hit, 0 none, -1 two bounded objects
   /// hit at the same t (the caller's walk decides: its order breaks the tie).
   int view_nearest(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
@@ -264,10 +234,8 @@ class ObjectSet {
   // (any_along), when every ball lies within kBallLimit (balls_usable_).
   std::vector<BallPair> balls_;
   bool balls_usable_ = false;
-  // set_apexes's lists: around the camera (nearest first) and around each point light (index
-  // order).
+  // set_view's lists around the camera (nearest first).
   DirectionLists view_lists_;
-  std::vector<DirectionLists> light_lists_;
   Bvh bvh_;                               // over the bounded objects
   std::vector<std::uint32_t> bounded_;    // bvh prim -> object index
   std::vector<std::uint32_t> unbounded_;  // objects tested on every ray

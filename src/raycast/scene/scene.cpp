@@ -17,7 +17,7 @@ void Scene::build(bool direction_lists) {
   // integrator's visitors; docs/performance-render.md, session 12).
   if (direction_lists) {
     const CameraDesc view = camera_or_default(*this);
-    if (view.type == CameraType::kPerspective) set_.set_apexes(objects, &view.position, {});
+    if (view.type == CameraType::kPerspective) set_.set_view(objects, view.position);
   }
   // The direct path's condition is ObjectSet's own for its sole-mesh path: one object with
   // non-empty, bounded bounds, an untransformed mesh; every other object has empty bounds.

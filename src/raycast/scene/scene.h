@@ -42,7 +42,7 @@ struct Scene {
   SourceMarks marks;   // where the camera, lights and entries were written (loaded scenes)
 
   /// Builds the top-level BVH; call after the objects are final and before querying.
-  /// direction_lists: also the lists around the camera (ObjectSet::set_apexes; false only to
+  /// direction_lists: also the lists around the camera (ObjectSet::set_view; false only to
   /// compare against the walk without them).
   void build(bool direction_lists = true);
   double build_ms() const { return build_ms_; }
