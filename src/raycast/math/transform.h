@@ -32,7 +32,8 @@ class Transform {
   /// The identity.
   Transform() = default;
   /// A transform from M and its inverse; the caller guarantees inv is M's inverse.
-  Transform(const Mat4& m, const Mat4& inv) : m_(m), inv_(inv) {}
+  Transform(const Mat4& m, const Mat4& inv)
+      : m_(m), inv_(inv), translation_(is_translation(m) && is_translation(inv)) {}
   /// nullopt when M is singular or has a projective last row (not affine).
   static std::optional<Transform> from_matrix(const Mat4& m);
 
@@ -48,17 +49,24 @@ class Transform {
   /// True when the transform reverses orientation (a mirror): det < 0.
   bool flips_handedness() const;
 
-  Vec3 point(const Vec3& p) const { return apply_point(m_, p); }
-  Vec3 vector(const Vec3& v) const { return apply_vector(m_, v); }
+  Vec3 point(const Vec3& p) const {
+    return translation_ ? translate_point(m_, p) : apply_point(m_, p);
+  }
+  Vec3 vector(const Vec3& v) const { return translation_ ? unit_rows(v) : apply_vector(m_, v); }
   /// Normals map by the inverse transpose (result not normalised).
   Vec3 normal(const Vec3& n) const {
+    if (translation_) return unit_rows(n);
     const auto& a = inv_.m;
     return {a[0][0] * n.x + a[1][0] * n.y + a[2][0] * n.z,
             a[0][1] * n.x + a[1][1] * n.y + a[2][1] * n.z,
             a[0][2] * n.x + a[1][2] * n.y + a[2][2] * n.z};
   }
-  Vec3 inverse_point(const Vec3& p) const { return apply_point(inv_, p); }
-  Vec3 inverse_vector(const Vec3& v) const { return apply_vector(inv_, v); }
+  Vec3 inverse_point(const Vec3& p) const {
+    return translation_ ? translate_point(inv_, p) : apply_point(inv_, p);
+  }
+  Vec3 inverse_vector(const Vec3& v) const {
+    return translation_ ? unit_rows(v) : apply_vector(inv_, v);
+  }
   /// Bounds on the absolute rounding error of point(p), per component (pbrt-v4 6.8.6).
   Vec3 point_error(const Vec3& p) const { return apply_point_error(m_, p); }
   /// The same for inverse_point(p) (no Transform copy, unlike inverse().point_error(p)).
@@ -91,8 +99,28 @@ class Transform {
   }
 
  private:
+  // Translations (the upper 3x3 exactly the identity, its zeros +0) skip the products by 1, and
+  // share the products by +0 between the rows: the same sums in the same order as apply_point /
+  // apply_vector, so the same bits (1 * x == x for every x; 0 * x keeps x's -0, inf and NaN).
+  static bool is_translation(const Mat4& a) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (i == j ? a.m[i][j] != 1 : (a.m[i][j] != 0 || std::signbit(a.m[i][j]))) return false;
+    return true;
+  }
+  // apply_vector of the identity with +0 off the diagonal.
+  static Vec3 unit_rows(const Vec3& v) {
+    const double zx = 0.0 * v.x, zy = 0.0 * v.y, zz = 0.0 * v.z;
+    return {(v.x + zy) + zz, (zx + v.y) + zz, (zx + zy) + v.z};
+  }
+  static Vec3 translate_point(const Mat4& a, const Vec3& p) {
+    const Vec3 u = unit_rows(p);
+    return {u.x + a.m[0][3], u.y + a.m[1][3], u.z + a.m[2][3]};
+  }
+
   Mat4 m_ = Mat4::identity();
   Mat4 inv_ = Mat4::identity();
+  bool translation_ = true;
 };
 
 }  // namespace raycast
