@@ -382,8 +382,9 @@ template <Query Q, class Node, int Oct>
         } else {
           const int first = __builtin_ctz(mask);
           mask &= mask - 1;
-          // Only the pushed children are prefetched (the first is read at once, its loads issue
-          // together anyway), in the push loop itself.
+          // Every hit child is prefetched, the one entered next too (Embree's order): its later
+          // cache lines (a node's planes, a leaf's second group) then load with the first.
+          prefetch_child<Node>(bvh, node.child[first]);
           while (mask) {
             const std::uint32_t child = node.child[__builtin_ctz(mask)];
             prefetch_child<Node>(bvh, child);
