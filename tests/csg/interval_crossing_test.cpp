@@ -15,31 +15,15 @@
 #include "csg/first_crossing.h"
 #include "csg/interval_crossing.h"
 #include "csg_oracle.h"
+#include "random_tree.h"
 #include "scene/csg_tree.h"
 #include "scene/prototype.h"
 
 namespace raycast {
 namespace {
 
-struct RandomTree {
-  std::vector<CsgOp> ops;
-  std::vector<std::vector<std::int32_t>> operands;
-  std::size_t leaves = 0;
-};
-
-std::int32_t grow(std::mt19937& rng, RandomTree& t, int depth) {
-  std::uniform_int_distribution<int> coin(0, 2), op(0, 2), arity(1, 3);
-  if (depth == 0 || (depth < 3 && coin(rng) == 0)) return csg_leaf_code(t.leaves++);
-  const auto k = static_cast<std::int32_t>(t.ops.size());
-  t.ops.push_back(static_cast<CsgOp>(op(rng)));
-  t.operands.emplace_back();
-  const int n = arity(rng);
-  for (int i = 0; i < n; ++i) {
-    const std::int32_t code = grow(rng, t, depth - 1);
-    t.operands[static_cast<std::size_t>(k)].push_back(code);
-  }
-  return k;
-}
+using csg_test::grow;
+using csg_test::RandomTree;
 
 TEST(IntervalCrossing, RandomTreesAndIntervals_SameAsFirstCrossing) {
   std::mt19937 rng(11);

@@ -81,17 +81,7 @@ std::string random_scene_text(testing::Rng& rng, int count, const Vec3& box_face
 
 // The direction of face point (u, v) (DirectionLists::cell_of's faces), scaled.
 Vec3 face_point(int face, double u, double v, double scale) {
-  const double a = face % 2 == 0 ? scale : -scale;
-  u *= scale;
-  v *= scale;
-  switch (face / 2) {
-    case 0:
-      return {a, u, v};
-    case 1:
-      return {v, a, u};
-    default:
-      return {u, v, a};
-  }
+  return DirectionLists::face_direction(std::size_t(face), u, v) * scale;
 }
 
 // Directions from an apex: random, on the cells' edges and corners (and one ulp either side),

@@ -4,10 +4,7 @@
 
 namespace raycast {
 
-namespace {
-
-// The direction of face `face`'s point (u, v) in face coordinates (cell_of's inverse).
-Vec3 face_direction(std::size_t face, double u, double v) {
+Vec3 DirectionLists::face_direction(std::size_t face, double u, double v) {
   const double a = face % 2 == 0 ? 1.0 : -1.0;
   switch (face / 2) {
     case 0:
@@ -18,8 +15,6 @@ Vec3 face_direction(std::size_t face, double u, double v) {
       return {u, v, a};
   }
 }
-
-}  // namespace
 
 void DirectionLists::build(const Vec3& apex, std::span<const Ball> balls, double reach, int side,
                            Order order) {

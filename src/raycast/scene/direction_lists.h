@@ -86,6 +86,8 @@ class DirectionLists {
     const int j = std::min(static_cast<int>(v * s + half_), last_);
     return (face * std::size_t(side_) + std::size_t(j)) * std::size_t(side_) + std::size_t(i);
   }
+  /// The direction of face `face`'s point (u, v) in face coordinates (cell_of's inverse).
+  static Vec3 face_direction(std::size_t face, double u, double v);
   /// The entries of direction d's cell.
   std::span<const Entry> cell(const Vec3& d) const {
     const std::size_t c = cell_of(d);
