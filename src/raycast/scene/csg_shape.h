@@ -34,6 +34,8 @@ bool intersect_by_gather(const CsgShape& s, const Ray& ray, LocalHit& hit);
 void spans(const CsgShape& s, const Ray& ray, SpanList& out);
 /// The leaf's surface record, its normal not yet flipped (the enclosing Object flips by hit.flip).
 SurfaceInfo surface(const CsgShape& s, const Ray& ray, const LocalHit& hit);
+/// The same without (u, v) (the leaf's surface with SurfaceNeeds::kGeometry, scene/object.h).
+SurfaceInfo surface_geometry(const CsgShape& s, const Ray& ray, const LocalHit& hit);
 bool contains(const CsgShape& s, const Vec3& p);
 inline bool is_closed(const CsgShape&) { return true; }
 

@@ -25,6 +25,8 @@ void spans(const InstanceShape& s, const Ray& ray, SpanList& out);
 /// The prototype object's surface record, its normal not yet flipped (the Object flips by
 /// hit.flip).
 SurfaceInfo surface(const InstanceShape& s, const Ray& ray, const LocalHit& hit);
+/// The same without (u, v) (the part's surface with SurfaceNeeds::kGeometry, scene/object.h).
+SurfaceInfo surface_geometry(const InstanceShape& s, const Ray& ray, const LocalHit& hit);
 bool contains(const InstanceShape& s, const Vec3& p);
 /// True when the prototype is a single closed solid.
 bool is_closed(const InstanceShape& s);

@@ -30,6 +30,7 @@ decltype(auto) visit_shape(const ShapeVariant& v, F&& f) {
 }
 
 /// visit_shape for surface(): composites too, whose hits are a good share of a CSG scene's.
+// (After the plane, sphere and box: those tests cost every other scene's hits.)
 template <class F>
 decltype(auto) visit_surface_shape(const ShapeVariant& v, F&& f) {
   if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
@@ -71,24 +72,10 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, Surfac
   if (o.xf) moved.emplace(to_object_space(o, ray));
   const Ray& r = moved ? *moved : ray;
   SurfaceInfo si = visit_surface_shape(o.shape, [&](const auto& s) {
-    using S = std::decay_t<decltype(s)>;
-    if constexpr (std::is_same_v<S, CsgShape> || std::is_same_v<S, InstanceShape>) {
-      // A composite's part (a CSG leaf, an instance's prototype object) with the caller's needs,
-      // its normal not yet flipped (this object flips by hit.flip).
-      const Object* part;
-      if constexpr (std::is_same_v<S, CsgShape>)
-        part = &s.tree->leaves[static_cast<std::size_t>(hit.leaf)];
-      else
-        part = &s.proto->objects[static_cast<std::size_t>(hit.inner)];
-      LocalHit h = hit;
-      h.flip = false;
-      return surface(*part, r, h, needs);
-    } else {
-      if constexpr (requires { surface_geometry(s, r, hit); }) {
-        if (needs == SurfaceNeeds::kGeometry) return surface_geometry(s, r, hit);
-      }
-      return surface(s, r, hit);
+    if constexpr (requires { surface_geometry(s, r, hit); }) {
+      if (needs == SurfaceNeeds::kGeometry) return surface_geometry(s, r, hit);
     }
+    return surface(s, r, hit);
   });
   if (o.xf) {
     const Vec3 p = si.p;
