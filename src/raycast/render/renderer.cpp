@@ -185,6 +185,12 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   tbb::parallel_for(
       tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1), [&](const auto& range) {
         std::uint64_t& counter = rays.local();
+        // Copies the pixel loop keeps in registers and hoists the row's camera terms from: the
+        // integrator's calls could, as far as the compiler knows, change what the lambda
+        // captures by reference, which made it reload them at every pixel.
+        const Camera cam = camera;
+        const PixelRect area = rect;
+        const int samples = spp;
         for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
           for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
             if (cancelled()) return;
@@ -197,27 +203,29 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
               progress.advance();
               continue;
             }
-            for (int y = rect.y0 + ty * kTileSize; y < y1; ++y) {
-              for (int x = rect.x0 + tx * kTileSize; x < x1; ++x) {
+            std::uint64_t traced = 0;
+            for (int y = area.y0 + ty * kTileSize; y < y1; ++y) {
+              for (int x = area.x0 + tx * kTileSize; x < x1; ++x) {
                 SampleState state{Rng::for_pixel(x, y, seed), 0};
-                if (spp == 1) {  // the centre, as sample_offset gives for n = 1
-                  image.set(x - rect.x0, y - rect.y0,
-                            Vec3f(integrator.li(camera.ray(x + 0.5, y + 0.5), state)));
-                  counter += state.rays;
+                if (samples == 1) {  // the centre, as sample_offset gives for n = 1
+                  image.set(x - area.x0, y - area.y0,
+                            Vec3f(integrator.li(cam.ray(x + 0.5, y + 0.5), state)));
+                  traced += state.rays;
                   continue;
                 }
                 Color sum{0, 0, 0};
-                for (int k = 0; k < spp; ++k) {
+                for (int k = 0; k < samples; ++k) {
                   double ox, oy;
-                  const double jx = spp > 1 ? state.rng.uniform() : 0.5;
-                  const double jy = spp > 1 ? state.rng.uniform() : 0.5;
-                  sample_offset(k, spp, jx, jy, ox, oy);
-                  sum += integrator.li(camera.ray(x + ox, y + oy), state);
+                  const double jx = samples > 1 ? state.rng.uniform() : 0.5;
+                  const double jy = samples > 1 ? state.rng.uniform() : 0.5;
+                  sample_offset(k, samples, jx, jy, ox, oy);
+                  sum += integrator.li(cam.ray(x + ox, y + oy), state);
                 }
-                image.set(x - rect.x0, y - rect.y0, Vec3f(sum / double(spp)));
-                counter += state.rays;
+                image.set(x - area.x0, y - area.y0, Vec3f(sum / double(samples)));
+                traced += state.rays;
               }
             }
+            counter += traced;
             progress.advance();
           }
         }
