@@ -144,8 +144,9 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
         return;
       }
       if (!use_packets) {
+        const Camera cam = camera;  // a copy kept in registers, as in the 1-spp loop below
         for (int i = 0; i < count; ++i)
-          values[i] = integrator.li(camera.ray(at[i].x, at[i].y), *at[i].state);
+          values[i] = integrator.li(cam.ray(at[i].x, at[i].y), *at[i].state);
         return;
       }
       LaneArray<Ray, kMaxRasterBatch> ray;
