@@ -193,9 +193,36 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
   return bits(cmp_le(tnear, tfar)) & n.used;
 }
 
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
+// The node test of the any-hit octant walks, for rays that traverse checked: tmin >= +0 (sign bit
+// clear), tmax >= tmin, origin and direction finite (so no distance is NaN). The kernel's
+// vmax_bits / vmin_bits (integer max / min of the float bits: one cycle, where the float ones take
+// two) order two floats as floats when one of them has its sign bit clear, so tnear has the value
+// of the test above (tmin is an operand) and so has the exit's min with tmax. The far distance's
+// min of three: the float min when no distance is negative; when one is, both are negative (the
+// bits' min is never below the float min) and the box is culled as above, tnear being >= +0,
+// except where a -0 (the origin on a far plane) with tnear == 0 enters a box the float test
+// culls: a few more boxes, no fewer (an any-hit walk's answer does not depend on it). And with
+// tnear >= 0, far * kSlabNarrow (which only differs from far * kSlabWiden as a max when far < 0,
+// where both cull) is not needed: three dependent steps shorter than the test above.
+template <int Oct>
+inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax) {
+  V8 d[6];
+  node_distances<Oct>(n, p, d);
+  const V8 tnear = vmax_bits(vmax_bits(d[0], d[1]), vmax_bits(d[2], p.tmin));
+  const V8 far = vmin_bits(vmin_bits(d[3], d[4]), d[5]);
+  const V8 tfar = vmin_bits(far * splat(kSlabWiden), tmax);
+  return bits(cmp_le(tnear, tfar)) & n.used;
+}
+#endif
+
 // The node test of query Q on Node: the 8-lane one, or the kernel's 16-lane one (same results).
 template <Query Q, int Oct, class Node>
 inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
+  if constexpr (Q == Query::kAny && Oct >= 0 && std::is_same_v<Node, WideNode>)
+    return intersect_node8_ordered<Oct>(n, p, tmax);
+#endif
 #ifdef RAYCAST_KERNEL_NODE16
   if constexpr (uses_node16<Q, Node>())
     return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
@@ -462,6 +489,13 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   RayData p;
   prepare<Q, Node>(ray, p);
   if constexpr (uses_octant_walks<Q, Node>()) {
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
+    // intersect_node8_ordered's rays; the others (NaN, infinities, tmin < 0) take the walk of
+    // every octant.
+    if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && is_finite(ray.o) &&
+          is_finite(ray.d)))
+      return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
+#endif
     // The octant prepare chose the rows by (inv >= 0, NaN included), so the walks read the same.
     const int oct = (p.near_off[0] != 0) | (p.near_off[1] != 0) << 1 | (p.near_off[2] != 0) << 2;
     switch (oct) {
