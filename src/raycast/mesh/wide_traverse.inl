@@ -255,8 +255,12 @@ struct PairResult {
 
 // Watertight test of two groups' eight triangles (lanes 0-3 from g0, 4-7 from g1): the hit mask
 // (tmin <= t <= tmax) and, when it is not empty, the lane results.
-inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
-                          V8 tmax, PairResult& res) {
+// Always inlined where the walk asks for it (intersect_pair below): GCC 12 stopped inlining it
+// into the AVX-512 any-hit octant walks when the walk of every octant became reachable there
+// (session 13), a call per leaf with the walk's vectors spilled around it.
+[[gnu::always_inline]] inline int intersect_pair_inlined(const TriangleGroup& g0,
+                                                         const TriangleGroup& g1, const RayData& p,
+                                                         V8 tmax, PairResult& res) {
   // Shear and scale the vertices into ray space (per vertex, so shared vertices agree exactly).
 #ifdef RAYCAST_KERNEL_ROW_OFFSETS
   // Each row addressed as group + vertex * 48 (a constant) + axis * 16 (one of three per-ray
@@ -333,6 +337,12 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
     store8(res.det, det);
   }
   return m;
+}
+
+// The pair test, inlined or called as GCC chooses.
+inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
+                          V8 tmax, PairResult& res) {
+  return intersect_pair_inlined(g0, g1, p, tmax, res);
 }
 
 // Starts loading every hit child (a node's cache lines, or all of a leaf's groups) at once,
@@ -441,7 +451,9 @@ template <Query Q, class Node, int Oct>
       const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
       for (std::uint32_t gi = first; gi < end; gi += 2) {
         const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
-        int m = intersect_pair(bvh.groups[gi], g1, p, tmax, res);
+        int m = Q == Query::kAny && Oct >= 0
+                    ? intersect_pair_inlined(bvh.groups[gi], g1, p, tmax, res)
+                    : intersect_pair(bvh.groups[gi], g1, p, tmax, res);
         if (!m) continue;
         if constexpr (Q == Query::kAny) return true;
         while (m) {
