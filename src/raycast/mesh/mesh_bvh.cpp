@@ -101,7 +101,8 @@ class Collapser {
       out_.qnodes.reserve(bin_.nodes.size() / 2 + 1);
     else
       out_.nodes.reserve(bin_.nodes.size() / 2 + 1);
-    out_.root = collapse(0, 1);
+    std::uint32_t tris = 0;
+    out_.root = collapse(0, 1, tris);
   }
 
  private:
@@ -140,7 +141,13 @@ class Collapser {
   // found by repeatedly opening the inner child of largest surface area (up to kNodeWidth): under
   // the SAH the child of largest area is the one most likely to be visited, so replacing it by
   // its two children saves the most expected node visits.
-  std::uint32_t collapse(std::uint32_t node, int depth) {
+  // The children are then ordered by the triangles under them, most first (Embree's order "for
+  // faster shadow ray traversal"): the any-hit walk enters the first hit child and pushes the
+  // others, so it descends the larger subtrees while the pushed leaves' prefetches land, and a
+  // blocked ray meets its blocker sooner. The nearest-hit walks order by distance (ties in t go
+  // to the smaller triangle index), so their hits do not depend on it. `tris` receives the
+  // triangles under `node`.
+  std::uint32_t collapse(std::uint32_t node, int depth, std::uint32_t& tris) {
     out_.depth = std::max(out_.depth, depth);
     std::uint32_t kids[kNodeWidth] = {bin_.nodes[node].first, bin_.nodes[node].first + 1};
     int n = 2;
@@ -165,10 +172,26 @@ class Collapser {
       out_.qnodes.emplace_back();
     else
       out_.nodes.emplace_back();
-    std::uint32_t refs[kNodeWidth] = {};
+    std::uint32_t refs[kNodeWidth] = {}, under[kNodeWidth] = {};
+    tris = 0;
     for (int i = 0; i < n; ++i) {
       const BvhFloatNode& c = bin_.nodes[kids[i]];
-      refs[i] = c.is_leaf() ? leaf_ref(kids[i]) : collapse(kids[i], depth + 1);
+      if (c.is_leaf()) {
+        refs[i] = leaf_ref(kids[i]);
+        under[i] = c.count;
+      } else {
+        refs[i] = collapse(kids[i], depth + 1, under[i]);
+      }
+      tris += under[i];
+    }
+    int order[kNodeWidth];
+    for (int i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order, order + n, [&](int a, int b) { return under[a] > under[b]; });
+    {
+      std::uint32_t k[kNodeWidth], r[kNodeWidth];
+      for (int i = 0; i < n; ++i) k[i] = kids[order[i]], r[i] = refs[order[i]];
+      std::copy(k, k + n, kids);
+      std::copy(r, r + n, refs);
     }
     float lo[3][kNodeWidth], hi[3][kNodeWidth];
     for (int i = 0; i < n; ++i) {

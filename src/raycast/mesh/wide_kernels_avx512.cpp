@@ -52,6 +52,15 @@ inline M8 mand(M8 x, M8 y) { return x & y; }
 inline M8 mor(M8 x, M8 y) { return x | y; }
 inline int bits(M8 m) { return m; }
 inline V8 select(M8 m, V8 x, V8 y) { return {_mm256_mask_blend_ps(m, y.v, x.v)}; }
+// Integer max / min of the float bits (RAYCAST_KERNEL_BITS_MINMAX in mesh/wide_traverse.inl).
+inline V8 vmax_bits(V8 x, V8 y) {
+  return {
+      _mm256_castsi256_ps(_mm256_max_epi32(_mm256_castps_si256(x.v), _mm256_castps_si256(y.v)))};
+}
+inline V8 vmin_bits(V8 x, V8 y) {
+  return {
+      _mm256_castsi256_ps(_mm256_min_epi32(_mm256_castps_si256(x.v), _mm256_castps_si256(y.v)))};
+}
 
 // The node test on 16 lanes (RAYCAST_KERNEL_NODE16 in mesh/wide_traverse.inl): one axis's
 // sixteen planes [lo x 8 | hi x 8] per register, so a node is three loads (and, quantised, three
@@ -120,6 +129,7 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 // or half extraction between a node's loads and its mask (docs/performance-mesh.md, session 10:
 // 1M shadow rays ~0.75 -> ~0.85 of Embree's rate).
 #define RAYCAST_KERNEL_FOLDED_ROWS 1
+#define RAYCAST_KERNEL_BITS_MINMAX 1
 #define RAYCAST_KERNEL_NS kernels_avx512
 #include "mesh/wide_traverse.inl"
 // After the single-ray traversal, which it uses.
@@ -127,6 +137,7 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 #undef RAYCAST_KERNEL_NS
 #undef RAYCAST_KERNEL_NODE16
 #undef RAYCAST_KERNEL_FOLDED_ROWS
+#undef RAYCAST_KERNEL_BITS_MINMAX
 
 #pragma GCC diagnostic pop
 #pragma GCC pop_options

@@ -57,6 +57,9 @@ struct RayData {
 #if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
   V8 neg_inv[3];  // -1 / d, broadcast
 #endif
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
+  V8 neg_inv_far[3];  // -1 / d * kFarWiden (intersect_node8_ordered; set by traverse)
+#endif
   int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis] (and in
   int far_off[3];   // an axis's two rows of QuantisedNode::q)
   // Watertight test (Woop, Benthin and Wald 2013): permutation and shear.
@@ -193,9 +196,48 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
   return bits(cmp_le(tnear, tfar)) & n.used;
 }
 
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
+// The widening of intersect_node8_ordered's exits, folded into the far rows' reciprocal. With
+// a = fl(o - plane), n = fl(-1/d) and u = 2^-24, a positive exit fl(a * fl(n * kFarWiden)) is at
+// least a n kFarWiden (1 - u)^2, and the test above's fl(fl(a n) * kSlabWiden) at most
+// a n (1 + 6u) (1 + u)^2: with kFarWiden = 1 + 16u every positive exit is at least the test
+// above's (so are its boxes, and a few more within 16 ulps). Negative exits keep their sign
+// (rounding never flips one), zero ones their value. (Underflow aside, as in the test above.)
+constexpr float kFarWiden = 1.0f + 0x1p-20f;
+
+// The node test of the any-hit octant walks, for rays that traverse checked: tmin >= +0 (sign bit
+// clear), tmax >= tmin, origin and direction finite (so no distance is NaN). The kernel's
+// vmax_bits / vmin_bits (integer max / min of the float bits: one cycle, where the float ones take
+// two) order two floats as floats when one of them has its sign bit clear, so tnear has the value
+// of the test above (tmin is an operand) and so has the exit's min with tmax. The far distance's
+// min of three: the float min when no distance is negative; when one is, both are negative (the
+// bits' min is never below the float min) and the box is culled as above, tnear being >= +0,
+// except where a -0 (the origin on a far plane) with tnear == 0 enters a box the float test
+// culls. And with tnear >= 0 the test above's far * kSlabNarrow (which differs from far *
+// kSlabWiden as a max only when far < 0, where both cull) is not needed. So this test enters every
+// box the test above enters and a few more (an any-hit walk's answer does not depend on it), with
+// four dependent steps fewer between a node's loads and its mask.
+template <int Oct>
+inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax) {
+  V8 d[6];
+  for (int a = 0; a < 3; ++a) {
+    const int near_off = (Oct >> a & 1) * kNodeWidth, far_off = kNodeWidth - near_off;
+    d[a] = (p.o[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
+    d[3 + a] = (p.o[a] - load8(n.box[a] + far_off)) * p.neg_inv_far[a];
+  }
+  const V8 tnear = vmax_bits(vmax_bits(d[0], d[1]), vmax_bits(d[2], p.tmin));
+  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], tmax));
+  return bits(cmp_le(tnear, tfar)) & n.used;
+}
+#endif
+
 // The node test of query Q on Node: the 8-lane one, or the kernel's 16-lane one (same results).
 template <Query Q, int Oct, class Node>
 inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
+  if constexpr (Q == Query::kAny && Oct >= 0 && std::is_same_v<Node, WideNode>)
+    return intersect_node8_ordered<Oct>(n, p, tmax);
+#endif
 #ifdef RAYCAST_KERNEL_NODE16
   if constexpr (uses_node16<Q, Node>())
     return intersect_node16(n, p.node16, p.tmin, tmax, tnear, kSlabWiden, kSlabNarrow);
@@ -213,8 +255,12 @@ struct PairResult {
 
 // Watertight test of two groups' eight triangles (lanes 0-3 from g0, 4-7 from g1): the hit mask
 // (tmin <= t <= tmax) and, when it is not empty, the lane results.
-inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
-                          V8 tmax, PairResult& res) {
+// Always inlined where the walk asks for it (intersect_pair below): GCC 12 stopped inlining it
+// into the AVX-512 any-hit octant walks when the walk of every octant became reachable there
+// (session 13), a call per leaf with the walk's vectors spilled around it.
+[[gnu::always_inline]] inline int intersect_pair_inlined(const TriangleGroup& g0,
+                                                         const TriangleGroup& g1, const RayData& p,
+                                                         V8 tmax, PairResult& res) {
   // Shear and scale the vertices into ray space (per vertex, so shared vertices agree exactly).
 #ifdef RAYCAST_KERNEL_ROW_OFFSETS
   // Each row addressed as group + vertex * 48 (a constant) + axis * 16 (one of three per-ray
@@ -291,6 +337,12 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
     store8(res.det, det);
   }
   return m;
+}
+
+// The pair test, inlined or called as GCC chooses.
+inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
+                          V8 tmax, PairResult& res) {
+  return intersect_pair_inlined(g0, g1, p, tmax, res);
 }
 
 // Starts loading every hit child (a node's cache lines, or all of a leaf's groups) at once,
@@ -399,7 +451,9 @@ template <Query Q, class Node, int Oct>
       const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
       for (std::uint32_t gi = first; gi < end; gi += 2) {
         const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
-        int m = intersect_pair(bvh.groups[gi], g1, p, tmax, res);
+        int m = Q == Query::kAny && Oct >= 0
+                    ? intersect_pair_inlined(bvh.groups[gi], g1, p, tmax, res)
+                    : intersect_pair(bvh.groups[gi], g1, p, tmax, res);
         if (!m) continue;
         if constexpr (Q == Query::kAny) return true;
         while (m) {
@@ -462,6 +516,14 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   RayData p;
   prepare<Q, Node>(ray, p);
   if constexpr (uses_octant_walks<Q, Node>()) {
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
+    // intersect_node8_ordered's rays; the others (NaN, infinities, tmin < 0) take the walk of
+    // every octant.
+    if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && is_finite(ray.o) &&
+          is_finite(ray.d)))
+      return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
+    for (int a = 0; a < 3; ++a) p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
+#endif
     // The octant prepare chose the rows by (inv >= 0, NaN included), so the walks read the same.
     const int oct = (p.near_off[0] != 0) | (p.near_off[1] != 0) << 1 | (p.near_off[2] != 0) << 2;
     switch (oct) {
