@@ -78,27 +78,22 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, Surfac
     return surface(s, r, hit);
   });
   if (o.xf) {
+    const Transform& xf = *o.xf;
     const Vec3 p = si.p;
-    si.p = o.xf->point(p);
-    // Error of the object-space point carried through the matrix, plus the transform's own.
-    const auto& m = o.xf->matrix().m;
-    Vec3 e = o.xf->point_error(p);
-    for (int i = 0; i < 3; ++i)
-      e[i] +=
-          (1 + gamma(3)) * (std::abs(m[i][0]) * si.p_error.x + std::abs(m[i][1]) * si.p_error.y +
-                            std::abs(m[i][2]) * si.p_error.z);
+    si.p = xf.point(p);
+    // Error of the object-space point carried through the matrix (|M| e), plus the transform's
+    // own.
+    Vec3 e = xf.point_error(p);
+    e += (1 + gamma(3)) * xf.abs_vector(si.p_error);
     // A ray spawned from p goes back through the inverse transform, which rounds its origin
     // again (pbrt-v4 tracks this as the ray's origin error): widen the bound by that rounding,
     // carried to world space, so the offset origin stays outside after the round trip.
-    const Vec3 back = o.xf->inverse_point_error(si.p);
-    for (int i = 0; i < 3; ++i)
-      e[i] += (1 + gamma(3)) * (std::abs(m[i][0]) * back.x + std::abs(m[i][1]) * back.y +
-                                std::abs(m[i][2]) * back.z);
+    e += (1 + gamma(3)) * xf.abs_vector(xf.inverse_point_error(si.p));
     si.p_error = e;
     // Most shapes' shading normal is their geometric one, bit for bit: carried once.
     const bool same = std::memcmp(&si.shading_n, &si.n, sizeof si.n) == 0;
-    si.n = normalize(o.xf->normal(si.n));
-    si.shading_n = same ? si.n : normalize(o.xf->normal(si.shading_n));
+    si.n = normalize(xf.normal(si.n));
+    si.shading_n = same ? si.n : normalize(xf.normal(si.shading_n));
   }
   if (hit.flip) {
     si.n = -si.n;
