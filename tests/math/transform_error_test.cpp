@@ -1,7 +1,7 @@
-// Transform keeps its entries' magnitudes (|m_ij|) for the error bounds of transformed surface
-// records: point_error, inverse_point_error and abs_vector must give the bits of the products of
-// the absolute values taken per call (apply_point_error; |m| v summed in apply_vector's order),
-// for translations (their shorter path) and general transforms, on every input.
+// Transform's error bounds for transformed surface records: point_error, inverse_point_error and
+// abs_vector must give the bits of the products of the absolute values taken per call
+// (apply_point_error; |m| v summed in apply_vector's order), for translations (their shorter
+// path) and general transforms, on every input.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -68,7 +68,7 @@ std::vector<Transform> transforms(std::mt19937_64& rng) {
   return out;
 }
 
-TEST(TransformError, KeptMagnitudesGiveThePerCallProductsBits) {
+TEST(TransformError, TranslationPathsGiveThePerCallProductsBits) {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(-10, 10);
   std::uniform_int_distribution<int> pick(0, 2);
