@@ -20,36 +20,27 @@ static_assert(AllShapes<ShapeVariant>::value, "every alternative of ShapeVariant
 
 // std::visit over the shapes calls through a table of thunks that GCC 12 does not inline; the
 // shapes of most scenes (plane, sphere, box) are dispatched first by direct tests of the index
-// (docs/performance-render.md, round 7).
+// (docs/performance-render.md, round 7), then the composites, whose queries and hits are a good
+// share of a CSG scene's (their tests cost the other shapes two compares).
 template <class F>
 decltype(auto) visit_shape(const ShapeVariant& v, F&& f) {
   if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
   if (const auto* s = std::get_if<Sphere>(&v)) return f(*s);
   if (const auto* s = std::get_if<Box>(&v)) return f(*s);
+  if (const auto* s = std::get_if<CsgShape>(&v)) return f(*s);
+  if (const auto* s = std::get_if<InstanceShape>(&v)) return f(*s);
   return std::visit(f, v);
 }
 
-/// visit_shape for occluded(): meshes and composites too, after the plane, sphere and box, so
-/// shadow rays into meshes and CSG objects do not go through visit's thunk. (For intersect() the
-/// same dispatch cost glass and whitted 0.3-0.5 %: docs/performance-render.md, session 13.)
+// visit_shape for occluded(): meshes too, so that shadow rays into meshes do not go through the
+// thunk. (Not for intersect(): the inlined mesh query made intersect(Object) larger and cost
+// glass and whitted 0.3-0.5 %: docs/performance-render.md, session 13.)
 template <class F>
 decltype(auto) visit_occluded_shape(const ShapeVariant& v, F&& f) {
   if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
   if (const auto* s = std::get_if<Sphere>(&v)) return f(*s);
   if (const auto* s = std::get_if<Box>(&v)) return f(*s);
   if (const auto* s = std::get_if<MeshShape>(&v)) return f(*s);
-  if (const auto* s = std::get_if<CsgShape>(&v)) return f(*s);
-  if (const auto* s = std::get_if<InstanceShape>(&v)) return f(*s);
-  return std::visit(f, v);
-}
-
-/// visit_shape for surface(): composites too, whose hits are a good share of a CSG scene's.
-// (After the plane, sphere and box: those tests cost every other scene's hits.)
-template <class F>
-decltype(auto) visit_surface_shape(const ShapeVariant& v, F&& f) {
-  if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
-  if (const auto* s = std::get_if<Sphere>(&v)) return f(*s);
-  if (const auto* s = std::get_if<Box>(&v)) return f(*s);
   if (const auto* s = std::get_if<CsgShape>(&v)) return f(*s);
   if (const auto* s = std::get_if<InstanceShape>(&v)) return f(*s);
   return std::visit(f, v);
@@ -85,7 +76,7 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, Surfac
   std::optional<Ray> moved;
   if (o.xf) moved.emplace(to_object_space(o, ray));
   const Ray& r = moved ? *moved : ray;
-  SurfaceInfo si = visit_surface_shape(o.shape, [&](const auto& s) {
+  SurfaceInfo si = visit_shape(o.shape, [&](const auto& s) {
     if constexpr (requires { surface_geometry(s, r, hit); }) {
       if (needs == SurfaceNeeds::kGeometry) return surface_geometry(s, r, hit);
     }
