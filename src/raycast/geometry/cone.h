@@ -30,6 +30,9 @@ inline void spans(const Cone& s, const Ray& ray, SpanList& out) { frustum_spans(
 inline SurfaceInfo surface(const Cone& s, const Ray& ray, const LocalHit& hit) {
   return frustum_surface(s.f, ray, hit);
 }
+inline SurfaceInfo surface_geometry(const Cone& s, const Ray& ray, const LocalHit& hit) {
+  return frustum_surface_geometry(s.f, ray, hit);
+}
 inline bool contains(const Cone& s, const Vec3& p) { return frustum_contains(s.f, p); }
 inline bool is_closed(const Cone& s) { return s.f.is_closed(); }
 

@@ -31,6 +31,9 @@ inline void spans(const Cylinder& s, const Ray& ray, SpanList& out) {
 inline SurfaceInfo surface(const Cylinder& s, const Ray& ray, const LocalHit& hit) {
   return frustum_surface(s.f, ray, hit);
 }
+inline SurfaceInfo surface_geometry(const Cylinder& s, const Ray& ray, const LocalHit& hit) {
+  return frustum_surface_geometry(s.f, ray, hit);
+}
 inline bool contains(const Cylinder& s, const Vec3& p) { return frustum_contains(s.f, p); }
 inline bool is_closed(const Cylinder& s) { return s.f.is_closed(); }
 

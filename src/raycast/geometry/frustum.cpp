@@ -207,7 +207,11 @@ void frustum_spans(const Frustum& f, const Ray& ray, SpanList& out) {
   }
 }
 
-SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hit) {
+namespace {
+
+// frustum_surface, with (u, v) only when kUv (the geometry is the same either way).
+template <bool kUv>
+SurfaceInfo frustum_record(const Frustum& f, const Ray& ray, const LocalHit& hit) {
   const Ray r = local_ray(f, ray);
   Vec3 p = r.at(hit.t);
   Vec3 err = gamma(5) * (abs(r.o) + abs(hit.t * r.d));
@@ -239,8 +243,10 @@ SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hi
     }
   }
   SurfaceInfo si;
-  si.u = phi_of(p.x, p.y) / f.phi_max;
-  si.v = (p.z - f.z0) / (f.z1 - f.z0);
+  if constexpr (kUv) {
+    si.u = phi_of(p.x, p.y) / f.phi_max;
+    si.v = (p.z - f.z0) / (f.z1 - f.z0);
+  }
   if (f.has_frame) {
     const Vec3 w = to_world(f, p);
     si.p = f.origin + w;
@@ -254,6 +260,16 @@ SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hi
   }
   si.shading_n = si.n;
   return si;
+}
+
+}  // namespace
+
+SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hit) {
+  return frustum_record<true>(f, ray, hit);
+}
+
+SurfaceInfo frustum_surface_geometry(const Frustum& f, const Ray& ray, const LocalHit& hit) {
+  return frustum_record<false>(f, ray, hit);
 }
 
 bool frustum_contains(const Frustum& f, const Vec3& p) {

@@ -42,6 +42,8 @@ int frustum_solid_intervals(const Frustum& f, const Ray& ray, LineInterval out[2
 /// u = phi / phi_max (phi from ex, counter-clockwise about ez), v = (z - z0) / (z1 - z0).
 /// Side normals point away from the axis (as the closed solid's would), caps along -+ez.
 SurfaceInfo frustum_surface(const Frustum& f, const Ray& ray, const LocalHit& hit);
+/// frustum_surface without (u, v) (left 0): no atan2, for hits that need no parameters.
+SurfaceInfo frustum_surface_geometry(const Frustum& f, const Ray& ray, const LocalHit& hit);
 bool frustum_contains(const Frustum& f, const Vec3& p);
 
 }  // namespace raycast

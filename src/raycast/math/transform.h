@@ -68,9 +68,22 @@ class Transform {
     return translation_ ? unit_rows(v) : apply_vector(inv_, v);
   }
   /// Bounds on the absolute rounding error of point(p), per component (pbrt-v4 6.8.6).
-  Vec3 point_error(const Vec3& p) const { return apply_point_error(m_, p); }
+  Vec3 point_error(const Vec3& p) const {
+    return translation_ ? translation_error(m_, p) : apply_point_error(m_, p);
+  }
   /// The same for inverse_point(p) (no Transform copy, unlike inverse().point_error(p)).
-  Vec3 inverse_point_error(const Vec3& p) const { return apply_point_error(inv_, p); }
+  Vec3 inverse_point_error(const Vec3& p) const {
+    return translation_ ? translation_error(inv_, p) : apply_point_error(inv_, p);
+  }
+  /// |M| v: v through the magnitudes of the linear part's entries (error bounds carried through
+  /// point()), summed in apply_vector's order.
+  Vec3 abs_vector(const Vec3& v) const {
+    if (translation_) return unit_rows(v);
+    const auto& r = m_.m;
+    return {std::abs(r[0][0]) * v.x + std::abs(r[0][1]) * v.y + std::abs(r[0][2]) * v.z,
+            std::abs(r[1][0]) * v.x + std::abs(r[1][1]) * v.y + std::abs(r[1][2]) * v.z,
+            std::abs(r[2][0]) * v.x + std::abs(r[2][1]) * v.y + std::abs(r[2][2]) * v.z};
+  }
 
   /// This transform applied after `first`: (this * first)(p) = this(first(p)).
   Transform operator*(const Transform& first) const {
@@ -116,6 +129,13 @@ class Transform {
   static Vec3 translate_point(const Mat4& a, const Vec3& p) {
     const Vec3 u = unit_rows(p);
     return {u.x + a.m[0][3], u.y + a.m[1][3], u.z + a.m[2][3]};
+  }
+  // apply_point_error of a translation: |r p| is |r| |p| exactly, and the magnitudes of the
+  // identity with +0 off the diagonal are itself.
+  static Vec3 translation_error(const Mat4& a, const Vec3& p) {
+    const Vec3 u = unit_rows(abs(p));
+    return gamma(3) *
+           Vec3{u.x + std::abs(a.m[0][3]), u.y + std::abs(a.m[1][3]), u.z + std::abs(a.m[2][3])};
   }
 
   Mat4 m_ = Mat4::identity();

@@ -346,9 +346,11 @@ int leaf_intervals(const CsgTree& tree, const Ray& ray, LeafInterval* iv, std::u
     const Object& object = tree.leaves[i];
     LeafInterval& v = iv[i];
     const CsgTree::LeafKind kind = tree.leaf_kind[i];
-    // No ray copy for leaves without a transform of their own (most).
-    const int some = object.xf ? leaf_interval(kind, object, to_object_space(object, ray), v)
-                               : leaf_interval(kind, object, ray, v);
+    // No ray copy for leaves without a transform of their own (most); one call site, so that
+    // leaf_interval is inlined.
+    std::optional<Ray> moved;
+    if (object.xf) moved.emplace(to_object_space(object, ray));
+    const int some = leaf_interval(kind, object, moved ? *moved : ray, v);
     if (some < 0) return -1;
     const bool needed = (tree.required >> i) & 1;
     if (some == 0) {

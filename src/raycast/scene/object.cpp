@@ -20,22 +20,27 @@ static_assert(AllShapes<ShapeVariant>::value, "every alternative of ShapeVariant
 
 // std::visit over the shapes calls through a table of thunks that GCC 12 does not inline; the
 // shapes of most scenes (plane, sphere, box) are dispatched first by direct tests of the index
-// (docs/performance-render.md, round 7).
+// (docs/performance-render.md, round 7), then the composites, whose queries and hits are a good
+// share of a CSG scene's (their tests cost the other shapes two compares).
 template <class F>
 decltype(auto) visit_shape(const ShapeVariant& v, F&& f) {
   if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
   if (const auto* s = std::get_if<Sphere>(&v)) return f(*s);
   if (const auto* s = std::get_if<Box>(&v)) return f(*s);
+  if (const auto* s = std::get_if<CsgShape>(&v)) return f(*s);
+  if (const auto* s = std::get_if<InstanceShape>(&v)) return f(*s);
   return std::visit(f, v);
 }
 
-/// visit_shape for surface(): composites too, whose hits are a good share of a CSG scene's.
-// (After the plane, sphere and box: those tests cost every other scene's hits.)
+// visit_shape for occluded(): meshes too, so that shadow rays into meshes do not go through the
+// thunk. (Not for intersect(): the inlined mesh query made intersect(Object) larger and cost
+// glass and whitted 0.3-0.5 %: docs/performance-render.md, session 13.)
 template <class F>
-decltype(auto) visit_surface_shape(const ShapeVariant& v, F&& f) {
+decltype(auto) visit_occluded_shape(const ShapeVariant& v, F&& f) {
   if (const auto* s = std::get_if<Plane>(&v)) return f(*s);
   if (const auto* s = std::get_if<Sphere>(&v)) return f(*s);
   if (const auto* s = std::get_if<Box>(&v)) return f(*s);
+  if (const auto* s = std::get_if<MeshShape>(&v)) return f(*s);
   if (const auto* s = std::get_if<CsgShape>(&v)) return f(*s);
   if (const auto* s = std::get_if<InstanceShape>(&v)) return f(*s);
   return std::visit(f, v);
@@ -56,9 +61,9 @@ bool intersect(const Object& o, const Ray& ray, LocalHit& hit) {
 }
 
 bool occluded(const Object& o, const Ray& ray) {
-  if (!o.xf) return visit_shape(o.shape, [&](const auto& s) { return occluded(s, ray); });
+  if (!o.xf) return visit_occluded_shape(o.shape, [&](const auto& s) { return occluded(s, ray); });
   const Ray r = to_object_space(o, ray);
-  return visit_shape(o.shape, [&](const auto& s) { return occluded(s, r); });
+  return visit_occluded_shape(o.shape, [&](const auto& s) { return occluded(s, r); });
 }
 
 void spans(const Object& o, const Ray& ray, SpanList& out) {
@@ -71,34 +76,29 @@ SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit, Surfac
   std::optional<Ray> moved;
   if (o.xf) moved.emplace(to_object_space(o, ray));
   const Ray& r = moved ? *moved : ray;
-  SurfaceInfo si = visit_surface_shape(o.shape, [&](const auto& s) {
+  SurfaceInfo si = visit_shape(o.shape, [&](const auto& s) {
     if constexpr (requires { surface_geometry(s, r, hit); }) {
       if (needs == SurfaceNeeds::kGeometry) return surface_geometry(s, r, hit);
     }
     return surface(s, r, hit);
   });
   if (o.xf) {
+    const Transform& xf = *o.xf;
     const Vec3 p = si.p;
-    si.p = o.xf->point(p);
-    // Error of the object-space point carried through the matrix, plus the transform's own.
-    const auto& m = o.xf->matrix().m;
-    Vec3 e = o.xf->point_error(p);
-    for (int i = 0; i < 3; ++i)
-      e[i] +=
-          (1 + gamma(3)) * (std::abs(m[i][0]) * si.p_error.x + std::abs(m[i][1]) * si.p_error.y +
-                            std::abs(m[i][2]) * si.p_error.z);
+    si.p = xf.point(p);
+    // Error of the object-space point carried through the matrix (|M| e), plus the transform's
+    // own.
+    Vec3 e = xf.point_error(p);
+    e += (1 + gamma(3)) * xf.abs_vector(si.p_error);
     // A ray spawned from p goes back through the inverse transform, which rounds its origin
     // again (pbrt-v4 tracks this as the ray's origin error): widen the bound by that rounding,
     // carried to world space, so the offset origin stays outside after the round trip.
-    const Vec3 back = o.xf->inverse_point_error(si.p);
-    for (int i = 0; i < 3; ++i)
-      e[i] += (1 + gamma(3)) * (std::abs(m[i][0]) * back.x + std::abs(m[i][1]) * back.y +
-                                std::abs(m[i][2]) * back.z);
+    e += (1 + gamma(3)) * xf.abs_vector(xf.inverse_point_error(si.p));
     si.p_error = e;
     // Most shapes' shading normal is their geometric one, bit for bit: carried once.
     const bool same = std::memcmp(&si.shading_n, &si.n, sizeof si.n) == 0;
-    si.n = normalize(o.xf->normal(si.n));
-    si.shading_n = same ? si.n : normalize(o.xf->normal(si.shading_n));
+    si.n = normalize(xf.normal(si.n));
+    si.shading_n = same ? si.n : normalize(xf.normal(si.shading_n));
   }
   if (hit.flip) {
     si.n = -si.n;
