@@ -177,7 +177,9 @@ void check_scene(std::uint64_t seed, int count, int apex_kind, int& crossed) {
     }
     // Shadow segments to the light: from the light's side (along d from it) and from the hit
     // points of rays from the view.
-    std::vector<Vec3> froms{apexes.light + d};
+    // (Also from far away, as from a plane's far points: up to about 100 times the lists' reach
+    // and beyond, where any_along_to takes any_along.)
+    std::vector<Vec3> froms{apexes.light + d, apexes.light + d * 300.0};
     if (fa) froms.push_back(ray.o + a.t * ray.d);
     for (const Vec3& from : froms) {
       const Ray segment{from, apexes.light - from, 0, 1};

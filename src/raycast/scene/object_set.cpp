@@ -94,8 +94,8 @@ std::vector<DirectionLists::Ball> ObjectSet::list_balls(std::span<const Object> 
 
 double ObjectSet::list_reach(const Vec3& apex) const {
   if (!flat_ || sole_ || !balls_usable_ || bounded_.size() < kListsFrom) return 0;
-  // The reach (the lists' unit of margins, and the longest shadow segment they serve): twice the
-  // farthest corner of the bounded objects' box.
+  // The reach (the lists' unit of margins; shadow segments up to DirectionLists::kSegmentReach
+  // times it are served): twice the farthest corner of the bounded objects' box.
   double far2 = 0;
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3 p{corner & 1 ? finite_bounds_.hi.x : finite_bounds_.lo.x,
