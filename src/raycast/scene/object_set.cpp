@@ -174,14 +174,27 @@ struct NearestTest {
   bool found = false;
   bool operator()(std::uint32_t i) {
     LocalHit h;
-    if (raycast::intersect(objects[i], r, h) && h.t <= r.tmax) {
-      r.tmax = h.t;
-      hit = h;
-      index = static_cast<std::int32_t>(i);
-      found = true;
-      return true;
-    }
+    if (raycast::intersect(objects[i], r, h) && h.t <= r.tmax) return take(i, h);
     return false;
+  }
+  // operator() for an unbounded object: an untransformed plane (the floor of most scenes, met
+  // by most rays) calls its shape's test directly, the call intersect(Object) makes for it
+  // after its dispatch.
+  bool unbounded(std::uint32_t i) {
+    const Object& o = objects[i];
+    const Plane* plane = o.xf ? nullptr : std::get_if<Plane>(&o.shape);
+    if (!plane) return (*this)(i);
+    LocalHit h;
+    if (raycast::intersect(*plane, r, h) && h.t <= r.tmax) return take(i, h);
+    return false;
+  }
+  // Takes object i's hit h (t within [tmin, r.tmax]) as the nearest so far.
+  bool take(std::uint32_t i, const LocalHit& h) {
+    r.tmax = h.t;
+    hit = h;
+    index = static_cast<std::int32_t>(i);
+    found = true;
+    return true;
   }
 };
 
@@ -223,7 +236,7 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   }
   Ray r = ray;
   NearestTest test{objects, r, hit, index};
-  for (std::uint32_t i : unbounded_) test(i);
+  for (std::uint32_t i : unbounded_) test.unbounded(i);
   if (!flat_) {
     bvh_nearest(bvh_, bounded_, test);
     return test.found;
@@ -279,7 +292,7 @@ int ObjectSet::view_nearest(std::span<const Object> objects, const Ray& ray, Loc
                             std::int32_t& index) const {
   Ray r = ray;
   NearestTest test{objects, r, hit, index};
-  for (std::uint32_t i : unbounded_) test(i);
+  for (std::uint32_t i : unbounded_) test.unbounded(i);
   // Entries nearest first: once an entry's lower bound of the distance (near2, squared) exceeds
   // tmax |d| (the current hit's distance), no later entry can give a hit at t <= tmax.
   const double dd = length_squared(ray.d);
