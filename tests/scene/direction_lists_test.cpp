@@ -204,7 +204,7 @@ void check_scene(std::uint64_t seed, int count, int apex_kind, int& crossed) {
         };
       };
       plain.any_along(segment, e, collect(along));
-      lists.any_along_to(*lists.light_lists(0), segment, e, collect(along_to));
+      lists.any_along_to(*lists.light_lists(0), segment, collect(along_to));
       ASSERT_EQ(along, along_to) << text(from);
       std::erase_if(along, [&](std::uint32_t i) { return !bounds(objects[i]).is_bounded(); });
       ASSERT_EQ(along, by_objects) << text(from);

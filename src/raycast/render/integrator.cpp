@@ -385,10 +385,8 @@ inline bool Integrator::filters(const Vec3& from, const Vec3& to, bool to_infini
   ++state.rays;
   const double dd = length_squared(segment.d);
   const bool valid = is_valid_extent(length_squared(segment.o), dd);
-  const Vec3 e = segment.d * (1 / std::sqrt(dd));
-  return valid && scene_.object_set().any_along_to(lists, segment, e, [&](std::uint32_t index) {
-    return crosses(index, segment);
-  });
+  return valid && scene_.object_set().any_along_to(
+                      lists, segment, [&](std::uint32_t index) { return crosses(index, segment); });
 }
 
 [[gnu::noinline]] bool Integrator::filters_to(const Vec3& from, const DirectionLists& lists,
@@ -397,8 +395,7 @@ inline bool Integrator::filters(const Vec3& from, const Vec3& to, bool to_infini
   ++state.rays;
   const double dd = length_squared(segment.d);
   const bool valid = is_valid_extent(length_squared(segment.o), dd);
-  const Vec3 e = segment.d * (1 / std::sqrt(dd));
-  return !(valid && scene_.object_set().any_along_to(lists, segment, e, [&](std::uint32_t index) {
+  return !(valid && scene_.object_set().any_along_to(lists, segment, [&](std::uint32_t index) {
     return !passes(index, segment, through);
   }));
 }

@@ -79,16 +79,20 @@ class ObjectSet {
   /// the entries of -d's cell (scene/direction_lists.h), in index order, those farther from the
   /// apex than |d| left out, each after any_along's ball test. Visits a subset of any_along's
   /// objects in its order, leaving out only objects the segment cannot cross; a segment longer
-  /// than the lists' reach takes any_along.
+  /// than the lists' reach, or with |d|^2 outside may_meet's [1e-30, 1e30], takes any_along
+  /// (with e = d / |d|, as the shadow rays' callers compute it).
   template <class F>
-  bool any_along_to(const DirectionLists& lists, const Ray& ray, const Vec3& e, F&& visit) const {
+  bool any_along_to(const DirectionLists& lists, const Ray& ray, F&& visit) const {
     const double dd = length_squared(ray.d);
-    if (!(dd <= lists.reach2())) return any_along(ray, e, visit);
+    if (!(dd <= lists.reach2() && dd >= 1e-30 && dd <= 1e30))
+      return any_along(ray, ray.d * (1 / std::sqrt(dd)), visit);
     for (std::uint32_t index : unbounded_)
       if (visit(index)) return true;
-    // The segment's points seen from the apex lie along -d (within the lists' margins).
+    // The segment's points seen from the apex lie along -d (within the lists' margins). The
+    // balls' test scaled by |d|^2 (as view_nearest's): no unit direction, whose square root and
+    // division most segments, whose cells are empty or cut, would not use.
     for (const DirectionLists::Entry& entry : lists.cell(-ray.d))
-      if (entry.near2 <= dd && entry.may_meet(ray.o, e, 1.0) && visit(entry.index)) return true;
+      if (entry.near2 <= dd && entry.may_meet(ray.o, ray.d, dd) && visit(entry.index)) return true;
     return false;
   }
 
