@@ -2,8 +2,9 @@
 // without them: random scenes of spheres, boxes and CSG objects, rays from the apex in random
 // directions, along the cells' edges and corners, along the axes and the cube's diagonals, with
 // the apex inside an object's ball and on a box face; the nearest hit (same object, same t, bit
-// for bit); and lists around a light hold every object a shadow segment to it crosses. Then a
-// render of scenes/csg.yaml with and without the lists, byte for byte.
+// for bit); lists around a light hold every object a shadow segment to it crosses, and
+// ObjectSet::any_along_to finds the same crossings as any_along, in its order. Then renders of
+// scenes/csg.yaml and bench/scenes/glass.yaml with and without the lists, byte for byte.
 #include "scene/direction_lists.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -143,6 +145,11 @@ void check_scene(std::uint64_t seed, int count, int apex_kind, int& crossed) {
   lists.build(objects);
   lists.set_view(objects, apexes.view);
   ASSERT_TRUE(lists.has_view_lists());
+  Light light;
+  light.position = apexes.light;
+  lists.set_lights(objects, std::span<const Light>(&light, 1));
+  ASSERT_NE(lists.light_lists(0), nullptr);
+  ASSERT_TRUE(lists.has_light_lists());
   // Lists around the light, in index order (DirectionLists's guarantee for segments that end at
   // its apex, not used by the renderer).
   std::vector<DirectionLists::Ball> balls;
@@ -170,7 +177,9 @@ void check_scene(std::uint64_t seed, int count, int apex_kind, int& crossed) {
     }
     // Shadow segments to the light: from the light's side (along d from it) and from the hit
     // points of rays from the view.
-    std::vector<Vec3> froms{apexes.light + d};
+    // (Also from far away, as from a plane's far points: up to about 100 times the lists' reach
+    // and beyond, where any_along_to takes any_along.)
+    std::vector<Vec3> froms{apexes.light + d, apexes.light + d * 300.0};
     if (fa) froms.push_back(ray.o + a.t * ray.d);
     for (const Vec3& from : froms) {
       const Ray segment{from, apexes.light - from, 0, 1};
@@ -185,6 +194,20 @@ void check_scene(std::uint64_t seed, int count, int apex_kind, int& crossed) {
           by_lists.push_back(entry.index);
       ASSERT_EQ(by_objects, by_lists) << text(from);
       crossed += !by_objects.empty();
+      // ObjectSet's walk of its own light lists (any_along_to) against any_along: the same
+      // objects crossed, in the same order, and the same first crossing (the renderer's stop).
+      std::vector<std::uint32_t> along, along_to;
+      auto collect = [&](std::vector<std::uint32_t>& out) {
+        return [&objects, &segment, &out](std::uint32_t index) {
+          if (raycast::occluded(objects[index], segment)) out.push_back(index);
+          return false;
+        };
+      };
+      plain.any_along(segment, e, collect(along));
+      lists.any_along_to(*lists.light_lists(0), segment, collect(along_to));
+      ASSERT_EQ(along, along_to) << text(from);
+      std::erase_if(along, [&](std::uint32_t i) { return !bounds(objects[i]).is_bounded(); });
+      ASSERT_EQ(along, by_objects) << text(from);
     }
   }
   EXPECT_GT(hits, 100);
@@ -239,13 +262,16 @@ TEST(DirectionLists, CornerDirections_CellHoldsEveryBallTheRayMeets) {
   EXPECT_GT(met, 1000);
 }
 
-// scenes/csg.yaml rendered with the direction lists and without: the same bytes.
-TEST(DirectionLists, CsgRender_SameImageAsWithoutLists) {
-  Scene with = load_scene_file(std::string(RAYCAST_SOURCE_DIR) + "/scenes/csg.yaml");
+// A scene rendered with the direction lists (around the camera and the lights) and without:
+// the same bytes.
+void expect_same_render_without_lists(const std::string& path) {
+  Scene with = load_scene_file(std::string(RAYCAST_SOURCE_DIR) + "/" + path);
   Scene without = with;
   without.build(false);
   ASSERT_TRUE(with.object_set().has_view_lists());
+  ASSERT_TRUE(with.object_set().has_light_lists());
   ASSERT_FALSE(without.object_set().has_view_lists());
+  ASSERT_FALSE(without.object_set().has_light_lists());
   RenderOptions options;
   options.width = 160;
   options.height = 120;
@@ -254,6 +280,16 @@ TEST(DirectionLists, CsgRender_SameImageAsWithoutLists) {
   const Image b = render(without, options);
   ASSERT_EQ(a.rgb.size(), b.rgb.size());
   EXPECT_EQ(std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)), 0);
+}
+
+// Opaque shadow rays (Integrator::blocked_to).
+TEST(DirectionLists, CsgRender_SameImageAsWithoutLists) {
+  expect_same_render_without_lists("scenes/csg.yaml");
+}
+
+// Shadow rays through transmissive objects (Integrator::filters_to).
+TEST(DirectionLists, GlassRender_SameImageAsWithoutLists) {
+  expect_same_render_without_lists("bench/scenes/glass.yaml");
 }
 
 }  // namespace

@@ -70,6 +70,8 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
     exponents_.push_back(integer_exponent(m.shininess));
   }
   for (const Light& light : scene.lights) emitted_.push_back(light.emitted());
+  for (std::size_t k = 0; k < scene.lights.size(); ++k)
+    light_lists_.push_back(scene.object_set().light_lists(k));
   objects_.reserve(scene.objects.size());
   for (const Object& o : scene.objects) {
     ObjectFacts f;
@@ -237,8 +239,12 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     }
     return origin;
   };
+  // The direction lists around the light of the loop below (nullptr for lights without: only
+  // point and spot lights have them, and add's shadow rays to such a light end at it).
+  const DirectionLists* lists = nullptr;
   // One light direction l towards `target` (a point, or a direction when at infinity).
-  auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e) {
+  auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e)
+      __attribute__((always_inline)) {
     const double nl = dot(n, l);
     // A light with no positive channel (e <= 0) gives a term <= 0: the test of the term below
     // drops it, without a test of e here for every light.
@@ -260,12 +266,16 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
     if (!any_transmissive_) {
       // Visibility is 0 or 1: no colour to return and multiply (1 * term is term, bit for bit).
-      if (!blocked(origin_towards(from, l), target, at_infinity, state)) sum += term;
+      const Vec3& o = origin_towards(from, l);
+      if (!(lists ? blocked_to(o, *lists, state) : blocked(o, target, at_infinity, state)))
+        sum += term;
       return;
     }
     // Unblocked, the filter product has a channel above 0 (passes() stops the walk otherwise).
     Color through{1, 1, 1};
-    if (filters(origin_towards(from, l), target, at_infinity, state, through))
+    const Vec3& o = origin_towards(from, l);
+    if (lists ? filters_to(o, *lists, state, through)
+              : filters(o, target, at_infinity, state, through))
       sum += mul(through, term);
   };
   // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
@@ -275,6 +285,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
   for (std::size_t li = 0; li < light_count; ++li) {
     const Light& light = lights[li];
     const Color& emitted = emitted_by[li];
+    lists = light_lists_[li];
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:
@@ -364,6 +375,27 @@ inline bool Integrator::filters(const Vec3& from, const Vec3& to, bool to_infini
   // object with materials per part, a walk of its own crossings); the first opaque crossing
   // ends the pass, each transmissive object crossed multiplies by its filter once.
   return !(valid && scene_.any_object_along(segment, e, [&](std::uint32_t index) {
+    return !passes(index, segment, through);
+  }));
+}
+
+[[gnu::noinline]] bool Integrator::blocked_to(const Vec3& from, const DirectionLists& lists,
+                                              SampleState& state) const {
+  const Ray segment{from, lists.apex() - from, 0, 1};
+  ++state.rays;
+  const double dd = length_squared(segment.d);
+  const bool valid = is_valid_extent(length_squared(segment.o), dd);
+  return valid && scene_.object_set().any_along_to(
+                      lists, segment, [&](std::uint32_t index) { return crosses(index, segment); });
+}
+
+[[gnu::noinline]] bool Integrator::filters_to(const Vec3& from, const DirectionLists& lists,
+                                              SampleState& state, Color& through) const {
+  const Ray segment{from, lists.apex() - from, 0, 1};
+  ++state.rays;
+  const double dd = length_squared(segment.d);
+  const bool valid = is_valid_extent(length_squared(segment.o), dd);
+  return !(valid && scene_.object_set().any_along_to(lists, segment, [&](std::uint32_t index) {
     return !passes(index, segment, through);
   }));
 }

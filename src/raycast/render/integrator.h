@@ -85,11 +85,17 @@ class Integrator {
   /// shadow() for a scene with no transmissive material: whether an object blocks the segment
   /// (visibility 0) or not (1).
   bool blocked(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
+  /// blocked() for a segment to the apex of `lists` (a point or spot light's direction lists,
+  /// ObjectSet::any_along_to): the same answer from fewer ball tests.
+  bool blocked_to(const Vec3& from, const DirectionLists& lists, SampleState& state) const;
   /// shadow() for a scene with transmissive materials, without the call: false when the segment
   /// is blocked, else true with `through` (given as {1, 1, 1}) multiplied by the filters of the
   /// transmissive objects crossed (then some channel is above 0).
   bool filters(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state,
                Color& through) const;
+  /// filters() for a segment to the apex of `lists`, as blocked_to.
+  bool filters_to(const Vec3& from, const DirectionLists& lists, SampleState& state,
+                  Color& through) const;
 
   /// What the shading asks of each scene object, worked out once per frame (the same answers
   /// the per-hit look-ups would give).
@@ -113,6 +119,8 @@ class Integrator {
   std::vector<Color> emitted_;        // by light: Light::emitted()
   std::vector<unsigned> exponents_;   // by material: integer Phong exponent, 0 for std::pow
   bool any_transmissive_ = false;
+  // By light: the scene's direction lists around it (ObjectSet::light_lists), or nullptr.
+  std::vector<const DirectionLists*> light_lists_;
 };
 
 }  // namespace raycast

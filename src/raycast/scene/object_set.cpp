@@ -18,6 +18,7 @@ void ObjectSet::build(std::span<const Object> objects) {
   group_count_ = 0;
   bounds_ = finite_bounds_ = Aabb{};
   view_lists_ = DirectionLists{};
+  light_lists_.clear();
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const Aabb b = raycast::bounds(objects[i]);
     bounds_.grow(b);
@@ -82,25 +83,49 @@ void ObjectSet::build(std::span<const Object> objects) {
   bvh_ = build_bvh(boxes, centres, config);
 }
 
-void ObjectSet::set_view(std::span<const Object> objects, const Vec3& view) {
-  view_lists_ = DirectionLists{};
-  if (!flat_ || sole_ || !balls_usable_ || bounded_.size() < kListsFrom) return;
+std::vector<DirectionLists::Ball> ObjectSet::list_balls(std::span<const Object> objects) const {
   std::vector<DirectionLists::Ball> balls;
   for (std::uint32_t index : bounded_) {
     const Ball ball = bounding_ball(objects[index]);
     if (!ball.is_empty()) balls.push_back({index, ball.centre, ball.radius});
   }
-  // The reach (the lists' unit of margins): twice the farthest corner of the bounded objects' box.
+  return balls;
+}
+
+double ObjectSet::list_reach(const Vec3& apex) const {
+  if (!flat_ || sole_ || !balls_usable_ || bounded_.size() < kListsFrom) return 0;
+  // The reach (the lists' unit of margins; shadow segments up to DirectionLists::kSegmentReach
+  // times it are served): twice the farthest corner of the bounded objects' box.
   double far2 = 0;
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3 p{corner & 1 ? finite_bounds_.hi.x : finite_bounds_.lo.x,
                  corner & 2 ? finite_bounds_.hi.y : finite_bounds_.lo.y,
                  corner & 4 ? finite_bounds_.hi.z : finite_bounds_.lo.z};
-    far2 = std::max(far2, length_squared(p - view));
+    far2 = std::max(far2, length_squared(p - apex));
   }
   const double reach = 2 * std::sqrt(far2);
-  if (max_component(abs(view)) <= kBallLimit && reach > 0 && reach <= kBallLimit)
-    view_lists_.build(view, balls, reach, kListSide, DirectionLists::Order::kNearestFirst);
+  return max_component(abs(apex)) <= kBallLimit && reach > 0 && reach <= kBallLimit ? reach : 0;
+}
+
+void ObjectSet::set_view(std::span<const Object> objects, const Vec3& view) {
+  view_lists_ = DirectionLists{};
+  const double reach = list_reach(view);
+  if (reach > 0)
+    view_lists_.build(view, list_balls(objects), reach, kListSide,
+                      DirectionLists::Order::kNearestFirst);
+}
+
+void ObjectSet::set_lights(std::span<const Object> objects, std::span<const Light> lights) {
+  light_lists_.assign(lights.size(), DirectionLists{});
+  std::vector<DirectionLists::Ball> balls;
+  for (std::size_t k = 0; k < lights.size(); ++k) {
+    const Light& light = lights[k];
+    if (light.type != LightType::kPoint && light.type != LightType::kSpot) continue;
+    const double reach = list_reach(light.position);
+    if (!(reach > 0)) continue;
+    if (balls.empty()) balls = list_balls(objects);
+    light_lists_[k].build(light.position, balls, reach, kListSide, DirectionLists::Order::kIndex);
+  }
 }
 
 void ObjectSet::build_float_groups(const std::vector<Aabb>& boxes) {
@@ -149,14 +174,27 @@ struct NearestTest {
   bool found = false;
   bool operator()(std::uint32_t i) {
     LocalHit h;
-    if (raycast::intersect(objects[i], r, h) && h.t <= r.tmax) {
-      r.tmax = h.t;
-      hit = h;
-      index = static_cast<std::int32_t>(i);
-      found = true;
-      return true;
-    }
+    if (raycast::intersect(objects[i], r, h) && h.t <= r.tmax) return take(i, h);
     return false;
+  }
+  // operator() for an unbounded object: an untransformed plane (the floor of most scenes, met
+  // by most rays) calls its shape's test directly, the call intersect(Object) makes for it
+  // after its dispatch.
+  bool unbounded(std::uint32_t i) {
+    const Object& o = objects[i];
+    const Plane* plane = o.xf ? nullptr : std::get_if<Plane>(&o.shape);
+    if (!plane) return (*this)(i);
+    LocalHit h;
+    if (raycast::intersect(*plane, r, h) && h.t <= r.tmax) return take(i, h);
+    return false;
+  }
+  // Takes object i's hit h (t within [tmin, r.tmax]) as the nearest so far.
+  bool take(std::uint32_t i, const LocalHit& h) {
+    r.tmax = h.t;
+    hit = h;
+    index = static_cast<std::int32_t>(i);
+    found = true;
+    return true;
   }
 };
 
@@ -198,7 +236,7 @@ bool ObjectSet::intersect(std::span<const Object> objects, const Ray& ray, Local
   }
   Ray r = ray;
   NearestTest test{objects, r, hit, index};
-  for (std::uint32_t i : unbounded_) test(i);
+  for (std::uint32_t i : unbounded_) test.unbounded(i);
   if (!flat_) {
     bvh_nearest(bvh_, bounded_, test);
     return test.found;
@@ -254,7 +292,7 @@ int ObjectSet::view_nearest(std::span<const Object> objects, const Ray& ray, Loc
                             std::int32_t& index) const {
   Ray r = ray;
   NearestTest test{objects, r, hit, index};
-  for (std::uint32_t i : unbounded_) test(i);
+  for (std::uint32_t i : unbounded_) test.unbounded(i);
   // Entries nearest first: once an entry's lower bound of the distance (near2, squared) exceeds
   // tmax |d| (the current hit's distance), no later entry can give a hit at t <= tmax.
   const double dd = length_squared(ray.d);

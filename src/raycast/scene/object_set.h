@@ -19,6 +19,7 @@
 #include "accel/bvh_traverse.h"
 #include "scene/ball_list.h"
 #include "scene/direction_lists.h"
+#include "scene/light.h"
 #include "scene/object.h"
 
 namespace raycast {
@@ -73,14 +74,49 @@ class ObjectSet {
     return each_ball_near(balls_.data(), balls_.data() + balls_.size(), ray.o, e, visit);
   }
 
+  /// any_along for a segment that ends at `lists`' apex (ray.d = apex - ray.o exactly, as
+  /// apex - o rounds; tmin 0, tmax 1; lists: one of light_lists()): the unbounded objects, then
+  /// the entries of -d's cell (scene/direction_lists.h), in index order, those farther from the
+  /// apex than |d| left out, each after any_along's ball test. Visits a subset of any_along's
+  /// objects in its order, leaving out only objects the segment cannot cross; a segment longer
+  /// than the lists' reach, or with |d|^2 outside may_meet's [1e-30, 1e30], takes any_along
+  /// (with e = d / |d|, as the shadow rays' callers compute it).
+  template <class F>
+  bool any_along_to(const DirectionLists& lists, const Ray& ray, F&& visit) const {
+    const double dd = length_squared(ray.d);
+    if (!(dd <= lists.reach2() && dd >= 1e-30 && dd <= 1e30))
+      return any_along(ray, ray.d * (1 / std::sqrt(dd)), visit);
+    for (std::uint32_t index : unbounded_)
+      if (visit(index)) return true;
+    // The segment's points seen from the apex lie along -d (within the lists' margins). The
+    // balls' test scaled by |d|^2 (as view_nearest's): no unit direction, whose square root and
+    // division most segments, whose cells are empty or cut, would not use.
+    for (const DirectionLists::Entry& entry : lists.cell(-ray.d))
+      if (entry.near2 <= dd && entry.may_meet(ray.o, ray.d, dd) && visit(entry.index)) return true;
+    return false;
+  }
+
   /// Direction lists (scene/direction_lists.h) around `view` (the nearest-hit walk's, for rays
   /// that start there: a pinhole camera's position), for flat sets of at least kListsFrom
-  /// bounded objects; none otherwise. Call after build. (Lists around the point lights for the
-  /// shadow walk were measured and not kept: docs/performance-render.md, session 12, lists12.)
+  /// bounded objects; none otherwise. Call after build.
   void set_view(std::span<const Object> objects, const Vec3& view);
+  /// Direction lists in index order around each point and spot light of `lights` (any_along_to's,
+  /// for shadow segments that end at the light), under the same conditions as set_view; none for
+  /// other lights. Call after build.
+  void set_lights(std::span<const Object> objects, std::span<const Light> lights);
 
   /// Whether set_view built the lists.
   bool has_view_lists() const { return view_lists_.built(); }
+  /// The lists around lights[k] of set_lights, or nullptr when it has none.
+  const DirectionLists* light_lists(std::size_t k) const {
+    return k < light_lists_.size() && light_lists_[k].built() ? &light_lists_[k] : nullptr;
+  }
+  /// Whether set_lights built lists around any light.
+  bool has_light_lists() const {
+    for (const DirectionLists& lists : light_lists_)
+      if (lists.built()) return true;
+    return false;
+  }
   /// Whether any_along culls by balls (a flat set, not the one-mesh set, coordinates in range).
   bool walks_balls() const { return balls_usable_; }
   /// Whether the nearest-hit walk tries the unbounded objects, then each bounded one after its
@@ -103,7 +139,7 @@ class ObjectSet {
   std::size_t memory_bytes() const {
     return bvh_.memory_bytes() + pairs_.capacity() * sizeof(BoxPair) +
            groups_.capacity() * sizeof(Box4) + boxes_.capacity() * sizeof(Aabb) +
-           balls_.capacity() * sizeof(BallPair) + view_lists_.memory_bytes() +
+           balls_.capacity() * sizeof(BallPair) + view_lists_.memory_bytes() + light_lists_bytes() +
            (bounded_.capacity() + unbounded_.capacity()) * sizeof(std::uint32_t);
   }
 
@@ -128,6 +164,16 @@ class ObjectSet {
   static constexpr int kListSide = 64;
 
  private:
+  std::size_t light_lists_bytes() const {
+    std::size_t bytes = light_lists_.capacity() * sizeof(DirectionLists);
+    for (const DirectionLists& lists : light_lists_) bytes += lists.memory_bytes();
+    return bytes;
+  }
+  /// The balls set_view and set_lights build their lists of, and the reach of lists around
+  /// `apex` (0 where no lists are made: not a flat set of kListsFrom objects or more, or out of
+  /// range).
+  std::vector<DirectionLists::Ball> list_balls(std::span<const Object> objects) const;
+  double list_reach(const Vec3& apex) const;
   /// The nearest-hit walk of a ray from view_lists_'s apex: 1 hit, 0 none, -1 two bounded objects
   /// hit at the same t (the caller's walk decides: its order breaks the tie).
   int view_nearest(std::span<const Object> objects, const Ray& ray, LocalHit& hit,
@@ -234,8 +280,10 @@ class ObjectSet {
   // (any_along), when every ball lies within kBallLimit (balls_usable_).
   std::vector<BallPair> balls_;
   bool balls_usable_ = false;
-  // set_view's lists around the camera (nearest first).
+  // set_view's lists around the camera (nearest first), set_lights's around each light (index
+  // order; not built for lights other than point and spot lights).
   DirectionLists view_lists_;
+  std::vector<DirectionLists> light_lists_;
   Bvh bvh_;                               // over the bounded objects
   std::vector<std::uint32_t> bounded_;    // bvh prim -> object index
   std::vector<std::uint32_t> unbounded_;  // objects tested on every ray

@@ -12,12 +12,13 @@ namespace raycast {
 void Scene::build(bool direction_lists) {
   const auto start = std::chrono::steady_clock::now();
   set_.build(objects);
-  // Direction lists around the camera's position (rays that start exactly there use them).
-  // None around the lights: the shadow walk's hook cost the scenes without lists 2-4 % (the
-  // integrator's visitors; docs/performance-render.md, session 12).
+  // Direction lists around the camera's position (rays that start exactly there use them) and
+  // the point and spot lights (shadow segments that end there: the integrator's walk, chosen
+  // once per render; docs/performance-render.md, session 13).
   if (direction_lists) {
     const CameraDesc view = camera_or_default(*this);
     if (view.type == CameraType::kPerspective) set_.set_view(objects, view.position);
+    set_.set_lights(objects, lights);
   }
   // The direct path's condition is ObjectSet's own for its sole-mesh path: one object with
   // non-empty, bounded bounds, an untransformed mesh; every other object has empty bounds.
