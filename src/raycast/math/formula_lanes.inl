@@ -216,14 +216,16 @@ inline void widen_ulps_clamped(V lo, V hi, V& rlo, V& rhi) {
   }
 }
 
-// std::ceil on every lane: one vector rounding where the target has it (upward, no inexact
-// exception: the instruction std::ceil compiles to there, on all lanes at once).
+// std::ceil on every lane: one vector rounding where the including file says the target has it
+// (RAYCAST_LANES_ROUNDPD256: upward, no inexact exception, the instruction std::ceil compiles to
+// there, on all lanes at once).
 inline V vceil(V x) {
-#if defined(__AVX__)
-  if constexpr (W == 4) return __builtin_ia32_roundpd256(x, 0x0A);
-#endif
+#if defined(RAYCAST_LANES_ROUNDPD256)
+  return __builtin_ia32_roundpd256(x, 0x0A);
+#else
   for (int k = 0; k < W; ++k) x[k] = std::ceil(x[k]);
   return x;
+#endif
 }
 
 // interval_detail::hits_phase on every lane: the same operations elementwise.
