@@ -39,6 +39,18 @@ V splat(double v) {
 }
 V vabs(V x) { return x < 0 ? -x : x; }
 
+// Whether every lane of m is set: one mask extraction where the including file says the target
+// has AVX (RAYCAST_LANES_AVX), else lane by lane.
+inline bool all_lanes(M m) {
+#if defined(RAYCAST_LANES_AVX)
+  return __builtin_ia32_movmskpd256(reinterpret_cast<V>(m)) == (1 << W) - 1;
+#else
+  for (int k = 0; k < W; ++k)
+    if (!m[k]) return false;
+  return true;
+#endif
+}
+
 // [lo, hi] widened as interval_detail::widen(lo, hi): the branch-free form on every lane, then the
 // rare lanes whose ends are infinite or NaN redone by the exact path; lanes where `empty` is set
 // become empty.
@@ -46,11 +58,13 @@ inline void widen(V lo, V hi, M empty, V& rlo, V& rhi) {
   const V rel = splat(0x1p-52), tiny = splat(0x1p-1074), inf = splat(kInf);
   V l = lo - (vabs(lo) * rel + tiny), h = hi + (vabs(hi) * rel + tiny);
   const M ok = (l <= h) & (h - l < inf);
-  for (int k = 0; k < W; ++k) {
-    if (ok[k]) continue;
-    const Interval r = interval_detail::widen(lo[k], hi[k], 1);
-    l[k] = r.lo;
-    h[k] = r.hi;
+  if (!all_lanes(ok)) {
+    for (int k = 0; k < W; ++k) {
+      if (ok[k]) continue;
+      const Interval r = interval_detail::widen(lo[k], hi[k], 1);
+      l[k] = r.lo;
+      h[k] = r.hi;
+    }
   }
   rlo = empty ? inf : l;
   rhi = empty ? -inf : h;
@@ -112,11 +126,13 @@ inline void pow_lanes(V lo, V hi, int n, V& rlo, V& rhi) {
   V l = pl - steps * (vabs(pl) * rel + tiny), h = ph + steps * (vabs(ph) * rel + tiny);
   if (n % 2 == 0) l = l < zero ? zero : l;
   const M ok = (l <= h) & (h - l < inf) & (vabs(pl) < inf) & (vabs(ph) < inf);
-  for (int k = 0; k < W; ++k) {
-    if (ok[k] || empty[k]) continue;
-    const Interval r = pow_int(Interval{lo[k], hi[k]}, n);
-    l[k] = r.lo;
-    h[k] = r.hi;
+  if (!all_lanes(ok | empty)) {
+    for (int k = 0; k < W; ++k) {
+      if (ok[k] || empty[k]) continue;
+      const Interval r = pow_int(Interval{lo[k], hi[k]}, n);
+      l[k] = r.lo;
+      h[k] = r.hi;
+    }
   }
   rlo = empty ? inf : l;
   rhi = empty ? -inf : h;
@@ -207,20 +223,22 @@ inline void widen_ulps_clamped(V lo, V hi, V& rlo, V& rhi) {
   s = sneg ? -sv : sv;
   c = cneg ? -cv : cv;
   const M ok = vabs(x) <= splat(0x1p19);
-  for (int k = 0; k < W; ++k) {
-    if (ok[k]) continue;
-    double sk, ck;  // (a vector element has no address)
-    interval_detail::sincos(x[k], &sk, &ck);
-    s[k] = sk;
-    c[k] = ck;
+  if (!all_lanes(ok)) {
+    for (int k = 0; k < W; ++k) {
+      if (ok[k]) continue;
+      double sk, ck;  // (a vector element has no address)
+      interval_detail::sincos(x[k], &sk, &ck);
+      s[k] = sk;
+      c[k] = ck;
+    }
   }
 }
 
 // std::ceil on every lane: one vector rounding where the including file says the target has it
-// (RAYCAST_LANES_ROUNDPD256: upward, no inexact exception, the instruction std::ceil compiles to
+// (RAYCAST_LANES_AVX: upward, no inexact exception, the instruction std::ceil compiles to
 // there, on all lanes at once).
 inline V vceil(V x) {
-#if defined(RAYCAST_LANES_ROUNDPD256)
+#if defined(RAYCAST_LANES_AVX)
   return __builtin_ia32_roundpd256(x, 0x0A);
 #else
   for (int k = 0; k < W; ++k) x[k] = std::ceil(x[k]);

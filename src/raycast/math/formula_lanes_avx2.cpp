@@ -18,7 +18,7 @@
 namespace raycast::lanes_w4 {
 constexpr int W = 4;
 // (GCC's target pragma does not define __AVX__: the kernel is told so here.)
-#define RAYCAST_LANES_ROUNDPD256 1
+#define RAYCAST_LANES_AVX 1
 #include "math/formula_lanes.inl"
-#undef RAYCAST_LANES_ROUNDPD256
+#undef RAYCAST_LANES_AVX
 }  // namespace raycast::lanes_w4
