@@ -387,11 +387,12 @@ void sin_cos_point(double x, double* s, double* c) {
 }
 
 // The W lanes [t[k], t[k + 1]]: see run_lanes in formula_lanes.h. s[v], c[v] hold sin and cos of
-// variable v at the W + 1 points; the first (and the last) are given when first_known
-// (last_known), the others are computed here.
+// variable v at the W + 1 points; the last are given when last_known, the others are computed
+// here (the first too when given: a caller's values are lane_sin_cos of the same point, so the
+// same bits, and all W lanes stored at once are cheaper than skipping one).
 void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
-                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi) {
+                  bool last_known, double* const s_of[3], double* const c_of[3], double* out_lo,
+                  double* out_hi, double* out_dlo, double* out_dhi) {
   // The variables as f_over builds them: Interval(o) + [t_k, t_k+1] * Interval(d), derivative d.
   Slot var[3];
   V tlo, thi;
@@ -416,7 +417,7 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
       V x, sx, cx;
       for (int j = 0; j < W; ++j) x[j] = p[j];
       sincos_points(x, sx, cx);
-      for (int j = first_known ? 1 : 0; j < W; ++j) {
+      for (int j = 0; j < W; ++j) {
         sv[j] = sx[j];
         cv[j] = cx[j];
       }
