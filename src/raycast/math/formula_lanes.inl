@@ -1,7 +1,7 @@
 // The lane kernel of math/formula_lanes.cpp, written once over W lanes: each including file
 // (one per instruction set, docs/architecture.md "ISA dispatch") defines W and includes this
 // inside its own namespace, after every header (so that no header code is compiled for a wider
-// instruction set than the CPU's). Needs <algorithm>, <cmath>, <limits>, <numbers> and
+// instruction set than the CPU's). Needs <algorithm>, <cmath>, <cstring>, <limits>, <numbers> and
 // math/formula.h.
 
 using DualI = Dual<Interval, 1>;
@@ -490,10 +490,9 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
         break;
     }
   }
-  for (int k = 0; k < W; ++k) {
-    out_lo[k] = s[0].lo[k];
-    out_hi[k] = s[0].hi[k];
-    out_dlo[k] = s[0].dlo[k];
-    out_dhi[k] = s[0].dhi[k];
-  }
+  // (Whole vectors copied: lane by lane, the compiler moves each element alone.)
+  std::memcpy(out_lo, &s[0].lo, sizeof(V));
+  std::memcpy(out_hi, &s[0].hi, sizeof(V));
+  std::memcpy(out_dlo, &s[0].dlo, sizeof(V));
+  std::memcpy(out_dhi, &s[0].dhi, sizeof(V));
 }
