@@ -309,22 +309,23 @@ TEST(FormulaLanes, TwoAndFourLaneKernelsAgree) {
       for (int v = 0; v < 3; ++v) {
         for (int j : {0, W}) {
           const double p = s.o[v] + s.t[j] * s.d[v];
-          s4[v][j] = s2[v][j] = std::sin(p);
-          c4[v][j] = c2[v][j] = std::cos(p);
+          lane_sin_cos(p, &s4[v][j], &c4[v][j]);  // given ends are the lanes' own values
+          s2[v][j] = s4[v][j];
+          c2[v][j] = c4[v][j];
         }
       }
       const bool known = trial % 2 == 1;
       double* ps4[3] = {s4[0], s4[1], s4[2]};
       double* pc4[3] = {c4[0], c4[1], c4[2]};
       FormulaLanes a, b;
-      lanes_w4::lanes_kernel(f, s.o, s.d, s.t, known, known, ps4, pc4, a.lo, a.hi, a.dlo, a.dhi);
+      lanes_w4::lanes_kernel(f, s.o, s.d, s.t, known, ps4, pc4, a.lo, a.hi, a.dlo, a.dhi);
       double* ps2[3] = {s2[0], s2[1], s2[2]};
       double* pc2[3] = {c2[0], c2[1], c2[2]};
-      lanes_w2::lanes_kernel(f, s.o, s.d, s.t, known, false, ps2, pc2, b.lo, b.hi, b.dlo, b.dhi);
+      lanes_w2::lanes_kernel(f, s.o, s.d, s.t, false, ps2, pc2, b.lo, b.hi, b.dlo, b.dhi);
       double* qs2[3] = {s2[0] + 2, s2[1] + 2, s2[2] + 2};
       double* qc2[3] = {c2[0] + 2, c2[1] + 2, c2[2] + 2};
-      lanes_w2::lanes_kernel(f, s.o, s.d, s.t + 2, true, known, qs2, qc2, b.lo + 2, b.hi + 2,
-                             b.dlo + 2, b.dhi + 2);
+      lanes_w2::lanes_kernel(f, s.o, s.d, s.t + 2, known, qs2, qc2, b.lo + 2, b.hi + 2, b.dlo + 2,
+                             b.dhi + 2);
       for (int k = 0; k < W; ++k) {
         EXPECT_EQ(a.lo[k], b.lo[k]);
         EXPECT_EQ(a.hi[k], b.hi[k]);

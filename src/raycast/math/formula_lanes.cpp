@@ -22,13 +22,13 @@ void run_lanes(const Formula& f, const double o[3], const double d[3],
   double* c[3] = {trig->c[0], trig->c[1], trig->c[2]};
   const bool known = trig->ends_known;
   if (use_avx2()) {
-    lanes_w4::lanes_kernel(f, o, d, t, known, known, s, c, out.lo, out.hi, out.dlo, out.dhi);
+    lanes_w4::lanes_kernel(f, o, d, t, known, s, c, out.lo, out.hi, out.dlo, out.dhi);
     return;
   }
-  lanes_w2::lanes_kernel(f, o, d, t, known, false, s, c, out.lo, out.hi, out.dlo, out.dhi);
+  lanes_w2::lanes_kernel(f, o, d, t, false, s, c, out.lo, out.hi, out.dlo, out.dhi);
   double* s2[3] = {s[0] + 2, s[1] + 2, s[2] + 2};
   double* c2[3] = {c[0] + 2, c[1] + 2, c[2] + 2};
-  lanes_w2::lanes_kernel(f, o, d, t + 2, true, known, s2, c2, out.lo + 2, out.hi + 2, out.dlo + 2,
+  lanes_w2::lanes_kernel(f, o, d, t + 2, known, s2, c2, out.lo + 2, out.hi + 2, out.dlo + 2,
                          out.dhi + 2);
 }
 

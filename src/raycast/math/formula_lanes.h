@@ -20,7 +20,8 @@ struct FormulaLanes {
 /// sin and cos of each variable at the kFormulaLanes + 1 points o + t[j] d (computed there
 /// exactly so, by lane_sin_cos), for formulas with sin or cos of a bare variable: a caller that
 /// splits pieces passes the values at a piece's ends on to its parts (ends_known), so that a pass
-/// computes only the interior points'.
+/// computes only the interior points' (and the first point's again, with the same bits, where that
+/// is cheaper than skipping it).
 struct LaneTrig {
   double s[3][kFormulaLanes + 1], c[3][kFormulaLanes + 1];
   bool ends_known = false;

@@ -1,7 +1,7 @@
 // The lane kernel of math/formula_lanes.cpp, written once over W lanes: each including file
 // (one per instruction set, docs/architecture.md "ISA dispatch") defines W and includes this
 // inside its own namespace, after every header (so that no header code is compiled for a wider
-// instruction set than the CPU's). Needs <algorithm>, <cmath>, <limits>, <numbers> and
+// instruction set than the CPU's). Needs <algorithm>, <cmath>, <cstring>, <limits>, <numbers> and
 // math/formula.h.
 
 using DualI = Dual<Interval, 1>;
@@ -39,6 +39,18 @@ V splat(double v) {
 }
 V vabs(V x) { return x < 0 ? -x : x; }
 
+// Whether every lane of m is set: one mask extraction where the including file says the target
+// has AVX (RAYCAST_LANES_AVX), else lane by lane.
+inline bool all_lanes(M m) {
+#if defined(RAYCAST_LANES_AVX)
+  return __builtin_ia32_movmskpd256(reinterpret_cast<V>(m)) == (1 << W) - 1;
+#else
+  for (int k = 0; k < W; ++k)
+    if (!m[k]) return false;
+  return true;
+#endif
+}
+
 // [lo, hi] widened as interval_detail::widen(lo, hi): the branch-free form on every lane, then the
 // rare lanes whose ends are infinite or NaN redone by the exact path; lanes where `empty` is set
 // become empty.
@@ -46,11 +58,13 @@ inline void widen(V lo, V hi, M empty, V& rlo, V& rhi) {
   const V rel = splat(0x1p-52), tiny = splat(0x1p-1074), inf = splat(kInf);
   V l = lo - (vabs(lo) * rel + tiny), h = hi + (vabs(hi) * rel + tiny);
   const M ok = (l <= h) & (h - l < inf);
-  for (int k = 0; k < W; ++k) {
-    if (ok[k]) continue;
-    const Interval r = interval_detail::widen(lo[k], hi[k], 1);
-    l[k] = r.lo;
-    h[k] = r.hi;
+  if (!all_lanes(ok)) {
+    for (int k = 0; k < W; ++k) {
+      if (ok[k]) continue;
+      const Interval r = interval_detail::widen(lo[k], hi[k], 1);
+      l[k] = r.lo;
+      h[k] = r.hi;
+    }
   }
   rlo = empty ? inf : l;
   rhi = empty ? -inf : h;
@@ -112,11 +126,13 @@ inline void pow_lanes(V lo, V hi, int n, V& rlo, V& rhi) {
   V l = pl - steps * (vabs(pl) * rel + tiny), h = ph + steps * (vabs(ph) * rel + tiny);
   if (n % 2 == 0) l = l < zero ? zero : l;
   const M ok = (l <= h) & (h - l < inf) & (vabs(pl) < inf) & (vabs(ph) < inf);
-  for (int k = 0; k < W; ++k) {
-    if (ok[k] || empty[k]) continue;
-    const Interval r = pow_int(Interval{lo[k], hi[k]}, n);
-    l[k] = r.lo;
-    h[k] = r.hi;
+  if (!all_lanes(ok | empty)) {
+    for (int k = 0; k < W; ++k) {
+      if (ok[k] || empty[k]) continue;
+      const Interval r = pow_int(Interval{lo[k], hi[k]}, n);
+      l[k] = r.lo;
+      h[k] = r.hi;
+    }
   }
   rlo = empty ? inf : l;
   rhi = empty ? -inf : h;
@@ -207,19 +223,32 @@ inline void widen_ulps_clamped(V lo, V hi, V& rlo, V& rhi) {
   s = sneg ? -sv : sv;
   c = cneg ? -cv : cv;
   const M ok = vabs(x) <= splat(0x1p19);
-  for (int k = 0; k < W; ++k) {
-    if (ok[k]) continue;
-    double sk, ck;  // (a vector element has no address)
-    interval_detail::sincos(x[k], &sk, &ck);
-    s[k] = sk;
-    c[k] = ck;
+  if (!all_lanes(ok)) {
+    for (int k = 0; k < W; ++k) {
+      if (ok[k]) continue;
+      double sk, ck;  // (a vector element has no address)
+      interval_detail::sincos(x[k], &sk, &ck);
+      s[k] = sk;
+      c[k] = ck;
+    }
   }
+}
+
+// std::ceil on every lane: one vector rounding where the including file says the target has it
+// (RAYCAST_LANES_AVX: upward, no inexact exception, the instruction std::ceil compiles to
+// there, on all lanes at once).
+inline V vceil(V x) {
+#if defined(RAYCAST_LANES_AVX)
+  return __builtin_ia32_roundpd256(x, 0x0A);
+#else
+  for (int k = 0; k < W; ++k) x[k] = std::ceil(x[k]);
+  return x;
+#endif
 }
 
 // interval_detail::hits_phase on every lane: the same operations elementwise.
 inline M hits_phase_lanes(V lo, V hi, double c, double period) {
-  V k = (lo - splat(c)) / splat(period) - splat(1e-9);
-  for (int j = 0; j < W; ++j) k[j] = std::ceil(k[j]);
+  const V k = vceil((lo - splat(c)) / splat(period) - splat(1e-9));
   return splat(c) + k * splat(period) <= hi + splat(1e-9) * (splat(1) + vabs(hi));
 }
 
@@ -358,11 +387,12 @@ void sin_cos_point(double x, double* s, double* c) {
 }
 
 // The W lanes [t[k], t[k + 1]]: see run_lanes in formula_lanes.h. s[v], c[v] hold sin and cos of
-// variable v at the W + 1 points; the first (and the last) are given when first_known
-// (last_known), the others are computed here.
+// variable v at the W + 1 points; the last are given when last_known, the others are computed
+// here (the first too when given: a caller's values are lane_sin_cos of the same point, so the
+// same bits, and all W lanes stored at once are cheaper than skipping one).
 void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
-                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi) {
+                  bool last_known, double* const s_of[3], double* const c_of[3], double* out_lo,
+                  double* out_hi, double* out_dlo, double* out_dhi) {
   // The variables as f_over builds them: Interval(o) + [t_k, t_k+1] * Interval(d), derivative d.
   Slot var[3];
   V tlo, thi;
@@ -387,7 +417,7 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
       V x, sx, cx;
       for (int j = 0; j < W; ++j) x[j] = p[j];
       sincos_points(x, sx, cx);
-      for (int j = first_known ? 1 : 0; j < W; ++j) {
+      for (int j = 0; j < W; ++j) {
         sv[j] = sx[j];
         cv[j] = cx[j];
       }
@@ -460,10 +490,9 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
         break;
     }
   }
-  for (int k = 0; k < W; ++k) {
-    out_lo[k] = s[0].lo[k];
-    out_hi[k] = s[0].hi[k];
-    out_dlo[k] = s[0].dlo[k];
-    out_dhi[k] = s[0].dhi[k];
-  }
+  // (Whole vectors copied: lane by lane, the compiler moves each element alone.)
+  std::memcpy(out_lo, &s[0].lo, sizeof(V));
+  std::memcpy(out_hi, &s[0].hi, sizeof(V));
+  std::memcpy(out_dlo, &s[0].dlo, sizeof(V));
+  std::memcpy(out_dhi, &s[0].dhi, sizeof(V));
 }

@@ -3,6 +3,7 @@
 // (docs/architecture.md "ISA dispatch").
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 
@@ -17,5 +18,8 @@
 
 namespace raycast::lanes_w4 {
 constexpr int W = 4;
+// (GCC's target pragma does not define __AVX__: the kernel is told so here.)
+#define RAYCAST_LANES_AVX 1
 #include "math/formula_lanes.inl"
+#undef RAYCAST_LANES_AVX
 }  // namespace raycast::lanes_w4

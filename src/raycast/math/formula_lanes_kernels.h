@@ -9,14 +9,14 @@ namespace raycast {
 
 namespace lanes_w2 {
 void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
-                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi);
+                  bool last_known, double* const s_of[3], double* const c_of[3], double* out_lo,
+                  double* out_hi, double* out_dlo, double* out_dhi);
 void sin_cos_point(double x, double* s, double* c);
 }  // namespace lanes_w2
 namespace lanes_w4 {
 void lanes_kernel(const Formula& f, const double o[3], const double d[3], const double* t,
-                  bool first_known, bool last_known, double* const s_of[3], double* const c_of[3],
-                  double* out_lo, double* out_hi, double* out_dlo, double* out_dhi);
+                  bool last_known, double* const s_of[3], double* const c_of[3], double* out_lo,
+                  double* out_hi, double* out_dlo, double* out_dhi);
 void sin_cos_point(double x, double* s, double* c);
 }  // namespace lanes_w4
 

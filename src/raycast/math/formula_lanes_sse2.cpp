@@ -3,6 +3,7 @@
 // (docs/architecture.md "ISA dispatch").
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 
