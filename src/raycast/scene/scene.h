@@ -91,7 +91,9 @@ struct Scene {
   // (docs/performance-mesh.md, session 7). The same answers as the general path (test).
   const Mesh* mesh_ = nullptr;  // owned by objects[mesh_object_]
   std::int32_t mesh_object_ = -1;
-  Aabb mesh_box_;
+  double mesh_planes_[6] = {};  // its box: lo x, y, z, then hi x, y, z (meets_mesh_box)
+  // intersect_slabs's answer on the mesh's box for [tmin, tmax] (any ray: arithmetic only).
+  bool meets_mesh_box(const Ray& ray) const;
 };
 
 /// The camera to use: the scene's, or one with fov 40 looking along -z at the centre of the
