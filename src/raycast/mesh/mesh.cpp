@@ -440,13 +440,9 @@ void write_packet_hits(const Mesh& m, const Ray* rays, int found, const MeshBvhH
 bool occluded(const Mesh& m, const Ray& ray) {
   double scale;
   const MeshRay r = convert_ray(ray, scale);
-  // The kernel called from here (intersect_any without its call level, and without
-  // with_traversal_stack's lambda, whose captures went through memory: as intersect above).
-  if (traversal_stack_size(m.bvh) <= kLocalTraversalStack) [[likely]] {
-    TraversalEntry stack[kLocalTraversalStack];  // uninitialised: the kernel writes before it reads
-    return kernels_in_use().any(m.bvh, r, stack);
-  }
-  return intersect_any(m.bvh, r);
+  // The kernel called from here (intersect_any without its call level).
+  return with_traversal_stack(
+      m.bvh, [&](TraversalEntry* stack) { return kernels_in_use().any(m.bvh, r, stack); });
 }
 
 bool occluded(const MeshShape& s, const Ray& ray) { return occluded(*s.mesh, ray); }
