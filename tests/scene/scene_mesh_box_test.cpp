@@ -1,8 +1,8 @@
-// Scene's direct path for a scene of one mesh tests the mesh's box before the mesh without
-// branches (Scene::meets_mesh_box): its answer must be intersect_slabs's, also in the cases where
-// a slab product is 0 * inf = NaN (a ray lying in the plane of a box face, parallel to it, either
-// sign of zero). A cube mesh has its faces on its box, so such rays graze or hit its triangles:
-// the direct path must answer as the general path (the mesh beside a far sphere) does.
+// Scene's direct path for a scene of one mesh tests the mesh's box before is_valid and before the
+// mesh: its answer must stay the general path's also where a slab product is 0 * inf = NaN (a ray
+// lying in the plane of a box face, parallel to it, either sign of zero) and for invalid rays. A
+// cube mesh has its faces on its box, so such rays graze or hit its triangles: the direct path
+// must answer as the general path (the mesh beside a far sphere) does.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -1,7 +1,6 @@
 #include "scene/scene.h"
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -27,33 +26,10 @@ void Scene::build(bool direction_lists) {
   if (mesh_object_ >= 0) {
     const Object& object = objects[std::size_t(mesh_object_)];
     mesh_ = std::get<MeshShape>(object.shape).mesh.get();
-    const Aabb box = raycast::bounds(object);
-    for (int a = 0; a < 3; ++a) {
-      mesh_planes_[a] = box.lo[a];
-      mesh_planes_[3 + a] = box.hi[a];
-    }
+    mesh_box_ = raycast::bounds(object);
   }
   build_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-inline bool Scene::meets_mesh_box(const Ray& ray) const {
-  // intersect_slabs (geometry/aabb.h) on the mesh's box: the same planes, products, widening and
-  // comparisons, so the same answer, without its branches. The near and far planes are picked by
-  // index from the sign bit of 1 / d (an incoherent ray's signs are random: mispredicted
-  // branches), and t0 > t1 is asked once after the three axes instead of after each (t0 only
-  // grows and t1 only shrinks, so the last comparison answers as the early ones would have).
-  const Vec3 inv = reciprocal(ray.d);
-  double t0 = ray.tmin, t1 = ray.tmax;
-  for (int a = 0; a < 3; ++a) {
-    const auto negative = static_cast<int>(std::bit_cast<std::uint64_t>(inv[a]) >> 63) * 3;
-    const double near = (mesh_planes_[a + negative] - ray.o[a]) * inv[a];
-    double far = (mesh_planes_[a + 3 - negative] - ray.o[a]) * inv[a];
-    far *= 1 + 2 * gamma(3);
-    t0 = near > t0 ? near : t0;
-    t1 = far < t1 ? far : t1;
-  }
-  return !(t0 > t1);
 }
 
 bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
@@ -62,7 +38,9 @@ bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
     // than the mesh's own root test. The box test is arithmetic only, whatever the ray, and a
     // ray that is not is_valid answers "nothing" either way, so the validity check is paid by
     // the rays that reach the mesh only.
-    if (!meets_mesh_box(ray) || !is_valid(ray) || !raycast::intersect(*mesh_, ray, hit.local))
+    double t_enter;
+    if (!intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter) ||
+        !is_valid(ray) || !raycast::intersect(*mesh_, ray, hit.local))
       return false;
     hit.object = mesh_object_;
     return true;
@@ -77,7 +55,9 @@ bool Scene::occluded(const Ray& ray) const {
     // The mesh first and its box only when the mesh is hit: the answer is the general path's
     // (box and mesh), but shadow rays start on the mesh, inside its box, so the box test is
     // paid only by the few rays that are blocked.
-    return raycast::occluded(*mesh_, ray) && meets_mesh_box(ray);
+    double t_enter;
+    return raycast::occluded(*mesh_, ray) &&
+           intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
   }
   return set_.occluded(objects, ray);
 }

@@ -91,9 +91,7 @@ struct Scene {
   // (docs/performance-mesh.md, session 7). The same answers as the general path (test).
   const Mesh* mesh_ = nullptr;  // owned by objects[mesh_object_]
   std::int32_t mesh_object_ = -1;
-  double mesh_planes_[6] = {};  // its box: lo x, y, z, then hi x, y, z (meets_mesh_box)
-  // intersect_slabs's answer on the mesh's box for [tmin, tmax] (any ray: arithmetic only).
-  bool meets_mesh_box(const Ray& ray) const;
+  Aabb mesh_box_;
 };
 
 /// The camera to use: the scene's, or one with fov 40 looking along -z at the centre of the
