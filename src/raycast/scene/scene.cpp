@@ -34,17 +34,19 @@ void Scene::build(bool direction_lists) {
 }
 
 bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
-  if (!is_valid(ray)) return false;
   if (mesh_) {
     // The box first: most rays that miss it (a camera's around the mesh) stop here, cheaper
-    // than the mesh's own root test.
+    // than the mesh's own root test. The box test is arithmetic only, whatever the ray, and a
+    // ray that is not is_valid answers "nothing" either way, so the validity check is paid by
+    // the rays that reach the mesh only.
     double t_enter;
     if (!intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter) ||
-        !raycast::intersect(*mesh_, ray, hit.local))
+        !is_valid(ray) || !raycast::intersect(*mesh_, ray, hit.local))
       return false;
     hit.object = mesh_object_;
     return true;
   }
+  if (!is_valid(ray)) return false;
   return set_.intersect(objects, ray, hit.local, hit.object);
 }
 
