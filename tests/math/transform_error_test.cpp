@@ -12,20 +12,10 @@
 #include <vector>
 
 #include "math/transform.h"
+#include "same_bits.h"
 
 namespace raycast {
 namespace {
-
-void expect_same_bits(double a, double b, const char* what) {
-  if (std::isnan(a) && std::isnan(b)) return;  // any NaN matches any NaN
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a), std::bit_cast<std::uint64_t>(b))
-      << what << ": " << a << " vs " << b;
-}
-void expect_same_bits(const Vec3& a, const Vec3& b, const char* what) {
-  expect_same_bits(a.x, b.x, what);
-  expect_same_bits(a.y, b.y, what);
-  expect_same_bits(a.z, b.z, what);
-}
 
 // |M| v as object.cpp computed it before the magnitudes were kept.
 Vec3 abs_product(const Mat4& a, const Vec3& v) {
@@ -34,14 +24,6 @@ Vec3 abs_product(const Mat4& a, const Vec3& v) {
   for (int i = 0; i < 3; ++i)
     r[i] = std::abs(m[i][0]) * v.x + std::abs(m[i][1]) * v.y + std::abs(m[i][2]) * v.z;
   return r;
-}
-
-double special(std::mt19937_64& rng) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  const double values[] = {0.0,    -0.0, 1.0,    -1.0,
-                           0.45,   -3.5, 1e-310, 1e300,
-                           -1e300, inf,  -inf,   std::numeric_limits<double>::quiet_NaN()};
-  return values[std::uniform_int_distribution<int>(0, std::size(values) - 1)(rng)];
 }
 
 std::vector<Transform> transforms(std::mt19937_64& rng) {
@@ -79,7 +61,7 @@ TEST(TransformError, TranslationPathsGiveThePerCallProductsBits) {
       Vec3 v;
       for (int c = 0; c < 3; ++c) {
         const int k = pick(rng);
-        v[c] = k == 0 ? u(rng) : k == 1 ? (rng() & 1 ? 0.0 : -0.0) : special(rng);
+        v[c] = k == 0 ? u(rng) : k == 1 ? (rng() & 1 ? 0.0 : -0.0) : special_double(rng);
       }
       expect_same_bits(xf.point_error(v), Transform::apply_point_error(m, v), "point_error");
       expect_same_bits(xf.inverse_point_error(v), Transform::apply_point_error(inv, v),

@@ -10,21 +10,10 @@
 #include <vector>
 
 #include "math/transform.h"
+#include "same_bits.h"
 
 namespace raycast {
 namespace {
-
-// Bit-for-bit equality, any NaN matching any NaN (payloads are not the engine's concern).
-void expect_same_bits(double a, double b, const char* what) {
-  if (std::isnan(a) && std::isnan(b)) return;
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a), std::bit_cast<std::uint64_t>(b))
-      << what << ": " << a << " vs " << b;
-}
-void expect_same_bits(const Vec3& a, const Vec3& b, const char* what) {
-  expect_same_bits(a.x, b.x, what);
-  expect_same_bits(a.y, b.y, what);
-  expect_same_bits(a.z, b.z, what);
-}
 
 // The general products, as Transform computed them before the translation path.
 Vec3 general_normal(const Mat4& inv, const Vec3& n) {
@@ -41,24 +30,6 @@ void expect_general(const Transform& xf, const Vec3& v) {
   expect_same_bits(xf.normal(v), general_normal(inv, v), "normal");
 }
 
-double special(std::mt19937_64& rng) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  const double values[] = {0.0,
-                           -0.0,
-                           1.0,
-                           -1.0,
-                           0.45,
-                           -3.5,
-                           1e-310,
-                           -1e-310,
-                           1e300,
-                           -1e300,
-                           inf,
-                           -inf,
-                           std::numeric_limits<double>::quiet_NaN()};
-  return values[std::uniform_int_distribution<int>(0, std::size(values) - 1)(rng)];
-}
-
 std::vector<Transform> translations(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-10, 10);
   std::vector<Transform> out = {
@@ -72,7 +43,7 @@ std::vector<Transform> translations(std::mt19937_64& rng) {
   };
   for (int i = 0; i < 20; ++i) out.push_back(Transform::translate({u(rng), u(rng), u(rng)}));
   for (int i = 0; i < 10; ++i) {
-    const Vec3 t{special(rng), special(rng), special(rng)};
+    const Vec3 t{special_double(rng), special_double(rng), special_double(rng)};
     if (std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z))
       out.push_back(Transform::translate(t));
   }
@@ -93,7 +64,7 @@ TEST(TransformTranslation, SameBitsAsTheMatrixProducts) {
         v[c] = k == 0   ? u(rng)
                : k == 1 ? (rng() & 1 ? 0.0 : -0.0)
                : k == 2 ? -xf.matrix().m[c][3]
-                        : special(rng);
+                        : special_double(rng);
       }
       expect_general(xf, v);
     }
@@ -113,7 +84,8 @@ TEST(TransformTranslation, NearTranslationsTakeTheGeneralPath) {
                              Transform::rotate({0, 1, 0}, 30) * Transform::translate({1, 2, 3})};
   std::mt19937_64 rng(7);
   for (const Transform& xf : cases)
-    for (int i = 0; i < 2000; ++i) expect_general(xf, {special(rng), special(rng), special(rng)});
+    for (int i = 0; i < 2000; ++i)
+      expect_general(xf, {special_double(rng), special_double(rng), special_double(rng)});
 }
 
 }  // namespace
