@@ -13,8 +13,8 @@ void Scene::build(bool direction_lists) {
   const auto start = std::chrono::steady_clock::now();
   set_.build(objects);
   // Direction lists around the camera's position (rays that start exactly there use them) and
-  // the point and spot lights (shadow segments that end there: the integrator's walk, chosen
-  // once per render; docs/performance-render.md, session 13).
+  // the point and spot lights (shadow segments that end there: the integrator walks a light's
+  // lists when it has them; docs/rendering.md "Direction lists").
   if (direction_lists) {
     const CameraDesc view = camera_or_default(*this);
     if (view.type == CameraType::kPerspective) set_.set_view(objects, view.position);

@@ -42,8 +42,8 @@ struct Scene {
   SourceMarks marks;   // where the camera, lights and entries were written (loaded scenes)
 
   /// Builds the top-level BVH; call after the objects are final and before querying.
-  /// direction_lists: also the lists around the camera (ObjectSet::set_view; false only to
-  /// compare against the walk without them).
+  /// direction_lists: also the lists around the camera and the point and spot lights
+  /// (ObjectSet::set_view, set_lights; false only to compare against the walks without them).
   void build(bool direction_lists = true);
   double build_ms() const { return build_ms_; }
   std::size_t accel_bytes() const { return set_.memory_bytes(); }
