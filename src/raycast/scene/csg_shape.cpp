@@ -560,23 +560,14 @@ void spans(const CsgShape& s, const Ray& ray, SpanList& out) {
   for (const Span& span : list) out.push_back(span);
 }
 
-namespace {
-
-SurfaceInfo leaf_surface(const CsgShape& s, const Ray& ray, const LocalHit& hit,
-                         SurfaceNeeds needs) {
-  LocalHit h = hit;
-  h.flip = false;
-  return surface(s.tree->leaves[static_cast<std::size_t>(hit.leaf)], ray, h, needs);
-}
-
-}  // namespace
-
 SurfaceInfo surface(const CsgShape& s, const Ray& ray, const LocalHit& hit) {
-  return leaf_surface(s, ray, hit, SurfaceNeeds::kAll);
+  return part_surface(s.tree->leaves[static_cast<std::size_t>(hit.leaf)], ray, hit,
+                      SurfaceNeeds::kAll);
 }
 
 SurfaceInfo surface_geometry(const CsgShape& s, const Ray& ray, const LocalHit& hit) {
-  return leaf_surface(s, ray, hit, SurfaceNeeds::kGeometry);
+  return part_surface(s.tree->leaves[static_cast<std::size_t>(hit.leaf)], ray, hit,
+                      SurfaceNeeds::kGeometry);
 }
 
 bool contains(const CsgShape& s, const Vec3& p) {

@@ -50,23 +50,14 @@ void spans(const InstanceShape& s, const Ray& ray, SpanList& out) {
   });
 }
 
-namespace {
-
-SurfaceInfo part_surface(const InstanceShape& s, const Ray& ray, const LocalHit& hit,
-                         SurfaceNeeds needs) {
-  LocalHit h = hit;
-  h.flip = false;
-  return surface(s.proto->objects[static_cast<std::size_t>(hit.inner)], ray, h, needs);
-}
-
-}  // namespace
-
 SurfaceInfo surface(const InstanceShape& s, const Ray& ray, const LocalHit& hit) {
-  return part_surface(s, ray, hit, SurfaceNeeds::kAll);
+  return part_surface(s.proto->objects[static_cast<std::size_t>(hit.inner)], ray, hit,
+                      SurfaceNeeds::kAll);
 }
 
 SurfaceInfo surface_geometry(const InstanceShape& s, const Ray& ray, const LocalHit& hit) {
-  return part_surface(s, ray, hit, SurfaceNeeds::kGeometry);
+  return part_surface(s.proto->objects[static_cast<std::size_t>(hit.inner)], ray, hit,
+                      SurfaceNeeds::kGeometry);
 }
 
 bool contains(const InstanceShape& s, const Vec3& p) {

@@ -54,6 +54,14 @@ void spans(const Object& o, const Ray& ray, SpanList& out);
 enum class SurfaceNeeds { kAll, kGeometry };
 SurfaceInfo surface(const Object& o, const Ray& ray, const LocalHit& hit,
                     SurfaceNeeds needs = SurfaceNeeds::kAll);
+/// surface() of a composite's part (a CSG leaf, an instance's prototype object) hit as `hit`,
+/// its normal not flipped: the composite's own object flips it by hit.flip.
+inline SurfaceInfo part_surface(const Object& part, const Ray& ray, const LocalHit& hit,
+                                SurfaceNeeds needs) {
+  LocalHit h = hit;
+  h.flip = false;
+  return surface(part, ray, h, needs);
+}
 bool contains(const Object& o, const Vec3& p);
 bool is_closed(const Object& o);
 /// The material index for a hit on o: the CSG leaf's or prototype object's own when it has one,
