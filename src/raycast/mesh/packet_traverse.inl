@@ -247,19 +247,15 @@ inline bool prepare_packet(const PacketRays<N>& pr, PacketData<N>& p) {
   for (int k = 0; k < 6; ++k) finite &= bits(cmp_eq(L::load(f[k]) - L::load(f[k]), zero));
   if (finite != kAll) return false;
   for (int a = 0; a < 3; ++a) {
-    // Tiny components are replaced as the single-ray test does (rare: fixed lane by lane).
-    alignas(64) float da[N];
-    std::memcpy(da, f[3 + a], sizeof da);
-    const V d = L::load(da);
+    // A zero or tiny component (prepare's 1/d = +-infinity or the clamp) goes one ray at a time:
+    // the interval bounds below assume finite reciprocals of one sign.
+    const V d = L::load(f[3 + a]);
     const int small = ~(bits(cmp_ge(d, L::broadcast(kMinDirection))) |
                         bits(cmp_le(d, L::broadcast(-kMinDirection)))) &
                       kAll;
-    for (int m = small; m; m &= m - 1) {
-      float& x = da[__builtin_ctz(m)];
-      x = x < 0 ? -kMinDirection : kMinDirection;
-    }
+    if (small) return false;
     p.o[a] = L::load(f[a]);
-    p.inv[a] = L::broadcast(1.0f) / L::load(da);  // as the single-ray test computes it
+    p.inv[a] = L::broadcast(1.0f) / d;  // as the single-ray test computes it
     alignas(64) float inv[N];
     L::store(inv, p.inv[a]);
     float olo, ohi, ilo, ihi;
@@ -364,9 +360,10 @@ inline int packet_node(const Node& n, const PD& p, V8 reach, V8& tnear, NodePlan
     far[a] = vmax(df * p.inv_lo[a], df * p.inv_hi[a]);
   }
   tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin_lo));
-  const V8 f = vmin(vmin(far[0], far[1]), far[2]);
+  // The exit and `reach` widened as one, as in the single-ray test.
+  const V8 f = vmin(vmin(far[0], far[1]), vmin(far[2], reach));
   const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
-  return bits(cmp_le(tnear, vmin(f * widen, reach))) & n.used;
+  return bits(cmp_le(tnear, f * widen)) & n.used;
 }
 
 // Child c of a node against every lane: the single-ray slab test of that child, lane by lane, on
@@ -383,10 +380,10 @@ inline int packet_child(const NodePlanes& n, int c, const PacketData<N>& p,
     far[a] = (L::broadcast(n.far[a][c]) - p.o[a]) * p.inv[a];
   }
   const V tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
-  const V f = vmin(vmin(far[0], far[1]), far[2]);
+  const V f = vmin(vmin(far[0], far[1]), vmin(far[2], tmax));
   const V widen =
       select(cmp_ge(f, L::broadcast(0.0f)), L::broadcast(kSlabWiden), L::broadcast(kSlabNarrow));
-  return bits(cmp_le(tnear, vmin(f * widen, tmax)));
+  return bits(cmp_le(tnear, f * widen));
 }
 
 // Triangle `lane` of group g against every lane's ray: the watertight test of intersect_pair.
@@ -521,6 +518,12 @@ int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBv
   alignas(64) float tmax_s[N];
   for (int l = 0; l < N; ++l) tmax_s[l] = (mask >> l & 1) ? pr.f[7][l] : -kInfinityF;
   typename L::V tmax = L::load(tmax_s);
+  // Each lane's tmax widened as the node tests widen it: the pop's bound (a tied triangle's box
+  // may round its entry a few ulps above the lane's nearest hit).
+  const auto widen = [](typename L::V t) {
+    return vmax(t * L::broadcast(kSlabWiden), t * L::broadcast(kSlabNarrow));
+  };
+  typename L::V reach = widen(tmax);
   int found = 0;
   int top = 0;
   std::uint32_t ref = bvh.root;
@@ -575,12 +578,13 @@ int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBv
         leaf_by_triangle<N>(bvh, first, end, p, lanes, tmax_s, hits, found);
       }
       tmax = L::load(tmax_s);
+      reach = widen(tmax);
     }
     // Pop; an entry keeps the lanes whose nearest hit so far is not before its entry bound.
     for (;;) {
       if (top == 0) return found;
       const PacketEntry& e = stack[--top];
-      lanes = bits(cmp_ge(tmax, L::broadcast(e.tnear))) & static_cast<int>(e.lanes);
+      lanes = bits(cmp_ge(reach, L::broadcast(e.tnear))) & static_cast<int>(e.lanes);
       if (lanes) {
         ref = e.ref;
         break;

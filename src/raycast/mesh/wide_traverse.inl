@@ -24,15 +24,23 @@
 namespace raycast::RAYCAST_KERNEL_NS {
 
 // Relative widening of a slab exit so that the float box test is conservative (pbrt-v4 6.8.2:
-// 1 + 2 gamma(3) in float arithmetic).
+// 1 + 2 gamma(3) in float arithmetic). The exit is min(far distances, tmax) widened as one, so
+// that tmax is widened too: a box whose exact entry is at most tmax has a rounded entry
+// fl(fl(plane - o) * fl(1/d)), at most 3 roundings, (1 + u)^3 < 1 + 4u above it (u = 2^-24),
+// and fl(tmax * kSlabWiden) >= tmax (1 + 6u)(1 - u) > tmax (1 + 4u): a hit at t == tmax is
+// never culled by its box's rounding (negative ones likewise with kSlabNarrow).
 constexpr float kSlabWiden = 1.0f + 2.0f * (3 * 0x1p-24f) / (1 - 3 * 0x1p-24f);
 // The same margin for negative distances (multiplying by it moves them towards +infinity).
 constexpr float kSlabNarrow = 2.0f - kSlabWiden;
-// Direction components smaller than this are replaced by it (with their sign) when computing
-// 1 / d, so that the box test never multiplies 0 by infinity (the ray is first scaled so that
-// its largest component is in [1, 2)).
+// Non-zero direction components smaller than this are replaced by it (with their sign) when
+// computing 1 / d (the ray is first scaled so that its largest component is in [1, 2)). A zero
+// component keeps 1 / d = +-infinity: see prepare.
 constexpr float kMinDirection = 0x1p-64f;
 constexpr float kInfinityF = __builtin_huge_valf();
+
+// A scalar exit or tmax widened as the node tests widen them (the nearest walk's pop compares a
+// pushed entry with its current hit's t so widened, as the node test did).
+inline float widen_exit(float t) { return std::max(t * kSlabWiden, t * kSlabNarrow); }
 
 enum class Query { kNearest, kAny, kAll };
 
@@ -52,7 +60,12 @@ constexpr bool uses_node16() {
 
 // Per-ray constants of the box and triangle tests.
 struct RayData {
-  V8 o[3];    // origin, broadcast
+  V8 o_near[3];  // the origin, broadcast, as the near and the far planes' rows subtract it (the
+  V8 o_far[3];   // same but on an axis the ray lies in: prepare)
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+  V8 o_lo[3];  // the same for the lo and the hi planes' rows
+  V8 o_hi[3];
+#endif
   V8 inv[3];  // 1 / d, broadcast
 #if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
   V8 neg_inv[3];  // -1 / d, broadcast
@@ -78,12 +91,35 @@ template <Query Q, class Node>
 inline void prepare(const MeshRay& r, RayData& p) {
   const float* o = &r.o.x;
   const float* d = &r.d.x;
-  float invs[3];
+  float invs[3], o_lo[3], o_hi[3];
   for (int a = 0; a < 3; ++a) {
-    p.o[a] = splat(o[a]);
     float da = d[a];
-    if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
+    if (da != 0 && std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
     const float inv = 1.0f / da;
+    // A zero component: the ray lies in the plane x_a = o_a and 1/d = +-infinity (as the sign of
+    // the zero), so each distance on that axis is +-infinity, or NaN where a plane equals the
+    // origin subtracted. The near planes' rows subtract the float just past o_a in the direction
+    // of 1/d, the far planes' rows the float just before it: a near plane at or behind o_a (on
+    // the side 1/d points away from) gives -infinity, a far plane at or beyond it +infinity, so
+    // every box holding the plane x_a = o_a is entered whatever the sign of the zero (a box with
+    // a face in that plane, met at its edge, was culled with 1/d clamped to +-2^-64: slab
+    // [-huge, 0]). A NaN comes only from a plane equal to a shifted origin, i.e. from a box that
+    // lies wholly on one side of x_a = o_a, holds no point of the ray, and may be entered or
+    // culled alike (no triangle in it can be hit).
+    float near_o = o[a], far_o = o[a];
+    if (da == 0) [[unlikely]] {
+      const float up = std::nextafter(o[a], kInfinityF), down = std::nextafter(o[a], -kInfinityF);
+      near_o = inv > 0 ? up : down;
+      far_o = inv > 0 ? down : up;
+    }
+    p.o_near[a] = splat(near_o);
+    p.o_far[a] = splat(far_o);
+    o_lo[a] = inv >= 0 ? near_o : far_o;
+    o_hi[a] = inv >= 0 ? far_o : near_o;
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+    p.o_lo[a] = splat(o_lo[a]);
+    p.o_hi[a] = splat(o_hi[a]);
+#endif
     invs[a] = inv;
     p.inv[a] = splat(inv);
 #if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
@@ -105,9 +141,9 @@ inline void prepare(const MeshRay& r, RayData& p) {
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
 #ifdef RAYCAST_KERNEL_NODE16
-  if constexpr (uses_node16<Q, Node>()) prepare_node16(o, invs, p.node16);
+  if constexpr (uses_node16<Q, Node>()) prepare_node16(o_lo, o_hi, invs, p.node16);
 #endif
-  (void)invs;
+  (void)invs, (void)o_lo, (void)o_hi;
 }
 
 // The node arrays of the two formats (mesh/mesh_bvh.h).
@@ -129,8 +165,8 @@ const Node* node_array(const MeshBvh& bvh) {
 // of opposite sign, which one multiplier cannot give).
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
-    const V8 lo = (p.o[a] - load8(n.box[a])) * p.neg_inv[a];
-    const V8 hi = (p.o[a] - load8(n.box[a] + kNodeWidth)) * p.neg_inv[a];
+    const V8 lo = (p.o_lo[a] - load8(n.box[a])) * p.neg_inv[a];
+    const V8 hi = (p.o_hi[a] - load8(n.box[a] + kNodeWidth)) * p.neg_inv[a];
     d[a] = vmin(lo, hi);
     d[3 + a] = vmax(lo, hi);
   }
@@ -148,16 +184,16 @@ inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
     const int near_off = Oct < 0 ? p.near_off[a] : (Oct >> a & 1) * kNodeWidth;
     const int far_off = Oct < 0 ? p.far_off[a] : kNodeWidth - near_off;
-    d[a] = (p.o[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
-    d[3 + a] = (p.o[a] - load8(n.box[a] + far_off)) * p.neg_inv[a];
+    d[a] = (p.o_near[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
+    d[3 + a] = (p.o_far[a] - load8(n.box[a] + far_off)) * p.neg_inv[a];
   }
 }
 #define RAYCAST_KERNEL_OCTANT_WALKS 1
 #else
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
-    d[a] = (load8(n.box[a] + p.near_off[a]) - p.o[a]) * p.inv[a];
-    d[3 + a] = (load8(n.box[a] + p.far_off[a]) - p.o[a]) * p.inv[a];
+    d[a] = (load8(n.box[a] + p.near_off[a]) - p.o_near[a]) * p.inv[a];
+    d[3 + a] = (load8(n.box[a] + p.far_off[a]) - p.o_far[a]) * p.inv[a];
   }
 }
 #endif
@@ -168,8 +204,8 @@ inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
   const std::uint8_t* q = n.q[0];
   for (int a = 0; a < 3; ++a) {
     const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
-    d[a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.near_off[a]) * s) - p.o[a]) * p.inv[a];
-    d[3 + a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.far_off[a]) * s) - p.o[a]) * p.inv[a];
+    d[a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.near_off[a]) * s) - p.o_near[a]) * p.inv[a];
+    d[3 + a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.far_off[a]) * s) - p.o_far[a]) * p.inv[a];
   }
 }
 
@@ -185,14 +221,14 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
     node_distances(n, p, d);
   const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
   tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
-  // Widen the far distance away from the near one: scale it up when it is positive, down when it
-  // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
-  // negative far distance up would shrink the interval and cull flat boxes (a mesh's
-  // axis-aligned face) behind the origin. The larger of far * widen and far * narrow is exactly
-  // that, whatever far's sign (two independent products and a max: a shorter dependency chain
-  // than choosing the factor from the sign first).
-  const V8 far = vmin(vmin(fx, fy), fz);
-  const V8 tfar = vmin(vmax(far * splat(kSlabWiden), far * splat(kSlabNarrow)), tmax);
+  // Widen the exit, tmax included (kSlabWiden: a hit at t == tmax keeps its box), away from the
+  // entry: scale it up when it is positive, down when it is negative (a node behind the origin,
+  // met by the whole-line queries of spans). Scaling a negative exit up would shrink the interval
+  // and cull flat boxes (a mesh's axis-aligned face) behind the origin. The larger of far *
+  // widen and far * narrow is exactly that, whatever far's sign (two independent products and a
+  // max: a shorter dependency chain than choosing the factor from the sign first).
+  const V8 far = vmin(vmin(fx, fy), vmin(fz, tmax));
+  const V8 tfar = vmax(far * splat(kSlabWiden), far * splat(kSlabNarrow));
   return bits(cmp_le(tnear, tfar)) & n.used;
 }
 
@@ -203,10 +239,14 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
 // a n (1 + 6u) (1 + u)^2: with kFarWiden = 1 + 16u every positive exit is at least the test
 // above's (so are its boxes, and a few more within 16 ulps). Negative exits keep their sign
 // (rounding never flips one), zero ones their value. (Underflow aside, as in the test above.)
+// tmax is widened by the same factor: fl(tmax * kFarWiden) >= tmax (1 + 16u)(1 - u), above a
+// rounded entry fl(fl(o - plane) * fl(-1/d)) <= (1 + u)^3 times an exact entry <= tmax (a hit at
+// t == tmax keeps its box, as in the test above).
 constexpr float kFarWiden = 1.0f + 0x1p-20f;
 
 // The node test of the any-hit octant walks, for rays that traverse checked: tmin >= +0 (sign bit
-// clear), tmax >= tmin, origin and direction finite (so no distance is NaN). The kernel's
+// clear), tmax >= tmin, origin and direction finite (so a distance is NaN only on an axis the ray
+// lies in, for a box that holds no point of the ray: prepare). The kernel's
 // vmax_bits / vmin_bits (integer max / min of the float bits: one cycle, where the float ones take
 // two) order two floats as floats when one of them has its sign bit clear, so tnear has the value
 // of the test above (tmin is an operand) and so has the exit's min with tmax. The far distance's
@@ -222,11 +262,11 @@ inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax)
   V8 d[6];
   for (int a = 0; a < 3; ++a) {
     const int near_off = (Oct >> a & 1) * kNodeWidth, far_off = kNodeWidth - near_off;
-    d[a] = (p.o[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
-    d[3 + a] = (p.o[a] - load8(n.box[a] + far_off)) * p.neg_inv_far[a];
+    d[a] = (p.o_near[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
+    d[3 + a] = (p.o_far[a] - load8(n.box[a] + far_off)) * p.neg_inv_far[a];
   }
   const V8 tnear = vmax_bits(vmax_bits(d[0], d[1]), vmax_bits(d[2], p.tmin));
-  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], tmax));
+  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], tmax * splat(kFarWiden)));
   return bits(cmp_le(tnear, tfar)) & n.used;
 }
 #endif
@@ -419,6 +459,7 @@ template <Query Q, class Node, int Oct>
                                         TraversalEntry* stack) {
   const Node* nodes = node_array<Node>(bvh);
   V8 tmax = splat(tmax_s);
+  float reach_s = widen_exit(tmax_s);  // the pop's bound: tmax_s widened as the node test does
   int top = 0;
   bool found = false;
   PairResult res;
@@ -481,14 +522,15 @@ template <Query Q, class Node, int Oct>
             found = true;
           }
         }
-        if constexpr (Q == Query::kNearest) tmax = splat(tmax_s);
+        if constexpr (Q == Query::kNearest) tmax = splat(tmax_s), reach_s = widen_exit(tmax_s);
       }
     }
-    // Pop, skipping entries whose entry point lies past the current nearest hit.
+    // Pop, skipping entries whose entry point lies past the current nearest hit (widened: a
+    // tied triangle's box may round its entry a few ulps above it).
     for (;;) {
       if (top == 0) return found;
       const TraversalEntry& e = stack[--top];
-      if (Q != Query::kNearest || e.tnear <= tmax_s) {
+      if (Q != Query::kNearest || e.tnear <= reach_s) {
         ref = e.ref;
         break;
       }
