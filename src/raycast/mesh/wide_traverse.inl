@@ -60,12 +60,10 @@ constexpr bool uses_node16() {
 
 // Per-ray constants of the box and triangle tests.
 struct RayData {
-  V8 o_near[3];  // the origin, broadcast, as the near and the far planes' rows subtract it (the
-  V8 o_far[3];   // same but on an axis the ray lies in: prepare)
-#ifdef RAYCAST_KERNEL_MINMAX_SLABS
-  V8 o_lo[3];  // the same for the lo and the hi planes' rows
-  V8 o_hi[3];
-#endif
+  V8 o[3];  // origin, broadcast
+  // A ray with a zero direction component: the origin as the near and the far planes' rows
+  // subtract it in the walk kInPlane (traverse_in_plane); not set for other rays.
+  V8 o_near[3], o_far[3];
   V8 inv[3];  // 1 / d, broadcast
 #if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
   V8 neg_inv[3];  // -1 / d, broadcast
@@ -87,39 +85,24 @@ struct RayData {
 
 // Fills p in place (returning RayData by value made GCC copy the AVX-512 part, nine 64-byte
 // vectors, through the stack twice per ray), for query Q on a tree of Node.
+// Returns whether a direction component is zero (those rays take traverse_in_plane).
 template <Query Q, class Node>
-inline void prepare(const MeshRay& r, RayData& p) {
+inline bool prepare(const MeshRay& r, RayData& p) {
   const float* o = &r.o.x;
   const float* d = &r.d.x;
-  float invs[3], o_lo[3], o_hi[3];
+  float invs[3];
+  bool zero = false;
   for (int a = 0; a < 3; ++a) {
+    p.o[a] = splat(o[a]);
     float da = d[a];
-    if (da != 0 && std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
-    const float inv = 1.0f / da;
-    // A zero component: the ray lies in the plane x_a = o_a and 1/d = +-infinity (as the sign of
-    // the zero), so each distance on that axis is +-infinity, or NaN where a plane equals the
-    // origin subtracted. The near planes' rows subtract the float just past o_a in the direction
-    // of 1/d, the far planes' rows the float just before it: a near plane at or behind o_a (on
-    // the side 1/d points away from) gives -infinity, a far plane at or beyond it +infinity, so
-    // every box holding the plane x_a = o_a is entered whatever the sign of the zero (a box with
-    // a face in that plane, met at its edge, was culled with 1/d clamped to +-2^-64: slab
-    // [-huge, 0]). A NaN comes only from a plane equal to a shifted origin, i.e. from a box that
-    // lies wholly on one side of x_a = o_a, holds no point of the ray, and may be entered or
-    // culled alike (no triangle in it can be hit).
-    float near_o = o[a], far_o = o[a];
-    if (da == 0) [[unlikely]] {
-      const float up = std::nextafter(o[a], kInfinityF), down = std::nextafter(o[a], -kInfinityF);
-      near_o = inv > 0 ? up : down;
-      far_o = inv > 0 ? down : up;
+    if (std::abs(da) < kMinDirection) [[unlikely]] {
+      // A zero component keeps 1 / d = +-infinity (traverse_in_plane).
+      if (da != 0)
+        da = da < 0 ? -kMinDirection : kMinDirection;
+      else
+        zero = true;
     }
-    p.o_near[a] = splat(near_o);
-    p.o_far[a] = splat(far_o);
-    o_lo[a] = inv >= 0 ? near_o : far_o;
-    o_hi[a] = inv >= 0 ? far_o : near_o;
-#ifdef RAYCAST_KERNEL_MINMAX_SLABS
-    p.o_lo[a] = splat(o_lo[a]);
-    p.o_hi[a] = splat(o_hi[a]);
-#endif
+    const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
 #if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
@@ -141,9 +124,10 @@ inline void prepare(const MeshRay& r, RayData& p) {
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
 #ifdef RAYCAST_KERNEL_NODE16
-  if constexpr (uses_node16<Q, Node>()) prepare_node16(o_lo, o_hi, invs, p.node16);
+  if constexpr (uses_node16<Q, Node>()) prepare_node16(o, o, invs, p.node16);
 #endif
-  (void)invs, (void)o_lo, (void)o_hi;
+  (void)invs;
+  return zero;
 }
 
 // The node arrays of the two formats (mesh/mesh_bvh.h).
@@ -165,8 +149,8 @@ const Node* node_array(const MeshBvh& bvh) {
 // of opposite sign, which one multiplier cannot give).
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
-    const V8 lo = (p.o_lo[a] - load8(n.box[a])) * p.neg_inv[a];
-    const V8 hi = (p.o_hi[a] - load8(n.box[a] + kNodeWidth)) * p.neg_inv[a];
+    const V8 lo = (p.o[a] - load8(n.box[a])) * p.neg_inv[a];
+    const V8 hi = (p.o[a] - load8(n.box[a] + kNodeWidth)) * p.neg_inv[a];
     d[a] = vmin(lo, hi);
     d[3 + a] = vmax(lo, hi);
   }
@@ -184,16 +168,16 @@ inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
     const int near_off = Oct < 0 ? p.near_off[a] : (Oct >> a & 1) * kNodeWidth;
     const int far_off = Oct < 0 ? p.far_off[a] : kNodeWidth - near_off;
-    d[a] = (p.o_near[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
-    d[3 + a] = (p.o_far[a] - load8(n.box[a] + far_off)) * p.neg_inv[a];
+    d[a] = (p.o[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
+    d[3 + a] = (p.o[a] - load8(n.box[a] + far_off)) * p.neg_inv[a];
   }
 }
 #define RAYCAST_KERNEL_OCTANT_WALKS 1
 #else
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
-    d[a] = (load8(n.box[a] + p.near_off[a]) - p.o_near[a]) * p.inv[a];
-    d[3 + a] = (load8(n.box[a] + p.far_off[a]) - p.o_far[a]) * p.inv[a];
+    d[a] = (load8(n.box[a] + p.near_off[a]) - p.o[a]) * p.inv[a];
+    d[3 + a] = (load8(n.box[a] + p.far_off[a]) - p.o[a]) * p.inv[a];
   }
 }
 #endif
@@ -201,6 +185,28 @@ inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
 // The same for quantised planes, dequantised exactly as the build checked them
 // (origin + q * scale).
 inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
+  const std::uint8_t* q = n.q[0];
+  for (int a = 0; a < 3; ++a) {
+    const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
+    d[a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.near_off[a]) * s) - p.o[a]) * p.inv[a];
+    d[3 + a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.far_off[a]) * s) - p.o[a]) * p.inv[a];
+  }
+}
+
+// The walk of the rays with a zero direction component (prepare): their own origins per row.
+constexpr int kInPlane = -2;
+
+// node_distances for those rays: the rows chosen by the sign of d (as the generic test) with
+// the near and far rows' origins of prepare. Every value as the generic test's but on the
+// ray's zero axes.
+inline void node_distances_in_plane(const WideNode& n, const RayData& p, V8 d[6]) {
+  for (int a = 0; a < 3; ++a) {
+    d[a] = (load8(n.box[a] + p.near_off[a]) - p.o_near[a]) * p.inv[a];
+    d[3 + a] = (load8(n.box[a] + p.far_off[a]) - p.o_far[a]) * p.inv[a];
+  }
+}
+
+inline void node_distances_in_plane(const QuantisedNode& n, const RayData& p, V8 d[6]) {
   const std::uint8_t* q = n.q[0];
   for (int a = 0; a < 3; ++a) {
     const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
@@ -213,11 +219,12 @@ inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
 template <int Oct, class Node>
 inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
   V8 d[6];
+  if constexpr (Oct == kInPlane) node_distances_in_plane(n, p, d);
 #ifdef RAYCAST_KERNEL_OCTANT_WALKS
-  if constexpr (std::is_same_v<Node, WideNode>)
+  else if constexpr (std::is_same_v<Node, WideNode>)
     node_distances<Oct>(n, p, d);
-  else
 #endif
+  else
     node_distances(n, p, d);
   const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
   tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
@@ -245,8 +252,8 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
 constexpr float kFarWiden = 1.0f + 0x1p-20f;
 
 // The node test of the any-hit octant walks, for rays that traverse checked: tmin >= +0 (sign bit
-// clear), tmax >= tmin, origin and direction finite (so a distance is NaN only on an axis the ray
-// lies in, for a box that holds no point of the ray: prepare). The kernel's
+// clear), tmax >= tmin, origin and direction finite, no direction component zero (so no distance
+// is NaN). The kernel's
 // vmax_bits / vmin_bits (integer max / min of the float bits: one cycle, where the float ones take
 // two) order two floats as floats when one of them has its sign bit clear, so tnear has the value
 // of the test above (tmin is an operand) and so has the exit's min with tmax. The far distance's
@@ -262,8 +269,8 @@ inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax)
   V8 d[6];
   for (int a = 0; a < 3; ++a) {
     const int near_off = (Oct >> a & 1) * kNodeWidth, far_off = kNodeWidth - near_off;
-    d[a] = (p.o_near[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
-    d[3 + a] = (p.o_far[a] - load8(n.box[a] + far_off)) * p.neg_inv_far[a];
+    d[a] = (p.o[a] - load8(n.box[a] + near_off)) * p.neg_inv[a];
+    d[3 + a] = (p.o[a] - load8(n.box[a] + far_off)) * p.neg_inv_far[a];
   }
   const V8 tnear = vmax_bits(vmax_bits(d[0], d[1]), vmax_bits(d[2], p.tmin));
   const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], tmax * splat(kFarWiden)));
@@ -459,7 +466,9 @@ template <Query Q, class Node, int Oct>
                                         TraversalEntry* stack) {
   const Node* nodes = node_array<Node>(bvh);
   V8 tmax = splat(tmax_s);
-  float reach_s = widen_exit(tmax_s);  // the pop's bound: tmax_s widened as the node test does
+  // The pop's bound: tmax_s widened as the node test widens it once a hit has set tmax_s; until
+  // then every pushed entry passed the node test against the widened tmax.
+  float reach_s = kInfinityF;
   int top = 0;
   bool found = false;
   PairResult res;
@@ -551,12 +560,57 @@ constexpr bool uses_octant_walks() {
 #endif
 }
 
+// The rays with a zero direction component, out of line (rare; and so that the other rays'
+// RayData never has its address taken, which kept GCC from holding it in registers). On such an
+// axis the ray lies in the plane x_a = o_a and 1/d = +-infinity (as the sign of the zero: prepare),
+// so each distance on that axis is +-infinity, or NaN where a plane equals the origin subtracted.
+// The walk kInPlane's near planes' rows subtract the float just past o_a in the direction of 1/d,
+// its far planes' rows the float just before it: a near plane at or behind o_a (on the side 1/d
+// points away from) gives -infinity, a far plane at or beyond it +infinity, so every box holding
+// the plane x_a = o_a is entered whatever the sign of the zero (a box with a face in that plane,
+// met at its edge, was culled with 1/d clamped to +-2^-64: slab [-huge, 0]). A NaN comes only
+// from a plane equal to a shifted origin, i.e. from a box that lies wholly on one side of x_a =
+// o_a, holds no point of the ray, and may be entered or culled alike (no triangle in it can be
+// hit). (The one origin of the other walks gives NaN for a box with a face at o_a.) Other axes
+// keep o_a. The 16-lane node test's origins [lo rows | hi rows] likewise.
+template <Query Q, class Node>
+[[gnu::noinline, gnu::cold]] bool traverse_in_plane(const MeshBvh& bvh, const MeshRay& ray,
+                                                    MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+                                                    TraversalEntry* stack) {
+  RayData p;
+  prepare<Q, Node>(ray, p);
+  const float* o = &ray.o.x;
+  const float* d = &ray.d.x;
+  float o_lo[3], o_hi[3], invs[3];
+  for (int a = 0; a < 3; ++a) {
+    float da = d[a];  // prepare's reciprocal
+    if (std::abs(da) < kMinDirection && da != 0) da = da < 0 ? -kMinDirection : kMinDirection;
+    invs[a] = 1.0f / da;
+    float near_o = o[a], far_o = o[a];
+    if (da == 0) {
+      const float up = std::nextafter(o[a], kInfinityF), down = std::nextafter(o[a], -kInfinityF);
+      near_o = invs[a] > 0 ? up : down;
+      far_o = invs[a] > 0 ? down : up;
+    }
+    p.o_near[a] = splat(near_o);
+    p.o_far[a] = splat(far_o);
+    o_lo[a] = invs[a] >= 0 ? near_o : far_o;
+    o_hi[a] = invs[a] >= 0 ? far_o : near_o;
+  }
+#ifdef RAYCAST_KERNEL_NODE16
+  if constexpr (uses_node16<Q, Node>()) prepare_node16(o_lo, o_hi, invs, p.node16);
+#endif
+  (void)o_lo, (void)o_hi, (void)invs;
+  return walk<Q, Node, kInPlane>(bvh, p, ray.tmax, hit, out, stack);
+}
+
 template <Query Q, class Node>
 bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
               TraversalEntry* stack) {
   if (bvh.empty()) return false;
   RayData p;
-  prepare<Q, Node>(ray, p);
+  if (prepare<Q, Node>(ray, p)) [[unlikely]]
+    return traverse_in_plane<Q, Node>(bvh, ray, hit, out, stack);
   if constexpr (uses_octant_walks<Q, Node>()) {
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
     // intersect_node8_ordered's rays; the others (NaN, infinities, tmin < 0) take the walk of
