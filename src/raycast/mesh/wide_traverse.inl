@@ -70,6 +70,7 @@ struct RayData {
 #endif
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
   V8 neg_inv_far[3];  // -1 / d * kFarWiden (intersect_node8_ordered; set by traverse)
+  V8 tmax_far;        // tmax * kFarWiden (the any-hit walks' tmax is the ray's; set by traverse)
 #endif
   int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis] (and in
   int far_off[3];   // an axis's two rows of QuantisedNode::q)
@@ -246,26 +247,25 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
 // a n (1 + 6u) (1 + u)^2: with kFarWiden = 1 + 16u every positive exit is at least the test
 // above's (so are its boxes, and a few more within 16 ulps). Negative exits keep their sign
 // (rounding never flips one), zero ones their value. (Underflow aside, as in the test above.)
-// tmax is widened by the same factor: fl(tmax * kFarWiden) >= tmax (1 + 16u)(1 - u), above a
-// rounded entry fl(fl(o - plane) * fl(-1/d)) <= (1 + u)^3 times an exact entry <= tmax (a hit at
-// t == tmax keeps its box, as in the test above).
+// tmax is widened by the same factor (p.tmax_far: the any-hit walk never lowers tmax): fl(tmax *
+// kFarWiden) >= tmax (1 + 16u)(1 - u), above a rounded entry fl(fl(o - plane) * fl(-1/d)) <= (1 +
+// u)^3 times an exact entry <= tmax (a hit at t == tmax keeps its box, as in the test above).
 constexpr float kFarWiden = 1.0f + 0x1p-20f;
 
 // The node test of the any-hit octant walks, for rays that traverse checked: tmin >= +0 (sign bit
 // clear), tmax >= tmin, origin and direction finite, no direction component zero (so no distance
-// is NaN). The kernel's
-// vmax_bits / vmin_bits (integer max / min of the float bits: one cycle, where the float ones take
-// two) order two floats as floats when one of them has its sign bit clear, so tnear has the value
-// of the test above (tmin is an operand) and so has the exit's min with tmax. The far distance's
-// min of three: the float min when no distance is negative; when one is, both are negative (the
-// bits' min is never below the float min) and the box is culled as above, tnear being >= +0,
-// except where a -0 (the origin on a far plane) with tnear == 0 enters a box the float test
-// culls. And with tnear >= 0 the test above's far * kSlabNarrow (which differs from far *
-// kSlabWiden as a max only when far < 0, where both cull) is not needed. So this test enters every
-// box the test above enters and a few more (an any-hit walk's answer does not depend on it), with
-// four dependent steps fewer between a node's loads and its mask.
+// is NaN). The kernel's vmax_bits / vmin_bits (integer max / min of the float bits: one cycle,
+// where the float ones take two) order two floats as floats when one of them has its sign bit
+// clear, so tnear has the value of the test above (tmin is an operand) and so has the exit's min
+// with tmax. The far distance's min of three: the float min when no distance is negative; when one
+// is, both are negative (the bits' min is never below the float min) and the box is culled as
+// above, tnear being >= +0, except where a -0 (the origin on a far plane) with tnear == 0 enters a
+// box the float test culls. And with tnear >= 0 the test above's far * kSlabNarrow (which differs
+// from far * kSlabWiden as a max only when far < 0, where both cull) is not needed. So this test
+// enters every box the test above enters and a few more (an any-hit walk's answer does not depend
+// on it), with four dependent steps fewer between a node's loads and its mask.
 template <int Oct>
-inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax) {
+inline int intersect_node8_ordered(const WideNode& n, const RayData& p) {
   V8 d[6];
   for (int a = 0; a < 3; ++a) {
     const int near_off = (Oct >> a & 1) * kNodeWidth, far_off = kNodeWidth - near_off;
@@ -273,7 +273,7 @@ inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax)
     d[3 + a] = (p.o[a] - load8(n.box[a] + far_off)) * p.neg_inv_far[a];
   }
   const V8 tnear = vmax_bits(vmax_bits(d[0], d[1]), vmax_bits(d[2], p.tmin));
-  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], tmax * splat(kFarWiden)));
+  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], p.tmax_far));
   return bits(cmp_le(tnear, tfar)) & n.used;
 }
 #endif
@@ -283,7 +283,7 @@ template <Query Q, int Oct, class Node>
 inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
   if constexpr (Q == Query::kAny && Oct >= 0 && std::is_same_v<Node, WideNode>)
-    return intersect_node8_ordered<Oct>(n, p, tmax);
+    return intersect_node8_ordered<Oct>(n, p);
 #endif
 #ifdef RAYCAST_KERNEL_NODE16
   if constexpr (uses_node16<Q, Node>())
@@ -619,6 +619,7 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
           is_finite(ray.d)))
       return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
     for (int a = 0; a < 3; ++a) p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
+    p.tmax_far = splat(ray.tmax * kFarWiden);
 #endif
     // The octant prepare chose the rows by (inv >= 0, NaN included), so the walks read the same.
     const int oct = (p.near_off[0] != 0) | (p.near_off[1] != 0) << 1 | (p.near_off[2] != 0) << 2;
