@@ -64,13 +64,12 @@ struct RayData {
   // A ray with a zero direction component: the origin as the near and the far planes' rows
   // subtract it in the walk kInPlane (traverse_in_plane); not set for other rays.
   V8 o_near[3], o_far[3];
-  V8 inv[3];  // 1 / d, broadcast
-#if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
-  V8 neg_inv[3];  // -1 / d, broadcast
-#endif
-#ifdef RAYCAST_KERNEL_BITS_MINMAX
-  V8 neg_inv_far[3];  // -1 / d * kFarWiden (intersect_node8_ordered; set by traverse)
+  V8 inv[3];          // 1 / d, broadcast
+  V8 neg_inv[3];      // -1 / d, broadcast
+  V8 neg_inv_far[3];  // -1 / d * kFarWiden (the ordered node tests; set by traverse)
   V8 tmax_far;        // tmax * kFarWiden (the any-hit walks' tmax is the ray's; set by traverse)
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+  V8 mul_lo[3], mul_hi[3];  // neg_inv or neg_inv_far: the lo and hi rows' (set by traverse)
 #endif
   int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis] (and in
   int far_off[3];   // an axis's two rows of QuantisedNode::q)
@@ -106,9 +105,7 @@ inline bool prepare(const MeshRay& r, RayData& p) {
     const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
-#if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
     p.neg_inv[a] = splat(-inv);
-#endif
     // WideNode::box[a] and QuantisedNode::q[2a], q[2a + 1]: the lo planes, then the hi planes.
     p.near_off[a] = inv >= 0 ? 0 : kNodeWidth;
     p.far_off[a] = inv >= 0 ? kNodeWidth : 0;
@@ -240,7 +237,6 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
   return bits(cmp_le(tnear, tfar)) & n.used;
 }
 
-#ifdef RAYCAST_KERNEL_BITS_MINMAX
 // The widening of intersect_node8_ordered's exits, folded into the far rows' reciprocal. With
 // a = fl(o - plane), n = fl(-1/d) and u = 2^-24, a positive exit fl(a * fl(n * kFarWiden)) is at
 // least a n kFarWiden (1 - u)^2, and the test above's fl(fl(a n) * kSlabWiden) at most
@@ -252,6 +248,40 @@ inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) 
 // u)^3 times an exact entry <= tmax (a hit at t == tmax keeps its box, as in the test above).
 constexpr float kFarWiden = 1.0f + 0x1p-20f;
 
+// The walk of the nearest-hit query on float nodes for the rays intersect_node8_ordered admits
+// (traverse checks), on every ISA: its rule with the row offsets of the ray (this node test and
+// the packets' lane test, packet_child, are the same operations, so every ISA and every packet lane
+// culls alike: the nearest hit and its tie-break do not depend on the ISA).
+constexpr int kOrdered = -3;
+
+// intersect_node8_ordered with the ray's row offsets, tmax widened per call (the nearest walk
+// lowers it), and the entry distances (for the ordering and the pop).
+inline int intersect_node8_nearest(const WideNode& n, const RayData& p, V8 tmax, V8& tnear) {
+  V8 d[6];
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+  // Both rows at fixed offsets (no per-ray offsets in registers), each with its row's reciprocal
+  // (mul_lo, mul_hi: the near row's -1/d, the far row's -1/d * kFarWiden), near and far as their
+  // min and max: the values above, but where both are negative (then swapped: the bits' max
+  // with tmin >= +0 ignores negatives and the bits' min culls either way) or zeros of opposite
+  // sign (the same mask: +0 <= -0 as floats): the same mask and entry on every ISA.
+  for (int a = 0; a < 3; ++a) {
+    const V8 lo = (p.o[a] - load8(n.box[a])) * p.mul_lo[a];
+    const V8 hi = (p.o[a] - load8(n.box[a] + kNodeWidth)) * p.mul_hi[a];
+    d[a] = vmin(lo, hi);
+    d[3 + a] = vmax(lo, hi);
+  }
+#else
+  for (int a = 0; a < 3; ++a) {
+    d[a] = (p.o[a] - load8(n.box[a] + p.near_off[a])) * p.neg_inv[a];
+    d[3 + a] = (p.o[a] - load8(n.box[a] + p.far_off[a])) * p.neg_inv_far[a];
+  }
+#endif
+  tnear = vmax_bits(vmax_bits(d[0], d[1]), vmax_bits(d[2], p.tmin));
+  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], tmax * splat(kFarWiden)));
+  return bits(cmp_le(tnear, tfar)) & n.used;
+}
+
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
 // The node test of the any-hit octant walks, for rays that traverse checked: tmin >= +0 (sign bit
 // clear), tmax >= tmin, origin and direction finite, no direction component zero (so no distance
 // is NaN). The kernel's vmax_bits / vmin_bits (integer max / min of the float bits: one cycle,
@@ -281,6 +311,8 @@ inline int intersect_node8_ordered(const WideNode& n, const RayData& p) {
 // The node test of query Q on Node: the 8-lane one, or the kernel's 16-lane one (same results).
 template <Query Q, int Oct, class Node>
 inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
+  if constexpr (Oct == kOrdered && std::is_same_v<Node, WideNode>)
+    return intersect_node8_nearest(n, p, tmax, tnear);
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
   if constexpr (Q == Query::kAny && Oct >= 0 && std::is_same_v<Node, WideNode>)
     return intersect_node8_ordered<Oct>(n, p);
@@ -604,6 +636,27 @@ template <Query Q, class Node>
   return walk<Q, Node, kInPlane>(bvh, p, ray.tmax, hit, out, stack);
 }
 
+// The rays of the ordered node tests (intersect_node8_ordered): tmin >= +0, tmax >= tmin, origin
+// and direction finite (a zero direction component is traverse_in_plane's). Finiteness as one
+// sum (NaN or infinite when a term is; a sum of huge finite terms that overflows only sends the
+// ray to the float test): a few instructions per ray, the same decision on every ISA.
+inline bool ordered_ray(const MeshRay& ray) {
+  const float s = ((ray.o.x + ray.o.y) + (ray.o.z + ray.d.x)) + ((ray.d.y + ray.d.z) + ray.tmin);
+  return !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && s - s == 0;
+}
+
+// The nearest-hit rays on float nodes that the ordered test does not admit, out of line with their
+// own RayData (inlined beside the ordered walk, or passed its RayData by address, the walk lost:
+// docs/performance-mesh.md, session 14).
+template <Query Q, class Node>
+[[gnu::noinline, gnu::cold]] bool traverse_unordered(const MeshBvh& bvh, const MeshRay& ray,
+                                                     MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+                                                     TraversalEntry* stack) {
+  RayData p;
+  prepare<Q, Node>(ray, p);
+  return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
+}
+
 template <Query Q, class Node>
 bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
               TraversalEntry* stack) {
@@ -611,13 +664,23 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   RayData p;
   if (prepare<Q, Node>(ray, p)) [[unlikely]]
     return traverse_in_plane<Q, Node>(bvh, ray, hit, out, stack);
+  if constexpr (Q == Query::kNearest && std::is_same_v<Node, WideNode>) {
+    if (!ordered_ray(ray)) [[unlikely]]
+      return traverse_unordered<Q, Node>(bvh, ray, hit, out, stack);
+    for (int a = 0; a < 3; ++a) {
+      p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+      p.mul_lo[a] = p.near_off[a] == 0 ? p.neg_inv[a] : p.neg_inv_far[a];
+      p.mul_hi[a] = p.near_off[a] == 0 ? p.neg_inv_far[a] : p.neg_inv[a];
+#endif
+    }
+    return walk<Q, Node, kOrdered>(bvh, p, ray.tmax, hit, out, stack);
+  }
   if constexpr (uses_octant_walks<Q, Node>()) {
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
     // intersect_node8_ordered's rays; the others (NaN, infinities, tmin < 0) take the walk of
     // every octant.
-    if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && is_finite(ray.o) &&
-          is_finite(ray.d)))
-      return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
+    if (!ordered_ray(ray)) return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
     for (int a = 0; a < 3; ++a) p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
     p.tmax_far = splat(ray.tmax * kFarWiden);
 #endif
