@@ -680,7 +680,11 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
     // intersect_node8_ordered's rays; the others (NaN, infinities, tmin < 0) take the walk of
     // every octant.
-    if (!ordered_ray(ray)) return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
+    // (ordered_ray's test but for its sum: with the sum GCC allocated this walk's registers
+    // worse, sphere 1M shadow ~-4 % in 5 of 6 rounds; session 14.)
+    if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && is_finite(ray.o) &&
+          is_finite(ray.d)))
+      return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
     for (int a = 0; a < 3; ++a) p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
     p.tmax_far = splat(ray.tmax * kFarWiden);
 #endif
