@@ -18,6 +18,14 @@ inline V16 operator/(V16 x, V16 y) { return {_mm512_div_ps(x.v, y.v)}; }
 // The second operand when either is NaN, as the 8-lane vmin/vmax.
 inline V16 vmin(V16 x, V16 y) { return {_mm512_min_ps(x.v, y.v)}; }
 inline V16 vmax(V16 x, V16 y) { return {_mm512_max_ps(x.v, y.v)}; }
+inline V16 vmax_bits(V16 x, V16 y) {
+  return {
+      _mm512_castsi512_ps(_mm512_max_epi32(_mm512_castps_si512(x.v), _mm512_castps_si512(y.v)))};
+}
+inline V16 vmin_bits(V16 x, V16 y) {
+  return {
+      _mm512_castsi512_ps(_mm512_min_epi32(_mm512_castps_si512(x.v), _mm512_castps_si512(y.v)))};
+}
 inline M16 cmp_le(V16 x, V16 y) { return _mm512_cmp_ps_mask(x.v, y.v, _CMP_LE_OQ); }
 inline M16 cmp_ge(V16 x, V16 y) { return _mm512_cmp_ps_mask(x.v, y.v, _CMP_GE_OQ); }
 inline M16 cmp_eq(V16 x, V16 y) { return _mm512_cmp_ps_mask(x.v, y.v, _CMP_EQ_OQ); }

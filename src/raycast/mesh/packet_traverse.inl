@@ -39,7 +39,8 @@ namespace raycast::RAYCAST_KERNEL_NS {
 template <int N>
 struct PacketData {
   using V = typename PacketLanes<N>::V;
-  V o[3], inv[3];  // per lane, for the single-ray slab test
+  V o[3], inv[3];                // per lane, for the single-ray slab test
+  V neg_inv[3], neg_inv_far[3];  // per lane, for the ordered test (intersect_node8_nearest)
   V tmin;
   // Interval bounds per axis: the origin bound that gives the least entry (o_near) and the
   // greatest exit (o_far), the least and greatest 1/d, and which half of an axis's planes
@@ -247,19 +248,17 @@ inline bool prepare_packet(const PacketRays<N>& pr, PacketData<N>& p) {
   for (int k = 0; k < 6; ++k) finite &= bits(cmp_eq(L::load(f[k]) - L::load(f[k]), zero));
   if (finite != kAll) return false;
   for (int a = 0; a < 3; ++a) {
-    // Tiny components are replaced as the single-ray test does (rare: fixed lane by lane).
-    alignas(64) float da[N];
-    std::memcpy(da, f[3 + a], sizeof da);
-    const V d = L::load(da);
+    // A zero or tiny component (prepare's 1/d = +-infinity or the clamp) goes one ray at a time:
+    // the interval bounds below assume finite reciprocals of one sign.
+    const V d = L::load(f[3 + a]);
     const int small = ~(bits(cmp_ge(d, L::broadcast(kMinDirection))) |
                         bits(cmp_le(d, L::broadcast(-kMinDirection)))) &
                       kAll;
-    for (int m = small; m; m &= m - 1) {
-      float& x = da[__builtin_ctz(m)];
-      x = x < 0 ? -kMinDirection : kMinDirection;
-    }
+    if (small) return false;
     p.o[a] = L::load(f[a]);
-    p.inv[a] = L::broadcast(1.0f) / L::load(da);  // as the single-ray test computes it
+    p.inv[a] = L::broadcast(1.0f) / d;             // as the single-ray test computes it
+    p.neg_inv[a] = L::broadcast(0.0f) - p.inv[a];  // -inv exactly (inv is not zero)
+    p.neg_inv_far[a] = p.neg_inv[a] * L::broadcast(kFarWiden);
     alignas(64) float inv[N];
     L::store(inv, p.inv[a]);
     float olo, ohi, ilo, ihi;
@@ -350,6 +349,15 @@ inline void node_planes(const QuantisedNode& n, int a, const PD& p, V8& pn, V8& 
   pf = o + load8_u8(n.q[2 * a + p.far_off[a] / kNodeWidth]) * s;
 }
 
+// The exit's widening of packet_node: float nodes' lanes take the ordered test
+// (intersect_node8_nearest), whose exit fl(fl(o - plane) * fl(-1/d * kFarWiden)) is at most the
+// lane's float exit fl(fl(plane - o) * fl(1/d)) times (1 + 16u)(1 + u)^2 / (1 - u), and whose
+// tmax is fl(tmax * kFarWiden) <= tmax (1 + 16u)(1 + u): both below fl(x * kPacketWiden) >=
+// x (1 + 32u)(1 - u) for the bound x >= the lane's float exit (and >= tmax). Quantised nodes' lanes
+// take the float test (kSlabWiden).
+constexpr float kPacketWiden = 1.0f + 0x1p-19f;
+constexpr float kPacketNarrow = 1.0f - 0x1p-19f;
+
 template <class Node, class PD>
 inline int packet_node(const Node& n, const PD& p, V8 reach, V8& tnear, NodePlanes& planes) {
   V8 near[3], far[3];
@@ -364,29 +372,44 @@ inline int packet_node(const Node& n, const PD& p, V8 reach, V8& tnear, NodePlan
     far[a] = vmax(df * p.inv_lo[a], df * p.inv_hi[a]);
   }
   tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin_lo));
-  const V8 f = vmin(vmin(far[0], far[1]), far[2]);
-  const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kSlabWiden), splat(kSlabNarrow));
-  return bits(cmp_le(tnear, vmin(f * widen, reach))) & n.used;
+  // The exit and `reach` widened as one, as in the single-ray test.
+  const V8 f = vmin(vmin(far[0], far[1]), vmin(far[2], reach));
+  constexpr bool kOrderedLanes = std::is_same_v<Node, WideNode>;
+  const V8 widen = select(cmp_ge(f, splat(0.0f)), splat(kOrderedLanes ? kPacketWiden : kSlabWiden),
+                          splat(kOrderedLanes ? kPacketNarrow : kSlabNarrow));
+  return bits(cmp_le(tnear, f * widen)) & n.used;
 }
 
 // Child c of a node against every lane: the single-ray slab test of that child, lane by lane, on
 // the planes packet_node read (node_planes: as every node test reads them). All lanes
-// share the direction signs, so the near plane is the same for every lane.
-template <int N>
+// share the direction signs, so the near plane is the same for every lane. Float nodes: the
+// ordered test of the single-ray nearest walk (intersect_node8_nearest; closest_format checks that
+// every lane is an ordered ray), the same operations lane by lane.
+template <bool Ordered, int N>
 inline int packet_child(const NodePlanes& n, int c, const PacketData<N>& p,
                         typename PacketLanes<N>::V tmax) {
   using L = PacketLanes<N>;
   using V = typename L::V;
   V near[3], far[3];
+  if constexpr (Ordered) {
+    for (int a = 0; a < 3; ++a) {
+      near[a] = (p.o[a] - L::broadcast(n.near[a][c])) * p.neg_inv[a];
+      far[a] = (p.o[a] - L::broadcast(n.far[a][c])) * p.neg_inv_far[a];
+    }
+    const V tnear = vmax_bits(vmax_bits(near[0], near[1]), vmax_bits(near[2], p.tmin));
+    const V tfar =
+        vmin_bits(vmin_bits(far[0], far[1]), vmin_bits(far[2], tmax * L::broadcast(kFarWiden)));
+    return bits(cmp_le(tnear, tfar));
+  }
   for (int a = 0; a < 3; ++a) {
     near[a] = (L::broadcast(n.near[a][c]) - p.o[a]) * p.inv[a];
     far[a] = (L::broadcast(n.far[a][c]) - p.o[a]) * p.inv[a];
   }
   const V tnear = vmax(vmax(near[0], near[1]), vmax(near[2], p.tmin));
-  const V f = vmin(vmin(far[0], far[1]), far[2]);
+  const V f = vmin(vmin(far[0], far[1]), vmin(far[2], tmax));
   const V widen =
       select(cmp_ge(f, L::broadcast(0.0f)), L::broadcast(kSlabWiden), L::broadcast(kSlabNarrow));
-  return bits(cmp_le(tnear, vmin(f * widen, tmax)));
+  return bits(cmp_le(tnear, f * widen));
 }
 
 // Triangle `lane` of group g against every lane's ray: the watertight test of intersect_pair.
@@ -504,12 +527,21 @@ inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t 
 
 // The nearest hit of each ray of `mask` (lane l of `pr` for each bit l); returns the lanes that
 // hit.
+// Whether the rays of `mask` are all ordered rays (ordered_ray; prepare_packet checked the rest).
+template <int N>
+inline bool ordered_lanes(const PacketRays<N>& pr, int mask) {
+  for (int l = 0; l < N; ++l)
+    if ((mask >> l & 1) && !ordered_ray(pr.ray(l))) return false;
+  return true;
+}
+
 template <class Node, int N>
 int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBvhHit* hits,
                    PacketEntry* stack, TraversalEntry* single_stack) {
   using L = PacketLanes<N>;
   PacketData<N> p;
-  if (!prepare_packet(pr, p)) {  // not one packet: one ray at a time
+  // Not one packet (or, on float nodes, a lane the ordered test does not admit): one ray at a time.
+  if (!prepare_packet(pr, p) || (std::is_same_v<Node, WideNode> && !ordered_lanes(pr, mask))) {
     int found = 0;
     for (int l = 0; l < N; ++l) {
       if (!(mask >> l & 1)) continue;
@@ -521,6 +553,12 @@ int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBv
   alignas(64) float tmax_s[N];
   for (int l = 0; l < N; ++l) tmax_s[l] = (mask >> l & 1) ? pr.f[7][l] : -kInfinityF;
   typename L::V tmax = L::load(tmax_s);
+  // Each lane's tmax widened as the node tests widen it: the pop's bound (a tied triangle's box
+  // may round its entry a few ulps above the lane's nearest hit).
+  const auto widen = [](typename L::V t) {
+    return vmax(t * L::broadcast(kSlabWiden), t * L::broadcast(kSlabNarrow));
+  };
+  typename L::V reach = widen(tmax);
   int found = 0;
   int top = 0;
   std::uint32_t ref = bvh.root;
@@ -541,7 +579,8 @@ int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBv
         while (m) {
           const int c = __builtin_ctz(m);
           m &= m - 1;
-          const int lm = packet_child<N>(planes, c, p, tmax) & lanes;
+          const int lm =
+              packet_child<std::is_same_v<Node, WideNode>, N>(planes, c, p, tmax) & lanes;
           if (!lm) continue;
           prefetch_children(bvh, node, 1 << c);
           const PacketEntry e{node.child[c], tnl[c], static_cast<std::uint32_t>(lm)};
@@ -575,12 +614,13 @@ int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBv
         leaf_by_triangle<N>(bvh, first, end, p, lanes, tmax_s, hits, found);
       }
       tmax = L::load(tmax_s);
+      reach = widen(tmax);
     }
     // Pop; an entry keeps the lanes whose nearest hit so far is not before its entry bound.
     for (;;) {
       if (top == 0) return found;
       const PacketEntry& e = stack[--top];
-      lanes = bits(cmp_ge(tmax, L::broadcast(e.tnear))) & static_cast<int>(e.lanes);
+      lanes = bits(cmp_ge(reach, L::broadcast(e.tnear))) & static_cast<int>(e.lanes);
       if (lanes) {
         ref = e.ref;
         break;

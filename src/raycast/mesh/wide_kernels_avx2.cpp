@@ -41,6 +41,15 @@ inline V8 operator*(V8 x, V8 y) { return {_mm256_mul_ps(x.v, y.v)}; }
 inline V8 operator/(V8 x, V8 y) { return {_mm256_div_ps(x.v, y.v)}; }
 inline V8 vmin(V8 x, V8 y) { return {_mm256_min_ps(x.v, y.v)}; }
 inline V8 vmax(V8 x, V8 y) { return {_mm256_max_ps(x.v, y.v)}; }
+// Integer max / min of the float bits (the nearest walk's node test, mesh/wide_traverse.inl).
+inline V8 vmax_bits(V8 x, V8 y) {
+  return {
+      _mm256_castsi256_ps(_mm256_max_epi32(_mm256_castps_si256(x.v), _mm256_castps_si256(y.v)))};
+}
+inline V8 vmin_bits(V8 x, V8 y) {
+  return {
+      _mm256_castsi256_ps(_mm256_min_epi32(_mm256_castps_si256(x.v), _mm256_castps_si256(y.v)))};
+}
 inline M8 cmp_le(V8 x, V8 y) { return {_mm256_cmp_ps(x.v, y.v, _CMP_LE_OQ)}; }
 inline M8 cmp_ge(V8 x, V8 y) { return {_mm256_cmp_ps(x.v, y.v, _CMP_GE_OQ)}; }
 inline M8 cmp_eq(V8 x, V8 y) { return {_mm256_cmp_ps(x.v, y.v, _CMP_EQ_OQ)}; }

@@ -69,16 +69,16 @@ inline V8 vmin_bits(V8 x, V8 y) {
 // commutes with IEEE rounding and with min/max), so the hits stay bit for bit those of the other
 // ISAs.
 struct NodeRay16 {
-  __m512 o[3];      // the origin, broadcast
+  __m512 o[3];      // [o_lo x 8 | o_hi x 8]: the origin as the lo and hi rows subtract it (prepare)
   __m512 mul[3];    // [1/d x 8 | -1/d x 8]
   __m512i perm[3];  // puts the near planes in lanes 0-7: the halves swapped when 1/d < 0
 };
 
-inline void prepare_node16(const float* o, const float* inv, NodeRay16& r) {
+inline void prepare_node16(const float* o_lo, const float* o_hi, const float* inv, NodeRay16& r) {
   const __m512i same = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   const __m512i swap = _mm512_setr_epi32(8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7);
   for (int a = 0; a < 3; ++a) {
-    r.o[a] = _mm512_set1_ps(o[a]);
+    r.o[a] = _mm512_insertf32x8(_mm512_set1_ps(o_lo[a]), _mm256_set1_ps(o_hi[a]), 1);
     r.mul[a] = _mm512_insertf32x8(_mm512_set1_ps(inv[a]), _mm256_set1_ps(-inv[a]), 1);
     r.perm[a] = inv[a] >= 0 ? same : swap;
   }
@@ -107,16 +107,18 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
   const __m512 dx = axis_distances16(n, r, 0);
   const __m512 dy = axis_distances16(n, r, 1);
   const __m512 dz = axis_distances16(n, r, 2);
-  // Lanes 0-7: max(max(nx, ny), max(nz, tmin)); lanes 8-15: max(max(-fx, -fy), -fz) = -far.
-  const __m512 m = _mm512_max_ps(
-      _mm512_max_ps(dx, dy), _mm512_mask_max_ps(dz, 0x00FF, dz, _mm512_castps256_ps512(tmin.v)));
+  // Lanes 0-7: max(max(nx, ny), max(nz, tmin)); lanes 8-15: max(max(-fx, -fy), max(-fz, -tmax))
+  // = -min(min(fx, fy), min(fz, tmax)) (negation by the sign bit: exact, and max(-a, -b) picks
+  // the operand min(a, b) picks, NaN included).
+  const __m512 t = _mm512_insertf32x8(_mm512_castps256_ps512(tmin.v),
+                                      _mm256_xor_ps(tmax.v, _mm256_set1_ps(-0.0f)), 1);
+  const __m512 m = _mm512_max_ps(_mm512_max_ps(dx, dy), _mm512_max_ps(dz, t));
   const __m256 near = _mm512_castps512_ps256(m);
   const __m256 neg_far = _mm512_extractf32x8_ps(m, 1);
   // far * widen = (-far) * (-widen), far * narrow = (-far) * (-narrow): the larger is the
-  // widened far distance whatever its sign, as in the generic test.
-  const __m256 tfar = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(neg_far, _mm256_set1_ps(-widen)),
-                                                  _mm256_mul_ps(neg_far, _mm256_set1_ps(-narrow))),
-                                    tmax.v);
+  // widened exit (tmax included) whatever its sign, as in the generic test.
+  const __m256 tfar = _mm256_max_ps(_mm256_mul_ps(neg_far, _mm256_set1_ps(-widen)),
+                                    _mm256_mul_ps(neg_far, _mm256_set1_ps(-narrow)));
   tnear = {near};
   return _mm256_cmp_ps_mask(near, tfar, _CMP_LE_OQ) & n.used;
 }

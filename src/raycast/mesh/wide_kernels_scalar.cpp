@@ -1,6 +1,7 @@
 // The portable mesh kernels: plain C++ lanes (any architecture; the reference the SIMD paths
 // are tested against).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -81,6 +82,17 @@ inline M8 cmp_eq(V8 a, V8 b) {
 }
 inline M8 cmp_ne(V8 a, V8 b) {
   return compare(a, b, [](float x, float y) { return !(x == y); });
+}
+// Integer max / min of the float bits (the nearest walk's node test, mesh/wide_traverse.inl).
+inline V8 vmax_bits(V8 a, V8 b) {
+  return lanewise(a, b, [](float x, float y) {
+    return std::bit_cast<std::int32_t>(x) > std::bit_cast<std::int32_t>(y) ? x : y;
+  });
+}
+inline V8 vmin_bits(V8 a, V8 b) {
+  return lanewise(a, b, [](float x, float y) {
+    return std::bit_cast<std::int32_t>(x) < std::bit_cast<std::int32_t>(y) ? x : y;
+  });
 }
 inline M8 mand(M8 a, M8 b) { return a & b; }
 inline M8 mor(M8 a, M8 b) { return a | b; }

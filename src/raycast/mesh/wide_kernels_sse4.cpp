@@ -39,6 +39,15 @@ inline V8 operator*(V8 x, V8 y) { return {_mm_mul_ps(x.a, y.a), _mm_mul_ps(x.b, 
 inline V8 operator/(V8 x, V8 y) { return {_mm_div_ps(x.a, y.a), _mm_div_ps(x.b, y.b)}; }
 inline V8 vmin(V8 x, V8 y) { return {_mm_min_ps(x.a, y.a), _mm_min_ps(x.b, y.b)}; }
 inline V8 vmax(V8 x, V8 y) { return {_mm_max_ps(x.a, y.a), _mm_max_ps(x.b, y.b)}; }
+// Integer max / min of the float bits (the nearest walk's node test, mesh/wide_traverse.inl).
+inline __m128 max_bits4(__m128 x, __m128 y) {
+  return _mm_castsi128_ps(_mm_max_epi32(_mm_castps_si128(x), _mm_castps_si128(y)));
+}
+inline __m128 min_bits4(__m128 x, __m128 y) {
+  return _mm_castsi128_ps(_mm_min_epi32(_mm_castps_si128(x), _mm_castps_si128(y)));
+}
+inline V8 vmax_bits(V8 x, V8 y) { return {max_bits4(x.a, y.a), max_bits4(x.b, y.b)}; }
+inline V8 vmin_bits(V8 x, V8 y) { return {min_bits4(x.a, y.a), min_bits4(x.b, y.b)}; }
 inline M8 cmp_le(V8 x, V8 y) { return {_mm_cmple_ps(x.a, y.a), _mm_cmple_ps(x.b, y.b)}; }
 inline M8 cmp_ge(V8 x, V8 y) { return {_mm_cmpge_ps(x.a, y.a), _mm_cmpge_ps(x.b, y.b)}; }
 inline M8 cmp_eq(V8 x, V8 y) { return {_mm_cmpeq_ps(x.a, y.a), _mm_cmpeq_ps(x.b, y.b)}; }

@@ -24,15 +24,23 @@
 namespace raycast::RAYCAST_KERNEL_NS {
 
 // Relative widening of a slab exit so that the float box test is conservative (pbrt-v4 6.8.2:
-// 1 + 2 gamma(3) in float arithmetic).
+// 1 + 2 gamma(3) in float arithmetic). The exit is min(far distances, tmax) widened as one, so
+// that tmax is widened too: a box whose exact entry is at most tmax has a rounded entry
+// fl(fl(plane - o) * fl(1/d)), at most 3 roundings, (1 + u)^3 < 1 + 4u above it (u = 2^-24),
+// and fl(tmax * kSlabWiden) >= tmax (1 + 6u)(1 - u) > tmax (1 + 4u): a hit at t == tmax is
+// never culled by its box's rounding (negative ones likewise with kSlabNarrow).
 constexpr float kSlabWiden = 1.0f + 2.0f * (3 * 0x1p-24f) / (1 - 3 * 0x1p-24f);
 // The same margin for negative distances (multiplying by it moves them towards +infinity).
 constexpr float kSlabNarrow = 2.0f - kSlabWiden;
-// Direction components smaller than this are replaced by it (with their sign) when computing
-// 1 / d, so that the box test never multiplies 0 by infinity (the ray is first scaled so that
-// its largest component is in [1, 2)).
+// Non-zero direction components smaller than this are replaced by it (with their sign) when
+// computing 1 / d (the ray is first scaled so that its largest component is in [1, 2)). A zero
+// component keeps 1 / d = +-infinity: see prepare.
 constexpr float kMinDirection = 0x1p-64f;
 constexpr float kInfinityF = __builtin_huge_valf();
+
+// A scalar exit or tmax widened as the node tests widen them (the nearest walk's pop compares a
+// pushed entry with its current hit's t so widened, as the node test did).
+inline float widen_exit(float t) { return std::max(t * kSlabWiden, t * kSlabNarrow); }
 
 enum class Query { kNearest, kAny, kAll };
 
@@ -52,13 +60,16 @@ constexpr bool uses_node16() {
 
 // Per-ray constants of the box and triangle tests.
 struct RayData {
-  V8 o[3];    // origin, broadcast
-  V8 inv[3];  // 1 / d, broadcast
-#if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
-  V8 neg_inv[3];  // -1 / d, broadcast
-#endif
-#ifdef RAYCAST_KERNEL_BITS_MINMAX
-  V8 neg_inv_far[3];  // -1 / d * kFarWiden (intersect_node8_ordered; set by traverse)
+  V8 o[3];  // origin, broadcast
+  // A ray with a zero direction component: the origin as the near and the far planes' rows
+  // subtract it in the walk kInPlane (traverse_in_plane); not set for other rays.
+  V8 o_near[3], o_far[3];
+  V8 inv[3];          // 1 / d, broadcast
+  V8 neg_inv[3];      // -1 / d, broadcast
+  V8 neg_inv_far[3];  // -1 / d * kFarWiden (the ordered node tests; set by traverse)
+  V8 tmax_far;        // tmax * kFarWiden (the any-hit walks' tmax is the ray's; set by traverse)
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+  V8 mul_lo[3], mul_hi[3];  // neg_inv or neg_inv_far: the lo and hi rows' (set by traverse)
 #endif
   int near_off[3];  // offset of the near planes of each axis in WideNode::box[axis] (and in
   int far_off[3];   // an axis's two rows of QuantisedNode::q)
@@ -74,21 +85,27 @@ struct RayData {
 
 // Fills p in place (returning RayData by value made GCC copy the AVX-512 part, nine 64-byte
 // vectors, through the stack twice per ray), for query Q on a tree of Node.
+// Returns whether a direction component is zero (those rays take traverse_in_plane).
 template <Query Q, class Node>
-inline void prepare(const MeshRay& r, RayData& p) {
+inline bool prepare(const MeshRay& r, RayData& p) {
   const float* o = &r.o.x;
   const float* d = &r.d.x;
   float invs[3];
+  bool zero = false;
   for (int a = 0; a < 3; ++a) {
     p.o[a] = splat(o[a]);
     float da = d[a];
-    if (std::abs(da) < kMinDirection) da = da < 0 ? -kMinDirection : kMinDirection;
+    if (std::abs(da) < kMinDirection) [[unlikely]] {
+      // A zero component keeps 1 / d = +-infinity (traverse_in_plane).
+      if (da != 0)
+        da = da < 0 ? -kMinDirection : kMinDirection;
+      else
+        zero = true;
+    }
     const float inv = 1.0f / da;
     invs[a] = inv;
     p.inv[a] = splat(inv);
-#if defined(RAYCAST_KERNEL_MINMAX_SLABS) || defined(RAYCAST_KERNEL_FOLDED_ROWS)
     p.neg_inv[a] = splat(-inv);
-#endif
     // WideNode::box[a] and QuantisedNode::q[2a], q[2a + 1]: the lo planes, then the hi planes.
     p.near_off[a] = inv >= 0 ? 0 : kNodeWidth;
     p.far_off[a] = inv >= 0 ? kNodeWidth : 0;
@@ -105,9 +122,10 @@ inline void prepare(const MeshRay& r, RayData& p) {
   p.okz = splat(o[w.kz]);
   p.tmin = splat(r.tmin);
 #ifdef RAYCAST_KERNEL_NODE16
-  if constexpr (uses_node16<Q, Node>()) prepare_node16(o, invs, p.node16);
+  if constexpr (uses_node16<Q, Node>()) prepare_node16(o, o, invs, p.node16);
 #endif
   (void)invs;
+  return zero;
 }
 
 // The node arrays of the two formats (mesh/mesh_bvh.h).
@@ -173,52 +191,111 @@ inline void node_distances(const QuantisedNode& n, const RayData& p, V8 d[6]) {
   }
 }
 
+// The walk of the rays with a zero direction component (prepare): their own origins per row.
+constexpr int kInPlane = -2;
+
+// node_distances for those rays: the rows chosen by the sign of d (as the generic test) with
+// the near and far rows' origins of prepare. Every value as the generic test's but on the
+// ray's zero axes.
+inline void node_distances_in_plane(const WideNode& n, const RayData& p, V8 d[6]) {
+  for (int a = 0; a < 3; ++a) {
+    d[a] = (load8(n.box[a] + p.near_off[a]) - p.o_near[a]) * p.inv[a];
+    d[3 + a] = (load8(n.box[a] + p.far_off[a]) - p.o_far[a]) * p.inv[a];
+  }
+}
+
+inline void node_distances_in_plane(const QuantisedNode& n, const RayData& p, V8 d[6]) {
+  const std::uint8_t* q = n.q[0];
+  for (int a = 0; a < 3; ++a) {
+    const V8 s = splat(node_scale(n.exponent[a])), o = splat(n.origin[a]);
+    d[a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.near_off[a]) * s) - p.o_near[a]) * p.inv[a];
+    d[3 + a] = ((o + load8_u8(q + 2 * kNodeWidth * a + p.far_off[a]) * s) - p.o_far[a]) * p.inv[a];
+  }
+}
+
 // Slab test of the eight children against [tmin, tmax]: the hit mask and the entry distances.
 template <int Oct, class Node>
 inline int intersect_node8(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
   V8 d[6];
+  if constexpr (Oct == kInPlane) node_distances_in_plane(n, p, d);
 #ifdef RAYCAST_KERNEL_OCTANT_WALKS
-  if constexpr (std::is_same_v<Node, WideNode>)
+  else if constexpr (std::is_same_v<Node, WideNode>)
     node_distances<Oct>(n, p, d);
-  else
 #endif
+  else
     node_distances(n, p, d);
   const V8 nx = d[0], ny = d[1], nz = d[2], fx = d[3], fy = d[4], fz = d[5];
   tnear = vmax(vmax(nx, ny), vmax(nz, p.tmin));
-  // Widen the far distance away from the near one: scale it up when it is positive, down when it
-  // is negative (a node behind the origin, met by the whole-line queries of spans). Scaling a
-  // negative far distance up would shrink the interval and cull flat boxes (a mesh's
-  // axis-aligned face) behind the origin. The larger of far * widen and far * narrow is exactly
-  // that, whatever far's sign (two independent products and a max: a shorter dependency chain
-  // than choosing the factor from the sign first).
-  const V8 far = vmin(vmin(fx, fy), fz);
-  const V8 tfar = vmin(vmax(far * splat(kSlabWiden), far * splat(kSlabNarrow)), tmax);
+  // Widen the exit, tmax included (kSlabWiden: a hit at t == tmax keeps its box), away from the
+  // entry: scale it up when it is positive, down when it is negative (a node behind the origin,
+  // met by the whole-line queries of spans). Scaling a negative exit up would shrink the interval
+  // and cull flat boxes (a mesh's axis-aligned face) behind the origin. The larger of far *
+  // widen and far * narrow is exactly that, whatever far's sign (two independent products and a
+  // max: a shorter dependency chain than choosing the factor from the sign first).
+  const V8 far = vmin(vmin(fx, fy), vmin(fz, tmax));
+  const V8 tfar = vmax(far * splat(kSlabWiden), far * splat(kSlabNarrow));
   return bits(cmp_le(tnear, tfar)) & n.used;
 }
 
-#ifdef RAYCAST_KERNEL_BITS_MINMAX
 // The widening of intersect_node8_ordered's exits, folded into the far rows' reciprocal. With
 // a = fl(o - plane), n = fl(-1/d) and u = 2^-24, a positive exit fl(a * fl(n * kFarWiden)) is at
 // least a n kFarWiden (1 - u)^2, and the test above's fl(fl(a n) * kSlabWiden) at most
 // a n (1 + 6u) (1 + u)^2: with kFarWiden = 1 + 16u every positive exit is at least the test
 // above's (so are its boxes, and a few more within 16 ulps). Negative exits keep their sign
 // (rounding never flips one), zero ones their value. (Underflow aside, as in the test above.)
+// tmax is widened by the same factor (p.tmax_far: the any-hit walk never lowers tmax): fl(tmax *
+// kFarWiden) >= tmax (1 + 16u)(1 - u), above a rounded entry fl(fl(o - plane) * fl(-1/d)) <= (1 +
+// u)^3 times an exact entry <= tmax (a hit at t == tmax keeps its box, as in the test above).
 constexpr float kFarWiden = 1.0f + 0x1p-20f;
 
+// The walk of the nearest-hit query on float nodes for the rays intersect_node8_ordered admits
+// (traverse checks), on every ISA: its rule with the row offsets of the ray (this node test and
+// the packets' lane test, packet_child, are the same operations, so every ISA and every packet lane
+// culls alike: the nearest hit and its tie-break do not depend on the ISA).
+constexpr int kOrdered = -3;
+
+// intersect_node8_ordered with the ray's row offsets, tmax widened per call (the nearest walk
+// lowers it), and the entry distances (for the ordering and the pop).
+inline int intersect_node8_nearest(const WideNode& n, const RayData& p, V8 tmax, V8& tnear) {
+  V8 d[6];
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+  // Both rows at fixed offsets (no per-ray offsets in registers), each with its row's reciprocal
+  // (mul_lo, mul_hi: the near row's -1/d, the far row's -1/d * kFarWiden), near and far as their
+  // min and max: the values above, but where both are negative (then swapped: the bits' max
+  // with tmin >= +0 ignores negatives and the bits' min culls either way) or zeros of opposite
+  // sign (the same mask: +0 <= -0 as floats): the same mask and entry on every ISA.
+  for (int a = 0; a < 3; ++a) {
+    const V8 lo = (p.o[a] - load8(n.box[a])) * p.mul_lo[a];
+    const V8 hi = (p.o[a] - load8(n.box[a] + kNodeWidth)) * p.mul_hi[a];
+    d[a] = vmin(lo, hi);
+    d[3 + a] = vmax(lo, hi);
+  }
+#else
+  for (int a = 0; a < 3; ++a) {
+    d[a] = (p.o[a] - load8(n.box[a] + p.near_off[a])) * p.neg_inv[a];
+    d[3 + a] = (p.o[a] - load8(n.box[a] + p.far_off[a])) * p.neg_inv_far[a];
+  }
+#endif
+  tnear = vmax_bits(vmax_bits(d[0], d[1]), vmax_bits(d[2], p.tmin));
+  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], tmax * splat(kFarWiden)));
+  return bits(cmp_le(tnear, tfar)) & n.used;
+}
+
+#ifdef RAYCAST_KERNEL_BITS_MINMAX
 // The node test of the any-hit octant walks, for rays that traverse checked: tmin >= +0 (sign bit
-// clear), tmax >= tmin, origin and direction finite (so no distance is NaN). The kernel's
-// vmax_bits / vmin_bits (integer max / min of the float bits: one cycle, where the float ones take
-// two) order two floats as floats when one of them has its sign bit clear, so tnear has the value
-// of the test above (tmin is an operand) and so has the exit's min with tmax. The far distance's
-// min of three: the float min when no distance is negative; when one is, both are negative (the
-// bits' min is never below the float min) and the box is culled as above, tnear being >= +0,
-// except where a -0 (the origin on a far plane) with tnear == 0 enters a box the float test
-// culls. And with tnear >= 0 the test above's far * kSlabNarrow (which differs from far *
-// kSlabWiden as a max only when far < 0, where both cull) is not needed. So this test enters every
-// box the test above enters and a few more (an any-hit walk's answer does not depend on it), with
-// four dependent steps fewer between a node's loads and its mask.
+// clear), tmax >= tmin, origin and direction finite, no direction component zero (so no distance
+// is NaN). The kernel's vmax_bits / vmin_bits (integer max / min of the float bits: one cycle,
+// where the float ones take two) order two floats as floats when one of them has its sign bit
+// clear, so tnear has the value of the test above (tmin is an operand) and so has the exit's min
+// with tmax. The far distance's min of three: the float min when no distance is negative; when one
+// is, both are negative (the bits' min is never below the float min) and the box is culled as
+// above, tnear being >= +0, except where a -0 (the origin on a far plane) with tnear == 0 enters a
+// box the float test culls. And with tnear >= 0 the test above's far * kSlabNarrow (which differs
+// from far * kSlabWiden as a max only when far < 0, where both cull) is not needed. So this test
+// enters every box the test above enters and a few more (an any-hit walk's answer does not depend
+// on it), with four dependent steps fewer between a node's loads and its mask.
 template <int Oct>
-inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax) {
+inline int intersect_node8_ordered(const WideNode& n, const RayData& p) {
   V8 d[6];
   for (int a = 0; a < 3; ++a) {
     const int near_off = (Oct >> a & 1) * kNodeWidth, far_off = kNodeWidth - near_off;
@@ -226,7 +303,7 @@ inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax)
     d[3 + a] = (p.o[a] - load8(n.box[a] + far_off)) * p.neg_inv_far[a];
   }
   const V8 tnear = vmax_bits(vmax_bits(d[0], d[1]), vmax_bits(d[2], p.tmin));
-  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], tmax));
+  const V8 tfar = vmin_bits(vmin_bits(d[3], d[4]), vmin_bits(d[5], p.tmax_far));
   return bits(cmp_le(tnear, tfar)) & n.used;
 }
 #endif
@@ -234,9 +311,11 @@ inline int intersect_node8_ordered(const WideNode& n, const RayData& p, V8 tmax)
 // The node test of query Q on Node: the 8-lane one, or the kernel's 16-lane one (same results).
 template <Query Q, int Oct, class Node>
 inline int intersect_node(const Node& n, const RayData& p, V8 tmax, V8& tnear) {
+  if constexpr (Oct == kOrdered && std::is_same_v<Node, WideNode>)
+    return intersect_node8_nearest(n, p, tmax, tnear);
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
   if constexpr (Q == Query::kAny && Oct >= 0 && std::is_same_v<Node, WideNode>)
-    return intersect_node8_ordered<Oct>(n, p, tmax);
+    return intersect_node8_ordered<Oct>(n, p);
 #endif
 #ifdef RAYCAST_KERNEL_NODE16
   if constexpr (uses_node16<Q, Node>())
@@ -419,6 +498,9 @@ template <Query Q, class Node, int Oct>
                                         TraversalEntry* stack) {
   const Node* nodes = node_array<Node>(bvh);
   V8 tmax = splat(tmax_s);
+  // The pop's bound: tmax_s widened as the node test widens it once a hit has set tmax_s; until
+  // then every pushed entry passed the node test against the widened tmax.
+  float reach_s = kInfinityF;
   int top = 0;
   bool found = false;
   PairResult res;
@@ -481,14 +563,15 @@ template <Query Q, class Node, int Oct>
             found = true;
           }
         }
-        if constexpr (Q == Query::kNearest) tmax = splat(tmax_s);
+        if constexpr (Q == Query::kNearest) tmax = splat(tmax_s), reach_s = widen_exit(tmax_s);
       }
     }
-    // Pop, skipping entries whose entry point lies past the current nearest hit.
+    // Pop, skipping entries whose entry point lies past the current nearest hit (widened: a
+    // tied triangle's box may round its entry a few ulps above it).
     for (;;) {
       if (top == 0) return found;
       const TraversalEntry& e = stack[--top];
-      if (Q != Query::kNearest || e.tnear <= tmax_s) {
+      if (Q != Query::kNearest || e.tnear <= reach_s) {
         ref = e.ref;
         break;
       }
@@ -509,20 +592,101 @@ constexpr bool uses_octant_walks() {
 #endif
 }
 
+// The rays with a zero direction component, out of line (rare; and so that the other rays'
+// RayData never has its address taken, which kept GCC from holding it in registers). On such an
+// axis the ray lies in the plane x_a = o_a and 1/d = +-infinity (as the sign of the zero: prepare),
+// so each distance on that axis is +-infinity, or NaN where a plane equals the origin subtracted.
+// The walk kInPlane's near planes' rows subtract the float just past o_a in the direction of 1/d,
+// its far planes' rows the float just before it: a near plane at or behind o_a (on the side 1/d
+// points away from) gives -infinity, a far plane at or beyond it +infinity, so every box holding
+// the plane x_a = o_a is entered whatever the sign of the zero (a box with a face in that plane,
+// met at its edge, was culled with 1/d clamped to +-2^-64: slab [-huge, 0]). A NaN comes only
+// from a plane equal to a shifted origin, i.e. from a box that lies wholly on one side of x_a =
+// o_a, holds no point of the ray, and may be entered or culled alike (no triangle in it can be
+// hit). (The one origin of the other walks gives NaN for a box with a face at o_a.) Other axes
+// keep o_a. The 16-lane node test's origins [lo rows | hi rows] likewise.
+template <Query Q, class Node>
+[[gnu::noinline, gnu::cold]] bool traverse_in_plane(const MeshBvh& bvh, const MeshRay& ray,
+                                                    MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+                                                    TraversalEntry* stack) {
+  RayData p;
+  prepare<Q, Node>(ray, p);
+  const float* o = &ray.o.x;
+  const float* d = &ray.d.x;
+  float o_lo[3], o_hi[3], invs[3];
+  for (int a = 0; a < 3; ++a) {
+    float da = d[a];  // prepare's reciprocal
+    if (std::abs(da) < kMinDirection && da != 0) da = da < 0 ? -kMinDirection : kMinDirection;
+    invs[a] = 1.0f / da;
+    float near_o = o[a], far_o = o[a];
+    if (da == 0) {
+      const float up = std::nextafter(o[a], kInfinityF), down = std::nextafter(o[a], -kInfinityF);
+      near_o = invs[a] > 0 ? up : down;
+      far_o = invs[a] > 0 ? down : up;
+    }
+    p.o_near[a] = splat(near_o);
+    p.o_far[a] = splat(far_o);
+    o_lo[a] = invs[a] >= 0 ? near_o : far_o;
+    o_hi[a] = invs[a] >= 0 ? far_o : near_o;
+  }
+#ifdef RAYCAST_KERNEL_NODE16
+  if constexpr (uses_node16<Q, Node>()) prepare_node16(o_lo, o_hi, invs, p.node16);
+#endif
+  (void)o_lo, (void)o_hi, (void)invs;
+  return walk<Q, Node, kInPlane>(bvh, p, ray.tmax, hit, out, stack);
+}
+
+// The rays of the ordered node tests (intersect_node8_ordered): tmin >= +0, tmax >= tmin, origin
+// and direction finite (a zero direction component is traverse_in_plane's). Finiteness as one
+// sum (NaN or infinite when a term is; a sum of huge finite terms that overflows only sends the
+// ray to the float test): a few instructions per ray, the same decision on every ISA.
+inline bool ordered_ray(const MeshRay& ray) {
+  const float s = ((ray.o.x + ray.o.y) + (ray.o.z + ray.d.x)) + ((ray.d.y + ray.d.z) + ray.tmin);
+  return !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && s - s == 0;
+}
+
+// The nearest-hit rays on float nodes that the ordered test does not admit, out of line with their
+// own RayData (inlined beside the ordered walk, or passed its RayData by address, the walk lost:
+// docs/performance-mesh.md, session 14).
+template <Query Q, class Node>
+[[gnu::noinline, gnu::cold]] bool traverse_unordered(const MeshBvh& bvh, const MeshRay& ray,
+                                                     MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+                                                     TraversalEntry* stack) {
+  RayData p;
+  prepare<Q, Node>(ray, p);
+  return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
+}
+
 template <Query Q, class Node>
 bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
               TraversalEntry* stack) {
   if (bvh.empty()) return false;
   RayData p;
-  prepare<Q, Node>(ray, p);
+  if (prepare<Q, Node>(ray, p)) [[unlikely]]
+    return traverse_in_plane<Q, Node>(bvh, ray, hit, out, stack);
+  if constexpr (Q == Query::kNearest && std::is_same_v<Node, WideNode>) {
+    if (!ordered_ray(ray)) [[unlikely]]
+      return traverse_unordered<Q, Node>(bvh, ray, hit, out, stack);
+    for (int a = 0; a < 3; ++a) {
+      p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
+#ifdef RAYCAST_KERNEL_MINMAX_SLABS
+      p.mul_lo[a] = p.near_off[a] == 0 ? p.neg_inv[a] : p.neg_inv_far[a];
+      p.mul_hi[a] = p.near_off[a] == 0 ? p.neg_inv_far[a] : p.neg_inv[a];
+#endif
+    }
+    return walk<Q, Node, kOrdered>(bvh, p, ray.tmax, hit, out, stack);
+  }
   if constexpr (uses_octant_walks<Q, Node>()) {
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
     // intersect_node8_ordered's rays; the others (NaN, infinities, tmin < 0) take the walk of
     // every octant.
+    // (ordered_ray's test but for its sum: with the sum GCC allocated this walk's registers
+    // worse, sphere 1M shadow ~-4 % in 5 of 6 rounds; session 14.)
     if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && is_finite(ray.o) &&
           is_finite(ray.d)))
       return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
     for (int a = 0; a < 3; ++a) p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
+    p.tmax_far = splat(ray.tmax * kFarWiden);
 #endif
     // The octant prepare chose the rows by (inv >= 0, NaN included), so the walks read the same.
     const int oct = (p.near_off[0] != 0) | (p.near_off[1] != 0) << 1 | (p.near_off[2] != 0) << 2;
