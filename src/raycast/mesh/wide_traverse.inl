@@ -440,7 +440,7 @@ template <Query Q, class Node, int Oct>
           while (mask) {
             const std::uint32_t child = node.child[__builtin_ctz(mask)];
             prefetch_child<Node>(bvh, child);
-            stack[top++] = {child, 0.0f};
+            stack[top++].ref = child;  // the entry distance: never read by these queries' pops
             mask &= mask - 1;
           }
           ref = node.child[first];
@@ -509,9 +509,11 @@ constexpr bool uses_octant_walks() {
 #endif
 }
 
+// traverse's body, always inlined: into traverse, and into occluded below.
 template <Query Q, class Node>
-bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
-              TraversalEntry* stack) {
+[[gnu::always_inline]] inline bool traverse_inlined(const MeshBvh& bvh, const MeshRay& ray,
+                                                    MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+                                                    TraversalEntry* stack) {
   if (bvh.empty()) return false;
   RayData p;
   prepare<Q, Node>(ray, p);
@@ -548,6 +550,12 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
 }
 
+template <Query Q, class Node>
+bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+              TraversalEntry* stack) {
+  return traverse_inlined<Q, Node>(bvh, ray, hit, out, stack);
+}
+
 template <Query Q>
 bool traverse_any_format(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit,
                          std::vector<MeshBvhHit>* out, TraversalEntry* stack) {
@@ -566,6 +574,26 @@ bool any(const MeshBvh& bvh, const MeshRay& ray, TraversalEntry* stack) {
 void every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
            TraversalEntry* stack) {
   traverse_any_format<Query::kAll>(bvh, ray, nullptr, &out, stack);
+}
+
+// occluded's other trees: quantised nodes, or deeper than the local stack allows (out of line,
+// so that occluded inlines the one walk of float nodes only).
+[[gnu::noinline]] inline bool any_other(const MeshBvh& bvh, const MeshRay& ray) {
+  return with_traversal_stack(bvh, [&](TraversalEntry* stack) {
+    return traverse_any_format<Query::kAny>(bvh, ray, nullptr, nullptr, stack);
+  });
+}
+
+// The conversion, the stack and the walk in one function, called straight from Scene::occluded
+// and mesh.cpp's occluded: a shadow ray pays one call, and the MeshRay reaches prepare in
+// registers (traverse and the walks inlined here) instead of through memory.
+bool occluded(const MeshBvh& bvh, const Ray& ray) {
+  double scale;
+  const MeshRay r = convert_ray(ray, scale);
+  if (bvh.quantised || traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]]
+    return any_other(bvh, r);
+  TraversalEntry stack[kLocalTraversalStack];  // uninitialised: the walk writes before it reads
+  return traverse_inlined<Query::kAny, WideNode>(bvh, r, nullptr, nullptr, stack);
 }
 
 }  // namespace raycast::RAYCAST_KERNEL_NS

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "mesh/mesh.h"
+#include "mesh/wide_kernels.h"
 
 namespace raycast {
 
@@ -27,6 +28,7 @@ void Scene::build(bool direction_lists) {
   if (mesh_object_ >= 0) {
     const Object& object = objects[std::size_t(mesh_object_)];
     mesh_ = std::get<MeshShape>(object.shape).mesh.get();
+    mesh_occluded_ = kernels_in_use().occluded;
     mesh_box_ = raycast::bounds(object);
   }
   build_ms_ =
@@ -57,7 +59,7 @@ bool Scene::occluded(const Ray& ray) const {
     // (box and mesh), but shadow rays start on the mesh, inside its box, so the box test is
     // paid only by the few rays that are blocked.
     double t_enter;
-    return raycast::occluded(*mesh_, ray) &&
+    return mesh_occluded_(mesh_->bvh, ray) &&
            intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
   }
   return set_.occluded(objects, ray);
