@@ -1,8 +1,9 @@
-// MeshKernels::occluded (a shadow ray's whole query in one call: the double ray's conversion, the
-// stack and the walk) answers as `any` on to_mesh_ray's ray, on every ISA (those the CPU lacks
-// are skipped), bit for bit as the scalar kernels: both node formats, the heap-stack path, rays
-// whose direction spans every scale the conversion handles, zero direction components, tmin 0 and
-// positive, tmax finite and infinite.
+// MeshKernels::occluded_if_valid (a shadow ray's whole query in one call: the validity check,
+// the double ray's conversion, the stack and the walk) answers as `any` on to_mesh_ray's ray, on
+// every ISA (those the CPU lacks are skipped), as the scalar kernels do: both node formats, the
+// heap-stack path, rays whose direction spans every scale the conversion handles, zero direction
+// components, tmin 0 and positive, tmax finite and infinite; and occluded_if_valid answers "not
+// occluded" for rays that are not is_valid.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,13 +67,37 @@ TEST_P(OccludedEntry, EqualsAnyOnTheConvertedRay) {
         double scale;
         const MeshRay r = to_mesh_ray(ray, scale);
         const bool any = kernels_->any(bvh, r, stack.data());
-        ASSERT_EQ(kernels_->occluded(bvh, ray), any);
-        ASSERT_EQ(kMeshKernelsScalar.occluded(bvh, ray), any);
+        ASSERT_EQ(kernels_->occluded_if_valid(bvh, ray), any);
+        ASSERT_EQ(kMeshKernelsScalar.occluded_if_valid(bvh, ray), any);
         blocked += any;
       }
       EXPECT_GT(blocked, 500);
       EXPECT_LT(blocked, int(rays.size()) - 500);
     }
+  }
+}
+
+TEST_P(OccludedEntry, RaysNotValid_NeverOccluded) {
+  // Rays through the middle of a sphere (any valid one is blocked), each broken in one way.
+  const TriangleSoup sphere = make_octa_sphere(8);
+  const MeshBvh bvh = build_mesh_bvh(sphere.positions, sphere.triangles, MeshBvhConfig{});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const Ray good{{-2, 0.1, 0.2}, {1, 0, 0}, 0, 4};
+  ASSERT_TRUE(kernels_->occluded_if_valid(bvh, good));
+  std::vector<Ray> bad(9, good);
+  bad[0].o.y = nan;
+  bad[1].d.z = nan;
+  bad[2].tmin = nan;
+  bad[3].tmax = nan;
+  bad[4].tmin = 5;  // tmin > tmax
+  bad[5].d = {1e-160, 0, 0};
+  bad[6].d = {1e160, 0, 0};
+  bad[7].o.x = -1e160;
+  bad[8].d = {inf, 0, 0};
+  for (const Ray& r : bad) {
+    ASSERT_FALSE(is_valid(r));
+    EXPECT_FALSE(kernels_->occluded_if_valid(bvh, r));
   }
 }
 

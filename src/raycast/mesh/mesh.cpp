@@ -367,8 +367,14 @@ void write_packet_hits(const Mesh& m, const Ray* rays, int found, const MeshBvhH
   }
 }
 
-// The kernels' own entry: conversion, stack and walk in one call (mesh/wide_kernels.h).
-bool occluded(const Mesh& m, const Ray& ray) { return kernels_in_use().occluded(m.bvh, ray); }
+bool occluded(const Mesh& m, const Ray& ray) {
+  double scale;
+  const MeshRay r = convert_ray(ray, scale);
+  // The kernel called from here (intersect_any without its call level). Scene's one-mesh path
+  // calls MeshKernels::occluded_if_valid instead, the conversion inside the kernel.
+  return with_traversal_stack(
+      m.bvh, [&](TraversalEntry* stack) { return kernels_in_use().any(m.bvh, r, stack); });
+}
 
 bool occluded(const MeshShape& s, const Ray& ray) { return occluded(*s.mesh, ray); }
 

@@ -55,34 +55,65 @@ namespace mesh_ray_detail {
 
 }  // namespace mesh_ray_detail
 
+/// A Ray's eight components, each read by a load of its own (ray_component).
+struct RayParts {
+  double ox, oy, oz, dx, dy, dz, tmin, tmax;
+};
+
+[[gnu::always_inline]] inline RayParts ray_parts(const Ray& ray) {
+  using mesh_ray_detail::ray_component;
+  return {ray_component(ray.o.x),  ray_component(ray.o.y), ray_component(ray.o.z),
+          ray_component(ray.d.x),  ray_component(ray.d.y), ray_component(ray.d.z),
+          ray_component(ray.tmin), ray_component(ray.tmax)};
+}
+
+/// The binary exponent of the direction's largest component, from its bits (unbiased: e for
+/// magnitudes in [2^e, 2^(e+1)) when normal). std::fabs and std::max rather than
+/// abs/max_component: the same exponent, without branches.
+[[gnu::always_inline]] inline int direction_exponent(const RayParts& q) {
+  const double m = std::max(std::fabs(q.dx), std::max(std::fabs(q.dy), std::fabs(q.dz)));
+  return static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7FF) - 1023;
+}
+
 /// The ray in the float form the mesh BVH takes (to_mesh_ray's body, mesh/mesh.h), and the factor
 /// that turns its t back into units of ray.d (t_ray = t_mesh * scale). [tmin, tmax] are rounded
-/// outwards.
-[[gnu::always_inline]] inline MeshRay convert_ray(const Ray& ray, double& scale) {
+/// outwards. e: direction_exponent(q).
+[[gnu::always_inline]] inline MeshRay convert_ray(const RayParts& q, int e, double& scale) {
   using namespace mesh_ray_detail;
-  const double ox = ray_component(ray.o.x), oy = ray_component(ray.o.y),
-               oz = ray_component(ray.o.z), dx = ray_component(ray.d.x),
-               dy = ray_component(ray.d.y), dz = ray_component(ray.d.z);
   // Scale d by a power of two (exact) so that its largest component lies in [1, 2): then it is a
-  // normal float whatever the caller's units, and t scales by the same power. The exponent is read
-  // from the bits (the direction is finite and non-zero: is_valid rays only). std::fabs and
-  // std::max rather than abs/max_component: the same exponent, without branches.
-  const double m = std::max(std::fabs(dx), std::max(std::fabs(dy), std::fabs(dz)));
-  const int e = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7FF) - 1023;
+  // normal float whatever the caller's units, and t scales by the same power (the direction is
+  // finite and non-zero: is_valid rays only).
   double inv_scale;
   if (e > -1022 && e < 1022) [[likely]] {
     scale = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - e) << 52);
     inv_scale = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + e) << 52);
   } else {
+    const double m = std::max(std::fabs(q.dx), std::max(std::fabs(q.dy), std::fabs(q.dz)));
     scale = std::ldexp(1.0, -std::ilogb(m));
     inv_scale = 1 / scale;
   }
   MeshRay r;
-  r.o = Vec3f(Vec3{ox, oy, oz});
-  r.d = Vec3f(Vec3{dx, dy, dz} * scale);
-  r.tmin = round_down(ray_component(ray.tmin) * inv_scale);
-  r.tmax = round_up(ray_component(ray.tmax) * inv_scale);
+  r.o = Vec3f(Vec3{q.ox, q.oy, q.oz});
+  r.d = Vec3f(Vec3{q.dx, q.dy, q.dz} * scale);
+  r.tmin = round_down(q.tmin * inv_scale);
+  r.tmax = round_up(q.tmax * inv_scale);
   return r;
+}
+
+[[gnu::always_inline]] inline MeshRay convert_ray(const Ray& ray, double& scale) {
+  const RayParts q = ray_parts(ray);
+  return convert_ray(q, direction_exponent(q), scale);
+}
+
+/// is_valid(ray) (geometry/ray.h) from its parts, the direction's half from e =
+/// direction_exponent(q) where it can: a largest component within [2^-510, 2^510) puts |d|^2
+/// within [2^-1020, 3 * 2^1020], a finite normal double. And is_valid's test of [tmin, tmax]
+/// (!(tmin > tmax), neither NaN) is tmin <= tmax (false on NaN).
+[[gnu::always_inline]] inline bool is_valid(const RayParts& q, int e) {
+  const double o2 = q.ox * q.ox + q.oy * q.oy + q.oz * q.oz;
+  if (e >= -510 && e < 510) [[likely]]
+    return o2 <= std::numeric_limits<double>::max() && q.tmin <= q.tmax;
+  return is_valid_extent(o2, q.dx * q.dx + q.dy * q.dy + q.dz * q.dz) && q.tmin <= q.tmax;
 }
 
 }  // namespace raycast

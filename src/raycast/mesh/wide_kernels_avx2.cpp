@@ -74,6 +74,6 @@ const MeshKernels kMeshKernelsAvx2 = {Isa::kAvx2,
                                       kernels_avx2::every,
                                       kernels_avx2::closest8,
                                       kernels_avx2::closest8_rays,
-                                      kernels_avx2::occluded};
+                                      kernels_avx2::occluded_if_valid};
 }  // namespace raycast
 #endif

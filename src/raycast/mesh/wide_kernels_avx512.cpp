@@ -150,6 +150,6 @@ const MeshKernels kMeshKernelsAvx512 = {Isa::kAvx512,
                                         kernels_avx512::every,
                                         kernels_avx512::closest8,
                                         kernels_avx512::closest8_rays,
-                                        kernels_avx512::occluded};
+                                        kernels_avx512::occluded_if_valid};
 }  // namespace raycast
 #endif

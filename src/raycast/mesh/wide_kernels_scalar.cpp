@@ -107,5 +107,5 @@ const MeshKernels kMeshKernelsScalar = {Isa::kScalar,
                                         kernels_scalar::every,
                                         kernels_scalar::closest8,
                                         kernels_scalar::closest8_rays,
-                                        kernels_scalar::occluded};
+                                        kernels_scalar::occluded_if_valid};
 }  // namespace raycast

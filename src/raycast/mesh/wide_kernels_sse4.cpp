@@ -68,6 +68,6 @@ const MeshKernels kMeshKernelsSse4 = {Isa::kSse4,
                                       kernels_sse4::every,
                                       kernels_sse4::closest8,
                                       kernels_sse4::closest8_rays,
-                                      kernels_sse4::occluded};
+                                      kernels_sse4::occluded_if_valid};
 }  // namespace raycast
 #endif

@@ -509,8 +509,10 @@ constexpr bool uses_octant_walks() {
 #endif
 }
 
-// traverse's body, always inlined: into traverse, and into occluded below.
-template <Query Q, class Node>
+// traverse's body, always inlined: into traverse, and into occluded_if_valid below. kFromValidRay:
+// `ray` is convert_ray's of an is_valid Ray (occluded_if_valid), so its tmax >= tmin (rounding
+// outwards is monotonic) and its direction is finite (scaled to at most 2 on its largest axis).
+template <Query Q, class Node, bool kFromValidRay = false>
 [[gnu::always_inline]] inline bool traverse_inlined(const MeshBvh& bvh, const MeshRay& ray,
                                                     MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
                                                     TraversalEntry* stack) {
@@ -521,8 +523,8 @@ template <Query Q, class Node>
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
     // intersect_node8_ordered's rays; the others (NaN, infinities, tmin < 0) take the walk of
     // every octant.
-    if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && is_finite(ray.o) &&
-          is_finite(ray.d)))
+    if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && is_finite(ray.o) &&
+          (kFromValidRay || (ray.tmax >= ray.tmin && is_finite(ray.d)))))
       return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
     for (int a = 0; a < 3; ++a) p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
 #endif
@@ -576,24 +578,29 @@ void every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
   traverse_any_format<Query::kAll>(bvh, ray, nullptr, &out, stack);
 }
 
-// occluded's other trees: quantised nodes, or deeper than the local stack allows (out of line,
-// so that occluded inlines the one walk of float nodes only).
-[[gnu::noinline]] inline bool any_other(const MeshBvh& bvh, const MeshRay& ray) {
+// occluded_if_valid's other trees: quantised nodes, or deeper than the local stack allows (out
+// of line, so that occluded_if_valid inlines the walks of float nodes only).
+[[gnu::noinline]] inline bool any_with_stack(const MeshBvh& bvh, const MeshRay& ray) {
   return with_traversal_stack(bvh, [&](TraversalEntry* stack) {
     return traverse_any_format<Query::kAny>(bvh, ray, nullptr, nullptr, stack);
   });
 }
 
-// The conversion, the stack and the walk in one function, called straight from Scene::occluded
-// and mesh.cpp's occluded: a shadow ray pays one call, and the MeshRay reaches prepare in
-// registers (traverse and the walks inlined here) instead of through memory.
-bool occluded(const MeshBvh& bvh, const Ray& ray) {
+// The validity check, the conversion, the stack and the walk in one function, called straight
+// from Scene::occluded's one-mesh path: a shadow ray pays one call, the check shares the
+// conversion's loads and exponent, and the MeshRay reaches prepare in registers (traverse and
+// the walks of float nodes inlined here) instead of through memory.
+bool occluded_if_valid(const MeshBvh& bvh, const Ray& ray) {
+  const RayParts q = ray_parts(ray);
+  const int e = direction_exponent(q);
+  if (!is_valid(q, e)) [[unlikely]]
+    return false;
   double scale;
-  const MeshRay r = convert_ray(ray, scale);
+  const MeshRay r = convert_ray(q, e, scale);
   if (bvh.quantised || traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]]
-    return any_other(bvh, r);
+    return any_with_stack(bvh, r);
   TraversalEntry stack[kLocalTraversalStack];  // uninitialised: the walk writes before it reads
-  return traverse_inlined<Query::kAny, WideNode>(bvh, r, nullptr, nullptr, stack);
+  return traverse_inlined<Query::kAny, WideNode, true>(bvh, r, nullptr, nullptr, stack);
 }
 
 }  // namespace raycast::RAYCAST_KERNEL_NS

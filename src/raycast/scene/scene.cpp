@@ -28,7 +28,7 @@ void Scene::build(bool direction_lists) {
   if (mesh_object_ >= 0) {
     const Object& object = objects[std::size_t(mesh_object_)];
     mesh_ = std::get<MeshShape>(object.shape).mesh.get();
-    mesh_occluded_ = kernels_in_use().occluded;
+    mesh_occluded_ = kernels_in_use().occluded_if_valid;
     mesh_box_ = raycast::bounds(object);
   }
   build_ms_ =
@@ -53,15 +53,15 @@ bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
 }
 
 bool Scene::occluded(const Ray& ray) const {
-  if (!is_valid(ray)) return false;
   if (mesh_) {
     // The mesh first and its box only when the mesh is hit: the answer is the general path's
     // (box and mesh), but shadow rays start on the mesh, inside its box, so the box test is
-    // paid only by the few rays that are blocked.
+    // paid only by the few rays that are blocked. The kernel checks is_valid itself.
     double t_enter;
     return mesh_occluded_(mesh_->bvh, ray) &&
            intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
   }
+  if (!is_valid(ray)) return false;
   return set_.occluded(objects, ray);
 }
 
