@@ -57,9 +57,13 @@ bool Scene::occluded(const Ray& ray) const {
     // The mesh first and its box only when the mesh is hit: the answer is the general path's
     // (box and mesh), but shadow rays start on the mesh, inside its box, so the box test is
     // paid only by the few rays that are blocked. The kernel checks is_valid itself.
+    if (!mesh_occluded_(mesh_->bvh, ray)) return false;
+    // A ray from inside the box (faces included) with tmin <= 0 <= tmax passes intersect_slabs
+    // without its divisions: on each axis its near distance is <= 0 and its far one >= 0 (or NaN,
+    // an origin on a face and a zero component, which the test ignores), so t0 <= 0 <= t1.
+    if (ray.tmin <= 0 && ray.tmax >= 0 && mesh_box_.contains(ray.o)) return true;
     double t_enter;
-    return mesh_occluded_(mesh_->bvh, ray) &&
-           intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
+    return intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
   }
   if (!is_valid(ray)) return false;
   return set_.occluded(objects, ray);
