@@ -48,6 +48,10 @@ struct MeshKernels {
   /// fast range (convert those one by one).
   int (*closest8_rays)(const MeshBvh& bvh, const Ray* rays, int mask, MeshBvhHit* hits,
                        double* scale, PacketEntry* stack, TraversalEntry* single_stack);
+  /// false for a ray that is not is_valid (the scene's rule), else `any` on the ray converted as
+  /// to_mesh_ray does (mesh/mesh_ray.h), with a stack of its own: a shadow ray's whole query in
+  /// one call (Scene's one-mesh path calls it straight).
+  bool (*occluded_if_valid)(const MeshBvh& bvh, const Ray& ray);
 };
 
 /// The kernels of `isa`, or nullptr when this build or this CPU lacks it (isa_supported).

@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "mesh/mesh_ray.h"
 #include "mesh/triangle.h"
 #include "mesh/wide_kernels.h"
 
@@ -76,8 +77,12 @@ inline V8 select(M8 m, V8 x, V8 y) { return {_mm256_blendv_ps(y.v, x.v, m.m)}; }
 #pragma GCC pop_options
 
 namespace raycast {
-const MeshKernels kMeshKernelsAvx2 = {
-    Isa::kAvx2,          kernels_avx2::closest,  kernels_avx2::any,
-    kernels_avx2::every, kernels_avx2::closest8, kernels_avx2::closest8_rays};
+const MeshKernels kMeshKernelsAvx2 = {Isa::kAvx2,
+                                      kernels_avx2::closest,
+                                      kernels_avx2::any,
+                                      kernels_avx2::every,
+                                      kernels_avx2::closest8,
+                                      kernels_avx2::closest8_rays,
+                                      kernels_avx2::occluded_if_valid};
 }  // namespace raycast
 #endif

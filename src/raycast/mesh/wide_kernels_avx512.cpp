@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "mesh/mesh_ray.h"
 #include "mesh/triangle.h"
 #include "mesh/wide_kernels.h"
 
@@ -145,8 +146,12 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 #pragma GCC pop_options
 
 namespace raycast {
-const MeshKernels kMeshKernelsAvx512 = {
-    Isa::kAvx512,          kernels_avx512::closest,  kernels_avx512::any,
-    kernels_avx512::every, kernels_avx512::closest8, kernels_avx512::closest8_rays};
+const MeshKernels kMeshKernelsAvx512 = {Isa::kAvx512,
+                                        kernels_avx512::closest,
+                                        kernels_avx512::any,
+                                        kernels_avx512::every,
+                                        kernels_avx512::closest8,
+                                        kernels_avx512::closest8_rays,
+                                        kernels_avx512::occluded_if_valid};
 }  // namespace raycast
 #endif

@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "mesh/mesh_ray.h"
 #include "mesh/triangle.h"
 #include "mesh/wide_kernels.h"
 
@@ -112,7 +113,11 @@ inline V8 select(M8 m, V8 a, V8 b) {
 #undef RAYCAST_KERNEL_NS
 
 namespace raycast {
-const MeshKernels kMeshKernelsScalar = {
-    Isa::kScalar,          kernels_scalar::closest,  kernels_scalar::any,
-    kernels_scalar::every, kernels_scalar::closest8, kernels_scalar::closest8_rays};
+const MeshKernels kMeshKernelsScalar = {Isa::kScalar,
+                                        kernels_scalar::closest,
+                                        kernels_scalar::any,
+                                        kernels_scalar::every,
+                                        kernels_scalar::closest8,
+                                        kernels_scalar::closest8_rays,
+                                        kernels_scalar::occluded_if_valid};
 }  // namespace raycast

@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "mesh/mesh_ray.h"
 #include "mesh/triangle.h"
 #include "mesh/wide_kernels.h"
 
@@ -70,8 +71,12 @@ inline V8 select(M8 m, V8 x, V8 y) {
 #pragma GCC pop_options
 
 namespace raycast {
-const MeshKernels kMeshKernelsSse4 = {
-    Isa::kSse4,          kernels_sse4::closest,  kernels_sse4::any,
-    kernels_sse4::every, kernels_sse4::closest8, kernels_sse4::closest8_rays};
+const MeshKernels kMeshKernelsSse4 = {Isa::kSse4,
+                                      kernels_sse4::closest,
+                                      kernels_sse4::any,
+                                      kernels_sse4::every,
+                                      kernels_sse4::closest8,
+                                      kernels_sse4::closest8_rays,
+                                      kernels_sse4::occluded_if_valid};
 }  // namespace raycast
 #endif

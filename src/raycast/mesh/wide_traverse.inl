@@ -522,7 +522,7 @@ template <Query Q, class Node, int Oct>
           while (mask) {
             const std::uint32_t child = node.child[__builtin_ctz(mask)];
             prefetch_child<Node>(bvh, child);
-            stack[top++] = {child, 0.0f};
+            stack[top++].ref = child;  // the entry distance: never read by these queries' pops
             mask &= mask - 1;
           }
           ref = node.child[first];
@@ -657,9 +657,13 @@ template <Query Q, class Node>
   return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
 }
 
-template <Query Q, class Node>
-bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
-              TraversalEntry* stack) {
+// traverse's body, always inlined: into traverse, and into occluded_if_valid below. kFromValidRay:
+// `ray` is convert_ray's of an is_valid Ray (occluded_if_valid), so its tmax >= tmin (rounding
+// outwards is monotonic) and its direction is finite (scaled to at most 2 on its largest axis).
+template <Query Q, class Node, bool kFromValidRay = false>
+[[gnu::always_inline]] inline bool traverse_inlined(const MeshBvh& bvh, const MeshRay& ray,
+                                                    MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+                                                    TraversalEntry* stack) {
   if (bvh.empty()) return false;
   RayData p;
   if (prepare<Q, Node>(ray, p)) [[unlikely]]
@@ -682,8 +686,8 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
     // every octant.
     // (ordered_ray's test but for its sum: with the sum GCC allocated this walk's registers
     // worse, sphere 1M shadow ~-4 % in 5 of 6 rounds; session 14.)
-    if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && ray.tmax >= ray.tmin && is_finite(ray.o) &&
-          is_finite(ray.d)))
+    if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && is_finite(ray.o) &&
+          (kFromValidRay || (ray.tmax >= ray.tmin && is_finite(ray.d)))))
       return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
     for (int a = 0; a < 3; ++a) p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
     p.tmax_far = splat(ray.tmax * kFarWiden);
@@ -712,6 +716,12 @@ bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vect
   return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);
 }
 
+template <Query Q, class Node>
+bool traverse(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
+              TraversalEntry* stack) {
+  return traverse_inlined<Q, Node>(bvh, ray, hit, out, stack);
+}
+
 template <Query Q>
 bool traverse_any_format(const MeshBvh& bvh, const MeshRay& ray, MeshBvhHit* hit,
                          std::vector<MeshBvhHit>* out, TraversalEntry* stack) {
@@ -730,6 +740,31 @@ bool any(const MeshBvh& bvh, const MeshRay& ray, TraversalEntry* stack) {
 void every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out,
            TraversalEntry* stack) {
   traverse_any_format<Query::kAll>(bvh, ray, nullptr, &out, stack);
+}
+
+// occluded_if_valid's other trees: quantised nodes, or deeper than the local stack allows (out
+// of line, so that occluded_if_valid inlines the walks of float nodes only).
+[[gnu::noinline]] inline bool any_with_stack(const MeshBvh& bvh, const MeshRay& ray) {
+  return with_traversal_stack(bvh, [&](TraversalEntry* stack) {
+    return traverse_any_format<Query::kAny>(bvh, ray, nullptr, nullptr, stack);
+  });
+}
+
+// The validity check, the conversion, the stack and the walk in one function, called straight
+// from Scene::occluded's one-mesh path: a shadow ray pays one call, the check shares the
+// conversion's loads and exponent, and the MeshRay reaches prepare in registers (traverse and
+// the walks of float nodes inlined here) instead of through memory.
+bool occluded_if_valid(const MeshBvh& bvh, const Ray& ray) {
+  const RayParts q = ray_parts(ray);
+  const int e = direction_exponent(q);
+  if (!is_valid(q, e)) [[unlikely]]
+    return false;
+  double scale;
+  const MeshRay r = convert_ray(q, e, scale);
+  if (bvh.quantised || traversal_stack_size(bvh) > kLocalTraversalStack) [[unlikely]]
+    return any_with_stack(bvh, r);
+  TraversalEntry stack[kLocalTraversalStack];  // uninitialised: the walk writes before it reads
+  return traverse_inlined<Query::kAny, WideNode, true>(bvh, r, nullptr, nullptr, stack);
 }
 
 }  // namespace raycast::RAYCAST_KERNEL_NS

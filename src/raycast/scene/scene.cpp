@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "mesh/mesh.h"
+#include "mesh/wide_kernels.h"
 
 namespace raycast {
 
@@ -27,6 +28,7 @@ void Scene::build(bool direction_lists) {
   if (mesh_object_ >= 0) {
     const Object& object = objects[std::size_t(mesh_object_)];
     mesh_ = std::get<MeshShape>(object.shape).mesh.get();
+    mesh_occluded_ = kernels_in_use().occluded_if_valid;
     mesh_box_ = raycast::bounds(object);
   }
   build_ms_ =
@@ -51,15 +53,19 @@ bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
 }
 
 bool Scene::occluded(const Ray& ray) const {
-  if (!is_valid(ray)) return false;
   if (mesh_) {
     // The mesh first and its box only when the mesh is hit: the answer is the general path's
     // (box and mesh), but shadow rays start on the mesh, inside its box, so the box test is
-    // paid only by the few rays that are blocked.
+    // paid only by the few rays that are blocked. The kernel checks is_valid itself.
+    if (!mesh_occluded_(mesh_->bvh, ray)) return false;
+    // A ray from inside the box (faces included) with tmin <= 0 <= tmax passes intersect_slabs
+    // without its divisions: on each axis its near distance is <= 0 and its far one >= 0 (or NaN,
+    // an origin on a face and a zero component, which the test ignores), so t0 <= 0 <= t1.
+    if (ray.tmin <= 0 && ray.tmax >= 0 && mesh_box_.contains(ray.o)) return true;
     double t_enter;
-    return raycast::occluded(*mesh_, ray) &&
-           intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
+    return intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
   }
+  if (!is_valid(ray)) return false;
   return set_.occluded(objects, ray);
 }
 

@@ -90,6 +90,9 @@ struct Scene {
   // occluded test its box and call the mesh directly, without the walk over objects
   // (docs/performance-mesh.md, session 7). The same answers as the general path (test).
   const Mesh* mesh_ = nullptr;  // owned by objects[mesh_object_]
+  // occluded's kernel (MeshKernels::occluded_if_valid of the kernels in use), looked up at
+  // build: the shadow ray's whole query, validity check included, in one call.
+  bool (*mesh_occluded_)(const MeshBvh& bvh, const Ray& ray) = nullptr;
   std::int32_t mesh_object_ = -1;
   Aabb mesh_box_;
 };
