@@ -85,11 +85,24 @@ class Collapser {
       const BvhFloatNode& n = bin_.nodes[i];
       tris_[i] = n.is_leaf() ? n.count : tris_[n.first] + tris_[n.first + 1];
     }
-    // The wide tree first (serial, depth first): it places each leaf's groups, then the groups
-    // are filled in parallel.
+    // The leaves' groups in depth-first order of the binary tree, first child first (serial):
+    // the order of the splits, so that neighbouring leaves sit next to each other in memory, the
+    // same for any thread count (the binary builder numbers its nodes as its tasks run).
     leaf_group_.assign(bin_.nodes.size(), 0);
+    std::vector<std::uint32_t> todo{0};
+    while (!todo.empty()) {
+      const std::uint32_t i = todo.back();
+      todo.pop_back();
+      const BvhFloatNode& n = bin_.nodes[i];
+      if (n.is_leaf()) {
+        place_leaf(i);
+      } else {
+        todo.push_back(n.first + 1);
+        todo.push_back(n.first);
+      }
+    }
     if (bin_.nodes[0].is_leaf()) {
-      out_.root = place_leaf(0);
+      out_.root = leaf_ref(0);
       out_.depth = 0;
     } else {
       if (out_.quantised)
@@ -105,12 +118,11 @@ class Collapser {
   }
 
  private:
-  // Gives binary leaf `node` the next groups in memory; returns its child reference.
-  std::uint32_t place_leaf(std::uint32_t node) {
+  // Gives binary leaf `node` the next groups in memory.
+  void place_leaf(std::uint32_t node) {
     leaf_group_[node] = next_group_;
     next_group_ += (bin_.nodes[node].count + 3) / 4;
     leaf_order_.push_back(node);
-    return leaf_ref(node);
   }
 
   std::uint32_t leaf_ref(std::uint32_t node) const {
@@ -153,10 +165,8 @@ class Collapser {
   // others, so it descends the larger subtrees while the pushed leaves' prefetches land, and a
   // blocked ray meets its blocker sooner. The nearest-hit walks order by distance (ties in t go
   // to the smaller triangle index), so their hits do not depend on it.
-  // Memory order, depth first and independent of the thread count: the node, then the groups of
-  // all its leaf children next to each other in child order (a ray that meets a node often
-  // tests several of its leaves, and neighbouring groups share cache lines), then its inner
-  // children's subtrees in child order.
+  // The nodes are numbered depth first (this node, then its inner children's subtrees in the
+  // order they were opened).
   std::uint32_t collapse(std::uint32_t node, int depth) {
     out_.depth = std::max(out_.depth, depth);
     std::uint32_t kids[kNodeWidth] = {bin_.nodes[node].first, bin_.nodes[node].first + 1};
@@ -176,8 +186,6 @@ class Collapser {
       kids[best] = bin_.nodes[opened].first;
       kids[n++] = bin_.nodes[opened].first + 1;
     }
-    std::stable_sort(kids, kids + n,
-                     [&](std::uint32_t a, std::uint32_t b) { return tris_[a] > tris_[b]; });
     const std::uint32_t index =
         static_cast<std::uint32_t>(out_.quantised ? out_.qnodes.size() : out_.nodes.size());
     if (out_.quantised)
@@ -186,9 +194,17 @@ class Collapser {
       out_.nodes.emplace_back();
     std::uint32_t refs[kNodeWidth] = {};
     for (int i = 0; i < n; ++i)
-      if (bin_.nodes[kids[i]].is_leaf()) refs[i] = place_leaf(kids[i]);
-    for (int i = 0; i < n; ++i)
-      if (!bin_.nodes[kids[i]].is_leaf()) refs[i] = collapse(kids[i], depth + 1);
+      refs[i] = bin_.nodes[kids[i]].is_leaf() ? leaf_ref(kids[i]) : collapse(kids[i], depth + 1);
+    int order[kNodeWidth];
+    for (int i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order, order + n,
+                     [&](int a, int b) { return tris_[kids[a]] > tris_[kids[b]]; });
+    {
+      std::uint32_t k[kNodeWidth], r[kNodeWidth];
+      for (int i = 0; i < n; ++i) k[i] = kids[order[i]], r[i] = refs[order[i]];
+      std::copy(k, k + n, kids);
+      std::copy(r, r + n, refs);
+    }
     float lo[3][kNodeWidth], hi[3][kNodeWidth];
     for (int i = 0; i < n; ++i) {
       // Binary node boxes are unions of float vertex coordinates; a side at the builder's clamp
