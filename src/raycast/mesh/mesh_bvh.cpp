@@ -79,33 +79,52 @@ class Collapser {
       : bin_(bin), positions_(positions), triangles_(triangles), source_(source), out_(out) {}
 
   void run() {
-    // Leaf groups: one prefix sum over the binary leaves (in node order) gives each its groups.
-    leaf_group_.assign(bin_.nodes.size(), 0);
-    std::uint32_t groups = 0;
-    for (std::size_t i = 0; i < bin_.nodes.size(); ++i) {
+    // Triangles under each binary node, bottom up (a node's children have larger indices).
+    tris_.resize(bin_.nodes.size());
+    for (std::size_t i = bin_.nodes.size(); i-- > 0;) {
       const BvhFloatNode& n = bin_.nodes[i];
-      if (!n.is_leaf()) continue;
-      leaf_group_[i] = groups;
-      groups += (n.count + 3) / 4;
+      tris_[i] = n.is_leaf() ? n.count : tris_[n.first] + tris_[n.first + 1];
     }
-    out_.groups.resize(groups);
-    tbb::parallel_for(std::size_t(0), bin_.nodes.size(), [&](std::size_t i) {
-      if (bin_.nodes[i].is_leaf()) fill_leaf(bin_.nodes[i], leaf_group_[i]);
-    });
+    // The leaves' groups in depth-first order of the binary tree, first child first (serial):
+    // the order of the splits, so that neighbouring leaves sit next to each other in memory, the
+    // same for any thread count (the binary builder numbers its nodes as its tasks run).
+    leaf_group_.assign(bin_.nodes.size(), 0);
+    std::vector<std::uint32_t> todo{0};
+    while (!todo.empty()) {
+      const std::uint32_t i = todo.back();
+      todo.pop_back();
+      const BvhFloatNode& n = bin_.nodes[i];
+      if (n.is_leaf()) {
+        place_leaf(i);
+      } else {
+        todo.push_back(n.first + 1);
+        todo.push_back(n.first);
+      }
+    }
     if (bin_.nodes[0].is_leaf()) {
       out_.root = leaf_ref(0);
       out_.depth = 0;
-      return;
+    } else {
+      if (out_.quantised)
+        out_.qnodes.reserve(bin_.nodes.size() / 2 + 1);
+      else
+        out_.nodes.reserve(bin_.nodes.size() / 2 + 1);
+      out_.root = collapse(0, 1);
     }
-    if (out_.quantised)
-      out_.qnodes.reserve(bin_.nodes.size() / 2 + 1);
-    else
-      out_.nodes.reserve(bin_.nodes.size() / 2 + 1);
-    std::uint32_t tris = 0;
-    out_.root = collapse(0, 1, tris);
+    out_.groups.resize(next_group_);
+    tbb::parallel_for(std::size_t(0), leaf_order_.size(), [&](std::size_t i) {
+      fill_leaf(bin_.nodes[leaf_order_[i]], leaf_group_[leaf_order_[i]]);
+    });
   }
 
  private:
+  // Gives binary leaf `node` the next groups in memory.
+  void place_leaf(std::uint32_t node) {
+    leaf_group_[node] = next_group_;
+    next_group_ += (bin_.nodes[node].count + 3) / 4;
+    leaf_order_.push_back(node);
+  }
+
   std::uint32_t leaf_ref(std::uint32_t node) const {
     const BvhFloatNode& n = bin_.nodes[node];
     const std::uint32_t count = (n.count + 3) / 4;
@@ -145,9 +164,10 @@ class Collapser {
   // faster shadow ray traversal"): the any-hit walk enters the first hit child and pushes the
   // others, so it descends the larger subtrees while the pushed leaves' prefetches land, and a
   // blocked ray meets its blocker sooner. The nearest-hit walks order by distance (ties in t go
-  // to the smaller triangle index), so their hits do not depend on it. `tris` receives the
-  // triangles under `node`.
-  std::uint32_t collapse(std::uint32_t node, int depth, std::uint32_t& tris) {
+  // to the smaller triangle index), so their hits do not depend on it.
+  // The nodes are numbered depth first (this node, then its inner children's subtrees in the
+  // order they were opened).
+  std::uint32_t collapse(std::uint32_t node, int depth) {
     out_.depth = std::max(out_.depth, depth);
     std::uint32_t kids[kNodeWidth] = {bin_.nodes[node].first, bin_.nodes[node].first + 1};
     int n = 2;
@@ -172,21 +192,13 @@ class Collapser {
       out_.qnodes.emplace_back();
     else
       out_.nodes.emplace_back();
-    std::uint32_t refs[kNodeWidth] = {}, under[kNodeWidth] = {};
-    tris = 0;
-    for (int i = 0; i < n; ++i) {
-      const BvhFloatNode& c = bin_.nodes[kids[i]];
-      if (c.is_leaf()) {
-        refs[i] = leaf_ref(kids[i]);
-        under[i] = c.count;
-      } else {
-        refs[i] = collapse(kids[i], depth + 1, under[i]);
-      }
-      tris += under[i];
-    }
+    std::uint32_t refs[kNodeWidth] = {};
+    for (int i = 0; i < n; ++i)
+      refs[i] = bin_.nodes[kids[i]].is_leaf() ? leaf_ref(kids[i]) : collapse(kids[i], depth + 1);
     int order[kNodeWidth];
     for (int i = 0; i < n; ++i) order[i] = i;
-    std::stable_sort(order, order + n, [&](int a, int b) { return under[a] > under[b]; });
+    std::stable_sort(order, order + n,
+                     [&](int a, int b) { return tris_[kids[a]] > tris_[kids[b]]; });
     {
       std::uint32_t k[kNodeWidth], r[kNodeWidth];
       for (int i = 0; i < n; ++i) k[i] = kids[order[i]], r[i] = refs[order[i]];
@@ -232,7 +244,10 @@ class Collapser {
   std::span<const std::array<std::uint32_t, 3>> triangles_;
   std::span<const std::uint32_t> source_;
   MeshBvh& out_;
-  std::vector<std::uint32_t> leaf_group_;
+  std::vector<std::uint32_t> tris_;        // triangles under each binary node
+  std::vector<std::uint32_t> leaf_group_;  // first group of each binary leaf
+  std::vector<std::uint32_t> leaf_order_;  // binary leaves in the order of their groups
+  std::uint32_t next_group_ = 0;
 };
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -19,11 +20,11 @@ namespace raycast {
 inline constexpr int kNodeWidth = 8;
 
 // Two node formats with the same child references, chosen per mesh by its size
-// (MeshBvhConfig::quantise_above; docs/performance-mesh.md, session 5: float nodes trace faster
-// on the 1M meshes, quantised ones on the 10M sphere's incoherent rays, where memory traffic
-// dominates). A child reference is an inner node's index, or (bit 31 set) a leaf: bits 0-28 the
-// first triangle group, bits 29-30 the group count minus 1. An unused slot has its bit clear in
-// `used` and reference 0.
+// (MeshBvhConfig::quantise_above: by default float nodes at every size; docs/performance-mesh.md,
+// session 5 chose quantised ones above 4M triangles; session 14 measured float nodes faster on
+// the 10M sphere too). A child reference is an inner node's index, or (bit 31 set) a leaf: bits
+// 0-28 the first triangle group, bits 29-30 the group count minus 1. An unused slot has its bit
+// clear in `used` and reference 0.
 
 /// A node with up to 8 children, 256 bytes (four cache lines): the child boxes in float, one
 /// 64-byte line per axis holding [lo of the eight children | hi of the eight children] (the
@@ -91,9 +92,11 @@ struct MeshBvhConfig {
   // same node visits per ray (docs/performance-mesh.md, session 12: shadow12).
   int leaf_block = 8;
   double traversal_cost = 1.0;
-  // Meshes of more triangles than this get quantised nodes, smaller ones float nodes (measured:
-  // float wins at 1M, quantised at 10M; the threshold in between is not measured more finely).
-  std::size_t quantise_above = 4'000'000;
+  // Meshes of more triangles than this get quantised nodes (half the node bytes: ~51 against
+  // ~56 bytes per triangle), smaller ones float nodes. By default none: float nodes trace faster
+  // at 1M and at 10M (docs/performance-mesh.md, session 14: the 10M sphere's primary rays about
+  // 20 % faster, incoherent ones level); the quantised format stays for callers short of memory.
+  std::size_t quantise_above = std::numeric_limits<std::size_t>::max();
 };
 
 struct MeshBvh {
