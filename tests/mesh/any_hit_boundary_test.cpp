@@ -78,10 +78,13 @@ TEST_P(BoxBoundary, RaysOnAndInBoxPlanes_RangesEndingAtHits_MatchBruteForce) {
   std::uniform_int_distribution<int> cell(-1, n + 1), vertex(0, n), quarter(0, 4), coin(0, 1);
   std::normal_distribution<float> dir;
   int rays = 0, wrong_closest = 0, wrong_any = 0, wrong_every = 0, wrong_packet = 0;
-  for (const auto& [step, shift] :
+  for (const auto& scale :
        {std::pair{1.0f, 0.0f}, std::pair{0.37f, -1.1f}, std::pair{1e-6f, 3e-6f},
         std::pair{1e-3f, 0.0f}, std::pair{1e3f, -2.5e3f}, std::pair{1e6f, 1e6f}})
     for (const bool quantised : {false, true}) {
+      // Plain variables, not a structured binding: the lambdas below capture them (clang 14
+      // rejects capturing a binding).
+      const float step = scale.first, shift = scale.second;
       const TriangleSoup soup = grid_cube(n, step, shift);
       MeshBvhConfig config;
       config.max_leaf_size = 2;  // more boxes, more boundaries
