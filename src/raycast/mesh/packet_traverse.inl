@@ -525,8 +525,6 @@ inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t 
   }
 }
 
-// The nearest hit of each ray of `mask` (lane l of `pr` for each bit l); returns the lanes that
-// hit.
 // Whether the rays of `mask` are all ordered rays (ordered_ray; prepare_packet checked the rest).
 template <int N>
 inline bool ordered_lanes(const PacketRays<N>& pr, int mask) {
@@ -535,6 +533,8 @@ inline bool ordered_lanes(const PacketRays<N>& pr, int mask) {
   return true;
 }
 
+// The nearest hit of each ray of `mask` (lane l of `pr` for each bit l); returns the lanes that
+// hit.
 template <class Node, int N>
 int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBvhHit* hits,
                    PacketEntry* stack, TraversalEntry* single_stack) {
