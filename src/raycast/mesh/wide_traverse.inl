@@ -674,8 +674,11 @@ template <Query Q, class Node, bool kFromValidRay = false>
     for (int a = 0; a < 3; ++a) {
       p.neg_inv_far[a] = p.neg_inv[a] * splat(kFarWiden);
 #ifdef RAYCAST_KERNEL_MINMAX_SLABS
-      p.mul_lo[a] = p.near_off[a] == 0 ? p.neg_inv[a] : p.neg_inv_far[a];
-      p.mul_hi[a] = p.near_off[a] == 0 ? p.neg_inv_far[a] : p.neg_inv[a];
+      // As near_off[a] == 0 (prepare's inv >= 0), as a lane select: GCC made the conditional
+      // copies branches through the stack.
+      const M8 near_lo = cmp_ge(p.inv[a], splat(0.0f));
+      p.mul_lo[a] = select(near_lo, p.neg_inv[a], p.neg_inv_far[a]);
+      p.mul_hi[a] = select(near_lo, p.neg_inv_far[a], p.neg_inv[a]);
 #endif
     }
     return walk<Q, Node, kOrdered>(bvh, p, ray.tmax, hit, out, stack);
