@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -73,6 +74,64 @@ TEST(Scene, SoleMeshBox_RaysInTheBoxFacesAnswerAsTheGeneralPath) {
   }
   EXPECT_GT(hits, 500);  // the rays do reach the faces
   EXPECT_GT(misses, 500);
+}
+
+// Rays that start inside the mesh's box (or on its faces) with tmin <= 0 <= tmax skip the box
+// test (they always meet the box). The box test only culls, so the skip cannot lose a hit; what
+// this guards is the rest of the direct path for those rays (the validity check still made:
+// infinite, zero or tiny directions, NaN tmax) and the rays beside them that take the test (tmin >
+// 0, tmax < 0, an origin just outside a face): the answer must stay the general path's.
+TEST(Scene, SoleMeshBox_RaysFromInsideTheBoxAnswerAsTheGeneralPath) {
+  const auto mesh = make_cube_mesh();
+  Object m;
+  m.shape = MeshShape{mesh};
+  Object far;
+  far.shape = make_sphere({100, 100, 100}, 0.5);
+  Scene sole, general;
+  sole.objects = {m};
+  general.objects = {m, far};
+  sole.build();
+  general.build();
+  testing::Rng rng(29);
+  int hits = 0, misses = 0;
+  for (int n = 0; n < 8000; ++n) {
+    Ray ray{rng.in_box(n % 4 == 0 ? 1.0 : 0.999), rng.in_box(1), 0, kInfinity};
+    if (n % 6 == 1) ray.o[n % 3] = (n / 6) % 2 ? 1.0 : -1.0;  // on a face
+    if (n % 13 == 2)
+      ray.o[n % 3] = std::nextafter((n / 13) % 2 ? 1.0 : -1.0, 2.0 * ((n / 13) % 2) - 1);
+    switch (n % 5) {
+      case 1:
+        ray.tmax = rng.uniform(0, 1);
+        break;
+      case 2:
+        ray.tmin = -rng.uniform(0, 3);
+        break;
+      case 3:
+        ray.tmin = rng.uniform(0, 1.5);
+        break;  // tmin > 0: the box test
+      case 4:
+        ray.tmin = -rng.uniform(1, 3), ray.tmax = -rng.uniform(0, 1);
+        break;
+      default:
+        break;
+    }
+    if (n % 97 == 5) ray.tmax = std::numeric_limits<double>::quiet_NaN();
+    if (n % 89 == 6) ray.d.z = std::numeric_limits<double>::infinity();
+    if (n % 83 == 7) ray.d = {0, 0, 0};
+    if (n % 79 == 8) ray.d = ray.d * 1e-160;  // |d|^2 subnormal: not is_valid, yet traceable
+    SceneHit hs, hg;
+    const bool fs = sole.intersect(ray, hs), fg = general.intersect(ray, hg);
+    ASSERT_EQ(fs, fg) << n;
+    if (fs) {
+      ++hits;
+      EXPECT_EQ(hs.local.t, hg.local.t) << n;
+      EXPECT_EQ(hs.local.part, hg.local.part) << n;
+    } else {
+      ++misses;
+    }
+  }
+  EXPECT_GT(hits, 3000);
+  EXPECT_GT(misses, 1000);
 }
 
 }  // namespace

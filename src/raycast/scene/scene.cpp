@@ -40,9 +40,13 @@ bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
     // The box first: most rays that miss it (a camera's around the mesh) stop here, cheaper
     // than the mesh's own root test. The box test is arithmetic only, whatever the ray, and a
     // ray that is not is_valid answers "nothing" either way, so the validity check is paid by
-    // the rays that reach the mesh only.
+    // the rays that reach the mesh only. A ray from inside the box with tmin <= 0 <= tmax meets
+    // it (as in occluded below) and skips the test's three divisions: rays that start in the
+    // scene (secondary rays, the bench's incoherent ones) never miss the box.
     double t_enter;
-    if (!intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter) ||
+    const bool starts_inside = ray.tmin <= 0 && ray.tmax >= 0 && mesh_box_.contains(ray.o);
+    if ((!starts_inside &&
+         !intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter)) ||
         !is_valid(ray) || !raycast::intersect(*mesh_, ray, hit.local))
       return false;
     hit.object = mesh_object_;
