@@ -133,6 +133,10 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 // 1M shadow rays ~0.75 -> ~0.85 of Embree's rate).
 #define RAYCAST_KERNEL_FOLDED_ROWS 1
 #define RAYCAST_KERNEL_BITS_MINMAX 1
+// The leaf's rows through three byte offsets: without them GCC kept the nine row offsets of the
+// any-hit octant walks in the stack, reloaded at every leaf (docs/performance-mesh.md, session 15:
+// 1M shadow rays ~+4 %; behind in session 11, before the octant walks).
+#define RAYCAST_KERNEL_ROW_OFFSETS 1
 #define RAYCAST_KERNEL_NS kernels_avx512
 #include "mesh/wide_traverse.inl"
 // After the single-ray traversal, which it uses.
@@ -141,6 +145,7 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 #undef RAYCAST_KERNEL_NODE16
 #undef RAYCAST_KERNEL_FOLDED_ROWS
 #undef RAYCAST_KERNEL_BITS_MINMAX
+#undef RAYCAST_KERNEL_ROW_OFFSETS
 
 #pragma GCC diagnostic pop
 #pragma GCC pop_options
