@@ -526,10 +526,6 @@ template <Query Q, class Node, int Oct>
       }
     } else {
       const std::uint32_t first = leaf_first(ref), end = first + leaf_blocks(ref);
-      // A hit reads its id and source from a block's last line, which the rows do not touch: ask
-      // for it with the rows (the nearest child was not prefetched by order_children).
-      if constexpr (Q != Query::kAny)
-        for (std::uint32_t bi = first; bi < end; ++bi) __builtin_prefetch(bvh.blocks[bi].source);
       for (std::uint32_t bi = first; bi < end; ++bi) {
         const TriangleBlock& b = bvh.blocks[bi];
         int m = Q == Query::kAny && Oct >= 0 ? intersect_pair_inlined(b, p, tmax, res)
