@@ -80,7 +80,7 @@ struct Counts {
   }
 };
 
-bool hit_triangle(const TriangleBlock& g, int l, const MeshRay& r) {
+bool hit_triangle(const TriangleGroup& g, int l, const MeshRay& r) {
   // Moeller-Trumbore in double (counting only: the kernels' watertight test decides real hits).
   const Vec3 a(g.v[0][0][l], g.v[0][1][l], g.v[0][2][l]);
   const Vec3 b(g.v[1][0][l], g.v[1][1][l], g.v[1][2][l]);
@@ -145,12 +145,12 @@ Counts count_walk(const MeshBvh& bvh, const MeshRay& r) {
       const std::uint32_t first = ref & 0x1FFFFFFFu, count = ((ref >> 29) & 3u) + 1;
       c.leaves += 1;
       c.pairs += (count + 1) / 2;
-      c.groups += count;
-      for (std::uint32_t gi = first; gi < first + (count + 1) / 2; ++gi) {
-        c.leaf_bytes += sizeof(TriangleBlock);
-        const TriangleBlock& g = bvh.blocks[gi];
+      for (std::uint32_t gi = first; gi < first + count; ++gi) {
+        c.groups += 1;
+        c.leaf_bytes += sizeof(TriangleGroup);
+        const TriangleGroup& g = bvh.groups[gi];
         bool hit = false;
-        for (int l = 0; l < 8; ++l) {
+        for (int l = 0; l < 4; ++l) {
           if (g.id[l] == kNoTriangle) continue;
           c.tris += 1;
           hit |= hit_triangle(g, l, r);
@@ -185,8 +185,8 @@ void tree_stats(const MeshBvh& bvh, std::uint32_t ref, double area, double root_
   if (ref & kLeafBit) {
     const std::uint32_t first = ref & 0x1FFFFFFFu, count = ((ref >> 29) & 3u) + 1;
     int tris = 0;
-    for (std::uint32_t gi = first; gi < first + (count + 1) / 2; ++gi)
-      for (int l = 0; l < 8; ++l) tris += bvh.blocks[gi].id[l] != kNoTriangle;
+    for (std::uint32_t gi = first; gi < first + count; ++gi)
+      for (int l = 0; l < 4; ++l) tris += bvh.groups[gi].id[l] != kNoTriangle;
     s.leaves += 1;
     s.groups += count;
     s.tris += tris;
@@ -254,8 +254,8 @@ double subtree_tris(const MeshBvh& bvh, std::uint32_t ref) {
   if (ref & kLeafBit) {
     const std::uint32_t first = ref & 0x1FFFFFFFu, count = ((ref >> 29) & 3u) + 1;
     double n = 0;
-    for (std::uint32_t gi = first; gi < first + (count + 1) / 2; ++gi)
-      for (int l = 0; l < 8; ++l) n += bvh.blocks[gi].id[l] != kNoTriangle;
+    for (std::uint32_t gi = first; gi < first + count; ++gi)
+      for (int l = 0; l < 4; ++l) n += bvh.groups[gi].id[l] != kNoTriangle;
     return n;
   }
   const WideNode& w = bvh.nodes[ref];
@@ -304,9 +304,8 @@ void relay_groups(const MeshBvh& in, std::uint32_t ref, MeshBvh& out) {
       const std::uint32_t c = w.child[i];
       if (pass == 0 && (c & kLeafBit)) {
         const std::uint32_t first = c & 0x1FFFFFFFu, count = ((c >> 29) & 3u) + 1;
-        const std::uint32_t at = std::uint32_t(out.blocks.size());
-        for (std::uint32_t g = first; g < first + (count + 1) / 2; ++g)
-          out.blocks.push_back(in.blocks[g]);
+        const std::uint32_t at = std::uint32_t(out.groups.size());
+        for (std::uint32_t g = first; g < first + count; ++g) out.groups.push_back(in.groups[g]);
         w.child[i] = (c & ~0x1FFFFFFFu) | at;
       } else if (pass == 1 && !(c & kLeafBit)) {
         relay_groups(in, c, out);
@@ -316,7 +315,7 @@ void relay_groups(const MeshBvh& in, std::uint32_t ref, MeshBvh& out) {
 
 MeshBvh relaid_groups(const MeshBvh& in) {
   MeshBvh out = in;
-  out.blocks.clear();
+  out.groups.clear();
   relay_groups(in, in.root, out);
   return out;
 }
@@ -357,12 +356,12 @@ struct Converter {
   MeshBvh& out;
 
   std::uint32_t leaf(const BuildNode& n) {
-    const std::uint32_t first = std::uint32_t(out.blocks.size());
+    const std::uint32_t first = std::uint32_t(out.groups.size());
     const unsigned groups = (n.count + 3) / 4;
-    for (unsigned k = 0; k < (groups + 1) / 2; ++k) {
-      TriangleBlock g;
-      for (int l = 0; l < 8; ++l) {
-        const unsigned i = k * 8 + unsigned(l);
+    for (unsigned k = 0; k < groups; ++k) {
+      TriangleGroup g;
+      for (int l = 0; l < 4; ++l) {
+        const unsigned i = k * 4 + unsigned(l);
         if (i >= n.count) {
           for (auto& vertex : g.v)
             for (auto& axis : vertex) axis[l] = std::nanf("");
@@ -376,7 +375,7 @@ struct Converter {
         }
         g.id[l] = g.source[l] = tri;
       }
-      out.blocks.push_back(g);
+      out.groups.push_back(g);
     }
     return kLeafBit | ((groups - 1) << 29) | first;
   }

@@ -17,7 +17,7 @@ MeshBvh build_with_threads(const TriangleSoup& mesh, int threads) {
 }
 
 // The tree under `ref` depth first, as bytes: each node's used mask and child boxes, each leaf's
-// blocks (vertices, triangle ids). Where nodes and blocks sit in their arrays is left out: the
+// groups (vertices, triangle ids). Where nodes and groups sit in their arrays is left out: the
 // binary builder numbers its nodes in the order its tasks finish, so the layout may differ with
 // the thread count while the tree is the same.
 void serialise(const MeshBvh& bvh, std::uint32_t ref, std::vector<unsigned char>& out) {
@@ -28,9 +28,9 @@ void serialise(const MeshBvh& bvh, std::uint32_t ref, std::vector<unsigned char>
   if (ref & kLeafBit) {
     const std::uint32_t first = ref & 0x1FFFFFFFu, count = ((ref >> 29) & 3u) + 1;
     put(&count, sizeof count);
-    for (std::uint32_t b = first; b < first + (count + 1) / 2; ++b) {
-      put(bvh.blocks[b].v, sizeof bvh.blocks[b].v);  // NaN padding lanes: compared as bytes
-      put(bvh.blocks[b].id, sizeof bvh.blocks[b].id);
+    for (std::uint32_t g = first; g < first + count; ++g) {
+      put(bvh.groups[g].v, sizeof bvh.groups[g].v);  // NaN padding lanes: compared as bytes
+      put(bvh.groups[g].id, sizeof bvh.groups[g].id);
     }
     return;
   }
@@ -60,7 +60,7 @@ TEST(MeshBvhBuild, OneAndTwoThreads_SameTree) {
     const MeshBvh b = build_with_threads(mesh, 2);
     ASSERT_EQ(a.depth, b.depth) << name;
     ASSERT_EQ(a.nodes.size(), b.nodes.size()) << name;
-    ASSERT_EQ(a.blocks.size(), b.blocks.size()) << name;
+    ASSERT_EQ(a.groups.size(), b.groups.size()) << name;
     std::vector<unsigned char> sa, sb;
     serialise(a, a.root, sa);
     serialise(b, b.root, sb);

@@ -1,5 +1,5 @@
 // The mesh BVH's memory layout: the same bytes, in the same places, for any thread count (the
-// leaves' blocks are placed in a serial pass, not in the order the builder's tasks run).
+// leaves' groups are placed in a serial pass, not in the order the builder's tasks run).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -38,7 +38,7 @@ TEST(MeshBvhLayout, OneAndTwoThreads_SameArrays) {
       EXPECT_TRUE(same_bytes(a.nodes, b.nodes)) << name << " quantised " << quantised;
       EXPECT_TRUE(same_bytes(a.qnodes, b.qnodes)) << name << " quantised " << quantised;
       // NaN padding lanes are written by the same code in both: compared as bytes.
-      EXPECT_TRUE(same_bytes(a.blocks, b.blocks)) << name << " quantised " << quantised;
+      EXPECT_TRUE(same_bytes(a.groups, b.groups)) << name << " quantised " << quantised;
     }
   }
 }

@@ -85,10 +85,10 @@ class Collapser {
       const BvhFloatNode& n = bin_.nodes[i];
       tris_[i] = n.is_leaf() ? n.count : tris_[n.first] + tris_[n.first + 1];
     }
-    // The leaves' blocks in depth-first order of the binary tree, first child first (serial):
+    // The leaves' groups in depth-first order of the binary tree, first child first (serial):
     // the order of the splits, so that neighbouring leaves sit next to each other in memory, the
     // same for any thread count (the binary builder numbers its nodes as its tasks run).
-    leaf_block_.assign(bin_.nodes.size(), 0);
+    leaf_group_.assign(bin_.nodes.size(), 0);
     std::vector<std::uint32_t> todo{0};
     while (!todo.empty()) {
       const std::uint32_t i = todo.back();
@@ -111,31 +111,31 @@ class Collapser {
         out_.nodes.reserve(bin_.nodes.size() / 2 + 1);
       out_.root = collapse(0, 1);
     }
-    out_.blocks.resize(next_block_);
+    out_.groups.resize(next_group_);
     tbb::parallel_for(std::size_t(0), leaf_order_.size(), [&](std::size_t i) {
-      fill_leaf(bin_.nodes[leaf_order_[i]], leaf_block_[leaf_order_[i]]);
+      fill_leaf(bin_.nodes[leaf_order_[i]], leaf_group_[leaf_order_[i]]);
     });
   }
 
  private:
-  // Gives binary leaf `node` the next blocks in memory.
+  // Gives binary leaf `node` the next groups in memory.
   void place_leaf(std::uint32_t node) {
-    leaf_block_[node] = next_block_;
-    next_block_ += (bin_.nodes[node].count + 7) / 8;
+    leaf_group_[node] = next_group_;
+    next_group_ += (bin_.nodes[node].count + 3) / 4;
     leaf_order_.push_back(node);
   }
 
   std::uint32_t leaf_ref(std::uint32_t node) const {
     const BvhFloatNode& n = bin_.nodes[node];
     const std::uint32_t count = (n.count + 3) / 4;
-    return kLeafBit | ((count - 1) << 29) | leaf_block_[node];
+    return kLeafBit | ((count - 1) << 29) | leaf_group_[node];
   }
 
-  void fill_leaf(const BvhFloatNode& n, std::uint32_t first_block) {
-    for (std::uint32_t k = 0; k < (n.count + 7) / 8; ++k) {
-      TriangleBlock& g = out_.blocks[first_block + k];
-      for (int lane = 0; lane < 8; ++lane) {
-        const std::uint32_t i = k * 8 + lane;
+  void fill_leaf(const BvhFloatNode& n, std::uint32_t first_group) {
+    for (std::uint32_t k = 0; k < (n.count + 3) / 4; ++k) {
+      TriangleGroup& g = out_.groups[first_group + k];
+      for (int lane = 0; lane < 4; ++lane) {
+        const std::uint32_t i = k * 4 + lane;
         if (i >= n.count) {
           for (auto& vertex : g.v)
             for (auto& axis : vertex) axis[lane] = kNaN;
@@ -245,9 +245,9 @@ class Collapser {
   std::span<const std::uint32_t> source_;
   MeshBvh& out_;
   std::vector<std::uint32_t> tris_;        // triangles under each binary node
-  std::vector<std::uint32_t> leaf_block_;  // first block of each binary leaf
-  std::vector<std::uint32_t> leaf_order_;  // binary leaves in the order of their blocks
-  std::uint32_t next_block_ = 0;
+  std::vector<std::uint32_t> leaf_group_;  // first group of each binary leaf
+  std::vector<std::uint32_t> leaf_order_;  // binary leaves in the order of their groups
+  std::uint32_t next_group_ = 0;
 };
 
 }  // namespace
@@ -291,6 +291,16 @@ namespace {
 [[gnu::always_inline]] inline const MeshKernels& kernels() { return kernels_in_use(); }
 
 }  // namespace
+
+const TriangleGroup kEmptyTriangleGroup = [] {
+  TriangleGroup g;
+  for (auto& vertex : g.v)
+    for (auto& axis : vertex)
+      for (float& f : axis) f = kNaN;
+  for (auto& id : g.id) id = kNoTriangle;
+  for (auto& s : g.source) s = kNoTriangle;
+  return g;
+}();
 
 const MeshKernels* mesh_kernels(Isa isa) {
   if (!isa_supported(isa)) return nullptr;

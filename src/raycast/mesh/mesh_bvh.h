@@ -1,7 +1,7 @@
 #pragma once
 // The per-mesh acceleration structure: an 8-wide BVH in float, built by collapsing the generic
-// binary SAH tree of accel/bvh.h, with leaves of precomputed triangle blocks (8 triangles in SoA
-// form; the AVX2 and AVX-512 kernels test one block per pass). Traversal is ordered, nearest child
+// binary SAH tree of accel/bvh.h, with leaves of precomputed triangle groups (4 triangles in SoA
+// form; the AVX2 and AVX-512 kernels test two groups per pass). Traversal is ordered, nearest child
 // first, by kernels compiled per instruction set and picked at run time (mesh/wide_kernels.h).
 #include <array>
 #include <bit>
@@ -23,8 +23,7 @@ inline constexpr int kNodeWidth = 8;
 // (MeshBvhConfig::quantise_above: by default float nodes at every size; docs/performance-mesh.md,
 // session 5 chose quantised ones above 4M triangles; session 14 measured float nodes faster on
 // the 10M sphere too). A child reference is an inner node's index, or (bit 31 set) a leaf: bits
-// 0-28 the first triangle block, bits 29-30 the count of groups of four triangles minus 1 (a
-// block holds two groups). An unused slot has its bit
+// 0-28 the first triangle group, bits 29-30 the group count minus 1. An unused slot has its bit
 // clear in `used` and reference 0.
 
 /// A node with up to 8 children, 256 bytes (four cache lines): the child boxes in float, one
@@ -70,21 +69,18 @@ inline float dequantise(float origin, float scale, std::uint8_t q) {
 inline constexpr std::uint32_t kLeafBit = 0x80000000u;
 inline constexpr int kMaxGroupsPerLeaf = 4;
 
-/// Eight triangles in SoA form (352 bytes, 32-byte aligned): v[vertex][axis][lane], rows of eight
-/// lanes (one 256-bit load each), then the triangle index of each lane and its caller-given source
-/// index (the mesh's input index: carried here so that a hit needs no second, cache-missing
-/// lookup). The nine rows come first: 288 bytes, five cache lines at either alignment a block can
-/// have (0 or 32 mod 64), where two 176-byte groups of four spanned five or six. A leaf is one or
-/// two blocks (1-4 groups of four lanes: lanes 0-3 and 4-7 of each block); a lane past the end of
-/// a leaf's triangles has NaN vertices (never hit) and id and source kNoTriangle.
+/// Four triangles in SoA form (176 bytes): v[vertex][axis][lane], then the triangle index of each
+/// lane and its caller-given source index (the mesh's input index: carried here so that a hit
+/// needs no second, cache-missing lookup). A lane past the end of a leaf's triangles has NaN
+/// vertices (never hit) and id and source kNoTriangle.
 /// The vertices (not edges) are stored so that the watertight test sees shared vertices bit for
 /// bit.
-struct alignas(32) TriangleBlock {
-  float v[3][3][8];
-  std::uint32_t id[8];
-  std::uint32_t source[8];
+struct alignas(16) TriangleGroup {
+  float v[3][3][4];
+  std::uint32_t id[4];
+  std::uint32_t source[4];
 };
-static_assert(sizeof(TriangleBlock) == 352);
+static_assert(sizeof(TriangleGroup) == 176);
 
 inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
 
@@ -107,15 +103,15 @@ struct MeshBvh {
   BuildVector<WideNode> nodes;        // float nodes, or none when quantised: nodes[0] is the
                                       // root when the root is not a leaf
   BuildVector<QuantisedNode> qnodes;  // quantised nodes (the mesh's other format), the same way
-  BuildVector<TriangleBlock> blocks;  // leaf data, permuted to leaf order (resize leaves them
+  BuildVector<TriangleGroup> groups;  // leaf data, permuted to leaf order (resize leaves them
                                       // uninitialised: the build's parallel pass writes them)
   std::uint32_t root = 0;             // a child reference: node 0, or a single leaf
   int depth = 0;                      // deepest node level (the root is level 1)
   bool quantised = false;             // which of nodes / qnodes the tree uses
-  bool empty() const { return blocks.empty(); }
+  bool empty() const { return groups.empty(); }
   std::size_t memory_bytes() const {
     return nodes.size() * sizeof(WideNode) + qnodes.size() * sizeof(QuantisedNode) +
-           blocks.size() * sizeof(TriangleBlock);
+           groups.size() * sizeof(TriangleGroup);
   }
 };
 
@@ -144,14 +140,14 @@ struct MeshBvhHit {
   float b2 = 0;
   std::uint32_t triangle = kNoTriangle;
   std::uint32_t source = kNoTriangle;  // source[triangle] of the build
-  std::uint32_t block = 0;  // where the triangle's vertices sit in MeshBvh::blocks (cache-warm)
-  std::uint32_t lane = 0;   // 0-7
+  std::uint32_t group = 0;  // where the triangle's vertices sit in MeshBvh::groups (cache-warm)
+  std::uint32_t lane = 0;
 };
 
 /// Vertex k (0, 1, 2) of a hit triangle, read from the leaf data the test just used.
 inline Vec3f hit_vertex(const MeshBvh& bvh, const MeshBvhHit& h, int k) {
-  const TriangleBlock& b = bvh.blocks[h.block];
-  return {b.v[k][0][h.lane], b.v[k][1][h.lane], b.v[k][2][h.lane]};
+  const TriangleGroup& g = bvh.groups[h.group];
+  return {g.v[k][0][h.lane], g.v[k][1][h.lane], g.v[k][2][h.lane]};
 }
 
 /// Entries a traversal stack needs for `bvh`: each level below the root pushes at most

@@ -412,9 +412,9 @@ inline int packet_child(const NodePlanes& n, int c, const PacketData<N>& p,
   return bits(cmp_le(tnear, f * widen));
 }
 
-// Triangle `lane` of block g against every lane's ray: the watertight test of intersect_pair.
+// Triangle `lane` of group g against every lane's ray: the watertight test of intersect_pair.
 template <int N, class V = typename PacketLanes<N>::V>
-inline int packet_triangle(const TriangleBlock& g, int lane, const PacketData<N>& p, V tmax, V& t,
+inline int packet_triangle(const TriangleGroup& g, int lane, const PacketData<N>& p, V tmax, V& t,
                            V& v, V& w, V& det) {
   using L = PacketLanes<N>;
   const V a_kz = L::broadcast(g.v[0][p.kz][lane]) - p.okz;
@@ -478,8 +478,8 @@ inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint3
                              int& found) {
   using L = PacketLanes<N>;
   for (std::uint32_t gi = first; gi < end; ++gi) {
-    const TriangleBlock& g = bvh.blocks[gi];
-    for (int k = 0; k < 8; ++k) {
+    const TriangleGroup& g = bvh.groups[gi];
+    for (int k = 0; k < 4; ++k) {
       if (g.id[k] == kNoTriangle) continue;
       typename L::V t, v, w, det;
       int m = packet_triangle<N>(g, k, p, L::load(tmax_s), t, v, w, det) & lanes;
@@ -498,7 +498,7 @@ inline void leaf_by_triangle(const MeshBvh& bvh, std::uint32_t first, std::uint3
   }
 }
 
-// A leaf's blocks against one lane after another: the single-ray leaf test (the
+// A leaf's groups two at a time against one lane after another: the single-ray leaf test (the
 // better order when few lanes enter the leaf).
 template <int N>
 inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t end,
@@ -508,15 +508,17 @@ inline void leaf_by_lane(const MeshBvh& bvh, std::uint32_t first, std::uint32_t 
   for (; lanes; lanes &= lanes - 1) {
     const int l = __builtin_ctz(lanes);
     const RayData& r = p.lane_ray[l];
-    for (std::uint32_t bi = first; bi < end; ++bi) {
-      const TriangleBlock& b = bvh.blocks[bi];
-      int m = intersect_pair(b, r, splat(tmax_s[l]), res);
+    for (std::uint32_t gi = first; gi < end; gi += 2) {
+      const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
+      int m = intersect_pair(bvh.groups[gi], g1, r, splat(tmax_s[l]), res);
       while (m) {
         const int i = __builtin_ctz(m);
         m &= m - 1;
+        const std::uint32_t g = gi + (i >> 2);
         keep_hit(l,
-                 MeshBvhHit{res.t[i], res.v[i] / res.det[i], res.w[i] / res.det[i], b.id[i],
-                            b.source[i], bi, static_cast<std::uint32_t>(i)},
+                 MeshBvhHit{res.t[i], res.v[i] / res.det[i], res.w[i] / res.det[i],
+                            bvh.groups[g].id[i & 3], bvh.groups[g].source[i & 3], g,
+                            static_cast<std::uint32_t>(i & 3)},
                  tmax_s, hits, found);
       }
     }
@@ -599,14 +601,14 @@ int closest_format(const MeshBvh& bvh, const PacketRays<N>& pr, int mask, MeshBv
         }
       }
     } else {
-      const std::uint32_t first = leaf_first(ref), end = first + leaf_blocks(ref);
+      const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
       if (!p.leaves_ready) prepare_leaves(pr, p);
       // By lane (one pass of up to 8 triangles per lane) unless the lanes are many: k lanes
-      // by lane cost k * blocks passes, by triangle 4 * groups tests of N lanes each. The factor
+      // by lane cost k * pairs passes, by triangle 4 * groups tests of N lanes each. The factor
       // N / 2 (4 for 8 lanes, 8 for 16: a 16-lane test is two 256-bit halves on this Zen 4)
       // measured for 16 lanes against 4 (docs/performance-mesh.md, session 11: 8 of 8 rounds).
       if (!p.shared ||
-          __builtin_popcount(lanes) * int(end - first) < (N / 2) * int(leaf_groups(ref))) {
+          __builtin_popcount(lanes) * int((end - first + 1) / 2) < (N / 2) * int(end - first)) {
         leaf_by_lane<N>(bvh, first, end, p, lanes, tmax_s, hits, found);
       } else {
         leaf_by_triangle<N>(bvh, first, end, p, lanes, tmax_s, hits, found);

@@ -94,6 +94,10 @@ template <class F>
 /// Appends to a hit list (out of line, so that ISA-specific code never instantiates vector code).
 void append_mesh_hit(std::vector<MeshBvhHit>& out, const MeshBvhHit& hit);
 
+/// A group of four triangles that no ray hits (NaN vertices): the partner of a leaf's odd last
+/// group when kernels test two groups per pass.
+extern const TriangleGroup kEmptyTriangleGroup;
+
 // The tables, defined by mesh/wide_kernels_<isa>.cpp (the SIMD ones on x86-64 only). Use
 // mesh_kernels(isa), which also checks that the CPU can run them.
 extern const MeshKernels kMeshKernelsScalar;

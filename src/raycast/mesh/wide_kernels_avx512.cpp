@@ -34,6 +34,9 @@ inline V8 load8_u8(const std::uint8_t* p) {
   return {_mm256_cvtepi32_ps(
       _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p))))};
 }
+inline V8 load44(const float* a, const float* b) {
+  return {_mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(a)), _mm_load_ps(b), 1)};
+}
 inline V8 splat(float x) { return {_mm256_set1_ps(x)}; }
 inline void store8(float* p, V8 x) { _mm256_store_ps(p, x.v); }
 inline V8 operator+(V8 x, V8 y) { return {_mm256_add_ps(x.v, y.v)}; }

@@ -28,6 +28,11 @@ inline V8 load8_u8(const std::uint8_t* p) {
   for (int i = 0; i < 8; ++i) r.v[i] = static_cast<float>(p[i]);
   return r;
 }
+inline V8 load44(const float* a, const float* b) {
+  V8 r;
+  for (int i = 0; i < 4; ++i) r.v[i] = a[i], r.v[i + 4] = b[i];
+  return r;
+}
 inline V8 splat(float x) {
   V8 r;
   for (float& f : r.v) f = x;

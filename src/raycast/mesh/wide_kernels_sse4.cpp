@@ -31,6 +31,7 @@ inline V8 load8_u8(const std::uint8_t* p) {
   return {_mm_cvtepi32_ps(_mm_cvtepu8_epi32(x)),
           _mm_cvtepi32_ps(_mm_cvtepu8_epi32(_mm_srli_si128(x, 4)))};
 }
+inline V8 load44(const float* a, const float* b) { return {_mm_load_ps(a), _mm_load_ps(b)}; }
 inline V8 splat(float x) { return {_mm_set1_ps(x), _mm_set1_ps(x)}; }
 inline void store8(float* p, V8 v) { _mm_store_ps(p, v.a), _mm_store_ps(p + 4, v.b); }
 inline V8 operator+(V8 x, V8 y) { return {_mm_add_ps(x.a, y.a), _mm_add_ps(x.b, y.b)}; }

@@ -332,26 +332,32 @@ struct PairResult {
   alignas(32) float det[8];
 };
 
-// Watertight test of a block's eight triangles: the hit mask (tmin <= t <= tmax) and, when it is
-// not empty, the lane results.
+// Watertight test of two groups' eight triangles (lanes 0-3 from g0, 4-7 from g1): the hit mask
+// (tmin <= t <= tmax) and, when it is not empty, the lane results.
 // Always inlined where the walk asks for it (intersect_pair below): GCC 12 stopped inlining it
 // into the AVX-512 any-hit octant walks when the walk of every octant became reachable there
 // (session 13), a call per leaf with the walk's vectors spilled around it.
-[[gnu::always_inline]] inline int intersect_pair_inlined(const TriangleBlock& b, const RayData& p,
+[[gnu::always_inline]] inline int intersect_pair_inlined(const TriangleGroup& g0,
+                                                         const TriangleGroup& g1, const RayData& p,
                                                          V8 tmax, PairResult& res) {
   // Shear and scale the vertices into ray space (per vertex, so shared vertices agree exactly).
 #ifdef RAYCAST_KERNEL_ROW_OFFSETS
-  // Each row addressed as block + vertex * 96 (a constant) + axis * 32 (one of three per-ray
-  // byte offsets), so the nine rows take three index registers, not nine.
-  const std::ptrdiff_t x = p.kx * std::ptrdiff_t(sizeof b.v[0][0]),
-                       y = p.ky * std::ptrdiff_t(sizeof b.v[0][0]),
-                       z = p.kz * std::ptrdiff_t(sizeof b.v[0][0]);
+  // Each row addressed as group + vertex * 48 (a constant) + axis * 16 (one of three per-ray
+  // byte offsets), so the nine rows of both groups take three index registers, not nine.
+  const std::ptrdiff_t x = p.kx * std::ptrdiff_t(sizeof g0.v[0][0]),
+                       y = p.ky * std::ptrdiff_t(sizeof g0.v[0][0]),
+                       z = p.kz * std::ptrdiff_t(sizeof g0.v[0][0]);
+  const auto row = [](const TriangleGroup& g, int vertex, std::ptrdiff_t axis) {
+    return reinterpret_cast<const float*>(reinterpret_cast<const char*>(g.v[vertex]) + axis);
+  };
   const auto rows = [&](int vertex, std::ptrdiff_t axis) {
-    return load8(reinterpret_cast<const float*>(reinterpret_cast<const char*>(b.v[vertex]) + axis));
+    return load44(row(g0, vertex, axis), row(g1, vertex, axis));
   };
 #else
   const int x = p.kx, y = p.ky, z = p.kz;
-  const auto rows = [&](int vertex, int axis) { return load8(b.v[vertex][axis]); };
+  const auto rows = [&](int vertex, int axis) {
+    return load44(g0.v[vertex][axis], g1.v[vertex][axis]);
+  };
 #endif
   const V8 a_kz = rows(0, z) - p.okz;
   const V8 b_kz = rows(1, z) - p.okz;
@@ -413,20 +419,21 @@ struct PairResult {
 }
 
 // The pair test, inlined or called as GCC chooses.
-inline int intersect_pair(const TriangleBlock& b, const RayData& p, V8 tmax, PairResult& res) {
-  return intersect_pair_inlined(b, p, tmax, res);
+inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, const RayData& p,
+                          V8 tmax, PairResult& res) {
+  return intersect_pair_inlined(g0, g1, p, tmax, res);
 }
 
-// Starts loading every hit child (a node's cache lines, or all of a leaf's blocks) at once,
+// Starts loading every hit child (a node's cache lines, or all of a leaf's groups) at once,
 // so that the memory latency of siblings overlaps instead of adding up. Always inlined: GCC 12
 // finds an out-of-line copy free of side effects (__builtin_prefetch does not count) and deletes
 // the calls, so until session 7 no kernel prefetched at all (docs/performance-mesh.md).
 template <class Node>
 [[gnu::always_inline]] inline void prefetch_child(const MeshBvh& bvh, std::uint32_t ref) {
   const bool leaf = ref & kLeafBit;
-  const char* c = leaf ? reinterpret_cast<const char*>(&bvh.blocks[ref & 0x1FFFFFFFu])
+  const char* c = leaf ? reinterpret_cast<const char*>(&bvh.groups[ref & 0x1FFFFFFFu])
                        : reinterpret_cast<const char*>(node_array<Node>(bvh) + ref);
-  const int bytes = leaf ? static_cast<int>(((ref >> 29) & 3u) / 2 + 1) * int(sizeof(TriangleBlock))
+  const int bytes = leaf ? static_cast<int>(((ref >> 29) & 3u) + 1) * int(sizeof(TriangleGroup))
                          : int(sizeof(Node));
   for (int off = 0; off < bytes; off += 64) __builtin_prefetch(c + off);
 }
@@ -480,9 +487,7 @@ inline std::uint32_t order_children(const MeshBvh& bvh, const Node& node, int ma
 }
 
 inline std::uint32_t leaf_first(std::uint32_t ref) { return ref & 0x1FFFFFFFu; }
-// Groups of four triangles (1-4) and the blocks that hold them (1-2).
 inline std::uint32_t leaf_groups(std::uint32_t ref) { return ((ref >> 29) & 3u) + 1; }
-inline std::uint32_t leaf_blocks(std::uint32_t ref) { return ((ref >> 29) & 3u) / 2 + 1; }
 
 // The one traversal of the three queries (the shape of madmann91/bvh's intersect<IsAnyHit>):
 // nearest-first descent with entries beyond the current hit skipped (kNearest), stop at the
@@ -525,19 +530,25 @@ template <Query Q, class Node, int Oct>
         continue;
       }
     } else {
-      const std::uint32_t first = leaf_first(ref), end = first + leaf_blocks(ref);
-      for (std::uint32_t bi = first; bi < end; ++bi) {
-        const TriangleBlock& b = bvh.blocks[bi];
-        int m = Q == Query::kAny && Oct >= 0 ? intersect_pair_inlined(b, p, tmax, res)
-                                             : intersect_pair(b, p, tmax, res);
+      const std::uint32_t first = leaf_first(ref), end = first + leaf_groups(ref);
+      for (std::uint32_t gi = first; gi < end; gi += 2) {
+        const TriangleGroup& g1 = gi + 1 < end ? bvh.groups[gi + 1] : kEmptyTriangleGroup;
+        int m = Q == Query::kAny && Oct >= 0
+                    ? intersect_pair_inlined(bvh.groups[gi], g1, p, tmax, res)
+                    : intersect_pair(bvh.groups[gi], g1, p, tmax, res);
         if (!m) continue;
         if constexpr (Q == Query::kAny) return true;
         while (m) {
           const int l = __builtin_ctz(m);
           m &= m - 1;
-          const MeshBvhHit h{
-              res.t[l], res.v[l] / res.det[l],        res.w[l] / res.det[l], b.id[l], b.source[l],
-              bi,       static_cast<std::uint32_t>(l)};
+          const std::uint32_t g = gi + (l >> 2);
+          const MeshBvhHit h{res.t[l],
+                             res.v[l] / res.det[l],
+                             res.w[l] / res.det[l],
+                             bvh.groups[g].id[l & 3],
+                             bvh.groups[g].source[l & 3],
+                             g,
+                             static_cast<std::uint32_t>(l & 3)};
           if constexpr (Q == Query::kNearest) {
             // Ties in t go to the smaller triangle index, so that the answer does not depend on
             // the visiting order (packets visit leaves in another order).
