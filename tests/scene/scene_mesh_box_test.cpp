@@ -28,17 +28,35 @@ std::shared_ptr<const Mesh> make_cube_mesh() {
   return make_mesh(p, t);
 }
 
-TEST(Scene, SoleMeshBox_RaysInTheBoxFacesAnswerAsTheGeneralPath) {
-  const auto mesh = make_cube_mesh();
+// The cube alone (Scene's direct path for one mesh) and beside a far sphere (the general path).
+void build_sole_and_general(Scene& sole, Scene& general) {
   Object m;
-  m.shape = MeshShape{mesh};
+  m.shape = MeshShape{make_cube_mesh()};
   Object far;
   far.shape = make_sphere({100, 100, 100}, 0.5);
-  Scene sole, general;
   sole.objects = {m};
   general.objects = {m, far};
   sole.build();
   general.build();
+}
+
+// Expects both scenes' nearest hit and shadow answer to agree on `ray` (number n); returns
+// whether the nearest query hit.
+bool expect_same_answers(const Scene& sole, const Scene& general, const Ray& ray, int n) {
+  SceneHit hs, hg;
+  const bool fs = sole.intersect(ray, hs), fg = general.intersect(ray, hg);
+  EXPECT_EQ(fs, fg) << n;
+  if (fs && fg) {
+    EXPECT_EQ(hs.local.t, hg.local.t) << n;
+    EXPECT_EQ(hs.local.part, hg.local.part) << n;
+  }
+  EXPECT_EQ(sole.occluded(ray), general.occluded(ray)) << n;
+  return fs;
+}
+
+TEST(Scene, SoleMeshBox_RaysInTheBoxFacesAnswerAsTheGeneralPath) {
+  Scene sole, general;
+  build_sole_and_general(sole, general);
   ASSERT_EQ(sole.sole_mesh(), 0);
   ASSERT_EQ(general.sole_mesh(), -1);
   testing::Rng rng(13);
@@ -60,17 +78,7 @@ TEST(Scene, SoleMeshBox_RaysInTheBoxFacesAnswerAsTheGeneralPath) {
     }
     if (n % 97 == 5) ray.tmin = std::numeric_limits<double>::quiet_NaN();
     if (n % 89 == 6) ray.o.y = std::numeric_limits<double>::quiet_NaN();
-    SceneHit hs, hg;
-    const bool fs = sole.intersect(ray, hs), fg = general.intersect(ray, hg);
-    ASSERT_EQ(fs, fg) << n;
-    if (fs) {
-      ++hits;
-      EXPECT_EQ(hs.local.t, hg.local.t) << n;
-      EXPECT_EQ(hs.local.part, hg.local.part) << n;
-    } else {
-      ++misses;
-    }
-    EXPECT_EQ(sole.occluded(ray), general.occluded(ray)) << n;
+    ++(expect_same_answers(sole, general, ray, n) ? hits : misses);
   }
   EXPECT_GT(hits, 500);  // the rays do reach the faces
   EXPECT_GT(misses, 500);
@@ -82,16 +90,8 @@ TEST(Scene, SoleMeshBox_RaysInTheBoxFacesAnswerAsTheGeneralPath) {
 // infinite, zero or tiny directions, NaN tmax) and the rays beside them that take the test (tmin >
 // 0, tmax < 0, an origin just outside a face): the answer must stay the general path's.
 TEST(Scene, SoleMeshBox_RaysFromInsideTheBoxAnswerAsTheGeneralPath) {
-  const auto mesh = make_cube_mesh();
-  Object m;
-  m.shape = MeshShape{mesh};
-  Object far;
-  far.shape = make_sphere({100, 100, 100}, 0.5);
   Scene sole, general;
-  sole.objects = {m};
-  general.objects = {m, far};
-  sole.build();
-  general.build();
+  build_sole_and_general(sole, general);
   testing::Rng rng(29);
   int hits = 0, misses = 0;
   for (int n = 0; n < 8000; ++n) {
@@ -119,16 +119,7 @@ TEST(Scene, SoleMeshBox_RaysFromInsideTheBoxAnswerAsTheGeneralPath) {
     if (n % 89 == 6) ray.d.z = std::numeric_limits<double>::infinity();
     if (n % 83 == 7) ray.d = {0, 0, 0};
     if (n % 79 == 8) ray.d = ray.d * 1e-160;  // |d|^2 subnormal: not is_valid, yet traceable
-    SceneHit hs, hg;
-    const bool fs = sole.intersect(ray, hs), fg = general.intersect(ray, hg);
-    ASSERT_EQ(fs, fg) << n;
-    if (fs) {
-      ++hits;
-      EXPECT_EQ(hs.local.t, hg.local.t) << n;
-      EXPECT_EQ(hs.local.part, hg.local.part) << n;
-    } else {
-      ++misses;
-    }
+    ++(expect_same_answers(sole, general, ray, n) ? hits : misses);
   }
   EXPECT_GT(hits, 3000);
   EXPECT_GT(misses, 1000);

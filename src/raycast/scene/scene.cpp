@@ -10,6 +10,18 @@
 
 namespace raycast {
 
+namespace {
+
+// Whether the ray starts inside the box (faces included) with tmin <= 0 <= tmax: then it passes
+// intersect_slabs, whose divisions it can skip. On each axis its near distance is <= 0 and its far
+// one >= 0 (or NaN, an origin on a face and a zero component, which the test ignores), so t0 <= 0
+// <= t1.
+bool starts_inside(const Aabb& box, const Ray& ray) {
+  return ray.tmin <= 0 && ray.tmax >= 0 && box.contains(ray.o);
+}
+
+}  // namespace
+
 void Scene::build(bool direction_lists) {
   const auto start = std::chrono::steady_clock::now();
   set_.build(objects);
@@ -44,8 +56,7 @@ bool Scene::intersect(const Ray& ray, SceneHit& hit) const {
     // it (as in occluded below) and skips the test's three divisions: rays that start in the
     // scene (secondary rays, the bench's incoherent ones) never miss the box.
     double t_enter;
-    const bool starts_inside = ray.tmin <= 0 && ray.tmax >= 0 && mesh_box_.contains(ray.o);
-    if ((!starts_inside &&
+    if ((!starts_inside(mesh_box_, ray) &&
          !intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter)) ||
         !is_valid(ray) || !raycast::intersect(*mesh_, ray, hit.local))
       return false;
@@ -62,10 +73,7 @@ bool Scene::occluded(const Ray& ray) const {
     // (box and mesh), but shadow rays start on the mesh, inside its box, so the box test is
     // paid only by the few rays that are blocked. The kernel checks is_valid itself.
     if (!mesh_occluded_(mesh_->bvh, ray)) return false;
-    // A ray from inside the box (faces included) with tmin <= 0 <= tmax passes intersect_slabs
-    // without its divisions: on each axis its near distance is <= 0 and its far one >= 0 (or NaN,
-    // an origin on a face and a zero component, which the test ignores), so t0 <= 0 <= t1.
-    if (ray.tmin <= 0 && ray.tmax >= 0 && mesh_box_.contains(ray.o)) return true;
+    if (starts_inside(mesh_box_, ray)) return true;
     double t_enter;
     return intersect_slabs(mesh_box_, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter);
   }
