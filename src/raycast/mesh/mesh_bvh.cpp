@@ -277,7 +277,7 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
         }
       });
   if (config.split_budget > 0) {
-    split_triangle_refs(positions, triangles, config.split_budget, refs);
+    split_triangle_refs(positions, triangles, config.split_budget, config.split_min_ratio, refs);
     out.split = refs.size() > n;
   }
   BvhBuildConfig bc;

@@ -101,6 +101,9 @@ struct MeshBvhConfig {
   // references per triangle (0.3: +30 %), given to the pieces of most wasted box area first.
   // Off by default (docs/performance-mesh.md, session 15: split15).
   double split_budget = 0;
+  // Only pieces whose box's half area exceeds this many times the area of the triangle inside
+  // are split (long thin or diagonal ones; an axis-aligned right triangle has 2).
+  double split_min_ratio = 4;
 };
 
 struct MeshBvh {

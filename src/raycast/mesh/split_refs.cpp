@@ -113,13 +113,18 @@ struct Piece {
 
 void split_triangle_refs(std::span<const Vec3f> positions,
                          std::span<const std::array<std::uint32_t, 3>> triangles, double budget,
-                         BvhBuildRefs& refs) {
+                         double min_ratio, BvhBuildRefs& refs) {
   const std::size_t n = triangles.size();
   if (!(budget > 0) || n == 0) return;
   std::size_t extra = static_cast<std::size_t>(std::min(budget, 4.0) * double(n));
   // Leaf references hold 29-bit group indices; stay far below.
   extra = std::min(extra, (std::size_t(1) << 30) - std::min(n, std::size_t(1) << 30));
   if (extra == 0) return;
+  // Only pieces whose box is much larger than the triangle inside (long thin or diagonal): a
+  // budget spent on the moderate waste of ordinary triangles lost on the forest (session 15).
+  auto worth_splitting = [&](const BvhBuildRef& r, double area) {
+    return half_area(r) > min_ratio * area && half_area(r) > area;
+  };
   auto corners = [&](std::uint32_t t, Vec3f(&v)[3]) {
     for (int k = 0; k < 3; ++k) v[k] = positions[triangles[t][k]];
   };
@@ -127,8 +132,9 @@ void split_triangle_refs(std::span<const Vec3f> positions,
   for (std::size_t i = 0; i < n; ++i) {
     Vec3f v[3];
     corners(refs[i].index, v);
-    const double waste = half_area(refs[i]) - triangle_area(v);
-    if (waste > 0) heap.push_back({waste, static_cast<std::uint32_t>(i)});
+    const double area = triangle_area(v);
+    const double waste = half_area(refs[i]) - area;
+    if (worth_splitting(refs[i], area)) heap.push_back({waste, static_cast<std::uint32_t>(i)});
   }
   std::make_heap(heap.begin(), heap.end());
   refs.reserve(n + extra);
@@ -159,9 +165,8 @@ void split_triangle_refs(std::span<const Vec3f> positions,
       if (part[h].count > 0) piece[h] = part_ref(part[h], lo[h], hi[h], parent.index);
     }
     auto push = [&](std::uint32_t slot, double area) {
-      const double waste = half_area(refs[slot]) - area;
-      if (waste > 0) {
-        heap.push_back({waste, slot});
+      if (worth_splitting(refs[slot], area)) {
+        heap.push_back({half_area(refs[slot]) - area, slot});
         std::push_heap(heap.begin(), heap.end());
       }
     };
