@@ -51,7 +51,7 @@ Action add_bench_command(CLI::App& app) {
                   "Tuning: extra split references per triangle (early split clipping; 0: off)")
       ->check(CLI::Range(0.0, 4.0));
   cmd->add_option("--split-min-ratio", bvh->split_min_ratio,
-                  "Tuning: split only pieces whose box exceeds this many times their area")
+                  "Tuning: split only pieces whose box exceeds this many times their area (8)")
       ->check(CLI::Range(0.0, 1e6));
   return [opt, bvh] {
     BenchOptions o;

@@ -109,7 +109,7 @@ std::vector<std::uint32_t> every_sorted(const MeshBvh& bvh, const MeshRay& r) {
 
 // The queries with and without split references, and brute force, on random rays.
 void check_split_matches_unsplit(const TriangleSoup& soup, double budget, int rays,
-                                 std::uint32_t seed, float spread, double min_ratio = 4) {
+                                 std::uint32_t seed, float spread, double min_ratio = 8) {
   MeshBvhConfig split_config;
   split_config.split_budget = budget;
   split_config.split_min_ratio = min_ratio;
@@ -163,7 +163,7 @@ TEST(SplitRefs, PiecesHoldTheirTrianglesAndStayInTheTriangleBox) {
     refs[i] = make_build_ref(box, static_cast<std::uint32_t>(i));
   }
   const BvhBuildRefs original = refs;
-  split_triangle_refs(soup.positions, soup.triangles, 1.0, 4.0, refs);
+  split_triangle_refs(soup.positions, soup.triangles, 1.0, 8.0, refs);
   EXPECT_EQ(refs.size(), 2 * soup.triangles.size());  // needles always have waste to split
   std::vector<std::vector<BvhBuildRef>> pieces(soup.triangles.size());
   for (const BvhBuildRef& r : refs) {
