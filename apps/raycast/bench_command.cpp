@@ -47,6 +47,12 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--traversal-cost", bvh->traversal_cost,
                   "Tuning: SAH node cost per group of 4 triangles")
       ->check(CLI::Range(0.01, 100.0));
+  cmd->add_option("--split-budget", bvh->split_budget,
+                  "Tuning: extra split references per triangle (early split clipping; 0: off)")
+      ->check(CLI::Range(0.0, 4.0));
+  cmd->add_option("--split-min-ratio", bvh->split_min_ratio,
+                  "Tuning: split only pieces whose box exceeds this many times their area (8)")
+      ->check(CLI::Range(0.0, 1e6));
   return [opt, bvh] {
     BenchOptions o;
     o.scene = opt->scene;

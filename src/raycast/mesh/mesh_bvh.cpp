@@ -8,6 +8,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "mesh/split_refs.h"
 #include "mesh/wide_kernels.h"
 
 namespace raycast {
@@ -275,6 +276,10 @@ MeshBvh build_mesh_bvh(std::span<const Vec3f> positions,
               0};
         }
       });
+  if (config.split_budget > 0) {
+    split_triangle_refs(positions, triangles, config.split_budget, config.split_min_ratio, refs);
+    out.split = refs.size() > n;
+  }
   BvhBuildConfig bc;
   bc.bins = config.bins;
   bc.max_leaf_size = std::clamp(config.max_leaf_size, 1, 4 * kMaxGroupsPerLeaf);
@@ -378,10 +383,24 @@ bool intersect_any(const MeshBvh& bvh, const MeshRay& ray) {
 
 void intersect_every(const MeshBvh& bvh, const MeshRay& ray, std::vector<MeshBvhHit>& out) {
   if (bvh.empty()) return;
+  const std::size_t first = out.size();
   with_traversal_stack(bvh, [&](TraversalEntry* stack) {
     kernels().every(bvh, ray, out, stack);
     return 0;
   });
+  // A split triangle sits in several leaves: keep its first hit only (the same t and
+  // barycentrics in each, the same vertices tested).
+  if (bvh.split && out.size() - first > 1) {
+    const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
+    std::stable_sort(begin, out.end(), [](const MeshBvhHit& a, const MeshBvhHit& b) {
+      return a.triangle < b.triangle;
+    });
+    out.erase(std::unique(begin, out.end(),
+                          [](const MeshBvhHit& a, const MeshBvhHit& b) {
+                            return a.triangle == b.triangle;
+                          }),
+              out.end());
+  }
 }
 
 }  // namespace raycast

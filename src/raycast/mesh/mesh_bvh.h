@@ -97,6 +97,14 @@ struct MeshBvhConfig {
   // at 1M and at 10M (docs/performance-mesh.md, session 14: the 10M sphere's primary rays about
   // 20 % faster, incoherent ones level); the quantised format stays for callers short of memory.
   std::size_t quantise_above = std::numeric_limits<std::size_t>::max();
+  // Early split clipping (Ernst and Greiner 2007; mesh/split_refs.h): at most this many extra
+  // references per triangle (0.3: +30 %), given to the pieces of most wasted box area first.
+  // Off by default (docs/performance-mesh.md, session 15: split15).
+  double split_budget = 0;
+  // Only pieces whose box's half area exceeds this many times the area of the triangle inside
+  // are split (long thin or diagonal ones; an axis-aligned right triangle has 2; at 4 the
+  // forest's ordinary triangles took the whole budget and lost, at 8 none is split).
+  double split_min_ratio = 8;
 };
 
 struct MeshBvh {
@@ -108,6 +116,7 @@ struct MeshBvh {
   std::uint32_t root = 0;             // a child reference: node 0, or a single leaf
   int depth = 0;                      // deepest node level (the root is level 1)
   bool quantised = false;             // which of nodes / qnodes the tree uses
+  bool split = false;                 // split references: a triangle may sit in several leaves
   bool empty() const { return groups.empty(); }
   std::size_t memory_bytes() const {
     return nodes.size() * sizeof(WideNode) + qnodes.size() * sizeof(QuantisedNode) +
