@@ -11,6 +11,7 @@
 #include "mesh/mesh.h"
 #include "mesh/procedural.h"
 #include "mesh/triangle.h"
+#include "support/mesh_rays.h"
 
 namespace raycast {
 namespace {
@@ -52,18 +53,6 @@ TriangleSoup random_soup(std::mt19937& rng, int n, float spread, float size) {
   return s;
 }
 
-MeshRay random_ray(std::mt19937& rng, float spread) {
-  std::uniform_real_distribution<float> pos(-1.5f * spread, 1.5f * spread);
-  std::normal_distribution<float> dir;
-  MeshRay r;
-  r.o = {pos(rng), pos(rng), pos(rng)};
-  do r.d = {dir(rng), dir(rng), dir(rng)};
-  while (!(length_squared(r.d) > 0.01f));
-  r.tmin = 0;
-  r.tmax = std::uniform_real_distribution<float>(0.5f, 10.0f)(rng) * spread;
-  return r;
-}
-
 void check_against_brute_force(const TriangleSoup& soup, const MeshBvh& bvh, const MeshRay& r) {
   const Brute b = brute_force(soup, r);
   MeshBvhHit h;
@@ -86,7 +75,7 @@ TEST(MeshBvh, RandomSoups_MatchBruteForce) {
     config.max_leaf_size = 1 + static_cast<int>(seed % 16);
     const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles, config);
     for (int i = 0; i < 300; ++i) {
-      check_against_brute_force(soup, bvh, random_ray(rng, 10));
+      check_against_brute_force(soup, bvh, testing::random_mesh_ray(rng, 10));
       if (HasFatalFailure()) return;
     }
   }
@@ -97,7 +86,7 @@ TEST(MeshBvh, ProceduralSphere_MatchesBruteForce) {
   const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
   std::mt19937 rng(7);
   for (int i = 0; i < 500; ++i) {
-    check_against_brute_force(soup, bvh, random_ray(rng, 1));
+    check_against_brute_force(soup, bvh, testing::random_mesh_ray(rng, 1));
     if (HasFatalFailure()) return;
   }
 }
@@ -179,7 +168,7 @@ TEST(MeshBvh, Hits_ReportTheSourceIndexGivenToTheBuild) {
   int hits = 0;
   for (int i = 0; i < 200; ++i) {
     MeshBvhHit h;
-    if (!intersect_closest(bvh, random_ray(rng, 1), h)) continue;
+    if (!intersect_closest(bvh, testing::random_mesh_ray(rng, 1), h)) continue;
     ++hits;
     EXPECT_EQ(h.source, source[h.triangle]);
   }
@@ -194,7 +183,7 @@ TEST(MeshBvh, EveryHit_MatchesBruteForceCount) {
   const MeshBvh bvh = build_mesh_bvh(soup.positions, soup.triangles);
   std::mt19937 rng(3);
   for (int i = 0; i < 200; ++i) {
-    MeshRay r = random_ray(rng, 1);
+    MeshRay r = testing::random_mesh_ray(rng, 1);
     r.tmin = -std::numeric_limits<float>::infinity();
     r.tmax = std::numeric_limits<float>::infinity();
     const WatertightRay w = make_watertight_ray(r.o, r.d);

@@ -13,6 +13,7 @@
 #include "mesh/procedural.h"
 #include "mesh/split_refs.h"
 #include "mesh/triangle.h"
+#include "support/mesh_rays.h"
 
 namespace raycast {
 namespace {
@@ -86,18 +87,6 @@ TriangleSoup rotated_terrain(int g) {
   return s;
 }
 
-MeshRay random_ray(std::mt19937& rng, float spread) {
-  std::uniform_real_distribution<float> pos(-1.5f * spread, 1.5f * spread);
-  std::normal_distribution<float> dir;
-  MeshRay r;
-  r.o = {pos(rng), pos(rng), pos(rng)};
-  do r.d = {dir(rng), dir(rng), dir(rng)};
-  while (!(length_squared(r.d) > 0.01f));
-  r.tmin = 0;
-  r.tmax = std::uniform_real_distribution<float>(0.5f, 10.0f)(rng) * spread;
-  return r;
-}
-
 std::vector<std::uint32_t> every_sorted(const MeshBvh& bvh, const MeshRay& r) {
   std::vector<MeshBvhHit> hits;
   intersect_every(bvh, r, hits);
@@ -119,7 +108,7 @@ void check_split_matches_unsplit(const TriangleSoup& soup, double budget, int ra
   ASSERT_TRUE(split.split);
   std::mt19937 rng(seed);
   for (int i = 0; i < rays; ++i) {
-    MeshRay r = random_ray(rng, spread);
+    MeshRay r = testing::random_mesh_ray(rng, spread);
     if (i % 3 == 0) {  // whole lines too: every() then crosses many triangles
       r.tmin = -std::numeric_limits<float>::infinity();
       r.tmax = std::numeric_limits<float>::infinity();

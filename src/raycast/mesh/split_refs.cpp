@@ -120,23 +120,26 @@ void split_triangle_refs(std::span<const Vec3f> positions,
   // Leaf references hold 29-bit group indices; stay far below.
   extra = std::min(extra, (std::size_t(1) << 30) - std::min(n, std::size_t(1) << 30));
   if (extra == 0) return;
-  // Only pieces whose box is much larger than the triangle inside (long thin or diagonal): a
-  // budget spent on the moderate waste of ordinary triangles lost on the forest (session 15).
-  auto worth_splitting = [&](const BvhBuildRef& r, double area) {
-    return half_area(r) > min_ratio * area && half_area(r) > area;
-  };
   auto corners = [&](std::uint32_t t, Vec3f(&v)[3]) {
     for (int k = 0; k < 3; ++k) v[k] = positions[triangles[t][k]];
   };
+  // A piece joins the heap only when its box is much larger than the triangle inside (long thin
+  // or diagonal): a budget spent on the moderate waste of ordinary triangles lost on the forest
+  // (session 15). The heap's order is total (waste, then slot), so the pops do not depend on how
+  // it was filled.
   std::vector<Piece> heap;
+  auto consider = [&](std::uint32_t slot, double area) {
+    const double box = half_area(refs[slot]);
+    if (box > min_ratio * area && box > area) {
+      heap.push_back({box - area, slot});
+      std::push_heap(heap.begin(), heap.end());
+    }
+  };
   for (std::size_t i = 0; i < n; ++i) {
     Vec3f v[3];
     corners(refs[i].index, v);
-    const double area = triangle_area(v);
-    const double waste = half_area(refs[i]) - area;
-    if (worth_splitting(refs[i], area)) heap.push_back({waste, static_cast<std::uint32_t>(i)});
+    consider(static_cast<std::uint32_t>(i), triangle_area(v));
   }
-  std::make_heap(heap.begin(), heap.end());
   refs.reserve(n + extra);
   while (extra > 0 && !heap.empty()) {
     std::pop_heap(heap.begin(), heap.end());
@@ -164,24 +167,18 @@ void split_triangle_refs(std::span<const Vec3f> positions,
       part[h] = clip_triangle(v, lo[h], hi[h]);
       if (part[h].count > 0) piece[h] = part_ref(part[h], lo[h], hi[h], parent.index);
     }
-    auto push = [&](std::uint32_t slot, double area) {
-      if (worth_splitting(refs[slot], area)) {
-        heap.push_back({half_area(refs[slot]) - area, slot});
-        std::push_heap(heap.begin(), heap.end());
-      }
-    };
     if (part[0].count == 0 || part[1].count == 0) {  // the triangle on one side: a tighter box
       const int h = part[0].count == 0 ? 1 : 0;
       if (part[h].count == 0) continue;
       refs[top.slot] = piece[h];
-      push(top.slot, part[h].area);
+      consider(top.slot, part[h].area);
       continue;
     }
     refs[top.slot] = piece[0];
     refs.push_back(piece[1]);
     --extra;
-    push(top.slot, part[0].area);
-    push(static_cast<std::uint32_t>(refs.size() - 1), part[1].area);
+    consider(top.slot, part[0].area);
+    consider(static_cast<std::uint32_t>(refs.size() - 1), part[1].area);
   }
 }
 
