@@ -1,4 +1,6 @@
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "bench/bench.h"
@@ -6,6 +8,20 @@
 #include "scene/scene_error.h"
 
 namespace raycast::cli {
+
+namespace {
+
+// CLI::Range lets NaN through (every comparison with it is false): the tuning numbers are
+// checked to be finite first.
+const CLI::Validator kFinite(
+    [](std::string& s) {
+      return std::isfinite(std::strtod(s.c_str(), nullptr))
+                 ? std::string()
+                 : "Value " + s + " is not a finite number";
+    },
+    "FINITE");
+
+}  // namespace
 
 Action add_bench_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
@@ -46,12 +62,15 @@ Action add_bench_command(CLI::App& app) {
       ->check(CLI::Range(2, 64));
   cmd->add_option("--traversal-cost", bvh->traversal_cost,
                   "Tuning: SAH node cost per group of 4 triangles")
+      ->check(kFinite)
       ->check(CLI::Range(0.01, 100.0));
   cmd->add_option("--split-budget", bvh->split_budget,
                   "Tuning: extra split references per triangle (early split clipping; 0: off)")
+      ->check(kFinite)
       ->check(CLI::Range(0.0, 4.0));
   cmd->add_option("--split-min-ratio", bvh->split_min_ratio,
                   "Tuning: split only pieces whose box exceeds this many times their area (8)")
+      ->check(kFinite)
       ->check(CLI::Range(0.0, 1e6));
   return [opt, bvh] {
     BenchOptions o;

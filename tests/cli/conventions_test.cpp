@@ -121,4 +121,14 @@ TEST(CliConventions, BenchOnAScene_WithoutMeshes_ReportsNoPerTriangleFigures) {
   EXPECT_TRUE(contains(json.out, "\"raycast_bytes_per_tri\": null")) << json.out;
 }
 
+TEST(CliConventions, BenchTuningNumbers_NaNOrOutOfRange_ExitTwo) {
+  for (const char* option : {"--split-budget", "--split-min-ratio", "--traversal-cost"})
+    for (const char* value : {"nan", "-1", "inf"}) {
+      const Outcome r =
+          run(std::string("bench --procedural sphere:1000 --repeat 1 ") + option + " " + value);
+      EXPECT_EQ(r.code, 2) << option << " " << value;
+      EXPECT_TRUE(contains(r.err, option)) << r.err;
+    }
+}
+
 }  // namespace
