@@ -6,7 +6,7 @@
 # fuzz target (scripts/fuzz.sh; FUZZ_SECONDS per target, default 30).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh release asan
+scripts/setup.sh --tests release asan
 jobs=$(nproc)
 ctest --preset release -j "$jobs"
 ctest --preset asan -j "$jobs"
