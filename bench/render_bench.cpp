@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
+#include "load/demo_scene.h"
 
 namespace {
 

@@ -6,8 +6,8 @@
 
 #include "commands.h"
 #include "pov/import.h"
-#include "scene/pov_loader.h"
-#include "scene/scene_error.h"
+#include "load/pov_loader.h"
+#include "io/scene_error.h"
 
 namespace raycast::cli {
 

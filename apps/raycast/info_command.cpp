@@ -6,7 +6,7 @@
 
 #include "commands.h"
 #include "math/isa.h"
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast::cli {
 

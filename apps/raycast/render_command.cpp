@@ -16,9 +16,9 @@
 #include "render/renderer.h"
 #include "render_frames.h"
 #include "render_output.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
-#include "scene/validate.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
+#include "load/validate.h"
 
 namespace raycast::cli {
 

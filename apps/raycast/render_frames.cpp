@@ -7,8 +7,8 @@
 #include "distributed/distributed.h"
 #include "distributed/launch.h"
 #include "output_file.h"
-#include "scene/frame_pattern.h"
-#include "scene/loader.h"
+#include "load/frame_pattern.h"
+#include "load/loader.h"
 
 namespace raycast::cli {
 

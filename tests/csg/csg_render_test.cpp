@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "render/texture.h"
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

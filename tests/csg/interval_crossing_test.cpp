@@ -16,8 +16,8 @@
 #include "csg/interval_crossing.h"
 #include "csg_oracle.h"
 #include "random_tree.h"
-#include "scene/csg_tree.h"
-#include "scene/prototype.h"
+#include "objects/csg_tree.h"
+#include "objects/prototype.h"
 
 namespace raycast {
 namespace {

@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "mesh/mesh_file.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "load/loader.h"
+#include "io/scene_error.h"
 
 namespace raycast {
 namespace {

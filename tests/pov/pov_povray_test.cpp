@@ -11,7 +11,7 @@
 #include "../support/cli_runner.h"
 #include "io/image.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

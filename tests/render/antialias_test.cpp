@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
+#include "io/scene_error.h"
 
 namespace raycast {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "mesh/procedural.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
+#include "load/loader.h"
 #include "scene/scene_packets.h"
 #include "support/scene_text.h"
 

@@ -6,7 +6,7 @@
 
 #include "render/camera.h"
 #include "render/integrator.h"
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

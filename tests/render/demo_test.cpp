@@ -10,7 +10,7 @@
 
 #include "io/image.h"
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
+#include "load/demo_scene.h"
 
 namespace raycast {
 namespace {

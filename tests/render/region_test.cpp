@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
+#include "load/demo_scene.h"
 
 namespace raycast {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "io/image.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

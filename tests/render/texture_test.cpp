@@ -4,7 +4,7 @@
 
 #include "render/integrator.h"
 #include "render/texture.h"
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

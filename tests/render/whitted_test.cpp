@@ -8,8 +8,8 @@
 
 #include "render/integrator.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "load/loader.h"
+#include "io/scene_error.h"
 
 namespace raycast {
 namespace {

@@ -21,9 +21,9 @@
 #include "mesh/mesh_file.h"
 #include "mesh/mesh_packet16.h"
 #include "mesh/procedural.h"
-#include "scene/lane_array.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "math/lane_array.h"
+#include "load/loader.h"
+#include "io/scene_error.h"
 
 namespace raycast {
 

@@ -17,8 +17,8 @@
 #include "distributed/work_queue.h"
 #include "render/texture.h"
 #include "render_output.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
 
 namespace raycast::cli::distributed {
 

@@ -6,8 +6,8 @@
 
 #include "render/renderer.h"
 #include "render_output.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "load/loader.h"
+#include "io/scene_error.h"
 #include "serve/png_memory.h"
 
 namespace raycast::serve {

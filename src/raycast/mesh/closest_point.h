@@ -20,7 +20,7 @@ namespace raycast {
 /// than that growth must be opened. An axis-aligned box of a tilted patch is as thick as it is
 /// wide and falls short by about its size; a box aligned with the patch's mean normal is as thin
 /// as the patch's curvature allows, which cuts the nodes opened per query by an order of
-/// magnitude on curved meshes (docs/performance-python.md).
+/// magnitude on curved meshes (python/bench_python.py).
 class MeshDistance {
  public:
   MeshDistance(const Mesh& mesh, const std::optional<Transform>& xf);

@@ -21,7 +21,7 @@
 #include "accel/progress.h"
 #include "mesh/mesh_ray.h"
 #include "mesh/wide_kernels.h"
-#include "scene/lane_array.h"
+#include "math/lane_array.h"
 
 namespace raycast {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "mesh/wide_kernels.h"
-#include "scene/lane_array.h"
+#include "math/lane_array.h"
 
 #if defined(__x86_64__)
 namespace raycast::kernels_avx512 {

@@ -4,7 +4,7 @@
 #include <cctype>
 
 #include "pov/parser.h"
-#include "scene/scene_file.h"
+#include "io/scene_file.h"
 
 namespace raycast::pov {
 

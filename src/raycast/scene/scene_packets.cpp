@@ -6,7 +6,7 @@
 #include "math/isa.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_packet16.h"
-#include "scene/lane_array.h"
+#include "math/lane_array.h"
 
 namespace raycast {
 
