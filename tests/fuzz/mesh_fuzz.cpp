@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 #include "load/loader.h"
 #include "io/scene_error.h"
 

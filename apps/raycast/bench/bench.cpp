@@ -18,7 +18,7 @@
 
 #include "bench/embree_peer.h"
 #include "geometry/spawn.h"
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 #include "mesh/mesh_packet16.h"
 #include "mesh/procedural.h"
 #include "math/lane_array.h"

@@ -19,7 +19,7 @@
 #include <tbb/task_group.h>
 
 #include "accel/build_memory.h"
-#include "accel/progress.h"
+#include "io/progress.h"
 
 namespace raycast {
 

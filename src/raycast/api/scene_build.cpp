@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 #include "api/distance_index.h"
 #include "api/impl.h"
 #include "objects/csg_tree.h"

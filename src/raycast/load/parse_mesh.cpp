@@ -2,7 +2,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 #include "load/shape_parsers.h"
 
 namespace raycast {

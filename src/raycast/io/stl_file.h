@@ -2,7 +2,7 @@
 // Our STL reader (docs/meshes.md): binary and ASCII.
 #include <string>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace raycast {
 

@@ -4,7 +4,7 @@
 // header; the version number guards against a plugin of another build.
 #include <string>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace raycast {
 

@@ -1,17 +1,17 @@
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <string>
 
-#include "mesh/obj_file.h"
-#include "mesh/ply_file.h"
-#include "mesh/stl_file.h"
+#include "io/obj_file.h"
+#include "io/ply_file.h"
+#include "io/stl_file.h"
 
 #ifdef RAYCAST_HAVE_ASSIMP
 #include "io/plugin_library.h"
-#include "mesh/assimp_plugin_abi.h"
+#include "io/assimp_plugin_abi.h"
 #endif
 
 namespace raycast {

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 #include "load/loader.h"
 #include "io/scene_error.h"
 

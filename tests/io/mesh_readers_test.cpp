@@ -14,7 +14,7 @@
 #include <random>
 #include <sstream>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace raycast {
 namespace {

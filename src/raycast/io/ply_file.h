@@ -2,7 +2,7 @@
 // Our PLY mesh reader (docs/meshes.md): ASCII, binary little-endian and binary big-endian.
 #include <string>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace raycast {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace raycast {
 

@@ -1,11 +1,11 @@
-#include "mesh/obj_file.h"
+#include "io/obj_file.h"
 
 #include <cmath>
 #include <cstdint>
 #include <string_view>
 
 #include "io/text_lines.h"
-#include "mesh/mapped_file.h"
+#include "io/mapped_file.h"
 
 namespace raycast {
 

@@ -1,4 +1,4 @@
-#include "mesh/stl_file.h"
+#include "io/stl_file.h"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +9,7 @@
 #include <unordered_map>
 
 #include "io/text_lines.h"
-#include "mesh/mapped_file.h"
+#include "io/mapped_file.h"
 
 namespace raycast {
 

@@ -2,7 +2,7 @@
 // Our Wavefront OBJ reader (docs/meshes.md).
 #include <string>
 
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace raycast {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/procedural.h"
+#include "io/triangle_soup.h"
 
 namespace raycast {
 
@@ -26,8 +26,8 @@ struct MeshFileData {
   std::vector<Vec3f> normals;
 };
 
-/// Reads a mesh file by its extension. PLY (ASCII and binary, mesh/ply_file.cpp), OBJ
-/// (mesh/obj_file.cpp) and STL (ASCII and binary, mesh/stl_file.cpp) are read by our own readers,
+/// Reads a mesh file by its extension. PLY (ASCII and binary, io/ply_file.cpp), OBJ
+/// (io/obj_file.cpp) and STL (ASCII and binary, io/stl_file.cpp) are read by our own readers,
 /// with errors naming the line and column; glTF/GLB go through assimp when the build has it. A
 /// progress bar is drawn on stderr when it is a terminal and the file is large. Positions and
 /// indices are returned as found: validation (finite values, indices in range) is make_mesh's.

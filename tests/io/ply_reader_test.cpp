@@ -13,7 +13,7 @@
 #include <random>
 
 #include "mesh/mesh.h"
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace raycast {
 namespace {

@@ -1,4 +1,4 @@
-#include "mesh/ply_file.h"
+#include "io/ply_file.h"
 
 #include <algorithm>
 #include <array>
@@ -11,10 +11,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "accel/progress.h"
+#include "io/progress.h"
 #include "io/ply.h"
 #include "io/text_lines.h"
-#include "mesh/mapped_file.h"
+#include "io/mapped_file.h"
 
 namespace raycast {
 
