@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "render/renderer.h"
-#include "objects/bounding_ball.h"
 #include "load/loader.h"
+#include "objects/bounding_ball.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
 #include "support/random.h"
 

@@ -365,8 +365,12 @@ int leaf_intervals(const CsgTree& tree, const Ray& ray, LeafInterval* iv, std::u
 
 }  // namespace
 
-std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
-  if (tree.nodes.empty()) throw std::invalid_argument("a CSG tree needs a root operation");
+namespace {
+
+// Checks the leaves (primitive shapes only) and records their boxes and whether their hits start
+// flipped: a closed mesh wound inside out reports its winding's (inward) normals, and in CSG
+// every surface's normal points out of the solid.
+void finish_leaves(CsgTree& tree) {
   tree.leaf_boxes.clear();
   tree.leaf_flipped.clear();
   for (const Object& leaf : tree.leaves) {
@@ -374,11 +378,14 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
         std::holds_alternative<InstanceShape>(leaf.shape))
       throw std::invalid_argument("a CSG leaf must be a primitive shape");
     tree.leaf_boxes.push_back(bounds(leaf));
-    // A closed mesh wound inside out reports its winding's (inward) normals; in CSG every
-    // surface's normal points out of the solid, so its hits start flipped.
     const auto* mesh = std::get_if<MeshShape>(&leaf.shape);
     tree.leaf_flipped.push_back(mesh && mesh->mesh->orientation() < 0);
   }
+}
+
+// Each node's box from its operands', bottom-up (operands are leaves or later nodes), checking
+// the references.
+void finish_node_boxes(CsgTree& tree) {
   for (std::size_t k = tree.nodes.size(); k-- > 0;) {
     CsgNode& node = tree.nodes[k];
     if (node.operands.empty()) throw std::invalid_argument("a CSG operation needs an operand");
@@ -415,19 +422,33 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
     for (const CsgNode& node : tree.nodes) grow(node.box);
     tree.box_magnitude[a] = m;
   }
-  // Levels, top-down (operands have larger indices than their node), to size the scratch lists.
+}
+
+// The tree's depth in levels, top-down (operands have larger indices than their node), to size
+// the scratch lists.
+std::size_t tree_depth(const CsgTree& tree) {
   std::vector<std::size_t> level(tree.nodes.size(), 0);
-  tree.depth = 0;
+  std::size_t depth = 0;
   for (std::size_t k = 0; k < tree.nodes.size(); ++k) {
-    tree.depth = std::max(tree.depth, level[k]);
+    depth = std::max(depth, level[k]);
     for (const std::int32_t code : tree.nodes[k].operands)
       if (code >= 0)
         level[static_cast<std::size_t>(code)] =
             std::max(level[static_cast<std::size_t>(code)], level[k] + 1);
   }
-  // Which boxes the walk tests. A leaf whose own interval test is as cheap as a box test is not
-  // culled; nor is an operand that gets its node's window and whose box contains its node's
-  // (the node's test passing implies its own), nor the root (the object's box is tested above).
+  return depth;
+}
+
+bool contains_box(const Aabb& outer, const Aabb& inner) {
+  for (int a = 0; a < 3; ++a)
+    if (!(outer.lo[a] <= inner.lo[a] && outer.hi[a] >= inner.hi[a])) return false;
+  return true;
+}
+
+// Which boxes the walk tests. A leaf whose own interval test is as cheap as a box test is not
+// culled; nor is an operand that gets its node's window and whose box contains its node's
+// (the node's test passing implies its own), nor the root (the object's box is tested above).
+void choose_culls(CsgTree& tree) {
   tree.leaf_kind.assign(tree.leaves.size(), CsgTree::LeafKind::kGeneric);
   for (std::size_t i = 0; i < tree.leaves.size(); ++i) {
     const ShapeVariant& shape = tree.leaves[i].shape;
@@ -447,11 +468,6 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
     if (tree.leaf_kind[i] == CsgTree::LeafKind::kSphere ||
         tree.leaf_kind[i] == CsgTree::LeafKind::kBox)
       tree.leaf_cull[i] = 0;
-  auto contains_box = [](const Aabb& outer, const Aabb& inner) {
-    for (int a = 0; a < 3; ++a)
-      if (!(outer.lo[a] <= inner.lo[a] && outer.hi[a] >= inner.hi[a])) return false;
-    return true;
-  };
   for (const CsgNode& node : tree.nodes) {
     for (std::size_t i = 0; i < node.operands.size(); ++i) {
       if (i > 0 && node.op != CsgOp::kUnion) continue;  // a narrower window than the node's
@@ -463,6 +479,11 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
         (leaf ? tree.leaf_cull : tree.node_cull)[index] = 0;
     }
   }
+}
+
+// The tree as a boolean formula of its leaves, and whether the one-interval walk
+// (csg/interval_crossing.h) serves it, with the leaves it cannot do without.
+void finish_formula(CsgTree& tree) {
   tree.formula = CsgFormula{};
   for (const CsgNode& node : tree.nodes) tree.formula.add(node.op, node.operands);
   tree.formula.finish(tree.leaves.size(), tree.leaf_flipped);
@@ -478,6 +499,17 @@ std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
       if (!tree.formula.inside(grow & ~(std::uint64_t{1} << i)))
         tree.required |= std::uint64_t{1} << i;
   }
+}
+
+}  // namespace
+
+std::shared_ptr<const CsgTree> finish_csg_tree(CsgTree tree) {
+  if (tree.nodes.empty()) throw std::invalid_argument("a CSG tree needs a root operation");
+  finish_leaves(tree);
+  finish_node_boxes(tree);
+  tree.depth = tree_depth(tree);
+  choose_culls(tree);
+  finish_formula(tree);
   auto out = std::make_shared<CsgTree>(std::move(tree));
   Object whole;  // the tree as an object of its own space
   whole.shape = CsgShape{out};

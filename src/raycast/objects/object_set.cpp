@@ -9,7 +9,6 @@ namespace raycast {
 
 void ObjectSet::build(std::span<const Object> objects) {
   std::vector<Aabb> boxes;
-  std::vector<Vec3> centres;
   bounded_.clear();
   unbounded_.clear();
   pairs_.clear();
@@ -25,7 +24,6 @@ void ObjectSet::build(std::span<const Object> objects) {
     if (b.is_empty()) continue;  // nothing to hit
     if (b.is_bounded()) {
       boxes.push_back(b);
-      centres.push_back(b.centre());
       bounded_.push_back(static_cast<std::uint32_t>(i));
       finite_bounds_.grow(b);
     } else {
@@ -76,11 +74,12 @@ void ObjectSet::build(std::span<const Object> objects) {
                           k < boxes.size() ? boxes[k] : Aabb{}, octant);
     return;
   }
-  // One object per leaf: its own box is the last test before its shape's (a leaf of four tested
-  // each object's shape on a hit of the leaf's box, and lost on bench/render_instructions.sh's scenes).
+  // One object per leaf: its own box is the last test before its shape's (a leaf of four tests
+  // each object's shape on a hit of the leaf's box, and is slower on the scenes of
+  // bench/render_instructions.sh).
   BvhBuildConfig config;
   config.max_leaf_size = 1;
-  bvh_ = build_bvh(boxes, centres, config);
+  bvh_ = build_bvh(boxes, config);
 }
 
 std::vector<DirectionLists::Ball> ObjectSet::list_balls(std::span<const Object> objects) const {

@@ -2,11 +2,12 @@
 // A set of objects with a BVH over the bounded ones (unbounded ones, planes and the like, are
 // tried on every ray): the one implementation of the nearest / any / all walks over objects,
 // used by the scene's top level and by instance prototypes. A set of few bounded objects is
-// walked as a flat list of their boxes instead (faster on the scenes of bench/render_instructions.sh),
-// without the tree's stack and node boxes: two double boxes per SIMD test (accel/box_pair.h,
-// intersect_slabs's test), or for the larger flat sets four float boxes per test (accel/box4.h,
-// conservative: the objects' own tests decide); a set of one bounded object tests its box alone.
-// Shadow rays walk a flat set by a ball around each object instead (any_along).
+// walked as a flat list of their boxes instead (faster on the scenes of
+// bench/render_instructions.sh), without the tree's stack and node boxes: two double boxes per SIMD
+// test (accel/box_pair.h, intersect_slabs's test), or for the larger flat sets four float boxes per
+// test (accel/box4.h, conservative: the objects' own tests decide); a set of one bounded object
+// tests its box alone. Shadow rays walk a flat set by a ball around each object instead
+// (any_along).
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -61,8 +62,8 @@ class ObjectSet {
 
   /// any()'s walk for shadow rays (e: ray.d's unit direction; requires is_valid(ray)): the same
   /// objects in the same order, a flat set's bounded ones culled by their balls
-  /// (objects/bounding_ball.h: often tighter than the boxes, and no per-ray set-up) instead of their
-  /// boxes; for the one-mesh set the mesh first, then its box (shadow rays start on the mesh,
+  /// (objects/bounding_ball.h: often tighter than the boxes, and no per-ray set-up) instead of
+  /// their boxes; for the one-mesh set the mesh first, then its box (shadow rays start on the mesh,
   /// inside its box: only the blocked ones pay the box).
   template <class F>
   bool any_along(const Ray& ray, const Vec3& e, F&& visit) const {
@@ -154,8 +155,9 @@ class ObjectSet {
   static constexpr std::size_t kBoxPairsFrom = 4;
   /// Flat sets of at least this many test four float boxes at a time (accel/box4.h) instead: its
   /// per-ray set-up (rounding the ray and the slack, about 110 instructions more than the pairs')
-  /// pays where it saves three pair tests or more (about 37 instructions each; on bench/render_instructions.sh's
-  /// scenes the pairs save 2.5-2.8 % on textured (4) and glass (6), cost 0.7 % on csg (12)).
+  /// pays where it saves three pair tests or more (about 37 instructions each; on
+  /// bench/render_instructions.sh's scenes the pairs save 2.5-2.8 % on textured (4) and glass (6),
+  /// cost 0.7 % on csg (12)).
   static constexpr std::size_t kFloatBoxesFrom = 11;
   /// Flat sets of at least this many bounded objects get direction lists (set_view): on
   /// bench/render_instructions.sh's scenes the camera's save 6.7 % on csg (12 objects), 1.2 %
