@@ -7,8 +7,8 @@
 #include "commands.h"
 #include "distributed/distributed.h"
 #include "distributed/launch.h"
-#include "load/loader.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast::cli {
 

@@ -5,9 +5,9 @@
 #include <string>
 
 #include "commands.h"
-#include "pov/import.h"
-#include "load/pov_loader.h"
 #include "io/scene_error.h"
+#include "load/pov_loader.h"
+#include "pov/import.h"
 
 namespace raycast::cli {
 

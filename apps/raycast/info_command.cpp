@@ -5,8 +5,8 @@
 #include <thread>
 
 #include "commands.h"
-#include "math/isa.h"
 #include "load/loader.h"
+#include "math/isa.h"
 
 namespace raycast::cli {
 

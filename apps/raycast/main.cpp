@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "commands.h"
-#include "load/did_you_mean.h"
 #include "io/scene_error.h"
+#include "load/did_you_mean.h"
 
 namespace {
 

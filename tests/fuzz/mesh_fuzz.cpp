@@ -13,8 +13,8 @@
 #include <string_view>
 
 #include "io/mesh_file.h"
-#include "load/loader.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

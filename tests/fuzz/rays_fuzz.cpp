@@ -8,8 +8,8 @@
 #include <string>
 
 #include "cast/cast.h"
-#include "load/loader.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const raycast::Scene scene = raycast::load_scene_text(

@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "io/mesh_file.h"
-#include "load/loader.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -12,8 +12,8 @@
 #include <fstream>
 #include <random>
 
-#include "mesh/mesh.h"
 #include "io/mesh_file.h"
+#include "mesh/mesh.h"
 
 namespace raycast {
 namespace {

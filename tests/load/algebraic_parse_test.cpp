@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "load/loader.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -137,15 +137,15 @@ TEST(Loader, BasicShapeValues_AreValidatedWithPositions) {
       "[0, 0, 0], [0, 0, 1]]}\n",
       2, 82, "triangle.normals[1] must be a non-zero vector");
   expect_error("objects:\n  - box: {min: [0, 0, 0], max: [1, 0, 1]}\n", 2, 32,
-               "box.max must be > box.min on every axis, got 0 <= 0 on y");
+               "box.max must be > min on every axis, got 0 <= 0 on y");
   expect_error("objects:\n  - disk: {radius: 1, inner_radius: 1}\n", 2, 37,
-               "disk.inner_radius must be < radius, got 1");
+               "disk.inner_radius must be in [0, radius), got 1");
   expect_error("objects:\n  - disk: {radius: 1, phi_max: 0}\n", 2, 32,
                "disk.phi_max must be in (0, 360], got 0");
   expect_error("objects:\n  - disk: {center: [0, 0, 0], normal: [0, 0, 1], radius: 1, height: 2}\n",
                2, 69, "disk.height cannot be combined with center and normal (use a transform)");
   expect_error("objects:\n  - parallelogram: {origin: [0, 0, 0], u: [1, 0, 0], v: [2, 0, 0]}\n", 2,
-               57, "parallelogram.u and parallelogram.v must not be parallel");
+               57, "parallelogram.v and u must be non-zero and not parallel");
   expect_error("objects:\n  - parallelogram: {origin: [0, 0, 0], u: [1, 0, 0], v: [0, 0, 0]}\n", 2,
                57, "parallelogram.v must be a non-zero vector");
 }

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "load/loader.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -11,9 +11,9 @@
 #include <set>
 #include <vector>
 
+#include "load/loader.h"
 #include "mesh/mesh.h"
 #include "mesh/procedural.h"
-#include "load/loader.h"
 #include "support/random.h"
 
 namespace raycast {

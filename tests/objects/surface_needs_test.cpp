@@ -7,8 +7,8 @@
 #include <string>
 #include <variant>
 
-#include "render/camera.h"
 #include "load/loader.h"
+#include "render/camera.h"
 
 namespace raycast {
 namespace {

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "../support/cli_runner.h"
-#include "render/renderer.h"
+#include "io/scene_error.h"
 #include "load/loader.h"
 #include "load/pov_loader.h"
-#include "io/scene_error.h"
+#include "render/renderer.h"
 
 namespace raycast {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "../support/cli_runner.h"
 #include "io/image.h"
-#include "render/renderer.h"
 #include "load/loader.h"
+#include "render/renderer.h"
 
 namespace raycast {
 namespace {

@@ -8,10 +8,10 @@
 #include <utility>
 #include <vector>
 
-#include "render/renderer.h"
+#include "io/scene_error.h"
 #include "load/demo_scene.h"
 #include "load/loader.h"
-#include "io/scene_error.h"
+#include "render/renderer.h"
 
 namespace raycast {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "io/image.h"
-#include "render/renderer.h"
 #include "load/demo_scene.h"
+#include "render/renderer.h"
 
 namespace raycast {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <stdexcept>
 
-#include "render/renderer.h"
 #include "load/demo_scene.h"
+#include "render/renderer.h"
 
 namespace raycast {
 namespace {

@@ -8,9 +8,9 @@
 #include <sstream>
 #include <string>
 
-#include "render/integrator.h"
-#include "objects/ball_list.h"
 #include "load/loader.h"
+#include "objects/ball_list.h"
+#include "render/integrator.h"
 
 namespace raycast {
 namespace {

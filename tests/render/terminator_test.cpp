@@ -12,8 +12,8 @@
 #include <string>
 
 #include "io/image.h"
-#include "render/renderer.h"
 #include "load/loader.h"
+#include "render/renderer.h"
 
 namespace raycast {
 namespace {

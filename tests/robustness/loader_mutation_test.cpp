@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "load/loader.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

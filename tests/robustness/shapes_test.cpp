@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "load/loader.h"
-#include "scene/scene.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 #include "load/shape_parsers.h"
+#include "scene/scene.h"
 
 namespace raycast {
 namespace {

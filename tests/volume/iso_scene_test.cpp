@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "../support/cli_runner.h"
+#include "io/scene_error.h"
 #include "load/frame_pattern.h"
 #include "load/loader.h"
-#include "io/scene_error.h"
 
 namespace raycast {
 namespace {

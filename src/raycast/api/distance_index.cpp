@@ -4,8 +4,8 @@
 #include <cmath>
 #include <variant>
 
-#include "geometry/distance.h"
 #include "api/impl.h"
+#include "geometry/distance.h"
 #include "scene/scene.h"
 
 namespace raycast::api {

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "raycast/api/scene.h"
-#include "objects/prototype.h"
-#include "scene/scene.h"
 #include "io/scene_error.h"
+#include "objects/prototype.h"
+#include "raycast/api/scene.h"
+#include "scene/scene.h"
 
 namespace raycast::api {
 

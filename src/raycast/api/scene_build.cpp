@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "io/mesh_file.h"
 #include "api/distance_index.h"
 #include "api/impl.h"
-#include "objects/csg_tree.h"
+#include "io/mesh_file.h"
 #include "load/loader.h"
 #include "load/shape_parsers.h"
+#include "objects/csg_tree.h"
 #include "volume/isosurface.h"
 #include "volume/splat.h"
 

@@ -2,8 +2,8 @@
 #include <stdexcept>
 
 #include "api/impl.h"
-#include "render/renderer.h"
 #include "io/scene_error.h"
+#include "render/renderer.h"
 
 namespace raycast::api {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/ray_batch.h"
 #include "io/scene_error.h"
+#include "scene/ray_batch.h"
 
 namespace raycast {
 

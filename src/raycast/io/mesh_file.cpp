@@ -10,8 +10,8 @@
 #include "io/stl_file.h"
 
 #ifdef RAYCAST_HAVE_ASSIMP
-#include "io/plugin_library.h"
 #include "io/assimp_plugin_abi.h"
+#include "io/plugin_library.h"
 #endif
 
 namespace raycast {

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "io/text_lines.h"
 #include "io/mapped_file.h"
+#include "io/text_lines.h"
 
 namespace raycast {
 

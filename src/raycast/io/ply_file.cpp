@@ -11,10 +11,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "io/progress.h"
-#include "io/ply.h"
-#include "io/text_lines.h"
 #include "io/mapped_file.h"
+#include "io/ply.h"
+#include "io/progress.h"
+#include "io/text_lines.h"
 
 namespace raycast {
 

@@ -8,8 +8,8 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "io/text_lines.h"
 #include "io/mapped_file.h"
+#include "io/text_lines.h"
 
 namespace raycast {
 

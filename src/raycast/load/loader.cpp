@@ -5,16 +5,17 @@
 #include <sstream>
 #include <vector>
 
-#include "pov/import.h"
-#include "objects/csg_tree.h"
+#include "geometry/shape_error.h"
+#include "io/scene_file.h"
 #include "load/pov_loader.h"
-#include "objects/prototype.h"
 #include "load/read_materials.h"
 #include "load/read_settings.h"
-#include "io/scene_file.h"
 #include "load/shape_parsers.h"
 #include "load/yaml_prescan.h"
 #include "load/yaml_reader.h"
+#include "objects/csg_tree.h"
+#include "objects/prototype.h"
+#include "pov/import.h"
 
 namespace raycast {
 
@@ -159,6 +160,11 @@ class Loader {
     Fields f(ctx_, node[key], key);
     try {
       obj.shape = shape_parsers().at(key)(f);
+    } catch (const ShapeParameterError& e) {
+      // At the parameter when the mapping spells it, else at the shape.
+      if (f.has(e.parameter()))
+        f.fail(e.parameter(), f.name(e.parameter()) + " " + e.requirement());
+      fail_at(ctx_, node[key], f.name(e.parameter()) + " " + e.requirement());
     } catch (const std::invalid_argument& e) {
       fail_at(ctx_, node[key], key + ": " + e.what());
     }

@@ -2,8 +2,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "math/expression.h"
 #include "load/shape_parsers.h"
+#include "math/expression.h"
 
 namespace raycast {
 

@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include "pov/import.h"
 #include "load/loader.h"
+#include "pov/import.h"
 
 namespace raycast {
 

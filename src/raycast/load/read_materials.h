@@ -3,9 +3,9 @@
 // textures, read at load so a missing image is an error at its position) and lights.
 #include <string>
 
+#include "load/yaml_reader.h"
 #include "scene/light.h"
 #include "scene/material.h"
-#include "load/yaml_reader.h"
 
 namespace raycast {
 

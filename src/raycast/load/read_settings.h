@@ -3,9 +3,9 @@
 // its mapping with positioned errors.
 #include <string>
 
-#include "scene/render_settings.h"
-#include "scene/material.h"
 #include "load/yaml_reader.h"
+#include "scene/material.h"
+#include "scene/render_settings.h"
 
 namespace raycast {
 

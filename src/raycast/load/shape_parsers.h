@@ -5,8 +5,8 @@
 #include <string>
 #include <type_traits>
 
-#include "objects/object.h"
 #include "load/yaml_reader.h"
+#include "objects/object.h"
 
 namespace raycast {
 

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <string>
 
-#include "load/loader.h"
 #include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "io/scene_error.h"
 #include "math/transform.h"
 #include "math/vec3.h"
-#include "io/scene_error.h"
 
 namespace raycast {
 

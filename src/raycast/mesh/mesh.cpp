@@ -19,9 +19,9 @@
 
 #include "accel/build_memory.h"
 #include "io/progress.h"
+#include "math/lane_array.h"
 #include "mesh/mesh_ray.h"
 #include "mesh/wide_kernels.h"
-#include "math/lane_array.h"
 
 namespace raycast {
 

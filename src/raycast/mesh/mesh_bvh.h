@@ -21,9 +21,9 @@ inline constexpr int kNodeWidth = 8;
 
 // Two node formats with the same child references, chosen per mesh by its size
 // (MeshBvhConfig::quantise_above: by default float nodes at every size, which trace faster than
-// quantised ones on the 1M and 10M spheres of bench/embree_table.sh). A child reference is an inner node's index, or (bit 31 set) a leaf: bits
-// 0-28 the first triangle group, bits 29-30 the group count minus 1. An unused slot has its bit
-// clear in `used` and reference 0.
+// quantised ones on the 1M and 10M spheres of bench/embree_table.sh). A child reference is an inner
+// node's index, or (bit 31 set) a leaf: bits 0-28 the first triangle group, bits 29-30 the group
+// count minus 1. An unused slot has its bit clear in `used` and reference 0.
 
 /// A node with up to 8 children, 256 bytes (four cache lines): the child boxes in float, one
 /// 64-byte line per axis holding [lo of the eight children | hi of the eight children] (the

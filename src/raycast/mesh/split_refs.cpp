@@ -125,8 +125,8 @@ void split_triangle_refs(std::span<const Vec3f> positions,
   };
   // A piece joins the heap only when its box is much larger than the triangle inside (long thin
   // or diagonal): a budget spent on the moderate waste of ordinary triangles loses on the forest
-  // mesh of bench/embree_table.sh. The heap's order is total (waste, then slot), so the pops do not depend on how
-  // it was filled.
+  // mesh of bench/embree_table.sh. The heap's order is total (waste, then slot), so the pops do not
+  // depend on how it was filled.
   std::vector<Piece> heap;
   auto consider = [&](std::uint32_t slot, double area) {
     const double box = half_area(refs[slot]);

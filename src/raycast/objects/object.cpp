@@ -20,8 +20,9 @@ static_assert(AllShapes<ShapeVariant>::value, "every alternative of ShapeVariant
 
 // std::visit over the shapes calls through a table of thunks that GCC 12 does not inline; the
 // shapes of most scenes (plane, sphere, box) are dispatched first by direct tests of the index
-// (fewer instructions on every scene of bench/render_instructions.sh), then the composites, whose queries and hits are a good
-// share of a CSG scene's (their tests cost the other shapes two compares).
+// (fewer instructions on every scene of bench/render_instructions.sh), then the composites, whose
+// queries and hits are a good share of a CSG scene's (their tests cost the other shapes two
+// compares).
 template <class F>
 decltype(auto) visit_shape(const ShapeVariant& v, F&& f) {
   if (const auto* s = std::get_if<Plane>(&v)) return f(*s);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
-#include "pov/parser.h"
 #include "io/scene_file.h"
+#include "pov/parser.h"
 
 namespace raycast::pov {
 

@@ -14,11 +14,11 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "math/lane_array.h"
 #include "render/antialias.h"
 #include "render/camera.h"
 #include "render/camera_packets.h"
 #include "render/integrator.h"
-#include "math/lane_array.h"
 
 namespace raycast {
 

@@ -6,9 +6,9 @@
 
 #include "math/float_error.h"
 #include "math/isa.h"
+#include "math/lane_array.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_packet16.h"
-#include "math/lane_array.h"
 
 namespace raycast {
 
