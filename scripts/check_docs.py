@@ -6,8 +6,9 @@ Pages checked: README.md, CHANGELOG.md and docs/*.md.
 Commands: each fenced ```sh block is run with `bash -e` in a fresh scratch folder that holds
 symlinks `scenes`, `examples` and `python` to the repository's folders and `build/release` to the
 release build folder; `build/release` is first on PATH (so `raycast ...` and
-`build/release/raycast ...` both work) and PYTHONPATH is `build/release/python`. A block whose
-preceding line is `<!-- not run: REASON -->` is skipped; REASON must say why (set-up, a long
+`build/release/raycast ...` both work), followed by /usr/local/bin, /usr/bin and /bin (so
+`python3` is Debian's, for which the module is built), and PYTHONPATH is `build/release/python`.
+A block whose preceding line is `<!-- not run: REASON -->` is skipped; REASON must say why (set-up, a long
 benchmark, a peer that CI does not install).
 
 Links: every Markdown link or image whose target is not a URL or a bare `#anchor` must name an
@@ -120,7 +121,10 @@ def run_block(block, root, build_dir):
     try:
         env = dict(os.environ)
         release = os.path.join(scratch, "build", "release")
-        env["PATH"] = release + os.pathsep + env.get("PATH", "/usr/bin:/bin")
+        # A Debian user's PATH: the build first, then the system's interpreters (the Python
+        # module is built for /usr/bin/python3), then whatever else this environment adds.
+        env["PATH"] = os.pathsep.join([release, "/usr/local/bin", "/usr/bin", "/bin",
+                                       env.get("PATH", "")])
         env["PYTHONPATH"] = os.path.join(release, "python")
         env["PYTHONDONTWRITEBYTECODE"] = "1"
         try:
