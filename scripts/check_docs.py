@@ -3,8 +3,8 @@
 
 Pages checked: README.md, CHANGELOG.md and docs/*.md.
 
-Commands: each fenced ```sh block is run with `bash -e` in a fresh scratch folder that holds
-symlinks `scenes`, `examples` and `python` to the repository's folders and `build/release` to the
+Commands: each fenced ```sh block is run with `bash -e`. A page's blocks run in order, in one
+fresh scratch folder per page (so a tutorial's steps build on each other), which holds symlinks `scenes`, `examples` and `python` to the repository's folders and `build/release` to the
 release build folder; `build/release` is first on PATH (so `raycast ...` and
 `build/release/raycast ...` both work), followed by /usr/local/bin, /usr/bin and /bin (so
 `python3` is Debian's, for which the module is built), and PYTHONPATH is `build/release/python`.
@@ -115,8 +115,10 @@ def make_scratch(root, build_dir):
     return scratch
 
 
-def run_block(block, root, build_dir):
-    """Runs one block; returns None when it passes, else a report naming the page and line."""
+def run_page(blocks, root, build_dir):
+    """Runs one page's blocks in order in one scratch folder; returns the report of the first
+    block that fails (naming the page and the line), or None when all pass. Later blocks are not
+    run after a failure: they may build on it."""
     scratch = make_scratch(root, build_dir)
     try:
         env = dict(os.environ)
@@ -127,17 +129,18 @@ def run_block(block, root, build_dir):
                                        env.get("PATH", "")])
         env["PYTHONPATH"] = os.path.join(release, "python")
         env["PYTHONDONTWRITEBYTECODE"] = "1"
-        try:
-            done = subprocess.run(["bash", "-e", "-c", block.text], cwd=scratch, env=env,
-                                  stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                  stderr=subprocess.STDOUT, timeout=BLOCK_TIMEOUT_S)
-        except subprocess.TimeoutExpired as timeout:
-            output = (timeout.output or b"").decode("utf-8", "replace")
-            return f"{block.page}:{block.line}: timed out after {BLOCK_TIMEOUT_S} s\n{output}"
-        if done.returncode != 0:
-            output = done.stdout.decode("utf-8", "replace")
-            return (f"{block.page}:{block.line}: the block exited with code {done.returncode}\n"
-                    f"--- block ---\n{block.text}--- output ---\n{output}")
+        for block in blocks:
+            try:
+                done = subprocess.run(["bash", "-e", "-c", block.text], cwd=scratch, env=env,
+                                      stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                      stderr=subprocess.STDOUT, timeout=BLOCK_TIMEOUT_S)
+            except subprocess.TimeoutExpired as timeout:
+                output = (timeout.output or b"").decode("utf-8", "replace")
+                return f"{block.page}:{block.line}: timed out after {BLOCK_TIMEOUT_S} s\n{output}"
+            if done.returncode != 0:
+                output = done.stdout.decode("utf-8", "replace")
+                return (f"{block.page}:{block.line}: the block exited with code "
+                        f"{done.returncode}\n--- block ---\n{block.text}--- output ---\n{output}")
         return None
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
@@ -153,10 +156,13 @@ def check(root, build_dir, run_commands, jobs, quiet=False):
         problems += trouble
     to_run = [b for b in blocks if b.skip_reason is None]
     skipped = len(blocks) - len(to_run)
+    by_page = {}
+    for block in to_run:
+        by_page.setdefault(block.page, []).append(block)
     passed = 0
     if run_commands:
         with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-            for report in pool.map(lambda b: run_block(b, root, build_dir), to_run):
+            for report in pool.map(lambda page: run_page(by_page[page], root, build_dir), by_page):
                 if report is None:
                     passed += 1
                 else:
@@ -165,9 +171,10 @@ def check(root, build_dir, run_commands, jobs, quiet=False):
         return problems
     for problem in problems:
         print(problem, file=sys.stderr)
-    ran = f"{len(to_run)} sh blocks run" if run_commands else "commands not run"
-    print(f"docs: {passed} passed, {len(problems)} failed, {skipped} skipped ({ran}; a failure is "
-          f"a block or a link)")
+    ran = f"{len(to_run)} sh blocks on {len(by_page)} pages" if run_commands else "commands not run"
+    print(f"docs: {passed} passed, {len(problems)} failed, {skipped} skipped ({ran}; a pass is a "
+          f"page whose blocks all ran, a failure a page's failing block or a broken link; skipped "
+          f"counts blocks marked not run)")
     return problems
 
 
@@ -186,7 +193,9 @@ def self_test():
                     "<!-- not run: needs a peer -->\n```sh\nexit 3\n```\n"
                     "<!-- not run: -->\n```sh\ntrue\n```\n")
         with open(os.path.join(root, "README.md"), "w", encoding="utf-8") as f:
-            f.write("[docs](docs/page.md)\n```sh\ncommand -v bash\n```\n")
+            # Blocks of one page share its scratch folder, in order.
+            f.write("[docs](docs/page.md)\n```sh\necho made > made.txt\n```\n"
+                    "```sh\ngrep -q made made.txt\n```\n")
         problems = check(root, build, True, 2, quiet=True)
         expected = ["docs/page.md:2: link to a missing file: missing.md",
                     "docs/page.md:6: the block exited with code 1",
