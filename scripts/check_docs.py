@@ -11,8 +11,9 @@ release build folder; `build/release` is first on PATH (so `raycast ...` and
 A block whose preceding line is `<!-- not run: REASON -->` is skipped; REASON must say why (set-up, a long
 benchmark, a peer that CI does not install).
 
-Links: every Markdown link or image whose target is not a URL or a bare `#anchor` must name an
-existing file or folder, relative to the page.
+Links: every Markdown link or image whose target is not a URL must name an existing file or
+folder, relative to the page; an `#anchor` into a Markdown page (or the page itself) must be one
+of its headings, spelt as GitHub spells heading anchors.
 
 Exit code 0 when everything passes, 1 when something fails (each failure names the page, the
 line and what went wrong), 2 on bad usage.
@@ -91,17 +92,38 @@ def scan(root, page):
     return blocks, problems
 
 
+def heading_anchor(heading):
+    """GitHub's anchor of a heading: lower case, punctuation other than '-' and '_' dropped, each
+    space a hyphen."""
+    text = re.sub(r"[^\w\- ]", "", heading.strip().lower())
+    return text.replace(" ", "-")
+
+
+def anchors(root, page):
+    """The anchors of a Markdown page's headings (outside code fences)."""
+    found, fenced = set(), False
+    with open(os.path.join(root, page), encoding="utf-8") as f:
+        for line in f:
+            if FENCE.match(line):
+                fenced = not fenced
+            elif not fenced and re.match(r"^#{1,6} ", line):
+                found.add(heading_anchor(line.lstrip("#")))
+    return found
+
+
 def broken_links(root, page, number, line):
     """The problems with the relative links on one line of prose (inline code is not prose)."""
     problems = []
     for match in LINK.finditer(INLINE_CODE.sub("", line)):
         target = match.group(1)
-        if re.match(r"^[a-z][a-z0-9+.-]*:", target) or target.startswith("#"):
+        if re.match(r"^[a-z][a-z0-9+.-]*:", target):
             continue
-        path = target.split("#", 1)[0]
-        resolved = os.path.normpath(os.path.join(root, os.path.dirname(page), path))
-        if not os.path.exists(resolved):
+        path, _, anchor = target.partition("#")
+        linked = os.path.normpath(os.path.join(os.path.dirname(page), path)) if path else page
+        if not os.path.exists(os.path.join(root, linked)):
             problems.append(f"{page}:{number}: link to a missing file: {target}")
+        elif anchor and linked.endswith(".md") and anchor not in anchors(root, linked):
+            problems.append(f"{page}:{number}: link to a missing heading: {target}")
     return problems
 
 
@@ -194,12 +216,14 @@ def self_test():
                     "<!-- not run: -->\n```sh\ntrue\n```\n")
         with open(os.path.join(root, "README.md"), "w", encoding="utf-8") as f:
             # Blocks of one page share its scratch folder, in order.
-            f.write("[docs](docs/page.md)\n```sh\necho made > made.txt\n```\n"
+            f.write("# A `b`, c\n[docs](docs/page.md#page) [no](docs/page.md#nope) [me](#a-b-c)\n"
+                    "```sh\necho made > made.txt\n```\n"
                     "```sh\ngrep -q made made.txt\n```\n")
         problems = check(root, build, True, 2, quiet=True)
         expected = ["docs/page.md:2: link to a missing file: missing.md",
                     "docs/page.md:6: the block exited with code 1",
-                    "docs/page.md:15: `<!-- not run: -->` needs a reason"]
+                    "docs/page.md:15: `<!-- not run: -->` needs a reason",
+                    "README.md:2: link to a missing heading: docs/page.md#nope"]
         unmet = [e for e in expected if not any(p.startswith(e) for p in problems)]
         if unmet or len(problems) != len(expected):
             print("self-test FAILED: expected", expected, "got", problems, file=sys.stderr)
