@@ -3,17 +3,19 @@
 
 Pages checked: README.md, CHANGELOG.md and docs/*.md.
 
-Commands: each fenced ```sh block is run with `bash -e`. A page's blocks run in order, in one
-fresh scratch folder per page (so a tutorial's steps build on each other), which holds symlinks `scenes`, `examples` and `python` to the repository's folders and `build/release` to the
-release build folder; `build/release` is first on PATH (so `raycast ...` and
-`build/release/raycast ...` both work), followed by /usr/local/bin, /usr/bin and /bin (so
-`python3` is Debian's, for which the module is built), and PYTHONPATH is `build/release/python`.
-A block whose preceding line is `<!-- not run: REASON -->` is skipped; REASON must say why (set-up, a long
-benchmark, a peer that CI does not install).
+Commands: each fenced ```sh block is run with `bash -e`. A page's blocks run in order in one fresh
+scratch folder per page (so a tutorial's steps build on each other). The folder holds symlinks
+`scenes`, `examples` and `python` to the repository's folders and `build/release` to the release
+build folder; `build/release` is first on PATH (so `raycast ...` and `build/release/raycast ...`
+both work), followed by /usr/local/bin, /usr/bin and /bin (so `python3` is Debian's, for which the
+module is built), and PYTHONPATH is `build/release/python`. A block whose preceding line is
+`<!-- not run: REASON -->` is skipped; REASON must say why (set-up, a long benchmark, a peer that
+CI does not install). Each block has BLOCK_TIMEOUT_S seconds: commands in the docs must be quick.
 
 Links: every Markdown link or image whose target is not a URL must name an existing file or
 folder, relative to the page; an `#anchor` into a Markdown page (or the page itself) must be one
-of its headings, spelt as GitHub spells heading anchors.
+of its headings, spelt as GitHub spells heading anchors. The index, docs/README.md, must link every
+page of docs/.
 
 Exit code 0 when everything passes, 1 when something fails (each failure names the page, the
 line and what went wrong), 2 on bad usage.
@@ -48,7 +50,7 @@ class Block:
 
 def pages(root):
     """The Markdown pages the check covers, as paths relative to root, in a stable order."""
-    found = [name for name in ("README.md", "CHANGELOG.md") if os.path.isfile(os.path.join(root, name))]
+    found = [n for n in ("README.md", "CHANGELOG.md") if os.path.isfile(os.path.join(root, n))]
     docs = os.path.join(root, "docs")
     if os.path.isdir(docs):
         found += sorted("docs/" + n for n in os.listdir(docs) if n.endswith(".md"))
@@ -127,6 +129,18 @@ def broken_links(root, page, number, line):
     return problems
 
 
+def unindexed_pages(root):
+    """The problems of the index docs/README.md: each page of docs/ that it does not link."""
+    index = os.path.join(root, "docs", "README.md")
+    if not os.path.isfile(index):
+        return []
+    with open(index, encoding="utf-8") as f:
+        linked = {os.path.normpath(m.group(1).partition("#")[0]) for m in LINK.finditer(f.read())}
+    return [f"docs/README.md: the index does not link docs/{name}"
+            for name in sorted(os.listdir(os.path.join(root, "docs")))
+            if name.endswith(".md") and name != "README.md" and name not in linked]
+
+
 def make_scratch(root, build_dir):
     """A fresh folder holding the symlinks a documented command may use."""
     scratch = tempfile.mkdtemp(prefix="raycast-docs-")
@@ -171,7 +185,7 @@ def run_page(blocks, root, build_dir):
 def check(root, build_dir, run_commands, jobs, quiet=False):
     """Checks every page; unless quiet, prints each failure and a closing count. Returns the
     failures."""
-    blocks, problems = [], []
+    blocks, problems = [], unindexed_pages(root)
     for page in pages(root):
         found, trouble = scan(root, page)
         blocks += found
@@ -214,6 +228,8 @@ def self_test():
                     "```sh\ntrue\nfalse\necho unreachable\n```\n"
                     "<!-- not run: needs a peer -->\n```sh\nexit 3\n```\n"
                     "<!-- not run: -->\n```sh\ntrue\n```\n")
+        with open(os.path.join(root, "docs", "README.md"), "w", encoding="utf-8") as f:
+            f.write("# Index\n[README](../README.md)\n")
         with open(os.path.join(root, "README.md"), "w", encoding="utf-8") as f:
             # Blocks of one page share its scratch folder, in order.
             f.write("# A `b`, c\n[docs](docs/page.md#page) [no](docs/page.md#nope) [me](#a-b-c)\n"
@@ -223,7 +239,8 @@ def self_test():
         expected = ["docs/page.md:2: link to a missing file: missing.md",
                     "docs/page.md:6: the block exited with code 1",
                     "docs/page.md:15: `<!-- not run: -->` needs a reason",
-                    "README.md:2: link to a missing heading: docs/page.md#nope"]
+                    "README.md:2: link to a missing heading: docs/page.md#nope",
+                    "docs/README.md: the index does not link docs/page.md"]
         unmet = [e for e in expected if not any(p.startswith(e) for p in problems)]
         if unmet or len(problems) != len(expected):
             print("self-test FAILED: expected", expected, "got", problems, file=sys.stderr)
