@@ -255,9 +255,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     parser.add_argument("--root", default=here, help="the repository (default: this script's)")
-    parser.add_argument("--build-dir", help="the release build folder (default: ROOT/build/release)")
+    parser.add_argument("--build-dir", help="the release build (default: ROOT/build/release)")
     parser.add_argument("--links-only", action="store_true", help="check links, run nothing")
-    parser.add_argument("--jobs", type=int, default=2, help="blocks run at once (default 2)")
+    parser.add_argument("--jobs", type=int, default=2, help="pages run at once (default 2)")
     parser.add_argument("--self-test", action="store_true", help="check the checker itself")
     args = parser.parse_args()
     if args.self_test:
@@ -265,7 +265,8 @@ def main():
     root = os.path.abspath(args.root)
     build_dir = os.path.abspath(args.build_dir or os.path.join(root, "build", "release"))
     if not args.links_only and not os.path.isdir(build_dir):
-        print(f"check_docs: no build folder {build_dir} (build the release preset)", file=sys.stderr)
+        print(f"check_docs: no build folder {build_dir} (build the release preset)",
+              file=sys.stderr)
         return 2
     return 1 if check(root, build_dir, not args.links_only, max(1, args.jobs)) else 0
 
