@@ -5,8 +5,8 @@ Pages checked: README.md, CHANGELOG.md and docs/*.md.
 
 Commands: each fenced ```sh block is run with `bash -e`. A page's blocks run in order in one fresh
 scratch folder per page (so a tutorial's steps build on each other). The folder holds symlinks
-`scenes`, `examples` and `python` to the repository's folders and `build/release` to the release
-build folder; `build/release` is first on PATH (so `raycast ...` and `build/release/raycast ...`
+`scenes`, `examples`, `python` and `tests` to the repository's folders and `build/release` to the
+release build folder; `build/release` is first on PATH (so `raycast ...` and `build/release/raycast ...`
 both work), followed by /usr/local/bin, /usr/bin and /bin (so `python3` is Debian's, for which the
 module is built), and PYTHONPATH is `build/release/python`. A block whose preceding line is
 `<!-- not run: REASON -->` is skipped; REASON must say why (set-up, a long benchmark, a peer that
@@ -36,7 +36,7 @@ NOT_RUN = re.compile(r"^\s*<!--\s*not run:(.*?)-->\s*$")
 LINK = re.compile(r"!?\[[^\]]*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
 INLINE_CODE = re.compile(r"`+[^`]*`+")
 # The repository folders a command in the docs may name, relative to its scratch folder.
-LINKED_FOLDERS = ("scenes", "examples", "python")
+LINKED_FOLDERS = ("scenes", "examples", "python", "tests")
 BLOCK_TIMEOUT_S = 120
 
 
