@@ -36,8 +36,8 @@ ObjectId add_triangles_any(Scene& scene, const py::handle& vertices, const py::h
                               " is out of range");
   }
   const auto v = py::reinterpret_borrow<py::array>(vertices);
-  if (v.dtype().is(py::dtype::of<float>())) return add_triangles<float>(scene, v, tri);
-  if (v.dtype().is(py::dtype::of<double>())) return add_triangles<double>(scene, v, tri);
+  if (py::isinstance<py::array_t<float>>(v)) return add_triangles<float>(scene, v, tri);
+  if (py::isinstance<py::array_t<double>>(v)) return add_triangles<double>(scene, v, tri);
   throw py::value_error("vertices must be a numpy array shaped (n, 3) of float32 or float64, got " +
                         py::str(v.dtype()).cast<std::string>());
 }

@@ -29,8 +29,8 @@ py::array as_array(const py::handle& h, const char* what, const char* expected) 
 RayView ray_view(const py::handle& h, const char* what) {
   const char* expected = "shaped (..., 6) of float32 or float64 ([ox, oy, oz, dx, dy, dz] per ray)";
   py::array a = as_array(h, what, expected);
-  const bool f32 = a.dtype().is(py::dtype::of<float>());
-  const bool f64 = a.dtype().is(py::dtype::of<double>());
+  const bool f32 = py::isinstance<py::array_t<float>>(a);
+  const bool f64 = py::isinstance<py::array_t<double>>(a);
   if ((!f32 && !f64) || a.ndim() < 1 || a.shape(a.ndim() - 1) != 6)
     throw py::value_error(std::string(what) + " must be a numpy array " + expected + ", got " +
                           describe(a));
@@ -65,7 +65,7 @@ namespace raycast::python {
 PointView point_view(const py::handle& h, const char* what) {
   const char* expected = "shaped (..., 3) of float32 or float64 ([x, y, z] per point)";
   py::array a = as_array(h, what, expected);
-  const bool real = a.dtype().is(py::dtype::of<float>()) || a.dtype().is(py::dtype::of<double>());
+  const bool real = py::isinstance<py::array_t<float>>(a) || py::isinstance<py::array_t<double>>(a);
   if (!real || a.ndim() < 1 || a.shape(a.ndim() - 1) != 3)
     throw py::value_error(std::string(what) + " must be a numpy array " + expected + ", got " +
                           describe(a));
