@@ -58,8 +58,8 @@ def _scene(kind, token, payload):
         return scene
 
 
-def _run_block(block, payload, *, kind, token, method, key, options):
-    answer = getattr(_scene(kind, token, payload), method)(block, **options)
+def _run_block(block, payload, *, kind, scene_token, method, key, options):
+    answer = getattr(_scene(kind, scene_token, payload), method)(block, **options)
     if isinstance(answer, dict):
         answer = answer[key]
     return np.asarray(answer)
@@ -89,7 +89,7 @@ def query(scene, array, method, key=None, dtype=None, **options):
     lead = array.ndim - 1
     chunks = array.chunks[:-1] + tuple((n,) for n in tail)
     meta = np.empty((0,) * (lead + len(tail)), dtype)
-    kwargs = dict(kind=source.kind, token=source.token, method=method, key=key,
+    kwargs = dict(kind=source.kind, scene_token=source.token, method=method, key=key,
                   options=options, dtype=dtype, chunks=chunks, meta=meta)
     if not tail:
         kwargs["drop_axis"] = lead
