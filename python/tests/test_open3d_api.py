@@ -108,6 +108,7 @@ def test_no_commit_step_and_rebuild_after_adding():
     lambda v, t: (FakeLegacyMesh(v, t),),
     lambda v, t: (FakeTensor(v), FakeTensor(t)),
     lambda v, t: (v.tolist(), t.astype(np.int64)),
+    lambda v, t: (v.astype(int).tolist(), t.tolist()),
     lambda v, t: (memoryview(np.ascontiguousarray(v)), t.astype(np.int32)),
 ])
 def test_add_triangles_accepts_meshes_tensors_and_array_likes(make):
@@ -253,6 +254,11 @@ def test_bad_inputs_name_what_was_expected():
         scene.cast_rays(np.zeros((2, 5), np.float32))
     with pytest.raises(TypeError, match="rays"):
         scene.cast_rays(None)
+    with pytest.raises(TypeError, match="rays"):
+        scene.cast_rays([[0, 0, 1], [0]])
+    with pytest.raises(ValueError, match="int64 array"):
+        scene.cast_rays(np.zeros((1, 6), np.int64))  # an integer array is not converted
+    assert scene.cast_rays([[0.5, 0.25, 1, 0, 0, -1]])["t_hit"][0] == 1.0  # a list of numbers
     with pytest.raises(ValueError, match=r"\(\.\.\., 3\)"):
         scene.compute_distance(np.zeros((2, 4), np.float32))
     with pytest.raises(ValueError, match="nsamples"):

@@ -4,9 +4,10 @@ and meshes in Open3D's tensor and legacy forms or anything with vertices and fac
 import numpy as np
 
 
-def as_numpy(value, what, expected):
+def as_numpy(value, what, expected, real=False):
     """`value` as a numpy array, a view where the source allows. Raises TypeError naming `what`
-    and the `expected` shape and dtype for anything that is not array-like."""
+    and the `expected` shape and dtype for anything that is not array-like. With `real`, a
+    Python list or tuple of integers becomes float64 (as written coordinates are meant)."""
     if isinstance(value, np.ndarray):
         return value
     numpy_method = getattr(value, "numpy", None)
@@ -26,6 +27,8 @@ def as_numpy(value, what, expected):
     if array.dtype == object:
         raise TypeError(f"{what} must be an array {expected}, got {type(value).__name__} that "
                         "numpy reads as objects")
+    if real and isinstance(value, (list, tuple)) and array.dtype.kind in "iub":
+        array = array.astype(np.float64)
     return array
 
 
@@ -37,12 +40,12 @@ TRIANGLES = "shaped (m, 3) of integer vertex indices"
 
 def rays_array(value):
     """Rays as a numpy array; the engine checks their shape and dtype."""
-    return as_numpy(value, "rays", RAYS)
+    return as_numpy(value, "rays", RAYS, real=True)
 
 
 def points_array(value):
     """Query points as a numpy array; the engine checks their shape and dtype."""
-    return as_numpy(value, "query_points", POINTS)
+    return as_numpy(value, "query_points", POINTS, real=True)
 
 
 def _attribute(owner, *names):
@@ -77,5 +80,5 @@ def mesh_arrays(mesh):
                         "triangle indices (open3d.t.geometry.TriangleMesh, "
                         "open3d.geometry.TriangleMesh or an object with vertices and faces), "
                         f"got {type(mesh).__name__}")
-    return (as_numpy(vertices, "mesh vertices", VERTICES),
+    return (as_numpy(vertices, "mesh vertices", VERTICES, real=True),
             as_numpy(triangles, "mesh triangles", TRIANGLES))

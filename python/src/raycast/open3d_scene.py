@@ -39,7 +39,7 @@ class RaycastingScene:
         if triangle_indices is None:
             vertices, triangles = mesh_arrays(vertex_positions)
         else:
-            vertices = as_numpy(vertex_positions, "vertex_positions", VERTICES)
+            vertices = as_numpy(vertex_positions, "vertex_positions", VERTICES, real=True)
             triangles = as_numpy(triangle_indices, "triangle_indices", TRIANGLES)
         if self._engine.committed:
             self._rebuild()
