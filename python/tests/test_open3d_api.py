@@ -23,6 +23,29 @@ class FakeTensor:
         return self._a
 
 
+class DLPackOnly:
+    """An array seen only through the DLPack protocol."""
+
+    def __init__(self, a):
+        self._a = np.ascontiguousarray(a)
+
+    def __dlpack__(self, stream=None):
+        return self._a.__dlpack__()
+
+    def __dlpack_device__(self):
+        return self._a.__dlpack_device__()
+
+
+class ArrayInterfaceOnly:
+    """An array seen only through __array__."""
+
+    def __init__(self, a):
+        self._a = np.asarray(a)
+
+    def __array__(self, dtype=None):
+        return self._a if dtype is None else self._a.astype(dtype)
+
+
 class FakeTensorMesh:
     """Open3D's t.geometry.TriangleMesh shape: vertex.positions, triangle.indices."""
 
@@ -109,6 +132,8 @@ def test_no_commit_step_and_rebuild_after_adding():
     lambda v, t: (FakeTensor(v), FakeTensor(t)),
     lambda v, t: (v.tolist(), t.astype(np.int64)),
     lambda v, t: (v.astype(int).tolist(), t.tolist()),
+    lambda v, t: (DLPackOnly(v), DLPackOnly(t)),
+    lambda v, t: (ArrayInterfaceOnly(v), ArrayInterfaceOnly(t)),
     lambda v, t: (memoryview(np.ascontiguousarray(v)), t.astype(np.int32)),
 ])
 def test_add_triangles_accepts_meshes_tensors_and_array_likes(make):
@@ -118,6 +143,8 @@ def test_add_triangles_accepts_meshes_tensors_and_array_likes(make):
     rays = np.array([[0.5, 0.5, -1, 0, 0, 1], [0.5, 0.5, 0.5, 0, 0, 1], [10, 10, 10, 1, 0, 0]],
                     np.float32)
     np.testing.assert_array_equal(scene.count_intersections(FakeTensor(rays)).numpy(), [2, 1, 0])
+    np.testing.assert_array_equal(scene.count_intersections(DLPackOnly(rays)), [2, 1, 0])
+    np.testing.assert_array_equal(scene.count_intersections(ArrayInterfaceOnly(rays)), [2, 1, 0])
 
 
 def test_occlusions_respect_tnear_and_tfar():
