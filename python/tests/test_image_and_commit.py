@@ -1,11 +1,14 @@
 """raycast.Scene's optional, idempotent commit and the rendered raycast.Image."""
+import io
 import os
 import struct
 import zlib
 
 import numpy as np
+import pytest
 
 import raycast
+from raycast.progress import RenderProgress
 from conftest import SOURCE_DIR
 
 
@@ -57,3 +60,27 @@ def test_image_encodes_linear_light_as_srgb():
     image = raycast.Image(np.array([[[0.0, 0.5, 1.0], [2.0, -1.0, 0.0031308]]]))
     np.testing.assert_array_equal(image.to_srgb8(), [[[0, 188, 255], [255, 0, 10]]])
     assert image[0, 0]._repr_png_() is None  # a pixel is not an image
+
+
+def test_render_with_progress_equals_the_whole_render():
+    scene = raycast.Scene.load(os.path.join(SOURCE_DIR, "scenes", "demo.yaml"))
+    whole = scene.render(width=64, height=50, samples=3, progress=False)
+    banded = scene.render(width=64, height=50, samples=3, progress=True)  # bands of 16 rows
+    np.testing.assert_array_equal(banded, whole)
+    with pytest.raises(TypeError, match="progress"):
+        scene.render(width=8, height=8, progress="yes")
+    with pytest.raises(ValueError, match="larger than"):
+        scene.render(width=10**6, height=10**6, progress=True)
+
+
+def test_progress_bar_waits_for_its_delay_and_ends_the_line():
+    out = io.StringIO()
+    bar = RenderProgress(100, delay=3600.0, stream=out)
+    bar(16)
+    assert out.getvalue() == ""  # a quick render shows nothing
+    bar(100)
+    assert out.getvalue().startswith("\rrendering |" + "#" * 30 + "| 100/100 rows")
+    assert out.getvalue().endswith("\n")
+    out = io.StringIO()
+    RenderProgress(64, delay=0.0, stream=out)(16)
+    assert "|" + "#" * 7 + "." * 23 + "| 16/64 rows" in out.getvalue()
