@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "pov_options.h"
 #include "distributed/distributed.h"
 #include "distributed/launch.h"
 #include "io/image.h"
@@ -103,6 +104,7 @@ Action add_render_command(CLI::App& app) {
                       "(neighbour), 2 (subdivide) or variance (overrides the scene and --spp)");
   auto* threads =
       cmd->add_option("--threads", opt->threads, "Worker threads (default and 0: all cores)");
+  add_pov_options(cmd);
   cmd->add_option("--integrator", opt->integrator,
                   "whitted, raycast, depth, normal or id (overrides the scene)");
   cmd->add_option("--aov", opt->aovs,

@@ -94,10 +94,13 @@ class Writer {
       line({}, "materials:");
       for (const auto& [name, m] : material_order_) line(m.second, "  " + name + ": " + m.first);
     }
-    if (!s_.lights.empty()) {
-      line({}, "lights:");
-      for (const Light& l : s_.lights) light(l);
-    }
+    bool any_light = false;
+    for (const Node& n : s_.objects)
+      if (n.kind == Node::LightSource) {
+        if (!any_light) line({}, "lights:");
+        any_light = true;
+        light(*n.light);
+      }
     out_.insert(out_.end(), object_lines.begin(), object_lines.end());
     pos_.insert(pos_.end(), object_pos.begin(), object_pos.end());
     YamlScene y;
@@ -292,6 +295,7 @@ class Writer {
   // One object at `indent` list depth. `solid`: it is a CSG operand (POV-Ray's union becomes
   // raycast's solid union there, and a group elsewhere, keeping its inner surfaces).
   void object(const Node& n, int indent, bool solid, const Texture* inherited) {
+    if (n.kind == Node::LightSource) return;  // written under lights:
     const std::string pad(static_cast<std::size_t>(2 * indent), ' ');
     const std::string more(static_cast<std::size_t>(2 * indent + 2), ' ');
     std::ostringstream o;
@@ -399,6 +403,7 @@ class Writer {
         o << "}";
         break;
       }
+      case Node::LightSource:
       case Node::Union:
       case Node::Merge:
       case Node::Intersection:
