@@ -130,9 +130,9 @@ Value Interpreter::builtin(const Token& t) {
   if (w == "now") return Value::number(0);
   expect_symbol("(", ("after " + w).c_str());
   if (w == "defined") {
-    if (tok().kind != Token::Word) unexpected("a name in defined( )");
-    const bool d = find_symbol(tok().text) != nullptr;
-    next();
+    const Token nt = raw_name();
+    if (nt.kind != Token::Word) fail_at(nt.pos, "expected a name in defined( ), got " + describe(nt));
+    const bool d = find_symbol(nt.text) != nullptr;
     expect_symbol(")", "to close defined(");
     return Value::number(d);
   }

@@ -29,6 +29,14 @@ Value widen(const Value& a, int dims, bool colour) {
 
 }  // namespace
 
+double Interpreter::number_in_vector(const char* what) {
+  const Pos at = tok().pos;
+  const Value v = sub_expression(1);
+  if (v.kind != Value::Float)
+    fail_at(at, std::string("expected a float for ") + what + ", got " + kind_name(v));
+  return v.v[0];
+}
+
 double Interpreter::number(const char* what) {
   const Pos at = tok().pos;
   const Value v = expression();
@@ -244,9 +252,16 @@ Value Interpreter::vector_literal(const Pos& at) {
     if (r.dims == 5) fail_at(cp, "a vector has at most 5 components");
     r.v[static_cast<std::size_t>(r.dims++)] = c.v[0];
     if (accept_symbol(",")) continue;
-    if (!is_symbol(">")) unexpected("',' or '>' in the vector");
-    next();
-    break;
+    if (is_symbol(">")) {
+      next();
+      break;
+    }
+    // POV-Ray reads components separated by spaces alone (< -1 0 0 >) where unambiguous.
+    const Token& n = tok();
+    if (n.kind == Token::Number || n.kind == Token::Word || pov::is_symbol(n, "(") ||
+        pov::is_symbol(n, "-") || pov::is_symbol(n, "+"))
+      continue;
+    unexpected("',' or '>' in the vector");
   }
   if (r.dims < 2) {
     // POV-Ray reads <a> as the float a.
@@ -348,8 +363,8 @@ Value Interpreter::postfix(Value v) {
       } else if (k == 6) {
         v = Value::number(v.v[0] + v.v[1] / 256.0);
       } else {
-        if (k >= v.dims) fail_at(at, "the vector has no component '." + c + "'");
-        v = Value::number(v.v[static_cast<std::size_t>(k)]);
+        // A shorter vector reads 0 past its end (POV-Ray keeps every vector at 5 components).
+        v = Value::number(k < v.dims ? v.v[static_cast<std::size_t>(k)] : 0);
       }
     } else if (pov::is_symbol(t, "[") && v.kind == Value::Array) {
       const Pos at = t.pos;

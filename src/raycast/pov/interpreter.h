@@ -62,11 +62,15 @@ class Interpreter {
   // ---- expressions (expression.cpp, builtins.cpp) ----
   Value expression();
   double number(const char* what);
+  /// A float inside `< >` lists (matrix, poly coefficients): a bare '>' ends it.
+  double number_in_vector(const char* what);
   Vec3 vector(const char* what);
   Colour colour(const char* what);
   std::string string_value(const char* what);
   bool boolean_option();
   bool starts_colour();
+  /// Whether the next token starts a float or vector expression (not a colour keyword).
+  bool numeric_ahead();
   Value builtin(const Token& name);
   Value primary(int vector_depth);
   Value sub_expression(int vector_depth);
@@ -184,6 +188,8 @@ class Interpreter {
   std::vector<Frame> frames_;
   std::vector<std::unordered_map<std::string, Symbol>> scopes_;
   void unread();
+  /// The next token without running it as a macro call (a name being declared or tested).
+  Token raw_name();
   Token cur_;
   std::size_t cur_input_ = 0;  // the input cur_ was read from, and the cursor before it
   Cursor cur_before_;

@@ -287,7 +287,7 @@ void Interpreter::poly_coefficients(Node& n, int order) {
   expect_symbol("<", "to open the coefficients");
   std::vector<double> c;
   for (;;) {
-    c.push_back(number("a coefficient"));
+    c.push_back(number_in_vector("a coefficient"));
     if (c.size() > 1000) fail_here("too many coefficients");
     if (!accept_symbol(",")) break;
   }

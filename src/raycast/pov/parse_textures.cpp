@@ -21,7 +21,8 @@ const char* const kPatternModifiers[] = {
     "triangle_wave", "sine_wave", "scallop_wave", "cubic_wave", "poly_wave", "noise_generator",
     "metric", "form", "offset", "solid", "exponent", "accuracy", "interpolate", "once",
     "map_type", "use_color", "use_colour", "use_index", "color_space", "orientation", "mortar",
-    "coords", "max_iteration", "precision", "repeat"};
+    "coords", "max_iteration", "precision", "repeat", "agate_turb", "brick_size", "control0",
+    "control1", "fractal_interior_type", "fractal_exterior_type", "interior", "exterior"};
 bool in(const char* const* list, std::size_t n, const std::string& w) {
   for (std::size_t i = 0; i < n; ++i)
     if (w == list[i]) return true;
@@ -32,6 +33,18 @@ Colour to_colour(const Value& v) {
   return {v.v[0], v.v[1], v.dims > 2 ? v.v[2] : 0, v.dims > 3 ? v.v[3] : 0, v.dims > 4 ? v.v[4] : 0};
 }
 }  // namespace
+
+bool Interpreter::numeric_ahead() {
+  const Token& t = peek_operator();
+  if (pending_) return false;
+  if (t.kind == Token::Number || pov::is_symbol(t, "<") || pov::is_symbol(t, "(") ||
+      pov::is_symbol(t, "-"))
+    return true;
+  if (t.kind != Token::Word) return false;
+  if (t.text == "x" || t.text == "y" || t.text == "z") return true;
+  const Value* v = lookup(t.text);
+  return v && v->is_numeric();
+}
 
 bool Interpreter::starts_colour() {
   const Token& t = tok();
@@ -106,7 +119,7 @@ bool Interpreter::transform_item(std::vector<XformOp>& ops) {
     op.kind = XformOp::Matrix;
     for (int i = 0; i < 12; ++i) {
       if (i) expect_symbol(",", "between the matrix's 12 values");
-      op.m[static_cast<std::size_t>(i)] = number("a matrix value");
+      op.m[static_cast<std::size_t>(i)] = number_in_vector("a matrix value");
     }
     expect_symbol(">", "after the matrix's 12 values");
     ops.push_back(op);
@@ -246,8 +259,14 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
         } else {
           skip_block(w);
         }
-      } else if (w == "gradient" || w == "cubic") {
-        if (w == "gradient") vector("gradient");
+      } else if (w == "mandel" || w == "julia" || w == "magnet" || w == "spiral1" ||
+                 w == "spiral2" || w == "gradient" || w == "cubic" || w == "aoi" || w == "slope") {
+        // The pattern's own values: a number, a vector, or (julia) a vector and a number.
+        for (int k = 0; k < 3 && numeric_ahead(); ++k) {
+          expression();
+          skip_comma();
+        }
+        if (w == "slope" && is_symbol("{")) skip_block("slope");
       } else if (w == "brick" || w == "hexagon" || w == "checker") {
         while (starts_colour()) {
           colour("the pattern");
@@ -264,11 +283,17 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
       skip_block(w);
     } else if (t.kind == Token::Word && in(kPatternModifiers, std::size(kPatternModifiers), w)) {
       next();
-      if (w == "turbulence" || w == "frequency" || w == "phase" || w == "octaves" ||
+      if (w == "fractal_interior_type" || w == "fractal_exterior_type" || w == "interior" ||
+          w == "exterior") {
+        expression();
+        skip_comma();
+        expression();
+      } else if (w == "turbulence" || w == "frequency" || w == "phase" || w == "octaves" ||
           w == "omega" || w == "lambda" || w == "noise_generator" || w == "metric" ||
           w == "offset" || w == "exponent" || w == "accuracy" || w == "interpolate" ||
           w == "map_type" || w == "poly_wave" || w == "color_space" || w == "max_iteration" ||
-          w == "precision")
+          w == "precision" || w == "agate_turb" || w == "brick_size" || w == "control0" ||
+          w == "control1")
         expression();
       else if (w == "form" || w == "orientation" || w == "coords" || w == "mortar" || w == "repeat")
         expression();

@@ -46,6 +46,18 @@ Token Interpreter::raw() {
   return read_token(*texts_[static_cast<std::size_t>(in.file)], in.file, scene_.sources, in.cursor);
 }
 
+Token Interpreter::raw_name() {
+  if (have_ && !pending_) {
+    have_ = false;
+    return cur_;
+  }
+  if (pending_) {
+    pending_ = have_ = false;
+    return cur_;
+  }
+  return raw();
+}
+
 void Interpreter::unread() {
   if (!have_) return;
   if (cur_input_ < inputs_.size()) inputs_[cur_input_].cursor = cur_before_;
@@ -54,6 +66,7 @@ void Interpreter::unread() {
 
 void Interpreter::fetch() {
   for (;;) {
+    if (have_ && !pending_) return;  // a directive's handler left the token after it
     Token t;
     if (pending_) {
       t = std::move(cur_);
@@ -363,10 +376,10 @@ void Interpreter::begin_if(const Token& d, bool value) {
 
 bool Interpreter::is_defined_test() {
   expect_symbol("(", "after #ifdef");
-  if (tok().kind != Token::Word) unexpected("a name in #ifdef ( )");
-  std::string name = tok().text;
+  const Token nt = raw_name();
+  if (nt.kind != Token::Word) fail_at(nt.pos, "expected a name in #ifdef ( ), got " + describe(nt));
+  std::string name = nt.text;
   bool local_only = false, global_only = false;
-  next();
   if ((name == "local" || name == "global") && is_symbol(".")) {
     local_only = name == "local";
     global_only = name == "global";

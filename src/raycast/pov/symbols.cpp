@@ -87,12 +87,18 @@ void Interpreter::assign(const std::string& name, Value v, bool local, const Pos
 }
 
 void Interpreter::declare(const Token& d, bool local) {
-  if (tok().kind != Token::Word)
-    unexpected(std::string("a name after #") + (local ? "local" : "declare"));
-  const std::string name = tok().text;
-  const Pos at = tok().pos;
+  if (is_word("deprecated")) {  // #declare deprecated [once] "message" Name = ...
+    next();
+    if (is_word("once")) next();
+    string_value("the deprecation message");
+  }
   // The name is read raw: a macro's name may be declared over.
-  next();
+  const Token nt = raw_name();
+  if (nt.kind != Token::Word)
+    fail_at(nt.pos, std::string("expected a name after #") + (local ? "local" : "declare") +
+                        ", got " + describe(nt));
+  const std::string name = nt.text;
+  const Pos at = nt.pos;
   if (is_symbol("[")) {  // an array element
     Symbol* s = find_symbol(name);
     if (!s || s->value.kind != Value::Array) fail_at(at, "'" + name + "' is not an array");
@@ -122,11 +128,9 @@ void Interpreter::declare(const Token& d, bool local) {
 }
 
 void Interpreter::undef() {
-  ++opaque_;
-  if (tok().kind != Token::Word) unexpected("a name after #undef");
-  const std::string name = tok().text;
-  next();
-  --opaque_;
+  const Token nt = raw_name();
+  if (nt.kind != Token::Word) fail_at(nt.pos, "expected a name after #undef, got " + describe(nt));
+  const std::string name = nt.text;
   for (auto s = scopes_.rbegin(); s != scopes_.rend(); ++s)
     if (s->erase(name)) return;
 }
