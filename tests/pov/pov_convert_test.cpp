@@ -179,13 +179,23 @@ TEST(PovImport, LoaderErrorsPointIntoThePovFile) {
   }
 }
 
-TEST(PovImport, OpenSurfacesCannotBeCsgOperands) {
+TEST(PovImport, OpenSurfacesInCsgAreAWarningOrAnErrorWhenStrict) {
+  const std::string text = "difference {\n  sphere { 0, 1 }\n  disc { 0, y, 2 }\n}";
+  std::vector<std::string> warnings;
+  const Scene s = load_pov_scene_text(text, "t.pov", ".", -1, {}, &warnings);
+  EXPECT_EQ(s.objects.size(), 1u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind("t.pov:3:3: warning: raycast does not render open surfaces in CSG", 0),
+            0u)
+      << warnings[0];
+  pov::Options strict;
+  strict.strict = true;
   try {
-    load_pov_scene_text("difference {\n  sphere { 0, 1 }\n  disc { 0, y, 2 }\n}", "t.pov", ".");
+    load_pov_scene_text(text, "t.pov", ".", -1, strict);
     FAIL() << "expected an error";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.line(), 3) << e.what();
-    EXPECT_NE(e.message().find("open surface"), std::string::npos) << e.what();
+    EXPECT_NE(e.message().find("open surfaces in CSG"), std::string::npos) << e.what();
   }
 }
 
@@ -248,12 +258,17 @@ TEST(PovImport, CliConvertAndRender) {
   EXPECT_EQ(r.code, 0) << r.err;
   const auto info = test::run("info '" + scene + "'");
   EXPECT_EQ(info.code, 0) << info.err;
-  const std::string bad = test::write("bad.pov", "sphere { 0, 1 }\nsphere { 0, 1 inverse }\n");
+  const std::string bad = test::write("bad.pov", "sphere { 0, 1 }\nsphere { 0, 1 invert }\n");
   const auto b = test::run("convert '" + bad + "'");
   EXPECT_EQ(b.code, 2);
-  EXPECT_NE(b.err.find("bad.pov:2:15: 'inverse' is not supported by the POV-Ray import"),
+  EXPECT_NE(b.err.find("bad.pov:2:15: unknown word 'invert'"), std::string::npos) << b.err;
+  const std::string warned = test::write("warned.pov", "sphere { 0, 1 pigment { bozo } }\n");
+  const auto w = test::run("render '" + warned + "' --strict -o '" +
+                           (test::temp_dir() / "w.png").string() + "' --width 8 --height 6");
+  EXPECT_EQ(w.code, 2);
+  EXPECT_NE(w.err.find("warned.pov:1:25: raycast does not render the bozo pattern"),
             std::string::npos)
-      << b.err;
+      << w.err;
   const auto v =
       test::run("render '" + bad + "' -o '" + (test::temp_dir() / "x.png").string() + "'");
   EXPECT_EQ(v.code, 2);

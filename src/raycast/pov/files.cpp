@@ -31,10 +31,11 @@ void Interpreter::message_directive(const Token& d) {
   unread();
   if (d.text == "error") fail_at(d.pos, "#error: " + text);
   if (d.text == "warning") {
-    std::cerr << where(scene_.sources, d.pos) << ": warning: " << text << "\n";
+    (options_.debug ? *options_.debug : std::cerr)
+        << where(scene_.sources, d.pos) << ": warning: " << text << "\n";
     return;
   }
-  std::cerr << text;  // #debug prints as written (POV-Ray's debug stream)
+  (options_.debug ? *options_.debug : std::cerr) << text;  // #debug prints as written (POV-Ray's debug stream)
 }
 
 void Interpreter::fopen_directive() {

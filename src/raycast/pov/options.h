@@ -3,6 +3,7 @@
 // values (`Declare=` / `-D`-style), the clock, the image size, strictness, and the bounds that
 // keep a scene program from running away.
 #include <cstddef>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,6 +33,7 @@ struct Options {
   bool antialias = false;     // +A / Antialias=on: POV-Ray's adaptive method 1
   double antialias_threshold = 0.3;
   int antialias_depth = 3;
+  std::ostream* debug = nullptr;  // where #debug and #warning write (nullptr: standard error)
   bool system_library_path = true;  // read Library_Path from the user's and the system's povray.ini
   Limits limits;
 };

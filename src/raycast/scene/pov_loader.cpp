@@ -6,6 +6,7 @@
 #include <iostream>
 #include <map>
 #include <numbers>
+#include <set>
 #include <sstream>
 
 #include "pov/interpreter.h"
@@ -26,7 +27,8 @@ using pov::XformOp;
 // shows the same picture in raycast's right-handed frame.
 class Builder {
  public:
-  Builder(const pov::PovScene& s, Scene& scene) : s_(s), scene_(scene) {
+  Builder(const pov::PovScene& s, Scene& scene, bool strict)
+      : s_(s), scene_(scene), strict_(strict) {
     const pov::Camera& c = s.camera;
     mirror_ = dot(cross(c.up, c.direction), c.right) > 0;
     const double g = s.settings.assumed_gamma;
@@ -330,6 +332,9 @@ class Builder {
   }
 
   void warn(const pov::Pos& at, const std::string& kind, const std::string& detail) {
+    if (strict_)
+      fail_at(at, "raycast does not render " + kind + " yet (" + detail +
+                      "); without --strict it is a warning and is left out");
     if (!warned_.insert(kind).second) return;
     const std::string& name = s_.sources.names[static_cast<std::size_t>(at.file)];
     warnings_.push_back(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
@@ -440,6 +445,7 @@ class Builder {
  private:
   const pov::PovScene& s_;
   Scene& scene_;
+  bool strict_ = false;
   bool mirror_ = false;
   double gamma_ = 1;
   std::map<std::string, int> materials_;
@@ -455,10 +461,11 @@ void report(const std::vector<std::string>& in, std::vector<std::string>* out) {
   }
 }
 
-Scene build(pov::PovScene ps, const std::string& name, std::vector<std::string>* warnings) {
+Scene build(pov::PovScene ps, const std::string& name, std::vector<std::string>* warnings,
+            bool strict) {
   Scene scene;
   scene.source = name;
-  Builder b(ps, scene);
+  Builder b(ps, scene, strict);
   b.run();
   report(ps.warnings, warnings);
   report(b.warnings_, warnings);
@@ -492,7 +499,8 @@ bool is_pov_path(const std::string& path) {
 Scene load_pov_scene_text(const std::string& text, const std::string& name, const std::string& dir,
                           int frame, const pov::Options& options,
                           std::vector<std::string>* warnings) {
-  return build(pov::interpret_pov(text, name, dir, with_frame(options, frame)), name, warnings);
+  return build(pov::interpret_pov(text, name, dir, with_frame(options, frame)), name, warnings,
+               options.strict);
 }
 
 Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options& options,
@@ -502,7 +510,8 @@ Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options
   if (path.size() >= 4 && (path.substr(path.size() - 4) == ".ini" || path.substr(path.size() - 4) == ".INI"))
     scene_path = pov::read_ini_file(path, o);
   const SceneFileText file = read_scene_file(scene_path);
-  return build(pov::interpret_pov(file.text, scene_path, file.dir, o), scene_path, warnings);
+  return build(pov::interpret_pov(file.text, scene_path, file.dir, o), scene_path, warnings,
+               o.strict);
 }
 
 std::string convert_pov_file(const std::string& path, const pov::Options& options) {
