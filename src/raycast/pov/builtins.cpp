@@ -94,6 +94,21 @@ bool Interpreter::is_builtin(const std::string& w) const {
   return float_constants().count(w) || functions().count(w);
 }
 
+Value Interpreter::builtin_constant(const Token& t) {
+  if (!float_constants().count(t.text)) return Value::string("");
+  // builtin() consumes its name token: give it one, then restore the stream's lookahead.
+  const Token keep = cur_;
+  const bool had = have_, was_pending = pending_;
+  cur_ = t;
+  have_ = true;
+  pending_ = false;
+  Value v = builtin(t);
+  cur_ = keep;
+  have_ = had;
+  pending_ = was_pending;
+  return v;
+}
+
 Value Interpreter::builtin(const Token& t) {
   const std::string& w = t.text;
   next();
@@ -142,7 +157,14 @@ Value Interpreter::builtin(const Token& t) {
   if (!is_symbol(")")) {
     for (;;) {
       at.push_back(tok().pos);
-      a.push_back(rvalue());
+      if (w == "trace" && a.size() == 3) {  // the normal's output variable, maybe undeclared
+        const Token nt = raw_name();
+        if (nt.kind != Token::Word) fail_at(nt.pos, "trace's fourth argument is a name");
+        assign(nt.text, Value::vector({0, 0, 0}), false, nt.pos);
+        a.push_back(Value::number(0));
+      } else {
+        a.push_back(rvalue());
+      }
       if (!accept_symbol(",")) break;
     }
   }
@@ -203,6 +225,11 @@ Value Interpreter::builtin(const Token& t) {
     std::uint64_t& st = random_streams_[static_cast<std::size_t>(id)];
     st = st * 6364136223846793005ULL + 1442695040888963407ULL;
     return Value::number(static_cast<double>(st >> 11) * 0x1.0p-53);
+  }
+  if (w == "trace" && a.size() == 4) {
+    // The fourth argument is a name that receives the normal (declared if new).
+    unsupported_warning(t.pos, "the trace function", "its answer is <0, 0, 0>");
+    return Value::vector({0, 0, 0});
   }
   if (w == "inside" || w == "trace" || w == "min_extent" || w == "max_extent") {
     unsupported_warning(t.pos, "the " + w + " function", "its answer is 0");

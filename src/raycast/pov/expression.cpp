@@ -39,7 +39,9 @@ double Interpreter::number_in_vector(const char* what) {
 
 double Interpreter::number(const char* what) {
   const Pos at = tok().pos;
+  ++item_value_;
   const Value v = expression();
+  --item_value_;
   if (v.kind != Value::Float)
     fail_at(at, std::string("expected a float for ") + what + ", got " + kind_name(v));
   return v.v[0];
@@ -47,7 +49,9 @@ double Interpreter::number(const char* what) {
 
 Vec3 Interpreter::vector(const char* what) {
   const Pos at = tok().pos;
+  ++item_value_;
   const Value v = expression();
+  --item_value_;
   if (v.kind == Value::Float) return {v.v[0], v.v[0], v.v[0]};
   if (v.kind != Value::Vector)
     fail_at(at, std::string("expected a vector for ") + what + ", got " + kind_name(v));
@@ -143,7 +147,9 @@ struct Ops {
   }
   Value comparison() {
     Value a = sum();
-    for (;;) {
+    // Only a float is compared, and not in a block's item values outside parentheses: there
+    // '<' opens the next vector (box { <a> <b> }, vertex_vectors { 14 <-1, 0, 0> ... }).
+    while (a.kind == Value::Float && in.item_value_ == 0) {
       const Pos at = in.tok_pos();
       int kind;
       if (op("<="))
@@ -178,6 +184,7 @@ struct Ops {
       }
       a = Value::number(all);
     }
+    return a;
   }
   Value sum() {
     Value a = product();
@@ -251,7 +258,13 @@ Value Interpreter::vector_literal(const Pos& at) {
     if (c.kind != Value::Float) fail_at(cp, "a vector's components must be floats");
     if (r.dims == 5) fail_at(cp, "a vector has at most 5 components");
     r.v[static_cast<std::size_t>(r.dims++)] = c.v[0];
-    if (accept_symbol(",")) continue;
+    if (accept_symbol(",")) {
+      if (is_symbol(">")) {  // a trailing comma: <1, 2, 3,>
+        next();
+        break;
+      }
+      continue;
+    }
     if (is_symbol(">")) {
       next();
       break;
@@ -323,6 +336,10 @@ Value Interpreter::colour_expression(const Pos& at) {
       for (int i = 0; i < v.dims; ++i) c.v[static_cast<std::size_t>(i)] = v.v[static_cast<std::size_t>(i)];
     }
   }
+  return colour_modifiers(c);
+}
+
+Value Interpreter::colour_modifiers(Value c) {
   for (;;) {
     const Token& n = peek_operator();
     if (pending_ || n.kind != Token::Word) break;
@@ -330,6 +347,13 @@ Value Interpreter::colour_expression(const Pos& at) {
           : n.text == "filter" ? 3 : n.text == "transmit" ? 4
           : (n.text == "gray" || n.text == "grey") ? 5 : -1;
     if (k < 0) break;
+    if (c.kind == Value::Float) {
+      const double f = c.v[0];
+      c = Value::vector({f, f, f, 0, 0});
+    }
+    c.kind = Value::Vector;
+    c.colour = true;
+    c.dims = 5;
     next();
     const double x = number("a colour component");
     if (k == 5)
@@ -401,7 +425,10 @@ Value Interpreter::primary(int vector_depth) {
     case Token::Symbol:
       if (t.text == "(") {
         next();
+        const int item = item_value_;
+        item_value_ = 0;
         const Value v = sub_expression(0);
+        item_value_ = item;
         if (!is_symbol(")")) unexpected("')'");
         next();
         return postfix(v);

@@ -146,7 +146,9 @@ void Interpreter::write_directive() {
   const auto it = files_.find(tok().text);
   if (it == files_.end() || !it->second->writing) fail_here("#write: the file is not open for writing");
   next();
-  while (accept_symbol(",")) {
+  while (!is_symbol(")")) {
+    accept_symbol(",");
+    if (is_symbol(")")) break;
     const Value v = expression();
     if (v.kind == Value::String) {
       it->second->stream << v.text;

@@ -125,6 +125,13 @@ std::shared_ptr<const FnNode> Interpreter::function_expression(
           return f;
         }
       if (t.text == "pi") return num(std::numbers::pi);
+      if (!in.lookup(t.text) && in.is_builtin(t.text) && t.text != "x" && t.text != "y" &&
+          t.text != "z" && t.text != "min" && t.text != "max" && t.text != "select" &&
+          !in.is_symbol("(")) {
+        // A constant of the scene (clock, image_width ...), fixed when the function is read.
+        const Value c = in.builtin_constant(t);
+        if (c.kind == Value::Float) return num(c.v[0]);
+      }
       if (t.text == "internal") {
         args();
         auto f = std::make_shared<FnNode>();
@@ -139,6 +146,11 @@ std::shared_ptr<const FnNode> Interpreter::function_expression(
           f->kind = FnNode::User;
           f->callee = v->function;
           f->args = args();
+          if (in.is_symbol(".")) {  // a component of a vector or colour function's value
+            in.next();
+            in.next();
+            return call("component", {f});
+          }
           return f;
         }
         if (v->kind == Value::Vector && in.is_symbol(".")) {

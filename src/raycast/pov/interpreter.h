@@ -71,12 +71,20 @@ class Interpreter {
   bool starts_colour();
   /// Whether the next token starts a float or vector expression (not a colour keyword).
   bool numeric_ahead();
+  /// A declared value of `kind` at the current token (a name, or an array element), consumed.
+  std::optional<Value> declared(Value::Kind kind);
+  /// The values after a pattern's keyword (a number, a vector, a block ...).
+  void pattern_arguments(const Token& t, bool colours);
   Value builtin(const Token& name);
+  /// A built-in float constant (clock, image_width ...) for function bodies.
+  Value builtin_constant(const Token& name);
   Value primary(int vector_depth);
   Value sub_expression(int vector_depth);
   Value vector_literal(const Pos& at);
   Value colour_keyword(const Token& kw);
   Value colour_expression(const Pos& at);
+  /// Applies `red 1 filter 0.5 ...` after a colour.
+  Value colour_modifiers(Value c);
   Value postfix(Value v);
   /// Calls a function or spline value with the arguments in ( ).
   Value call_value(const Value& f, const Token& name);
@@ -145,6 +153,7 @@ class Interpreter {
   Token raw();
   void fetch();
   void directive(const Token& d);
+  void directive_body(const Token& d);
   void open_file(const std::string& text, const std::string& name, const std::string& path,
                  const std::string& dir);
   void include(const Pos& at);
@@ -193,7 +202,13 @@ class Interpreter {
   Token cur_;
   std::size_t cur_input_ = 0;  // the input cur_ was read from, and the cursor before it
   Cursor cur_before_;
-  int opaque_ = 0;  // > 0: peek_operator runs no directive (a directive's own arguments)
+  int opaque_ = 0;
+ public:
+  // > 0 while reading a value inside a block (an object's numbers, a count): POV-Ray compares
+  // there only inside parentheses, so `14 <-1, 0, 0>` is a count and a vector.
+  int item_value_ = 0;
+
+ private:  // > 0: peek_operator runs no directive (a directive's own arguments)
   bool have_ = false;
   bool pending_ = false;  // cur_ is a directive or macro call not yet run (peek_operator)
   long long iterations_ = 0;

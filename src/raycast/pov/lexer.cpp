@@ -148,7 +148,7 @@ Token read_token(std::string_view text, int file, const Sources& sources, Cursor
   }
   if (c == '#') {
     r.advance();
-    while (r.peek() == ' ' || r.peek() == '\t') r.advance();  // POV-Ray allows "# declare"
+    r.skip_space_and_comments();  // POV-Ray allows "# declare", even across lines
     const std::size_t begin = cursor.offset;
     while (is_word_char(r.peek())) r.advance();
     if (begin == cursor.offset) r.error(t.pos, "'#' must be followed by a directive name");

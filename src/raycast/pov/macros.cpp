@@ -48,6 +48,8 @@ void Interpreter::call_macro(const Token& name, const MacroDef& m) {
   const std::shared_ptr<const MacroDef> def =
       keep != scopes_.front().end() ? keep->second.value.macro : nullptr;
   expect_symbol("(", ("after the macro " + m.name).c_str());
+  const int item = item_value_;
+  item_value_ = 0;
   std::unordered_map<std::string, Symbol> locals;
   Frame f;
   f.kind = FrameKind::Macro;
@@ -73,14 +75,15 @@ void Interpreter::call_macro(const Token& name, const MacroDef& m) {
           next();
           Symbol& p = locals[m.params[i]];
           p.ref = target;
-          if (!last) expect_symbol(",", "between the macro's arguments");
+          if (!last) accept_symbol(",");
           continue;
         }
       }
     }
     locals[m.params[i]].value = rvalue();
-    if (!last) expect_symbol(",", "between the macro's arguments");
+    if (!last) accept_symbol(",");  // POV-Ray reads arguments without commas where unambiguous
   }
+  item_value_ = item;
   if (!is_symbol(")"))
     unexpected("')' to close the call of " + m.name + " (it takes " +
                std::to_string(m.params.size()) + " arguments)");

@@ -149,10 +149,8 @@ std::optional<Node> Interpreter::object(int depth) {
     } else if (kw.text == "poly") {
       const Pos at = tok().pos;
       const double order = number("poly's order");
-      if (!(order >= 2 && order <= 16) || order != std::floor(order))
-        fail_at(at,
-                "poly's order must be a whole number in [2, 16] (raycast's algebraic "
-                "surfaces go to degree 16)");
+      if (!(order >= 2 && order <= 35) || order != std::floor(order))
+        fail_at(at, "poly's order must be a whole number in [2, 35]");
       skip_comma();
       poly_coefficients(n, static_cast<int>(order));
     } else if (kw.text == "polynomial") {
@@ -289,7 +287,8 @@ void Interpreter::poly_coefficients(Node& n, int order) {
   for (;;) {
     c.push_back(number_in_vector("a coefficient"));
     if (c.size() > 1000) fail_here("too many coefficients");
-    if (!accept_symbol(",")) break;
+    accept_symbol(",");
+    if (is_symbol(">")) break;
   }
   expect_symbol(">", "to close the coefficients");
   const std::size_t want = static_cast<std::size_t>((order + 1) * (order + 2) * (order + 3) / 6);
@@ -378,8 +377,10 @@ void Interpreter::isosurface_body(Node& n, int depth) {
     f = s;
   }
   n.function = f;
-  if (n.open && n.contained_by_sphere)
-    fail_at(n.pos, unsupported("open isosurface contained_by a sphere") + " (use a box)");
+  if (n.open && n.contained_by_sphere) {
+    unsupported_warning(n.pos, "open isosurfaces in a sphere", "closed by the sphere's box");
+    n.contained_by_sphere = false;
+  }
 }
 
 void Interpreter::spline_points(Node& n, int min_count) {
@@ -389,7 +390,9 @@ void Interpreter::spline_points(Node& n, int min_count) {
       spline = tok().text;
       next();
     } else if (is_word("quadratic_spline")) {
-      fail_here(unsupported("quadratic_spline"));
+      unsupported_warning(tok().pos, "quadratic_spline lathes", "drawn as a cubic_spline");
+      next();
+      spline = "cubic_spline";
     }
   }
   const Pos at = tok().pos;
@@ -416,7 +419,7 @@ void Interpreter::spline_points(Node& n, int min_count) {
     for (std::size_t i = 0; i + 3 < p.size(); ++i) {
       const double y1 = p[i + 1].y, y2 = p[i + 2].y;
       if (!(p[i + 2].y > p[i].y && p[i + 3].y > p[i + 1].y && y2 > y1))
-        fail_at(n.pos, "a sor's points must rise in y");
+        fail_at(n.pos, "a sor's points must rise in y (each point's y above the one before)");
       // r^2 is a cubic in y through the two middle points, with slopes from their neighbours.
       const double k1 = p[i + 1].x * p[i + 1].x, k2 = p[i + 2].x * p[i + 2].x;
       const double s1 = (k2 - p[i].x * p[i].x) / (p[i + 2].y - p[i].y);
@@ -510,10 +513,21 @@ void Interpreter::mesh2_body(Node& n, int) {
     for (long i = 0; i < cnt; ++i) {
       skip_comma();
       const Pos at = tok().pos;
+      ++item_value_;
       const Value v = expression();
+      --item_value_;
       if (v.dims != dims)
         fail_at(at, std::string(name) + " holds " + std::to_string(dims) + "-vectors");
       each(v, at);
+      // face_indices may give each face's texture index (or three): read and not used.
+      if (std::string(name) == "face_indices")
+        for (int k = 0; k < 3 && pov::is_symbol(peek_operator(), ",") && !pending_; ++k) {
+          next();
+          if (tok().kind != Token::Number && !(tok().kind == Token::Word && lookup(tok().text) &&
+                                               lookup(tok().text)->kind == Value::Float))
+            break;
+          number("a texture index");
+        }
     }
     if (!is_symbol("}"))
       fail_here(std::string(name) + " announced " + std::to_string(cnt) + " items, got more");

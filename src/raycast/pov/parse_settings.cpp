@@ -68,7 +68,11 @@ Camera Interpreter::camera_block(const Camera& base) {
     else if (w == "angle") {
       next();
       angle = number("angle");
-      if (!(angle > 0 && angle < 180)) fail_at(t.pos, "angle must be in (0, 180) degrees");
+      if (!(angle > 0 && angle <= 360)) fail_at(t.pos, "angle must be in (0, 360] degrees");
+      if (angle >= 179) {
+        unsupported_warning(t.pos, "camera angles of 179 degrees or more", "179 is used");
+        angle = 179;
+      }
       if (starts_colour()) number("the vertical angle");
     } else if (w == "look_at") {
       next();
@@ -78,9 +82,12 @@ Camera Interpreter::camera_block(const Camera& base) {
       const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
       const double handed = dot(cross(c.up, c.direction), c.right);
       const Vec3 d = target - c.location;
-      const Vec3 r = cross(c.sky, d);
+      Vec3 r = cross(c.sky, d);
       if (length(d) == 0) fail_at(t.pos, "look_at is the camera's location");
-      if (length(r) == 0) fail_at(t.pos, "look_at is straight along the sky vector");
+      // Looking straight along the sky: right stays as it was, made perpendicular to d.
+      if (length(r) == 0) r = c.right - d * (dot(c.right, d) / dot(d, d));
+      if (length(r) == 0) r = cross(Vec3{0, 0, 1}, d);
+      if (length(r) == 0) r = cross(Vec3{1, 0, 0}, d);
       c.direction = d / length(d) * dl;
       c.right = r / length(r) * (handed > 0 ? rl : -rl);
       c.up = cross(d / length(d), r / length(r)) * ul;
@@ -127,7 +134,7 @@ Node Interpreter::light_block() {
       next();
     }
   }
-  if (!is_symbol("}") && starts_colour() && !is_word("color") && !is_word("colour")) {
+  if (!is_symbol("}")) {
     l.position = vector("the light's position");
     skip_comma();
   }
@@ -217,6 +224,7 @@ void Interpreter::global_settings_block() {
       scene_.adc_bailout = std::clamp(number("adc_bailout"), 0.0, 1.0);
     } else if (w == "charset") {
       next();
+      tok();
       next();
     } else if (w == "number_of_waves" || w == "noise_generator" || w == "max_intersections" ||
                w == "irid_wavelength" || w == "hf_gray_16") {

@@ -15,7 +15,7 @@ const char* const kPatterns[] = {
     "marble", "object", "onion", "pavement", "pigment_pattern", "planar", "quilted", "radial",
     "ripples", "spherical", "spiral1", "spiral2", "spotted", "square", "tiling", "triangular",
     "waves", "wood", "wrinkles", "mandel", "julia", "magnet", "image_pattern", "slope", "aoi",
-    "cubic", "checker", "image_map", "pattern"};
+    "cubic", "checker", "image_map", "pattern", "tiles", "hexagon", "brick"};
 const char* const kPatternModifiers[] = {
     "turbulence", "octaves", "omega", "lambda", "frequency", "phase", "ramp_wave",
     "triangle_wave", "sine_wave", "scallop_wave", "cubic_wave", "poly_wave", "noise_generator",
@@ -34,6 +34,55 @@ Colour to_colour(const Value& v) {
 }
 }  // namespace
 
+std::optional<Value> Interpreter::declared(Value::Kind kind) {
+  if (tok().kind != Token::Word) return std::nullopt;
+  const Value* v = lookup(tok().text);
+  if (!v) return std::nullopt;
+  if (v->kind == kind || (kind == Value::Texture && v->kind == Value::Material)) {
+    Value copy = *v;
+    next();
+    return copy;
+  }
+  if (v->kind != Value::Array) return std::nullopt;
+  const Pos at = tok().pos;
+  Value e = expression();  // an element: Textures[I]
+  if (e.kind != kind && !(kind == Value::Texture && e.kind == Value::Material))
+    fail_at(at, std::string("expected ") + (kind == Value::Texture ? "a texture" : "a pigment") +
+                    ", got " + kind_name(e));
+  return e;
+}
+
+void Interpreter::pattern_arguments(const Token& t, bool colours) {
+  const std::string& w = t.text;
+  if (w == "function" || w == "pigment_pattern" || w == "object" || w == "image_pattern" ||
+      w == "image_map" || w == "tiles" || w == "slope") {
+    if (w == "slope" && !is_symbol("{")) {
+      expression();
+      return;
+    }
+    if (w == "function" && !is_symbol("{")) {  // function F: a declared function's name
+      if (tok().kind == Token::Word) next();
+      return;
+    }
+    skip_block(w);
+  } else if (w == "density_file") {
+    tok();
+    next();  // df3
+    string_value("density_file");
+  } else if (colours && (w == "brick" || w == "hexagon" || w == "checker")) {
+    while (starts_colour()) {
+      colour("the pattern");
+      skip_comma();
+    }
+  } else {
+    // The pattern's own values: a number, a vector, or (julia) a vector and a number.
+    for (int k = 0; k < 3 && numeric_ahead(); ++k) {
+      expression();
+      skip_comma();
+    }
+  }
+}
+
 bool Interpreter::numeric_ahead() {
   const Token& t = peek_operator();
   if (pending_) return false;
@@ -51,6 +100,7 @@ bool Interpreter::starts_colour() {
   if (t.kind == Token::Number || pov::is_symbol(t, "<") || pov::is_symbol(t, "(")) return true;
   if (t.kind != Token::Word) return false;
   const std::string& w = t.text;
+  if (w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") return true;
   if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" ||
       w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft")
     return true;
@@ -60,7 +110,12 @@ bool Interpreter::starts_colour() {
 
 Colour Interpreter::colour(const char* what) {
   const Pos at = tok().pos;
-  const Value v = expression();
+  const Token& t = tok();
+  const bool component_first = t.kind == Token::Word &&
+                               (t.text == "red" || t.text == "green" || t.text == "blue" ||
+                                t.text == "filter" || t.text == "transmit");
+  const Value v = component_first ? colour_modifiers(Value::vector({0, 0, 0, 0, 0}))
+                                  : colour_modifiers(expression());
   if (!v.is_numeric()) fail_at(at, std::string("expected a colour for ") + what + ", got " + kind_name(v));
   return to_colour(v);
 }
@@ -208,13 +263,7 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
   const Pos start = tok().pos;
   expect_symbol("{", "after pigment");
   Pigment p = base;
-  if (tok().kind == Token::Word) {
-    const Value* v = lookup(tok().text);
-    if (v && v->kind == Value::Pigment) {
-      p = *v->pigment;
-      next();
-    }
-  }
+  if (const std::optional<Value> v = declared(Value::Pigment)) p = *v->pigment;
   while (!accept_symbol("}")) {
     const Token t = tok();
     const std::string& w = t.text;
@@ -250,29 +299,7 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
       unsupported_warning(t.pos, "the " + w + " pattern", "drawn in its colour map's middle colour");
       p.checker = false;
       p.pattern = w;
-      if (w == "function" || w == "pigment_pattern" || w == "object" || w == "density_file") {
-        if (w == "density_file") {
-          next();  // df3
-          string_value("density_file");
-        } else if (is_symbol("(")) {
-          expression();
-        } else {
-          skip_block(w);
-        }
-      } else if (w == "mandel" || w == "julia" || w == "magnet" || w == "spiral1" ||
-                 w == "spiral2" || w == "gradient" || w == "cubic" || w == "aoi" || w == "slope") {
-        // The pattern's own values: a number, a vector, or (julia) a vector and a number.
-        for (int k = 0; k < 3 && numeric_ahead(); ++k) {
-          expression();
-          skip_comma();
-        }
-        if (w == "slope" && is_symbol("{")) skip_block("slope");
-      } else if (w == "brick" || w == "hexagon" || w == "checker") {
-        while (starts_colour()) {
-          colour("the pattern");
-          skip_comma();
-        }
-      }
+      pattern_arguments(t, true);
     } else if (t.kind == Token::Word && (w == "color_map" || w == "colour_map")) {
       next();
       p.map = colour_map_block();
@@ -407,7 +434,7 @@ Finish Interpreter::finish_block(const Finish& base) {
       if (w == "irid" || w == "subsurface") {
         skip_block(w);
       } else if (w == "metallic") {
-        if (starts_colour()) number("metallic");
+        boolean_option();
       } else {
         number(w.c_str());
       }
@@ -460,18 +487,21 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
   expect_symbol("{", "after texture");
   Texture t = base;
   t.name.clear();
-  if (tok().kind == Token::Word) {
-    const Value* v = lookup(tok().text);
-    if (v && v->kind == Value::Texture) {
-      const std::optional<double> ior = t.ior;
-      t = *v->texture;
-      if (!t.ior) t.ior = ior;
-      next();
-    }
+  if (const std::optional<Value> v = declared(Value::Texture)) {
+    const std::optional<double> ior = t.ior;
+    t = *v->texture;
+    if (!t.ior) t.ior = ior;
   }
+  bool patterned = false, first_layer = true;
   while (!accept_symbol("}")) {
     const Token k = tok();
-    if (is_word("pigment")) {
+    if (is_word("texture") && patterned) {  // the textures of a pattern: the first one shows
+      next();
+      const Texture layer = texture_block(base, depth + 1);
+      if (first_layer) t = layer;
+      first_layer = false;
+      skip_comma();
+    } else if (is_word("pigment")) {
       next();
       t.pigment = pigment_block(t.pigment);
     } else if (is_word("finish")) {
@@ -483,13 +513,33 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
       skip_block("normal");
     } else if (is_word("texture_map") || is_word("material_map")) {
       next();
-      unsupported_warning(k.pos, k.text);
-      skip_block(k.text);
+      unsupported_warning(k.pos, k.text, "the first texture is used");
+      expect_symbol("{", ("after " + k.text).c_str());
+      bool first = true;
+      while (!accept_symbol("}")) {
+        if (is_word("texture")) {
+          next();
+          const Texture layer = texture_block(base, depth + 1);
+          if (first) t = layer;
+          first = false;
+        } else {
+          if (tok().kind == Token::End) fail_here(k.text + " { is never closed");
+          if (tok().kind == Token::Word) {
+            if (const std::optional<Value> v = declared(Value::Texture)) {
+              if (first) t = *v->texture;
+              first = false;
+              continue;
+            }
+          }
+          next();
+        }
+      }
     } else if (k.kind == Token::Word && in(kPatterns, std::size(kPatterns), k.text)) {
       // a patterned texture (texture { gradient x texture_map { ... } })
       next();
-      unsupported_warning(k.pos, "patterned textures");
-      if (k.text == "gradient") vector("gradient");
+      unsupported_warning(k.pos, "patterned textures", "the first texture is used");
+      patterned = true;
+      pattern_arguments(k, false);
     } else if (k.kind == Token::Word && in(kPatternModifiers, std::size(kPatternModifiers), k.text)) {
       next();
       if (starts_colour()) expression();

@@ -84,6 +84,13 @@ void Interpreter::fetch() {
         call_macro(t, *s->value.macro);
         continue;
       }
+      // POV-Ray still reads these directives without their '#' (with a warning).
+      if (!s && (t.text == "declare" || t.text == "local" || t.text == "default" ||
+                 t.text == "include")) {
+        t.kind = Token::Directive;
+        directive(t);
+        continue;
+      }
     }
     if (t.kind == Token::End && !frames_.empty()) {
       const Frame& f = frames_.back();
@@ -256,6 +263,14 @@ void Interpreter::close_file() {
 // ---- directives -----------------------------------------------------------------------------
 
 void Interpreter::directive(const Token& d) {
+  // A directive met inside a block's value reads its own expressions in full.
+  const int item = item_value_;
+  item_value_ = 0;
+  directive_body(d);
+  item_value_ = item;
+}
+
+void Interpreter::directive_body(const Token& d) {
   const std::string& w = d.text;
   if (w == "declare" || w == "local") {
     declare(d, w == "local");

@@ -247,7 +247,7 @@ Value Interpreter::rvalue() {
     v.kind = Value::Array;
     v.array = std::make_shared<ArrayValue>();
     std::size_t total = 1;
-    while (is_symbol("[")) {
+    while (pov::is_symbol(peek_operator(), "[") && !pending_) {
       next();
       const Pos at = tok().pos;
       const double n = number("an array size");
@@ -262,13 +262,13 @@ Value Interpreter::rvalue() {
     }
     if (v.array->sizes.empty()) unexpected("'[' and the array's size");
     v.array->elements.resize(total);
-    if (is_symbol("{")) {
+    if (pov::is_symbol(peek_operator(), "{") && !pending_) {
       // Initialisers: nested braces per dimension, elements in row-major order.
       std::size_t at = 0;
       std::function<void(std::size_t)> fill = [&](std::size_t dim) {
         expect_symbol("{", "to open the array's initialiser");
         for (int i = 0; i < v.array->sizes[dim]; ++i) {
-          if (i) expect_symbol(",", "between the array's elements");
+          if (i) accept_symbol(",");  // commas between elements may be left out
           if (dim + 1 < v.array->sizes.size())
             fill(dim + 1);
           else

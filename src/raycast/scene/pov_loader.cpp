@@ -354,7 +354,9 @@ class Builder {
     try {
       sh = shape(n, axial);
     } catch (const std::invalid_argument& e) {
-      fail_at(n.pos, e.what());
+      // POV-Ray draws degenerate shapes (a flat box, a zero radius) as nothing or a sliver.
+      warn(n.pos, "degenerate shapes", e.what());
+      return std::nullopt;
     }
     if (!sh) return std::nullopt;
     Object o;
