@@ -376,9 +376,10 @@ void Interpreter::reflection_block(Finish& f) {
     }
   }
   if (values.empty()) return;
-  f.reflection = values.back();
-  if (values.size() > 1 && values.front() != values.back())
-    f.reflection = 0.5 * (values.front() + values.back());
+  // { min, max fresnel on }: raycast's Fresnel split starts from the minimum; without fresnel,
+  // POV-Ray's variable reflection is drawn at its mean.
+  f.reflection = f.fresnel ? values.front()
+                           : 0.5 * (values.front() + values.back());
 }
 
 Finish Interpreter::finish_block(const Finish& base) {

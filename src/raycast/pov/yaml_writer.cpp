@@ -1,5 +1,7 @@
 #include "pov/yaml_writer.h"
 
+#include "pov/checker_grid.h"
+
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -9,49 +11,6 @@
 namespace raycast::pov {
 
 namespace {
-
-// Whether a flat face of the shape lies in a plane x, y or z = k * scale (k whole), where the
-// checker's floor() flips with rounding.
-bool on_checker_grid(const Node& n, double scale) {
-  auto on = [&](double v) { return std::floor(v / scale) == v / scale; };
-  auto axis_of = [](const Vec3& d) {  // the axis d is along, or -1
-    if (d.y == 0 && d.z == 0) return 0;
-    if (d.x == 0 && d.z == 0) return 1;
-    if (d.x == 0 && d.y == 0) return 2;
-    return -1;
-  };
-  auto at = [](const Vec3& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
-  switch (n.kind) {
-    case Node::Plane: {
-      const int a = axis_of(n.points[0]);
-      return a >= 0 && on(n.values[0]);  // the plane is at +-distance on that axis
-    }
-    case Node::Box:
-      for (const Vec3& c : n.points)
-        if (on(c.x) || on(c.y) || on(c.z)) return true;
-      return false;
-    case Node::Disc: {
-      const int a = axis_of(n.points[1]);
-      return a >= 0 && on(at(n.points[0], a));
-    }
-    case Node::Cylinder:
-    case Node::Cone: {
-      const int a = axis_of(n.points[1] - n.points[0]);
-      return a >= 0 && (on(at(n.points[0], a)) || on(at(n.points[1], a)));
-    }
-    case Node::Mesh:
-      for (const auto& t : n.triangles)
-        for (int a = 0; a < 3; ++a) {
-          const double v = at(n.vertices[static_cast<std::size_t>(t[0])], a);
-          if (on(v) && at(n.vertices[static_cast<std::size_t>(t[1])], a) == v &&
-              at(n.vertices[static_cast<std::size_t>(t[2])], a) == v)
-            return true;
-        }
-      return false;
-    default:
-      return false;  // curved surfaces meet the grid's planes along curves only
-  }
-}
 
 std::string num(double v) {
   if (v == 0) v = 0;  // no "-0" in the output
@@ -366,12 +325,18 @@ class Writer {
         o << "algebraic: {equation: \"" << polynomial_text(n)
           << "\", bounds: " << bounds_text(*n.bounds) << "}";
         break;
-      case Node::Isosurface:
-        o << "implicit: {function: \"" << formula_text(*n.function, mirror_)
+      case Node::Isosurface: {
+        FunctionValue f;
+        f.params = {"x", "y", "z"};
+        f.body = n.function;
+        const std::string text = formula_text(f, mirror_);
+        if (text.empty()) fail_at(n.pos, "raycast's formulas cannot express this isosurface's function");
+        o << "implicit: {function: \"" << text
           << "\", bounds: " << bounds_text(*n.bounds);
         if (n.open) o << ", open: true";
         o << "}";
         break;
+      }
       case Node::Lathe:
       case Node::Sor: {
         axial = true;
@@ -437,7 +402,6 @@ class Writer {
     if (!xf.empty()) line(n.pos, more + "transform: " + xf);
   }
 
-  static constexpr double kCheckerOffset = 1e-3;
 
   const PovScene& s_;
   std::string name_;

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "pov/checker_grid.h"
 #include "pov/interpreter.h"
 #include "pov/ini_file.h"
 #include "pov/yaml_writer.h"
@@ -65,6 +66,8 @@ class Builder {
     pov::fail(s_.sources, p, m);
   }
   Vec3 m(const Vec3& v) const { return mirror_ ? Vec3{v.x, v.y, -v.z} : v; }
+  // A point of a shape: mirrored, and moved by the checker offset of the shape being built.
+  Vec3 pt(const Vec3& v) const { return m(v) + shift_; }
 
   // A colour of the scene in linear light: POV-Ray 3.7 with assumed_gamma G treats the scene's
   // colours as encoded with that gamma (srgb: the sRGB curve).
@@ -170,13 +173,14 @@ class Builder {
   }
 
   // The node's own transformations (object -> its parent), in raycast's frame.
-  std::optional<Transform> own_transform(const Node& n, bool axial) const {
+  std::optional<Transform> own_transform(const Node& n, bool axial, const Vec3& shift = {}) const {
     Transform t;
     bool any = false;
     auto then = [&](const Transform& x) {
       t = any ? x * t : x;
       any = true;
     };
+    if (shift.x != 0) then(Transform::translate(shift * -1.0));
     // Torus, lathe and sor are about y in POV-Ray, about z in raycast: turn z onto y. (They are
     // symmetric about their axis, so mirroring z leaves this turn as it is.)
     if (axial) then(Transform::rotate({1, 0, 0}, -90));
@@ -254,22 +258,23 @@ class Builder {
     axial = false;
     switch (n.kind) {
       case Node::Sphere:
-        return make_sphere(m(n.points[0]), n.values[0]);
+        return make_sphere(pt(n.points[0]), n.values[0]);
       case Node::Box:
-        return make_box(box_of({n.points[0], n.points[1]}).lo, box_of({n.points[0], n.points[1]}).hi);
+        return make_box(box_of({n.points[0], n.points[1]}).lo + shift_,
+                        box_of({n.points[0], n.points[1]}).hi + shift_);
       case Node::Plane: {
         const Vec3 nn = n.points[0];
         const double l = length(nn);
         if (!(l > 0)) fail_at(n.pos, "a plane's normal must not be zero");
         // POV-Ray's distance is measured along the normal made unit length.
-        return make_plane(m(nn), m(nn * (n.values[0] / l)));
+        return make_plane(m(nn), pt(nn * (n.values[0] / l)));
       }
       case Node::Cylinder:
-        return make_cylinder(m(n.points[0]), m(n.points[1]), n.values[0], !n.open);
+        return make_cylinder(pt(n.points[0]), pt(n.points[1]), n.values[0], !n.open);
       case Node::Cone:
-        return make_cone(m(n.points[0]), m(n.points[1]), n.values[0], n.values[1], !n.open);
+        return make_cone(pt(n.points[0]), pt(n.points[1]), n.values[0], n.values[1], !n.open);
       case Node::Disc:
-        return make_disk(m(n.points[0]), m(n.points[1]), n.values[0], n.values[1]);
+        return make_disk(pt(n.points[0]), m(n.points[1]), n.values[0], n.values[1]);
       case Node::Torus:
         axial = true;
         return make_torus(n.values[0], n.values[1]);
@@ -306,7 +311,7 @@ class Builder {
       case Node::Mesh: {
         std::vector<Vec3f> pos, nor;
         for (const Vec3& v : n.vertices) {
-          const Vec3 q = m(v);
+          const Vec3 q = pt(v);
           pos.push_back({static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
         }
         for (const Vec3& v : n.normals) {
@@ -351,6 +356,11 @@ class Builder {
                              const std::optional<Transform>& parent) {
     bool axial = false;
     std::optional<ShapeVariant> sh;
+    shift_ = Vec3{0, 0, 0};
+    if (tex && tex->pigment.checker && pov::on_checker_grid(n, tex->pigment.scale)) {
+      const double e = pov::kCheckerOffset * tex->pigment.scale;
+      shift_ = m(Vec3{e, e, e});
+    }
     try {
       sh = shape(n, axial);
     } catch (const std::invalid_argument& e) {
@@ -361,7 +371,8 @@ class Builder {
     if (!sh) return std::nullopt;
     Object o;
     o.shape = std::move(*sh);
-    o.xf = compose(parent, own_transform(n, axial));
+    o.xf = compose(parent, own_transform(n, axial, shift_));
+    shift_ = Vec3{0, 0, 0};
     if (tex) o.material = material(*tex);
     return o;
   }
@@ -448,6 +459,7 @@ class Builder {
   const pov::PovScene& s_;
   Scene& scene_;
   bool strict_ = false;
+  Vec3 shift_{0, 0, 0};  // the checker offset of the shape being built
   bool mirror_ = false;
   double gamma_ = 1;
   std::map<std::string, int> materials_;
