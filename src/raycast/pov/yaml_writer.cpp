@@ -77,11 +77,12 @@ class Writer {
   [[noreturn]] void fail_at(const Pos& p, const std::string& m) const { fail(s_.sources, p, m); }
 
   Vec3 m(const Vec3& v) const { return mirror_ ? Vec3{v.x, v.y, -v.z} : v; }
-  static std::string vec(const Vec3& v) {
-    return "[" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + "]";
-  }
-  static std::string rgb(const Colour& c) {
-    return "[" + num(c.r) + ", " + num(c.g) + ", " + num(c.b) + "]";
+  static std::string vec(const Vec3& v) { return triple(v.x, v.y, v.z); }
+  static std::string rgb(const Colour& c) { return triple(c.r, c.g, c.b); }
+  static std::string triple(double a, double b, double c) {
+    std::string s("[");
+    s.append(num(a)).append(", ").append(num(b)).append(", ").append(num(c)).append("]");
+    return s;
   }
 
   void camera() {
