@@ -38,8 +38,7 @@ PARSE_TIME = re.compile(r"Parse Time:.*\(([0-9.]+) seconds\)")
 def povray_run(scene, timeout):
     """(ok, parse seconds) for POV-Ray 3.7 rendering the scene at 160x120 from its folder."""
     with tempfile.TemporaryDirectory() as tmp:
-        cmd = ["povray", "+I" + os.path.basename(scene), "+W160", "+H120", "-D", "-GA",
-               "+GS", "+FN", "+O" + os.path.join(tmp, "out.png")]
+        cmd = ["povray", "+I" + os.path.basename(scene), "+W160", "+H120", "-D", "+FN", "+O" + os.path.join(tmp, "out.png")]
         try:
             p = subprocess.run(cmd, cwd=os.path.dirname(scene), capture_output=True, text=True,
                                timeout=timeout, stdin=subprocess.DEVNULL)

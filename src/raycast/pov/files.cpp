@@ -60,6 +60,8 @@ void Interpreter::fopen_directive() {
   f->path = path.string();
   if (mode == "read") {
     f->stream.open(path, std::ios::in);
+  } else if ((mode == "write" || mode == "append") && !options_.file_output) {
+    fail_at(at, "#fopen: writing files is turned off here");
   } else if (mode == "write" || mode == "append") {
     f->writing = true;
     f->stream.open(path, mode == "write" ? std::ios::out | std::ios::trunc : std::ios::out | std::ios::app);

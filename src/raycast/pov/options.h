@@ -34,7 +34,8 @@ struct Options {
   double antialias_threshold = 0.3;
   int antialias_depth = 3;
   std::ostream* debug = nullptr;  // where #debug and #warning write (nullptr: standard error)
-  bool system_library_path = true;  // read Library_Path from the user's and the system's povray.ini
+  bool system_library_path = true;
+  bool file_output = true;  // #fopen ... write/append allowed (the fuzz target turns it off)  // read Library_Path from the user's and the system's povray.ini
   Limits limits;
 };
 
