@@ -134,8 +134,16 @@ std::optional<Node> Interpreter::object(int depth) {
       }
     } else {
       if (v->object) {
-        add_weight(weight(*v->object), tok().pos);  // a copy
-        n = *v->object;
+        add_weight(v->object->weight, tok().pos);  // a use counts as a copy
+        const Node::Kind k = v->object->kind;
+        if (is_csg(k) || k == Node::Union || k == Node::Mesh || k == Node::Reference) {
+          // A composite is shared, not copied (a mesh of millions of triangles, a union of
+          // thousands of objects): this node places it.
+          n.kind = Node::Reference;
+          n.ref = v->object;
+        } else {
+          n = *v->object;
+        }
       } else {
         skipped = true;
       }
@@ -191,10 +199,15 @@ std::optional<Node> Interpreter::object(int depth) {
     if (!modifier(n, depth)) unexpected("an object modifier in " + kw.text);
   }
   if (skipped) return std::nullopt;
-  if (kw.text != "object")  // its own data (children were counted when they were read)
-    add_weight(kPovNodeWeight + n.points.size() + n.vertices.size() + n.normals.size() +
-                   n.triangles.size() + n.terms.size(),
-               n.pos);
+  if (kw.text != "object") {  // its own data (children were counted when they were read)
+    const std::size_t own = kPovNodeWeight + n.points.size() + n.vertices.size() +
+                            n.normals.size() + n.triangles.size() + n.terms.size();
+    add_weight(own, n.pos);
+    n.weight = own;
+    for (const Node& c : n.children) n.weight += c.weight;
+  } else {
+    n.weight = n.kind == Node::Reference ? n.ref->weight + kPovNodeWeight : weight(n);
+  }
   if (n.kind == Node::Intersection) fold_poly_bounds(n);
   if (n.kind == Node::Poly && n.terms.empty()) fail_at(n.pos, "the polynomial has no terms");
   if (is_csg(n.kind) && n.children.empty()) return std::nullopt;  // every part left out

@@ -90,7 +90,8 @@ struct Node {
     Intersection,
     Difference,
     Merge,
-    LightSource  // a light_source (in a union, it moves with it)
+    LightSource,  // a light_source (in a union, it moves with it)
+    Reference     // object { Name } of a composite object: `ref`, placed by this node
   };
   Kind kind = Sphere;
   Pos pos;
@@ -108,6 +109,8 @@ struct Node {
   std::vector<std::array<int, 3>> triangles;
   std::vector<Node> children;
   std::optional<Light> light;  // LightSource
+  std::shared_ptr<const Node> ref;  // Reference: shared, never copied
+  std::size_t weight = 0;           // this object's count against Limits::scene_weight
   bool inverse = false;        // `inverse`: the solid's complement
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;

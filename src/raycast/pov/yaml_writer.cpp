@@ -256,6 +256,14 @@ class Writer {
   // raycast's solid union there, and a group elsewhere, keeping its inner surfaces).
   void object(const Node& n, int indent, bool solid, const Texture* inherited) {
     if (n.kind == Node::LightSource) return;  // written under lights:
+    if (n.kind == Node::Reference) {  // object { Name }: a union of the shared object, placed
+      Node wrap = n;
+      wrap.kind = Node::Union;
+      wrap.children = {*n.ref};
+      wrap.ref.reset();
+      object(wrap, indent, solid, inherited);
+      return;
+    }
     const std::string pad(static_cast<std::size_t>(2 * indent), ' ');
     const std::string more(static_cast<std::size_t>(2 * indent + 2), ' ');
     std::ostringstream o;
@@ -370,6 +378,7 @@ class Writer {
         break;
       }
       case Node::LightSource:
+      case Node::Reference:
       case Node::Union:
       case Node::Merge:
       case Node::Intersection:

@@ -390,6 +390,10 @@ class Builder {
       for (const Node& c : n.children) add(c, tex, xf, entry, out);
       return;
     }
+    if (n.kind == Node::Reference) {
+      add(*n.ref, tex, compose(parent, own_transform(n, false)), entry, out);
+      return;
+    }
     if (is_csg(n.kind)) {
       CsgTree tree;
       csg_operation(n, tex, std::nullopt, tree);
@@ -421,22 +425,34 @@ class Builder {
                                                         : CsgOp::kUnion;
     for (const Node& c : n.children) {
       const pov::Texture* ct = c.texture ? &*c.texture : tex;
+      if (c.kind == Node::Reference && c.ref->texture) ct = &*c.ref->texture;
       if (c.kind == Node::LightSource) {
         light(*c.light, std::nullopt);
         continue;
       }
       std::int32_t code;
-      if (c.kind == Node::Union || is_csg(c.kind)) {
-        const std::optional<Transform> xf = compose(here, own_transform(c, false));
-        code = csg_operation(c, ct, xf, tree);
+      const Node* part = &c;
+      std::optional<Transform> at = here;
+      while (part->kind == Node::Reference) {  // object { Name }: the shared object, placed
+        at = compose(at, own_transform(*part, false));
+        part = part->ref.get();
+        if (part->texture && !c.texture) ct = &*part->texture;
+      }
+      if (part->kind == Node::Union || is_csg(part->kind)) {
+        const std::optional<Transform> xf =
+            part == &c ? compose(here, own_transform(c, false)) : compose(at, own_transform(*part, false));
+        code = csg_operation(*part, ct, xf, tree);
+      } else if (part->kind == Node::LightSource) {
+        light(*part->light, at);
+        continue;
       } else {
-        std::optional<Object> o = leaf(c, ct, here);
+        std::optional<Object> o = leaf(*part, ct, at);
         if (!o) continue;
         if (!is_closed(*o)) {
           warn(c.pos, "open surfaces in CSG", "raycast's CSG needs closed solids");
           continue;
         }
-        o->material = c.texture ? material(*c.texture) : -1;
+        o->material = part->texture ? material(*part->texture) : c.texture ? material(*c.texture) : -1;
         tree.leaves.push_back(std::move(*o));
         code = csg_leaf_code(tree.leaves.size() - 1);
       }
