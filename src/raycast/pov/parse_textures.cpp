@@ -3,6 +3,9 @@
 // whole and warned about once per kind.
 #include <algorithm>
 #include <cmath>
+#include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "pov/interpreter.h"
 
@@ -23,10 +26,14 @@ const char* const kPatternModifiers[] = {
     "map_type", "use_color", "use_colour", "use_index", "color_space", "orientation", "mortar",
     "coords", "max_iteration", "precision", "repeat", "agate_turb", "brick_size", "control0",
     "control1", "fractal_interior_type", "fractal_exterior_type", "interior", "exterior"};
+// Whether `w` is one of the two keyword lists (sets made once: asked for many words).
 bool in(const char* const* list, std::size_t n, const std::string& w) {
-  for (std::size_t i = 0; i < n; ++i)
-    if (w == list[i]) return true;
-  return false;
+  static const std::unordered_set<std::string_view> patterns(std::begin(kPatterns),
+                                                             std::end(kPatterns));
+  static const std::unordered_set<std::string_view> modifiers(std::begin(kPatternModifiers),
+                                                              std::end(kPatternModifiers));
+  (void)n;
+  return (list == kPatterns ? patterns : modifiers).count(w) > 0;
 }
 Colour to_colour(const Value& v) {
   if (v.kind == Value::Float) return {v.v[0], v.v[0], v.v[0], 0, 0};
@@ -267,7 +274,11 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
   while (!accept_symbol("}")) {
     const Token t = tok();
     const std::string& w = t.text;
-    if (t.kind == Token::Word && w == "checker") {
+    if (t.kind == Token::Word && (w == "rgb" || w == "color" || w == "colour")) {
+      p.checker = false;  // the common case first
+      p.pattern.clear();
+      p.c0 = colour("pigment");
+    } else if (t.kind == Token::Word && w == "checker") {
       next();
       p.checker = true;
       p.pattern.clear();

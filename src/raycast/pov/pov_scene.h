@@ -2,6 +2,7 @@
 // What the POV-Ray parser produces: the scene in POV-Ray's own (left-handed) coordinates and
 // terms, before it is mapped to raycast's scene format by yaml_writer.
 #include <array>
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -137,7 +138,7 @@ struct Settings {
 
 struct PovScene {
   Camera camera;
-  std::vector<Node> objects;
+  std::deque<Node> objects;  // a deque: 100,000s of nodes are never moved as it grows
   Colour background;
   Colour ambient_light{1, 1, 1, 0, 0};
   int max_trace_level = 5;

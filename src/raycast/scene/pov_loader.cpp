@@ -1,6 +1,7 @@
 #include "scene/pov_loader.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -50,9 +51,11 @@ class Builder {
       scene_.render.antialias.depth = s_.settings.antialias_depth;
       scene_.render.antialias.threshold = s_.settings.antialias_threshold;
     }
+    scene_.objects.reserve(s_.objects.size());
+    std::vector<Object> out;
     for (const Node& n : s_.objects) {
       const int entry = scene_.entries;
-      std::vector<Object> out;
+      out.clear();
       add(n, nullptr, std::nullopt, entry, out);
       if (out.empty()) continue;
       ++scene_.entries;
@@ -155,20 +158,20 @@ class Builder {
     mat.transmission = tr;
     mat.fresnel = f.fresnel && tr > 0;
     if (t.ior) mat.ior = *t.ior;
-    std::ostringstream key;
-    key.precision(17);
-    key << mat.color.x << ' ' << mat.color.y << ' ' << mat.color.z << ' ' << mat.has_checker << ' '
-        << mat.checker.c0.x << ' ' << mat.checker.c0.y << ' ' << mat.checker.c0.z << ' '
-        << mat.checker.c1.x << ' ' << mat.checker.c1.y << ' ' << mat.checker.c1.z << ' '
-        << mat.checker.scale << ' ' << mat.ambient << ' ' << mat.diffuse << ' ' << mat.specular
-        << ' ' << mat.shininess << ' ' << mat.reflection << ' ' << mat.transmission << ' '
-        << mat.fresnel << ' ' << mat.ior;
-    const auto it = materials_.find(key.str());
+    const MaterialKey key = {mat.color.x,        mat.color.y,       mat.color.z,
+                             double(mat.has_checker), mat.checker.c0.x, mat.checker.c0.y,
+                             mat.checker.c0.z,   mat.checker.c1.x,  mat.checker.c1.y,
+                             mat.checker.c1.z,   mat.checker.scale, mat.ambient,
+                             mat.diffuse,        mat.specular,      mat.shininess,
+                             mat.reflection,     mat.transmission,  double(mat.fresnel),
+                             mat.ior};
+    const auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
-    mat.name = t.name.empty() ? "m" + std::to_string(scene_.materials.size()) : t.name;
+    mat.name = t.name;
+    if (mat.name.empty()) mat.name.append("m").append(std::to_string(scene_.materials.size()));
     scene_.materials.push_back(mat);
     const int index = static_cast<int>(scene_.materials.size()) - 1;
-    materials_[key.str()] = index;
+    materials_[key] = index;
     return index;
   }
 
@@ -478,7 +481,9 @@ class Builder {
   Vec3 shift_{0, 0, 0};  // the checker offset of the shape being built
   bool mirror_ = false;
   double gamma_ = 1;
-  std::map<std::string, int> materials_;
+  // Equal materials are stored once: every field of raycast's material, as written.
+  using MaterialKey = std::array<double, 19>;
+  std::map<MaterialKey, int> materials_;
   std::set<std::string> warned_;
 };
 
