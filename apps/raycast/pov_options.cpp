@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/pov_loader.h"
+#include "load/pov_loader.h"
 
 namespace raycast::cli {
 

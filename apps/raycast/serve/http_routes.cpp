@@ -9,8 +9,8 @@
 #include <memory>
 #include <sstream>
 
-#include "scene/scene_error.h"
-#include "scene/yaml_reader.h"
+#include "io/scene_error.h"
+#include "load/yaml_reader.h"
 #include "serve/camera_request.h"
 #include "serve/camera_writeback.h"
 #include "serve/json_text.h"

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
 
 namespace raycast::pov {
 
