@@ -148,6 +148,7 @@ std::shared_ptr<const FnNode> Interpreter::function_expression(
           f->args = args();
           if (in.is_symbol(".")) {  // a component of a vector or colour function's value
             in.next();
+            in.tok();
             in.next();
             return call("component", {f});
           }

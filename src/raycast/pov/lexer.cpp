@@ -134,6 +134,16 @@ class Reader {
 Token read_token(std::string_view text, int file, const Sources& sources, Cursor& cursor) {
   Reader r(text, file, sources, cursor);
   r.skip_space_and_comments();
+  // A '#' with no directive name after it is skipped, as POV-Ray does.
+  while (r.peek() == '#') {
+    Cursor after = cursor;
+    Reader look(text, file, sources, after);
+    look.advance();
+    look.skip_space_and_comments();
+    const char c = look.peek();
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') break;
+    cursor = after;
+  }
   Token t;
   t.pos = r.here();
   if (r.at_end()) return t;

@@ -124,6 +124,16 @@ std::optional<Node> Interpreter::object(int depth) {
   bool skipped = false;  // an object raycast does not build: its modifiers are still read
   if (kw.text == "object") {
     const Value* v = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+    Value element;
+    bool name_read = false;
+    if (v && v->kind == Value::Array) {  // object { Objects[I] }
+      const Pos at = tok().pos;
+      element = expression();
+      if (element.kind != Value::Object)
+        fail_at(at, "expected an object, got " + std::string(kind_name(element)));
+      v = &element;
+      name_read = true;
+    }
     if (!v || v->kind != Value::Object) {
       if (is_object_keyword()) {
         std::optional<Node> inner = object(depth + 1);
@@ -147,7 +157,7 @@ std::optional<Node> Interpreter::object(int depth) {
       } else {
         skipped = true;
       }
-      next();
+      if (!name_read) next();
     }
   } else {
     n.kind = object_kinds().at(kw.text);
@@ -582,6 +592,10 @@ void Interpreter::mesh2_body(Node& n, int) {
   else
     unexpected("face_indices in mesh2");
   if (is_word("normal_indices")) index_block("normal_indices", face_normals, normal_pos);
+  while (is_word("uv_indices") || is_word("normal_indices")) {  // uv coordinates: not used
+    next();
+    skip_block("uv_indices");
+  }
   if (is_word("inside_vector")) {
     next();
     vector("inside_vector");
@@ -654,6 +668,9 @@ bool Interpreter::modifier(Node& n, int depth) {
   } else if (w == "material") {
     next();
     n.texture = material_block(n.texture ? *n.texture : default_texture_, depth + 1);
+  } else if (w == "global_lights" && n.kind == Node::Union) {
+    next();
+    boolean_option();
   } else if (w == "hollow" || w == "sturm" || w == "no_shadow" || w == "no_image" ||
              w == "no_reflection" || w == "double_illuminate" || w == "no_radiosity" ||
              w == "split_union" || w == "cutaway_textures" || w == "uv_mapping" ||

@@ -73,7 +73,8 @@ Camera Interpreter::camera_block(const Camera& base) {
         unsupported_warning(t.pos, "camera angles of 179 degrees or more", "179 is used");
         angle = 179;
       }
-      if (starts_colour()) number("the vertical angle");
+      accept_symbol(",");
+      if (numeric_ahead()) number("the vertical angle");
     } else if (w == "look_at") {
       next();
       const Vec3 target = vector("look_at");
@@ -127,14 +128,16 @@ Node Interpreter::light_block() {
   l.pos = tok().pos;
   next();
   expect_symbol("{", "after light_source");
+  bool declared_light = false;
   if (tok().kind == Token::Word) {
     const Value* v = lookup(tok().text);
     if (v && v->kind == Value::Object && v->object && v->object->light) {
       l = *v->object->light;
       next();
+      declared_light = true;
     }
   }
-  if (!is_symbol("}")) {
+  if (!declared_light && !is_symbol("}")) {
     l.position = vector("the light's position");
     skip_comma();
   }

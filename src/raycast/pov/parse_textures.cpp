@@ -528,7 +528,10 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
       unsupported_warning(k.pos, k.text, "the first texture is used");
       expect_symbol("{", ("after " + k.text).c_str());
       bool first = true;
-      while (!accept_symbol("}")) {
+      int depth = 0;  // braces of an entry's own items: [0.2 pigment { Jade } finish { ... }]
+      while (depth > 0 || !accept_symbol("}")) {
+        if (is_symbol("{")) ++depth;
+        if (is_symbol("}")) --depth;
         if (is_word("texture")) {
           next();
           const Texture layer = texture_block(base, depth + 1);
@@ -577,13 +580,7 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
 Texture Interpreter::material_block(const Texture& base, int depth) {
   expect_symbol("{", "after material");
   Texture t = base;
-  if (tok().kind == Token::Word) {
-    const Value* v = lookup(tok().text);
-    if (v && (v->kind == Value::Material || v->kind == Value::Texture)) {
-      t = *v->texture;
-      next();
-    }
-  }
+  if (const std::optional<Value> v = declared(Value::Texture)) t = *v->texture;
   while (!accept_symbol("}")) {
     if (is_word("texture")) {
       next();

@@ -121,7 +121,12 @@ void Interpreter::declare(const Token& d, bool local) {
   } else {
     expect_symbol("=", ("after #declare " + name).c_str());
     Value v = rvalue();
+    // The token after the value first: a macro whose body is the value ends there, and #local
+    // must then name the caller's scope, not the finished macro's.
+    const bool semicolon = pov::is_symbol(peek_operator(), ";");
     assign(name, std::move(v), local, at);
+    if (semicolon) next();
+    return;
   }
   (void)d;
   if (pov::is_symbol(peek_operator(), ";")) next();
