@@ -193,5 +193,33 @@ TEST(PovInterpreter, DeclaresFromTheCommandLine) {
   EXPECT_EQ(debug_of("#debug concat(str(Quality,0,0), Name)", o), "3abc");
 }
 
+
+TEST(PovInterpreter, LocalOfAMacrosValueLandsInTheCallersScope) {
+  // transforms.inc's idiom: #local M = Macro(...) with the value as the macro's body.
+  EXPECT_EQ(debug_of("#macro Val(A) A * 2 #end\n#macro User() #local M = Val(3) #debug "
+                     "str(M,0,0) #end\nUser()"),
+            "6");
+}
+
+TEST(PovInterpreter, ForgivenSyntax) {
+  // Commas left out, a trailing comma, a stray '#', `declare` without '#'.
+  EXPECT_EQ(debug_of("#declare V = <1 2 3,>;\n#declare A = array[2] { 4 5 }\n#\n"
+                     "declare B = 7;\n#macro M(P Q) P + Q #end\n"
+                     "#debug concat(vstr(3,V,\",\",0,0), str(A[1],0,0), str(B,0,0), "
+                     "str(M(1 2),0,0))"),
+            "1,2,3573");
+}
+
+TEST(PovInterpreter, ObjectsFromArrayElements) {
+  Options o;
+  o.system_library_path = false;
+  const PovScene s = interpret_pov(
+      "#declare Arr = array[2] { sphere { 0, 1 }, box { -1, 1 } }\nobject { Arr[1] translate x }",
+      "t.pov", ".", o);
+  ASSERT_EQ(s.objects.size(), 1u);
+  EXPECT_EQ(s.objects[0].kind, Node::Box);
+  ASSERT_EQ(s.objects[0].xforms.size(), 1u);
+}
+
 }  // namespace
 }  // namespace raycast::pov
