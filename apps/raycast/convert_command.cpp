@@ -12,8 +12,8 @@
 namespace raycast::cli {
 
 Action add_convert_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "convert", "Convert a POV-Ray scene (.pov or .ini) to raycast's YAML format");
+  auto* cmd = app.add_subcommand("convert",
+                                 "Convert a POV-Ray scene (.pov or .ini) to raycast's YAML format");
   auto scene = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>("-");
   cmd->add_option("SCENE", *scene, "POV-Ray scene file (.pov)")->required();

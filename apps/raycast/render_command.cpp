@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "commands.h"
-#include "pov_options.h"
 #include "distributed/distributed.h"
 #include "distributed/launch.h"
 #include "io/image.h"
@@ -17,6 +16,7 @@
 #include "load/loader.h"
 #include "load/validate.h"
 #include "output_file.h"
+#include "pov_options.h"
 #include "render/renderer.h"
 #include "render_frames.h"
 #include "render_output.h"

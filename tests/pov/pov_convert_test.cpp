@@ -186,8 +186,8 @@ TEST(PovImport, OpenSurfacesInCsgAreAWarningOrAnErrorWhenStrict) {
   const Scene s = load_pov_scene_text(text, "t.pov", ".", -1, {}, &warnings);
   EXPECT_EQ(s.objects.size(), 1u);
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_EQ(warnings[0].rfind("t.pov:3:3: warning: raycast does not render open surfaces in CSG", 0),
-            0u)
+  EXPECT_EQ(
+      warnings[0].rfind("t.pov:3:3: warning: raycast does not render open surfaces in CSG", 0), 0u)
       << warnings[0];
   pov::Options strict;
   strict.strict = true;

@@ -28,8 +28,10 @@ TEST(PovIncludes, EveryStandardIncludeParses) {
     o.library_paths = {kIncludes};
     std::ostringstream debug;
     o.debug = &debug;
-    const std::string text = "#include \"colors.inc\"\n#include \"shapes.inc\"\n"
-                             "#include \"stdcam.inc\"\n#include \"" + name + "\"\n";
+    const std::string text =
+        "#include \"colors.inc\"\n#include \"shapes.inc\"\n"
+        "#include \"stdcam.inc\"\n#include \"" +
+        name + "\"\n";
     try {
       interpret_pov(text, "t.pov", ".", o);
     } catch (const SceneError& e) {

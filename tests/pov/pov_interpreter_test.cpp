@@ -193,7 +193,6 @@ TEST(PovInterpreter, DeclaresFromTheCommandLine) {
   EXPECT_EQ(debug_of("#debug concat(str(Quality,0,0), Name)", o), "3abc");
 }
 
-
 TEST(PovInterpreter, LocalOfAMacrosValueLandsInTheCallersScope) {
   // transforms.inc's idiom: #local M = Macro(...) with the value as the macro's body.
   EXPECT_EQ(debug_of("#macro Val(A) A * 2 #end\n#macro User() #local M = Val(3) #debug "

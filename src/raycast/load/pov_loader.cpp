@@ -10,12 +10,12 @@
 #include <set>
 #include <sstream>
 
-#include "pov/checker_grid.h"
-#include "pov/interpreter.h"
-#include "pov/ini_file.h"
-#include "pov/yaml_writer.h"
-#include "objects/csg_tree.h"
 #include "io/scene_file.h"
+#include "objects/csg_tree.h"
+#include "pov/checker_grid.h"
+#include "pov/ini_file.h"
+#include "pov/interpreter.h"
+#include "pov/yaml_writer.h"
 
 namespace raycast {
 
@@ -93,7 +93,8 @@ class Builder {
     } else {
       // The vertical field of view from up's length against direction's.
       d.fov = 2 * std::atan(0.5 * length(c.up) / length(c.direction)) * 180 / std::numbers::pi;
-      if (!(d.fov > 0 && d.fov < 180)) fail_at(c.pos, "the camera's field of view is not in (0, 180)");
+      if (!(d.fov > 0 && d.fov < 180))
+        fail_at(c.pos, "the camera's field of view is not in (0, 180)");
     }
     scene_.camera = d;
     scene_.marks.camera = {c.pos.file == 0 ? c.pos.line : 0, c.pos.column};
@@ -158,12 +159,24 @@ class Builder {
     mat.transmission = tr;
     mat.fresnel = f.fresnel && tr > 0;
     if (t.ior) mat.ior = *t.ior;
-    const MaterialKey key = {mat.color.x,        mat.color.y,       mat.color.z,
-                             double(mat.has_checker), mat.checker.c0.x, mat.checker.c0.y,
-                             mat.checker.c0.z,   mat.checker.c1.x,  mat.checker.c1.y,
-                             mat.checker.c1.z,   mat.checker.scale, mat.ambient,
-                             mat.diffuse,        mat.specular,      mat.shininess,
-                             mat.reflection,     mat.transmission,  double(mat.fresnel),
+    const MaterialKey key = {mat.color.x,
+                             mat.color.y,
+                             mat.color.z,
+                             double(mat.has_checker),
+                             mat.checker.c0.x,
+                             mat.checker.c0.y,
+                             mat.checker.c0.z,
+                             mat.checker.c1.x,
+                             mat.checker.c1.y,
+                             mat.checker.c1.z,
+                             mat.checker.scale,
+                             mat.ambient,
+                             mat.diffuse,
+                             mat.specular,
+                             mat.shininess,
+                             mat.reflection,
+                             mat.transmission,
+                             double(mat.fresnel),
                              mat.ior};
     const auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
@@ -214,7 +227,8 @@ class Builder {
               const double v = i == 3   ? (j == 3 ? 1 : 0)
                                : j == 3 ? x.m[static_cast<std::size_t>(9 + i)]
                                         : x.m[static_cast<std::size_t>(3 * j + i)];
-              mm.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = v * sign[i] * sign[j];
+              mm.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+                  v * sign[i] * sign[j];
             }
           const std::optional<Transform> tm = Transform::from_matrix(mm);
           if (!tm) fail_at(n.pos, "the matrix cannot be inverted");
@@ -251,7 +265,8 @@ class Builder {
       first = false;
       const char* var[3] = {"x", "y", "z"};
       for (int i = 0; i < 3; ++i)
-        if (k[static_cast<std::size_t>(i)]) e << "*" << var[i] << "^" << k[static_cast<std::size_t>(i)];
+        if (k[static_cast<std::size_t>(i)])
+          e << "*" << var[i] << "^" << k[static_cast<std::size_t>(i)];
     }
     return first ? "0" : e.str();
   }
@@ -289,7 +304,8 @@ class Builder {
       }
       case Node::Poly:
         if (!n.bounds) {
-          warn(n.pos, "unbounded polynomials", "raycast needs bounded_by { box } or an intersection with a box");
+          warn(n.pos, "unbounded polynomials",
+               "raycast needs bounded_by { box } or an intersection with a box");
           return std::nullopt;
         }
         return make_algebraic(polynomial_text(n), box_of(*n.bounds));
@@ -315,11 +331,13 @@ class Builder {
         std::vector<Vec3f> pos, nor;
         for (const Vec3& v : n.vertices) {
           const Vec3 q = pt(v);
-          pos.push_back({static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
+          pos.push_back(
+              {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
         }
         for (const Vec3& v : n.normals) {
           const Vec3 q = m(v);
-          nor.push_back({static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
+          nor.push_back(
+              {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
         }
         std::vector<std::array<std::uint32_t, 3>> tris;
         tris.reserve(n.triangles.size());
@@ -442,8 +460,8 @@ class Builder {
         if (part->texture && !c.texture) ct = &*part->texture;
       }
       if (part->kind == Node::Union || is_csg(part->kind)) {
-        const std::optional<Transform> xf =
-            part == &c ? compose(here, own_transform(c, false)) : compose(at, own_transform(*part, false));
+        const std::optional<Transform> xf = part == &c ? compose(here, own_transform(c, false))
+                                                       : compose(at, own_transform(*part, false));
         code = csg_operation(*part, ct, xf, tree);
       } else if (part->kind == Node::LightSource) {
         light(*part->light, at);
@@ -455,7 +473,9 @@ class Builder {
           warn(c.pos, "open surfaces in CSG", "raycast's CSG needs closed solids");
           continue;
         }
-        o->material = part->texture ? material(*part->texture) : c.texture ? material(*c.texture) : -1;
+        o->material = part->texture ? material(*part->texture)
+                      : c.texture   ? material(*c.texture)
+                                    : -1;
         tree.leaves.push_back(std::move(*o));
         code = csg_leaf_code(tree.leaves.size() - 1);
       }
@@ -504,7 +524,8 @@ Scene build(pov::PovScene ps, const std::string& name, std::vector<std::string>*
   b.run();
   report(ps.warnings, warnings);
   report(b.warnings_, warnings);
-  for (std::size_t i = 1; i < ps.sources.paths.size(); ++i) scene.marks.files.push_back(ps.sources.paths[i]);
+  for (std::size_t i = 1; i < ps.sources.paths.size(); ++i)
+    scene.marks.files.push_back(ps.sources.paths[i]);
   scene.build();
   return scene;
 }
@@ -542,7 +563,8 @@ Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options
                           std::vector<std::string>* warnings) {
   pov::Options o = with_frame(options, frame);
   std::string scene_path = path;
-  if (path.size() >= 4 && (path.substr(path.size() - 4) == ".ini" || path.substr(path.size() - 4) == ".INI"))
+  if (path.size() >= 4 &&
+      (path.substr(path.size() - 4) == ".ini" || path.substr(path.size() - 4) == ".INI"))
     scene_path = pov::read_ini_file(path, o);
   const SceneFileText file = read_scene_file(scene_path);
   return build(pov::interpret_pov(file.text, scene_path, file.dir, o), scene_path, warnings,
@@ -552,7 +574,8 @@ Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options
 std::string convert_pov_file(const std::string& path, const pov::Options& options) {
   pov::Options o = options;
   std::string scene_path = path;
-  if (path.size() >= 4 && path.substr(path.size() - 4) == ".ini") scene_path = pov::read_ini_file(path, o);
+  if (path.size() >= 4 && path.substr(path.size() - 4) == ".ini")
+    scene_path = pov::read_ini_file(path, o);
   const SceneFileText file = read_scene_file(scene_path);
   pov::PovScene ps = pov::interpret_pov(file.text, scene_path, file.dir, o);
   report(ps.warnings, nullptr);

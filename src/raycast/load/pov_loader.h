@@ -12,8 +12,7 @@ namespace raycast {
 
 /// Loads a .pov scene; its warnings (what raycast does not render yet) go to `warnings` when
 /// given, else to standard error. Throws SceneError.
-Scene load_pov_scene_file(const std::string& path, int frame = -1,
-                          const pov::Options& options = {},
+Scene load_pov_scene_file(const std::string& path, int frame = -1, const pov::Options& options = {},
                           std::vector<std::string>* warnings = nullptr);
 Scene load_pov_scene_text(const std::string& text, const std::string& name, const std::string& dir,
                           int frame = -1, const pov::Options& options = {},

@@ -50,34 +50,67 @@ std::string format_number(double v, double width, double precision) {
 
 const std::map<std::string, int>& float_constants() {
   static const std::map<std::string, int> k = {
-      {"pi", 0},          {"true", 1},          {"yes", 1},           {"on", 1},
-      {"false", 2},       {"no", 2},            {"off", 2},           {"clock", 3},
-      {"clock_delta", 4}, {"clock_on", 5},      {"final_clock", 6},   {"final_frame", 7},
-      {"frame_number", 8}, {"initial_clock", 9}, {"initial_frame", 10}, {"image_width", 11},
-      {"image_height", 12}, {"version", 13},    {"tau", 14}};
+      {"pi", 0},           {"true", 1},          {"yes", 1},
+      {"on", 1},           {"false", 2},         {"no", 2},
+      {"off", 2},          {"clock", 3},         {"clock_delta", 4},
+      {"clock_on", 5},     {"final_clock", 6},   {"final_frame", 7},
+      {"frame_number", 8}, {"initial_clock", 9}, {"initial_frame", 10},
+      {"image_width", 11}, {"image_height", 12}, {"version", 13},
+      {"tau", 14}};
   return k;
 }
 
 const std::map<std::string, std::vector<Arg>>& functions() {
   using A = Arg;
   static const std::map<std::string, std::vector<Arg>> f = {
-      {"abs", {A::F}},          {"acos", {A::F}},        {"acosh", {A::F}},
-      {"asin", {A::F}},         {"asinh", {A::F}},       {"atan", {A::F}},
-      {"atanh", {A::F}},        {"atan2", {A::F, A::F}}, {"ceil", {A::F}},
-      {"cos", {A::F}},          {"cosh", {A::F}},        {"degrees", {A::F}},
-      {"div", {A::F, A::F}},    {"exp", {A::F}},         {"floor", {A::F}},
-      {"int", {A::F}},          {"ln", {A::F}},          {"log", {A::F}},
-      {"mod", {A::F, A::F}},    {"pow", {A::F, A::F}},   {"radians", {A::F}},
-      {"sin", {A::F}},          {"sinh", {A::F}},        {"sqrt", {A::F}},
-      {"tan", {A::F}},          {"tanh", {A::F}},        {"bitwise_and", {A::F, A::F}},
-      {"bitwise_or", {A::F, A::F}}, {"bitwise_xor", {A::F, A::F}},
-      {"seed", {A::F}},         {"vdot", {A::V, A::V}},  {"vlength", {A::V}},
-      {"vcross", {A::V, A::V}}, {"vnormalize", {A::V}},  {"vrotate", {A::V, A::V}},
-      {"vaxis_rotate", {A::V, A::V, A::F}}, {"vturbulence", {A::F, A::F, A::F, A::V}},
-      {"strlen", {A::S}},       {"strupr", {A::S}},      {"strlwr", {A::S}},
-      {"strcmp", {A::S, A::S}}, {"substr", {A::S, A::F, A::F}}, {"chr", {A::F}},
-      {"asc", {A::S}},          {"val", {A::S}},         {"str", {A::F, A::F, A::F}},
-      {"vstr", {A::F, A::V, A::S, A::F, A::F}}, {"file_exists", {A::S}},
+      {"abs", {A::F}},
+      {"acos", {A::F}},
+      {"acosh", {A::F}},
+      {"asin", {A::F}},
+      {"asinh", {A::F}},
+      {"atan", {A::F}},
+      {"atanh", {A::F}},
+      {"atan2", {A::F, A::F}},
+      {"ceil", {A::F}},
+      {"cos", {A::F}},
+      {"cosh", {A::F}},
+      {"degrees", {A::F}},
+      {"div", {A::F, A::F}},
+      {"exp", {A::F}},
+      {"floor", {A::F}},
+      {"int", {A::F}},
+      {"ln", {A::F}},
+      {"log", {A::F}},
+      {"mod", {A::F, A::F}},
+      {"pow", {A::F, A::F}},
+      {"radians", {A::F}},
+      {"sin", {A::F}},
+      {"sinh", {A::F}},
+      {"sqrt", {A::F}},
+      {"tan", {A::F}},
+      {"tanh", {A::F}},
+      {"bitwise_and", {A::F, A::F}},
+      {"bitwise_or", {A::F, A::F}},
+      {"bitwise_xor", {A::F, A::F}},
+      {"seed", {A::F}},
+      {"vdot", {A::V, A::V}},
+      {"vlength", {A::V}},
+      {"vcross", {A::V, A::V}},
+      {"vnormalize", {A::V}},
+      {"vrotate", {A::V, A::V}},
+      {"vaxis_rotate", {A::V, A::V, A::F}},
+      {"vturbulence", {A::F, A::F, A::F, A::V}},
+      {"strlen", {A::S}},
+      {"strupr", {A::S}},
+      {"strlwr", {A::S}},
+      {"strcmp", {A::S, A::S}},
+      {"substr", {A::S, A::F, A::F}},
+      {"chr", {A::F}},
+      {"asc", {A::S}},
+      {"val", {A::S}},
+      {"str", {A::F, A::F, A::F}},
+      {"vstr", {A::F, A::V, A::S, A::F, A::F}},
+      {"file_exists", {A::S}},
       {"datetime", {A::F}}};
   return f;
 }
@@ -85,9 +118,24 @@ const std::map<std::string, std::vector<Arg>>& functions() {
 }  // namespace
 
 bool Interpreter::is_builtin(const std::string& w) const {
-  static const char* const special[] = {"x", "y", "z", "t", "u", "v", "min", "max", "select",
-                                        "concat", "defined", "dimensions", "dimension_size",
-                                        "rand", "inside", "trace", "min_extent", "max_extent",
+  static const char* const special[] = {"x",
+                                        "y",
+                                        "z",
+                                        "t",
+                                        "u",
+                                        "v",
+                                        "min",
+                                        "max",
+                                        "select",
+                                        "concat",
+                                        "defined",
+                                        "dimensions",
+                                        "dimension_size",
+                                        "rand",
+                                        "inside",
+                                        "trace",
+                                        "min_extent",
+                                        "max_extent",
                                         "now"};
   for (const char* s : special)
     if (w == s) return true;
@@ -123,30 +171,46 @@ Value Interpreter::builtin(const Token& t) {
   if (const auto c = float_constants().find(w); c != float_constants().end()) {
     const Options& o = options_;
     switch (c->second) {
-      case 0: return Value::number(std::numbers::pi);
-      case 1: return Value::number(1);
-      case 2: return Value::number(0);
-      case 3: return Value::number(o.clock);
-      case 4: return Value::number(o.final_frame > o.initial_frame
-                                       ? (o.final_clock - o.initial_clock) / (o.final_frame - o.initial_frame)
-                                       : 0);
-      case 5: return Value::number(o.clock_on);
-      case 6: return Value::number(o.final_clock);
-      case 7: return Value::number(o.final_frame);
-      case 8: return Value::number(o.frame);
-      case 9: return Value::number(o.initial_clock);
-      case 10: return Value::number(o.initial_frame);
-      case 11: return Value::number(o.width > 0 ? o.width : 640);
-      case 12: return Value::number(o.height > 0 ? o.height : 480);
-      case 13: return Value::number(scene_.settings.version);
-      default: return Value::number(2 * std::numbers::pi);
+      case 0:
+        return Value::number(std::numbers::pi);
+      case 1:
+        return Value::number(1);
+      case 2:
+        return Value::number(0);
+      case 3:
+        return Value::number(o.clock);
+      case 4:
+        return Value::number(o.final_frame > o.initial_frame ? (o.final_clock - o.initial_clock) /
+                                                                   (o.final_frame - o.initial_frame)
+                                                             : 0);
+      case 5:
+        return Value::number(o.clock_on);
+      case 6:
+        return Value::number(o.final_clock);
+      case 7:
+        return Value::number(o.final_frame);
+      case 8:
+        return Value::number(o.frame);
+      case 9:
+        return Value::number(o.initial_clock);
+      case 10:
+        return Value::number(o.initial_frame);
+      case 11:
+        return Value::number(o.width > 0 ? o.width : 640);
+      case 12:
+        return Value::number(o.height > 0 ? o.height : 480);
+      case 13:
+        return Value::number(scene_.settings.version);
+      default:
+        return Value::number(2 * std::numbers::pi);
     }
   }
   if (w == "now") return Value::number(0);
   expect_symbol("(", ("after " + w).c_str());
   if (w == "defined") {
     const Token nt = raw_name();
-    if (nt.kind != Token::Word) fail_at(nt.pos, "expected a name in defined( ), got " + describe(nt));
+    if (nt.kind != Token::Word)
+      fail_at(nt.pos, "expected a name in defined( ), got " + describe(nt));
     const bool d = find_symbol(nt.text) != nullptr;
     expect_symbol(")", "to close defined(");
     return Value::number(d);
@@ -172,8 +236,8 @@ Value Interpreter::builtin(const Token& t) {
   next();
   auto need = [&](std::size_t n) {
     if (a.size() != n)
-      fail_at(t.pos, w + " takes " + std::to_string(n) + " argument(s), got " +
-                         std::to_string(a.size()));
+      fail_at(t.pos,
+              w + " takes " + std::to_string(n) + " argument(s), got " + std::to_string(a.size()));
   };
   auto f = [&](std::size_t i) {
     if (a[i].kind != Value::Float) fail_at(at[i], w + ": expected a float, got " + kind_name(a[i]));
@@ -181,17 +245,20 @@ Value Interpreter::builtin(const Token& t) {
   };
   auto vv = [&](std::size_t i) -> Vec3 {
     if (a[i].kind == Value::Float) return {a[i].v[0], a[i].v[0], a[i].v[0]};
-    if (a[i].kind != Value::Vector) fail_at(at[i], w + ": expected a vector, got " + kind_name(a[i]));
+    if (a[i].kind != Value::Vector)
+      fail_at(at[i], w + ": expected a vector, got " + kind_name(a[i]));
     return {a[i].v[0], a[i].v[1], a[i].dims > 2 ? a[i].v[2] : 0};
   };
   auto s = [&](std::size_t i) -> const std::string& {
-    if (a[i].kind != Value::String) fail_at(at[i], w + ": expected a string, got " + kind_name(a[i]));
+    if (a[i].kind != Value::String)
+      fail_at(at[i], w + ": expected a string, got " + kind_name(a[i]));
     return a[i].text;
   };
   if (w == "min" || w == "max") {
     if (a.empty()) fail_at(t.pos, w + " needs at least one argument");
     double r = f(0);
-    for (std::size_t i = 1; i < a.size(); ++i) r = w == "min" ? std::min(r, f(i)) : std::max(r, f(i));
+    for (std::size_t i = 1; i < a.size(); ++i)
+      r = w == "min" ? std::min(r, f(i)) : std::max(r, f(i));
     return Value::number(r);
   }
   if (w == "select") {
@@ -243,41 +310,64 @@ Value Interpreter::builtin(const Token& t) {
   else
     need(sig.size());
   if (w == "seed") {
-    random_streams_.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(f(0))) *
-                                  0x9E3779B97F4A7C15ULL + 1);
+    random_streams_.push_back(
+        static_cast<std::uint64_t>(static_cast<std::int64_t>(f(0))) * 0x9E3779B97F4A7C15ULL + 1);
     return Value::number(static_cast<double>(random_streams_.size() - 1));
   }
   if (sig.size() == 1 && sig[0] == Arg::F) {
     const double x = f(0);
     double r;
-    if (w == "abs") r = std::fabs(x);
-    else if (w == "acos") r = std::acos(x);
-    else if (w == "acosh") r = std::acosh(x);
-    else if (w == "asin") r = std::asin(x);
-    else if (w == "asinh") r = std::asinh(x);
-    else if (w == "atan") r = std::atan(x);
-    else if (w == "atanh") r = std::atanh(x);
-    else if (w == "ceil") r = std::ceil(x);
-    else if (w == "cos") r = std::cos(x);
-    else if (w == "cosh") r = std::cosh(x);
-    else if (w == "degrees") r = x / kDegree;
-    else if (w == "exp") r = std::exp(x);
-    else if (w == "floor") r = std::floor(x);
-    else if (w == "int") r = std::trunc(x);
-    else if (w == "ln") r = std::log(x);
-    else if (w == "log") r = std::log10(x);
-    else if (w == "radians") r = x * kDegree;
-    else if (w == "sin") r = std::sin(x);
-    else if (w == "sinh") r = std::sinh(x);
-    else if (w == "sqrt") r = std::sqrt(x);
-    else if (w == "tan") r = std::tan(x);
-    else if (w == "tanh") r = std::tanh(x);
+    if (w == "abs")
+      r = std::fabs(x);
+    else if (w == "acos")
+      r = std::acos(x);
+    else if (w == "acosh")
+      r = std::acosh(x);
+    else if (w == "asin")
+      r = std::asin(x);
+    else if (w == "asinh")
+      r = std::asinh(x);
+    else if (w == "atan")
+      r = std::atan(x);
+    else if (w == "atanh")
+      r = std::atanh(x);
+    else if (w == "ceil")
+      r = std::ceil(x);
+    else if (w == "cos")
+      r = std::cos(x);
+    else if (w == "cosh")
+      r = std::cosh(x);
+    else if (w == "degrees")
+      r = x / kDegree;
+    else if (w == "exp")
+      r = std::exp(x);
+    else if (w == "floor")
+      r = std::floor(x);
+    else if (w == "int")
+      r = std::trunc(x);
+    else if (w == "ln")
+      r = std::log(x);
+    else if (w == "log")
+      r = std::log10(x);
+    else if (w == "radians")
+      r = x * kDegree;
+    else if (w == "sin")
+      r = std::sin(x);
+    else if (w == "sinh")
+      r = std::sinh(x);
+    else if (w == "sqrt")
+      r = std::sqrt(x);
+    else if (w == "tan")
+      r = std::tan(x);
+    else if (w == "tanh")
+      r = std::tanh(x);
     else if (w == "chr") {
       if (!(x >= 1 && x < 256)) fail_at(at[0], "chr needs a code in [1, 255]");
       return Value::string(std::string(1, static_cast<char>(static_cast<int>(x))));
     } else if (w == "datetime") {
       return Value::string("2000-01-01 00:00:00");
-    } else r = x;
+    } else
+      r = x;
     if (std::isnan(r)) fail_at(t.pos, w + "(" + format_number(x, 0, 6) + ") is not a number");
     return Value::number(r);
   }
@@ -287,7 +377,9 @@ Value Interpreter::builtin(const Token& t) {
   if (w == "pow") return Value::number(std::pow(f(0), f(1)));
   if (w.rfind("bitwise_", 0) == 0) {
     const auto p = static_cast<std::int64_t>(f(0)), q = static_cast<std::int64_t>(f(1));
-    return Value::number(static_cast<double>(w == "bitwise_and" ? (p & q) : w == "bitwise_or" ? (p | q) : (p ^ q)));
+    return Value::number(static_cast<double>(w == "bitwise_and"  ? (p & q)
+                                             : w == "bitwise_or" ? (p | q)
+                                                                 : (p ^ q)));
   }
   if (w == "vdot") return Value::number(dot(vv(0), vv(1)));
   if (w == "vlength") return Value::number(length(vv(0)));
@@ -306,7 +398,9 @@ Value Interpreter::builtin(const Token& t) {
   if (w == "strlen") return Value::number(static_cast<double>(s(0).size()));
   if (w == "strupr" || w == "strlwr") {
     std::string r = s(0);
-    for (char& c : r) c = static_cast<char>(w == "strupr" ? std::toupper(static_cast<unsigned char>(c)) : std::tolower(static_cast<unsigned char>(c)));
+    for (char& c : r)
+      c = static_cast<char>(w == "strupr" ? std::toupper(static_cast<unsigned char>(c))
+                                          : std::tolower(static_cast<unsigned char>(c)));
     return Value::string(r);
   }
   if (w == "strcmp") return Value::number(s(0).compare(s(1)) < 0 ? -1 : s(0) == s(1) ? 0 : 1);
@@ -315,7 +409,8 @@ Value Interpreter::builtin(const Token& t) {
     const double start = f(1), len = f(2);
     if (!(start >= 1 && len >= 0 && start - 1 + len <= x.size()))
       fail_at(t.pos, "substr: the range is outside the string");
-    return Value::string(x.substr(static_cast<std::size_t>(start) - 1, static_cast<std::size_t>(len)));
+    return Value::string(
+        x.substr(static_cast<std::size_t>(start) - 1, static_cast<std::size_t>(len)));
   }
   if (w == "asc") return Value::number(s(0).empty() ? 0 : static_cast<unsigned char>(s(0)[0]));
   if (w == "val") return Value::number(std::strtod(s(0).c_str(), nullptr));
@@ -327,7 +422,9 @@ Value Interpreter::builtin(const Token& t) {
     std::string r;
     for (int i = 0; i < std::clamp(static_cast<int>(n), 1, 5); ++i) {
       if (i) r += s(2);
-      const double c = v.kind == Value::Float ? v.v[0] : i < v.dims ? v.v[static_cast<std::size_t>(i)] : 0;
+      const double c = v.kind == Value::Float ? v.v[0]
+                       : i < v.dims           ? v.v[static_cast<std::size_t>(i)]
+                                              : 0;
       r += format_number(c, f(3), f(4));
     }
     return Value::string(r);

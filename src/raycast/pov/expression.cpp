@@ -69,9 +69,9 @@ std::string Interpreter::string_value(const char* what) {
 bool Interpreter::boolean_option() {
   const Token& t = peek_operator();
   if (pending_) return true;
-  if (t.kind == Token::Number || (t.kind == Token::Word &&
-      (t.text == "on" || t.text == "off" || t.text == "true" || t.text == "false" ||
-       t.text == "yes" || t.text == "no")))
+  if (t.kind == Token::Number ||
+      (t.kind == Token::Word && (t.text == "on" || t.text == "off" || t.text == "true" ||
+                                 t.text == "false" || t.text == "yes" || t.text == "no")))
     return number("a boolean") != 0;
   if (t.kind == Token::Word) {
     const Value* v = lookup(t.text);
@@ -307,12 +307,14 @@ Value Interpreter::colour_keyword(const Token& kw) {
   if (v.kind == Value::Float) {
     for (int i = 0; i < want; ++i) c.v[static_cast<std::size_t>(i)] = v.v[0];
   } else {
-    for (int i = 0; i < std::min(v.dims, want); ++i) c.v[static_cast<std::size_t>(i)] = v.v[static_cast<std::size_t>(i)];
+    for (int i = 0; i < std::min(v.dims, want); ++i)
+      c.v[static_cast<std::size_t>(i)] = v.v[static_cast<std::size_t>(i)];
   }
   if (base == "rgbt") c.v[4] = c.v[3], c.v[3] = 0;
   if (base == "rgb") c.v[3] = c.v[4] = 0;
   if (s)
-    for (int i = 0; i < 3; ++i) c.v[static_cast<std::size_t>(i)] = srgb_to_linear(c.v[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < 3; ++i)
+      c.v[static_cast<std::size_t>(i)] = srgb_to_linear(c.v[static_cast<std::size_t>(i)]);
   return c;
 }
 
@@ -323,17 +325,18 @@ Value Interpreter::colour_expression(const Pos& at) {
   c.colour = true;
   c.dims = 5;
   const Token& t = tok();
-  const bool component_first = t.kind == Token::Word &&
-                               (t.text == "red" || t.text == "green" || t.text == "blue" ||
-                                t.text == "filter" || t.text == "transmit" || t.text == "gray" ||
-                                t.text == "grey");
+  const bool component_first =
+      t.kind == Token::Word &&
+      (t.text == "red" || t.text == "green" || t.text == "blue" || t.text == "filter" ||
+       t.text == "transmit" || t.text == "gray" || t.text == "grey");
   if (!component_first) {
     const Value v = expression();
     if (!v.is_numeric()) fail_at(at, std::string("color needs a colour, got ") + kind_name(v));
     if (v.kind == Value::Float) {
       for (int i = 0; i < 5; ++i) c.v[static_cast<std::size_t>(i)] = v.v[0];
     } else {
-      for (int i = 0; i < v.dims; ++i) c.v[static_cast<std::size_t>(i)] = v.v[static_cast<std::size_t>(i)];
+      for (int i = 0; i < v.dims; ++i)
+        c.v[static_cast<std::size_t>(i)] = v.v[static_cast<std::size_t>(i)];
     }
   }
   return colour_modifiers(c);
@@ -343,9 +346,13 @@ Value Interpreter::colour_modifiers(Value c) {
   for (;;) {
     const Token& n = peek_operator();
     if (pending_ || n.kind != Token::Word) break;
-    int k = n.text == "red" ? 0 : n.text == "green" ? 1 : n.text == "blue" ? 2
-          : n.text == "filter" ? 3 : n.text == "transmit" ? 4
-          : (n.text == "gray" || n.text == "grey") ? 5 : -1;
+    int k = n.text == "red"                          ? 0
+            : n.text == "green"                      ? 1
+            : n.text == "blue"                       ? 2
+            : n.text == "filter"                     ? 3
+            : n.text == "transmit"                   ? 4
+            : (n.text == "gray" || n.text == "grey") ? 5
+                                                     : -1;
     if (k < 0) break;
     if (c.kind == Value::Float) {
       const double f = c.v[0];
@@ -374,11 +381,14 @@ Value Interpreter::postfix(Value v) {
       if (tok().kind != Token::Word) unexpected("a component name after '.'");
       const std::string c = tok().text;
       next();
-      int k = c == "x" || c == "u" || c == "red" ? 0
-            : c == "y" || c == "v" || c == "green" ? 1
-            : c == "z" || c == "blue" ? 2
-            : c == "t" || c == "filter" ? 3
-            : c == "transmit" ? 4 : c == "gray" || c == "grey" ? 5 : c == "hf" ? 6 : -1;
+      int k = c == "x" || c == "u" || c == "red"     ? 0
+              : c == "y" || c == "v" || c == "green" ? 1
+              : c == "z" || c == "blue"              ? 2
+              : c == "t" || c == "filter"            ? 3
+              : c == "transmit"                      ? 4
+              : c == "gray" || c == "grey"           ? 5
+              : c == "hf"                            ? 6
+                                                     : -1;
       if (k < 0) fail_at(at, "unknown component '." + c + "'");
       if (v.kind == Value::Float && k == 0) continue;
       if (v.kind != Value::Vector) fail_at(at, "'." + c + "' needs a vector, got " + kind_name(v));

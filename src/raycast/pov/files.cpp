@@ -35,7 +35,8 @@ void Interpreter::message_directive(const Token& d) {
         << where(scene_.sources, d.pos) << ": warning: " << text << "\n";
     return;
   }
-  (options_.debug ? *options_.debug : std::cerr) << text;  // #debug prints as written (POV-Ray's debug stream)
+  (options_.debug ? *options_.debug : std::cerr)
+      << text;  // #debug prints as written (POV-Ray's debug stream)
 }
 
 void Interpreter::fopen_directive() {
@@ -64,7 +65,8 @@ void Interpreter::fopen_directive() {
     fail_at(at, "#fopen: writing files is turned off here");
   } else if (mode == "write" || mode == "append") {
     f->writing = true;
-    f->stream.open(path, mode == "write" ? std::ios::out | std::ios::trunc : std::ios::out | std::ios::app);
+    f->stream.open(
+        path, mode == "write" ? std::ios::out | std::ios::trunc : std::ios::out | std::ios::app);
   } else {
     fail_at(at, "#fopen's mode is read, write or append, got '" + mode + "'");
   }
@@ -124,7 +126,8 @@ void Interpreter::read_directive() {
   expect_symbol("(", "after #read");
   if (tok().kind != Token::Word) unexpected("a file identifier");
   const auto it = files_.find(tok().text);
-  if (it == files_.end() || it->second->writing) fail_here("#read: the file is not open for reading");
+  if (it == files_.end() || it->second->writing)
+    fail_here("#read: the file is not open for reading");
   next();
   while (accept_symbol(",")) {
     if (tok().kind != Token::Word) unexpected("a name to read into");
@@ -132,7 +135,8 @@ void Interpreter::read_directive() {
     const Pos at = tok().pos;
     next();
     if (++reads_ > options_.limits.file_reads)
-      fail_at(at, "#read: more than " + std::to_string(options_.limits.file_reads) + " values read");
+      fail_at(at,
+              "#read: more than " + std::to_string(options_.limits.file_reads) + " values read");
     Value v;
     if (read_item(it->second->stream, v)) assign(name, v, false, at);
   }
@@ -146,7 +150,8 @@ void Interpreter::write_directive() {
   expect_symbol("(", "after #write");
   if (tok().kind != Token::Word) unexpected("a file identifier");
   const auto it = files_.find(tok().text);
-  if (it == files_.end() || !it->second->writing) fail_here("#write: the file is not open for writing");
+  if (it == files_.end() || !it->second->writing)
+    fail_here("#write: the file is not open for writing");
   next();
   while (!is_symbol(")")) {
     accept_symbol(",");
@@ -158,7 +163,8 @@ void Interpreter::write_directive() {
       it->second->stream << v.v[0];
     } else if (v.kind == Value::Vector) {
       it->second->stream << "<";
-      for (int i = 0; i < v.dims; ++i) it->second->stream << (i ? "," : "") << v.v[static_cast<std::size_t>(i)];
+      for (int i = 0; i < v.dims; ++i)
+        it->second->stream << (i ? "," : "") << v.v[static_cast<std::size_t>(i)];
       it->second->stream << ">";
     }
   }

@@ -24,7 +24,9 @@ double eval(const FnNode& n, const std::vector<double>& a, int depth) {
     case FnNode::Number:
       return n.number;
     case FnNode::Variable:
-      return a.size() > static_cast<std::size_t>(n.variable - 'x') ? a[static_cast<std::size_t>(n.variable - 'x')] : 0;
+      return a.size() > static_cast<std::size_t>(n.variable - 'x')
+                 ? a[static_cast<std::size_t>(n.variable - 'x')]
+                 : 0;
     case FnNode::Param: {
       const auto i = static_cast<std::size_t>(n.number);
       return i < a.size() ? a[i] : 0;
@@ -54,16 +56,26 @@ double eval(const FnNode& n, const std::vector<double>& a, int depth) {
   const std::size_t k = n.args.size();
   if (k == 1) {
     static const std::map<std::string, double (*)(double)> one = {
-        {"sin", [](double v) { return std::sin(v); }},   {"cos", [](double v) { return std::cos(v); }},
-        {"tan", [](double v) { return std::tan(v); }},   {"asin", [](double v) { return std::asin(v); }},
-        {"acos", [](double v) { return std::acos(v); }}, {"atan", [](double v) { return std::atan(v); }},
-        {"sinh", [](double v) { return std::sinh(v); }}, {"cosh", [](double v) { return std::cosh(v); }},
-        {"tanh", [](double v) { return std::tanh(v); }}, {"asinh", [](double v) { return std::asinh(v); }},
-        {"acosh", [](double v) { return std::acosh(v); }}, {"atanh", [](double v) { return std::atanh(v); }},
-        {"sqrt", [](double v) { return std::sqrt(v); }}, {"exp", [](double v) { return std::exp(v); }},
-        {"log", [](double v) { return std::log(v); }},   {"log10", [](double v) { return std::log10(v); }},
-        {"abs", [](double v) { return std::fabs(v); }},  {"floor", [](double v) { return std::floor(v); }},
-        {"ceil", [](double v) { return std::ceil(v); }}, {"int", [](double v) { return std::trunc(v); }},
+        {"sin", [](double v) { return std::sin(v); }},
+        {"cos", [](double v) { return std::cos(v); }},
+        {"tan", [](double v) { return std::tan(v); }},
+        {"asin", [](double v) { return std::asin(v); }},
+        {"acos", [](double v) { return std::acos(v); }},
+        {"atan", [](double v) { return std::atan(v); }},
+        {"sinh", [](double v) { return std::sinh(v); }},
+        {"cosh", [](double v) { return std::cosh(v); }},
+        {"tanh", [](double v) { return std::tanh(v); }},
+        {"asinh", [](double v) { return std::asinh(v); }},
+        {"acosh", [](double v) { return std::acosh(v); }},
+        {"atanh", [](double v) { return std::atanh(v); }},
+        {"sqrt", [](double v) { return std::sqrt(v); }},
+        {"exp", [](double v) { return std::exp(v); }},
+        {"log", [](double v) { return std::log(v); }},
+        {"log10", [](double v) { return std::log10(v); }},
+        {"abs", [](double v) { return std::fabs(v); }},
+        {"floor", [](double v) { return std::floor(v); }},
+        {"ceil", [](double v) { return std::ceil(v); }},
+        {"int", [](double v) { return std::trunc(v); }},
         {"not", [](double v) { return v == 0 ? 1.0 : 0.0; }},
         {"radians", [](double v) { return v * std::numbers::pi / 180; }},
         {"degrees", [](double v) { return v * 180 / std::numbers::pi; }}};
@@ -121,8 +133,8 @@ std::shared_ptr<const FnNode> inline_calls(const std::shared_ptr<const FnNode>& 
 
 bool expressible(const FnNode& n) {
   if (n.kind == FnNode::Call) {
-    static const char* const ok[] = {"sqrt", "exp", "log", "sin", "cos", "tan", "abs", "min",
-                                     "max", "pow"};
+    static const char* const ok[] = {"sqrt", "exp", "log", "sin", "cos",
+                                     "tan",  "abs", "min", "max", "pow"};
     bool found = false;
     for (const char* o : ok) found = found || n.function == o;
     if (!found) return false;

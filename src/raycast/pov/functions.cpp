@@ -51,16 +51,24 @@ std::shared_ptr<const FnNode> Interpreter::function_expression(
     std::shared_ptr<const FnNode> logic() {
       auto a = compare();
       for (;;) {
-        if (in.accept_symbol("&")) a = call("and", {a, compare()});
-        else if (in.accept_symbol("|")) a = call("or", {a, compare()});
-        else return a;
+        if (in.accept_symbol("&"))
+          a = call("and", {a, compare()});
+        else if (in.accept_symbol("|"))
+          a = call("or", {a, compare()});
+        else
+          return a;
       }
     }
     std::shared_ptr<const FnNode> compare() {
       auto a = sum();
       for (;;) {
-        const char* n = in.is_symbol("<") ? "lt" : in.is_symbol("<=") ? "le" : in.is_symbol(">") ? "gt"
-                      : in.is_symbol(">=") ? "ge" : in.is_symbol("=") ? "eq" : in.is_symbol("!=") ? "ne" : nullptr;
+        const char* n = in.is_symbol("<")    ? "lt"
+                        : in.is_symbol("<=") ? "le"
+                        : in.is_symbol(">")  ? "gt"
+                        : in.is_symbol(">=") ? "ge"
+                        : in.is_symbol("=")  ? "eq"
+                        : in.is_symbol("!=") ? "ne"
+                                             : nullptr;
         if (!n) return a;
         in.next();
         a = call(n, {a, sum()});
@@ -69,26 +77,36 @@ std::shared_ptr<const FnNode> Interpreter::function_expression(
     std::shared_ptr<const FnNode> sum() {
       auto a = product();
       for (;;) {
-        if (in.accept_symbol("+")) a = make(FnNode::Add, {a, product()});
-        else if (in.accept_symbol("-")) a = make(FnNode::Subtract, {a, product()});
-        else return a;
+        if (in.accept_symbol("+"))
+          a = make(FnNode::Add, {a, product()});
+        else if (in.accept_symbol("-"))
+          a = make(FnNode::Subtract, {a, product()});
+        else
+          return a;
       }
     }
     std::shared_ptr<const FnNode> product() {
       auto a = unary();
       for (;;) {
-        if (in.accept_symbol("*")) a = make(FnNode::Multiply, {a, unary()});
-        else if (in.accept_symbol("/")) a = make(FnNode::Divide, {a, unary()});
-        else return a;
+        if (in.accept_symbol("*"))
+          a = make(FnNode::Multiply, {a, unary()});
+        else if (in.accept_symbol("/"))
+          a = make(FnNode::Divide, {a, unary()});
+        else
+          return a;
       }
     }
     std::shared_ptr<const FnNode> unary() {
       if (++depth > kMaxPovNesting) in.fail_here("the function is nested too deeply");
       std::shared_ptr<const FnNode> r;
-      if (in.accept_symbol("-")) r = make(FnNode::Negate, {unary()});
-      else if (in.accept_symbol("+")) r = unary();
-      else if (in.accept_symbol("!")) r = call("not", {unary()});
-      else r = primary();
+      if (in.accept_symbol("-"))
+        r = make(FnNode::Negate, {unary()});
+      else if (in.accept_symbol("+"))
+        r = unary();
+      else if (in.accept_symbol("!"))
+        r = call("not", {unary()});
+      else
+        r = primary();
       --depth;
       return r;
     }
@@ -158,7 +176,11 @@ std::shared_ptr<const FnNode> Interpreter::function_expression(
           in.next();
           const std::string c = in.tok().text;
           in.next();
-          const int k = c == "x" || c == "u" ? 0 : c == "y" || c == "v" ? 1 : c == "z" ? 2 : c == "t" ? 3 : 4;
+          const int k = c == "x" || c == "u"   ? 0
+                        : c == "y" || c == "v" ? 1
+                        : c == "z"             ? 2
+                        : c == "t"             ? 3
+                                               : 4;
           return num(v->v[static_cast<std::size_t>(std::min(k, 4))]);
         }
         in.fail_at(t.pos, "'" + t.text + "' is " + kind_name(*v) + ", not a float or a function");
@@ -166,9 +188,9 @@ std::shared_ptr<const FnNode> Interpreter::function_expression(
       if (t.text == "ln") return call("log", args());
       if (t.text == "log") return make(FnNode::Divide, {call("log", args()), num(std::log(10.0))});
       static const char* const known[] = {
-          "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "asinh", "acosh",
-          "atanh", "sqrt", "exp", "abs", "floor", "ceil", "int", "min", "max", "pow", "atan2",
-          "mod", "select", "radians", "degrees"};
+          "sin",   "cos",   "tan",   "asin",  "acos", "atan",   "sinh",    "cosh",   "tanh",
+          "asinh", "acosh", "atanh", "sqrt",  "exp",  "abs",    "floor",   "ceil",   "int",
+          "min",   "max",   "pow",   "atan2", "mod",  "select", "radians", "degrees"};
       for (const char* k : known)
         if (t.text == k) {
           auto a = args();
@@ -213,7 +235,8 @@ Value Interpreter::function_block(const Pos& at) {
     }
   } else {
     f->body = function_expression(0, f->params);
-    if (f->body->kind == FnNode::Call && f->body->function == "internal") f->opaque = "internal function";
+    if (f->body->kind == FnNode::Call && f->body->function == "internal")
+      f->opaque = "internal function";
     expect_symbol("}", "to close the function");
   }
   Value v;
@@ -231,16 +254,34 @@ Value Interpreter::spline_block(const Pos& at) {
     next();
   }
   while (!accept_symbol("}")) {
-    if (is_word("linear_spline")) { next(); s->type = SplineValue::Linear; continue; }
-    if (is_word("quadratic_spline")) { next(); s->type = SplineValue::Quadratic; continue; }
-    if (is_word("cubic_spline")) { next(); s->type = SplineValue::Cubic; continue; }
-    if (is_word("natural_spline")) { next(); s->type = SplineValue::Natural; continue; }
+    if (is_word("linear_spline")) {
+      next();
+      s->type = SplineValue::Linear;
+      continue;
+    }
+    if (is_word("quadratic_spline")) {
+      next();
+      s->type = SplineValue::Quadratic;
+      continue;
+    }
+    if (is_word("cubic_spline")) {
+      next();
+      s->type = SplineValue::Cubic;
+      continue;
+    }
+    if (is_word("natural_spline")) {
+      next();
+      s->type = SplineValue::Natural;
+      continue;
+    }
     const double t = number("a spline's parameter");
     expect_symbol(",", "after the spline's parameter");
     const Value p = expression();
     if (!p.is_numeric()) fail_at(at, "a spline's points are vectors");
     std::array<double, 5> c{};
-    for (int i = 0; i < 5; ++i) c[static_cast<std::size_t>(i)] = p.kind == Value::Float ? p.v[0] : p.v[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 5; ++i)
+      c[static_cast<std::size_t>(i)] =
+          p.kind == Value::Float ? p.v[0] : p.v[static_cast<std::size_t>(i)];
     s->dims = std::max(s->dims, p.dims);
     // Kept sorted by parameter (POV-Ray sorts the points).
     auto it = std::lower_bound(s->t.begin(), s->t.end(), t);
@@ -261,11 +302,14 @@ std::array<double, 5> spline_at(const SplineValue& s, double t) {
   if (n == 0) return {};
   if (n == 1 || t <= s.t.front()) return s.p.front();
   if (t >= s.t.back()) return s.p.back();
-  const std::size_t i = static_cast<std::size_t>(std::upper_bound(s.t.begin(), s.t.end(), t) - s.t.begin()) - 1;
+  const std::size_t i =
+      static_cast<std::size_t>(std::upper_bound(s.t.begin(), s.t.end(), t) - s.t.begin()) - 1;
   const double u = (t - s.t[i]) / (s.t[i + 1] - s.t[i]);
   std::array<double, 5> r{};
   if (s.type == SplineValue::Linear || n < 3) {
-    for (int k = 0; k < 5; ++k) r[static_cast<std::size_t>(k)] = s.p[i][static_cast<std::size_t>(k)] * (1 - u) + s.p[i + 1][static_cast<std::size_t>(k)] * u;
+    for (int k = 0; k < 5; ++k)
+      r[static_cast<std::size_t>(k)] = s.p[i][static_cast<std::size_t>(k)] * (1 - u) +
+                                       s.p[i + 1][static_cast<std::size_t>(k)] * u;
     return r;
   }
   // Catmull-Rom through the points, the end tangents from the end segments.

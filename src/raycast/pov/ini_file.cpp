@@ -44,19 +44,29 @@ bool apply_ini_setting(const std::string& raw, Options& o, std::string& scene) {
     const std::string k = s.substr(1);
     const std::string lk = lower(k);
     auto num = [&](std::size_t n) { return number(k.substr(n), v); };
-    if (lk.rfind("kfi", 0) == 0 && num(3)) o.initial_frame = static_cast<int>(v), o.clock_on = true;
-    else if (lk.rfind("kff", 0) == 0 && num(3)) o.final_frame = static_cast<int>(v), o.clock_on = true;
-    else if (lk.rfind("ki", 0) == 0 && num(2)) o.initial_clock = v;
-    else if (lk.rfind("kf", 0) == 0 && num(2)) o.final_clock = v;
-    else if (lk.rfind("k", 0) == 0 && num(1)) o.clock = v;
-    else if (lk[0] == 'w' && num(1)) o.width = static_cast<int>(v);
-    else if (lk[0] == 'h' && num(1)) o.height = static_cast<int>(v);
+    if (lk.rfind("kfi", 0) == 0 && num(3))
+      o.initial_frame = static_cast<int>(v), o.clock_on = true;
+    else if (lk.rfind("kff", 0) == 0 && num(3))
+      o.final_frame = static_cast<int>(v), o.clock_on = true;
+    else if (lk.rfind("ki", 0) == 0 && num(2))
+      o.initial_clock = v;
+    else if (lk.rfind("kf", 0) == 0 && num(2))
+      o.final_clock = v;
+    else if (lk.rfind("k", 0) == 0 && num(1))
+      o.clock = v;
+    else if (lk[0] == 'w' && num(1))
+      o.width = static_cast<int>(v);
+    else if (lk[0] == 'h' && num(1))
+      o.height = static_cast<int>(v);
     else if (lk[0] == 'a') {
       o.antialias = plus;
       if (k.size() > 1 && num(1)) o.antialias_threshold = v;
-    } else if (lk[0] == 'i' && k.size() > 1) scene = k.substr(1);
-    else if (lk[0] == 'l' && k.size() > 1) o.library_paths.push_back(k.substr(1));
-    else return false;
+    } else if (lk[0] == 'i' && k.size() > 1)
+      scene = k.substr(1);
+    else if (lk[0] == 'l' && k.size() > 1)
+      o.library_paths.push_back(k.substr(1));
+    else
+      return false;
     return true;
   }
   const auto eq = s.find('=');
@@ -66,23 +76,36 @@ bool apply_ini_setting(const std::string& raw, Options& o, std::string& scene) {
   }
   const std::string key = lower(trim(s.substr(0, eq)));
   const std::string val = trim(s.substr(eq + 1));
-  if (key == "input_file_name") scene = val;
-  else if (key == "width" && number(val, v)) o.width = static_cast<int>(v);
-  else if (key == "height" && number(val, v)) o.height = static_cast<int>(v);
-  else if (key == "antialias") o.antialias = on(val);
-  else if (key == "antialias_threshold" && number(val, v)) o.antialias_threshold = v;
-  else if (key == "antialias_depth" && number(val, v)) o.antialias_depth = static_cast<int>(v);
-  else if (key == "clock" && number(val, v)) o.clock = v;
-  else if (key == "initial_frame" && number(val, v)) o.initial_frame = static_cast<int>(v), o.clock_on = true;
-  else if (key == "final_frame" && number(val, v)) o.final_frame = static_cast<int>(v), o.clock_on = true;
-  else if (key == "initial_clock" && number(val, v)) o.initial_clock = v;
-  else if (key == "final_clock" && number(val, v)) o.final_clock = v;
-  else if (key == "library_path") o.library_paths.push_back(val);
+  if (key == "input_file_name")
+    scene = val;
+  else if (key == "width" && number(val, v))
+    o.width = static_cast<int>(v);
+  else if (key == "height" && number(val, v))
+    o.height = static_cast<int>(v);
+  else if (key == "antialias")
+    o.antialias = on(val);
+  else if (key == "antialias_threshold" && number(val, v))
+    o.antialias_threshold = v;
+  else if (key == "antialias_depth" && number(val, v))
+    o.antialias_depth = static_cast<int>(v);
+  else if (key == "clock" && number(val, v))
+    o.clock = v;
+  else if (key == "initial_frame" && number(val, v))
+    o.initial_frame = static_cast<int>(v), o.clock_on = true;
+  else if (key == "final_frame" && number(val, v))
+    o.final_frame = static_cast<int>(v), o.clock_on = true;
+  else if (key == "initial_clock" && number(val, v))
+    o.initial_clock = v;
+  else if (key == "final_clock" && number(val, v))
+    o.final_clock = v;
+  else if (key == "library_path")
+    o.library_paths.push_back(val);
   else if (key == "declare") {
     const auto e2 = val.find('=');
     if (e2 == std::string::npos) return false;
     o.declares.emplace_back(trim(val.substr(0, e2)), trim(val.substr(e2 + 1)));
-  } else return false;
+  } else
+    return false;
   return true;
 }
 
@@ -110,7 +133,8 @@ std::string read_ini_file(const std::string& path, Options& o) {
   }
   // The clock of the first frame when an animation is asked for.
   if (o.clock_on && o.final_frame > o.initial_frame) {
-    const int f = std::clamp(o.frame > 0 ? o.frame : o.initial_frame, o.initial_frame, o.final_frame);
+    const int f =
+        std::clamp(o.frame > 0 ? o.frame : o.initial_frame, o.initial_frame, o.final_frame);
     o.frame = f;
     o.clock = o.initial_clock + (o.final_clock - o.initial_clock) * (f - o.initial_frame) /
                                     static_cast<double>(o.final_frame - o.initial_frame);

@@ -141,11 +141,11 @@ class Interpreter {
   struct Frame {
     FrameKind kind = FrameKind::If;
     Pos pos;
-    std::size_t inputs = 0;   // inputs_.size() when the frame opened
-    Cursor loop;              // While: the condition; For: after the header
-    std::string variable;     // For: the loop variable
+    std::size_t inputs = 0;  // inputs_.size() when the frame opened
+    Cursor loop;             // While: the condition; For: after the header
+    std::string variable;    // For: the loop variable
     double end = 0, step = 1;
-    std::size_t scopes = 0;   // Macro: scopes_.size() before the call
+    std::size_t scopes = 0;                               // Macro: scopes_.size() before the call
     std::vector<std::pair<Symbol*, std::string>> by_ref;  // Macro
   };
 
@@ -192,7 +192,7 @@ class Interpreter {
   void fclose_directive();
 
   std::vector<std::shared_ptr<const std::string>> texts_;  // by file index
-  std::vector<std::string> dirs_;                         // by file index
+  std::vector<std::string> dirs_;                          // by file index
   std::vector<Input> inputs_;
   std::vector<Frame> frames_;
   std::vector<std::unordered_map<std::string, Symbol>> scopes_;
@@ -203,6 +203,7 @@ class Interpreter {
   std::size_t cur_input_ = 0;  // the input cur_ was read from, and the cursor before it
   Cursor cur_before_;
   int opaque_ = 0;
+
  public:
   // > 0 while reading a value inside a block (an object's numbers, a count): POV-Ray compares
   // there only inside parentheses, so `14 <-1, 0, 0>` is a count and a vector.

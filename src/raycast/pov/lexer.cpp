@@ -86,12 +86,26 @@ class Reader {
         if (at_end()) break;
         const char e = peek();
         switch (e) {
-          case 'n': t.text += '\n'; break;
-          case 't': t.text += '\t'; break;
-          case 'r': t.text += '\r'; break;
-          case 'a': t.text += '\a'; break;
-          case '\\': case '"': case '\'': t.text += e; break;
-          default: t.text += '\\'; t.text += e;  // kept as written (Windows paths)
+          case 'n':
+            t.text += '\n';
+            break;
+          case 't':
+            t.text += '\t';
+            break;
+          case 'r':
+            t.text += '\r';
+            break;
+          case 'a':
+            t.text += '\a';
+            break;
+          case '\\':
+          case '"':
+          case '\'':
+            t.text += e;
+            break;
+          default:
+            t.text += '\\';
+            t.text += e;  // kept as written (Windows paths)
         }
         advance();
         continue;

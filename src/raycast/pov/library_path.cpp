@@ -34,7 +34,8 @@ void read_ini_paths(const std::string& file, std::vector<std::string>& out) {
     for (const char* var : {"%INSTALLDIR%", "%HOME%"}) {
       const auto at = value.find(var);
       if (at == std::string::npos) continue;
-      const std::string with = std::string(var) == "%HOME%" ? (home ? home : "") : "/usr/share/povray-3.7";
+      const std::string with =
+          std::string(var) == "%HOME%" ? (home ? home : "") : "/usr/share/povray-3.7";
       value.replace(at, std::string(var).size(), with);
     }
     out.push_back(value);

@@ -70,8 +70,7 @@ void Interpreter::call_macro(const Token& name, const MacroDef& m) {
         const std::size_t input = inputs_.size();
         const Token after = raw();
         inputs_.back().cursor = save;
-        if (inputs_.size() == input &&
-            (pov::is_symbol(after, ",") || pov::is_symbol(after, ")"))) {
+        if (inputs_.size() == input && (pov::is_symbol(after, ",") || pov::is_symbol(after, ")"))) {
           next();
           Symbol& p = locals[m.params[i]];
           p.ref = target;

@@ -12,9 +12,9 @@ namespace raycast::pov {
 
 /// Bounds on what a scene program may do; each error names the bound and how to raise it.
 struct Limits {
-  long long loop_iterations = 10'000'000;  // #while and #for iterations in all
-  int macro_depth = 400;                   // macro calls nested (recursion)
-  int include_depth = 64;                  // #include files nested
+  long long loop_iterations = 10'000'000;   // #while and #for iterations in all
+  int macro_depth = 400;                    // macro calls nested (recursion)
+  int include_depth = 64;                   // #include files nested
   std::size_t array_elements = 50'000'000;  // elements of one array
   std::size_t string_bytes = 16u << 20;     // length of one string
   std::size_t scene_weight = 200'000'000;   // objects, vertices, triangles, terms in all
@@ -35,7 +35,8 @@ struct Options {
   int antialias_depth = 3;
   std::ostream* debug = nullptr;  // where #debug and #warning write (nullptr: standard error)
   bool system_library_path = true;
-  bool file_output = true;  // #fopen ... write/append allowed (the fuzz target turns it off)  // read Library_Path from the user's and the system's povray.ini
+  bool file_output = true;  // #fopen ... write/append allowed (the fuzz target turns it off)  //
+                            // read Library_Path from the user's and the system's povray.ini
   Limits limits;
 };
 

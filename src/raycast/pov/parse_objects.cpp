@@ -40,9 +40,9 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 
 bool is_unbuilt_shape(const std::string& w) {
   static const char* const shapes[] = {
-      "blob", "height_field", "prism", "sphere_sweep", "superellipsoid", "text",
-      "julia_fractal", "bicubic_patch", "parametric", "polygon", "triangle", "smooth_triangle",
-      "lemon", "ovus"};
+      "blob",     "height_field",    "prism",         "sphere_sweep", "superellipsoid",
+      "text",     "julia_fractal",   "bicubic_patch", "parametric",   "polygon",
+      "triangle", "smooth_triangle", "lemon",         "ovus"};
   for (const char* s : shapes)
     if (w == s) return true;
   return false;
@@ -137,8 +137,10 @@ std::optional<Node> Interpreter::object(int depth) {
     if (!v || v->kind != Value::Object) {
       if (is_object_keyword()) {
         std::optional<Node> inner = object(depth + 1);
-        if (inner) n = std::move(*inner);
-        else skipped = true;
+        if (inner)
+          n = std::move(*inner);
+        else
+          skipped = true;
       } else {
         unexpected("a declared object's name or an object");
       }
@@ -519,7 +521,8 @@ void Interpreter::mesh_body(Node& n, int) {
     if (n.triangles.size() > static_cast<std::size_t>(kMaxPovCount))
       fail_here("a mesh has at most " + std::to_string(kMaxPovCount) + " triangles");
   }
-  if (any_smooth && any_flat) unsupported_warning(n.pos, "meshes mixing triangle and smooth_triangle");
+  if (any_smooth && any_flat)
+    unsupported_warning(n.pos, "meshes mixing triangle and smooth_triangle");
   if (!any_smooth) n.normals.clear();
   if (n.triangles.empty()) fail_at(n.pos, "the mesh has no triangles");
   if (is_word("inside_vector")) {
@@ -683,8 +686,9 @@ bool Interpreter::modifier(Node& n, int depth) {
     next();
     n.inverse = !n.inverse;
     unsupported_warning(t.pos, "inverse", "the object is drawn as it is");
-  } else if (w == "open" && (n.kind == Node::Cylinder || n.kind == Node::Cone ||
-                             n.kind == Node::Sor || n.kind == Node::Lathe || n.kind == Node::Isosurface)) {
+  } else if (w == "open" &&
+             (n.kind == Node::Cylinder || n.kind == Node::Cone || n.kind == Node::Sor ||
+              n.kind == Node::Lathe || n.kind == Node::Isosurface)) {
     next();
     n.open = boolean_option();
   } else if (w == "bounded_by") {

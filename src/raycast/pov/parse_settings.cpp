@@ -53,18 +53,25 @@ Camera Interpreter::camera_block(const Camera& base) {
   while (!accept_symbol("}")) {
     const Token t = tok();
     const std::string& w = t.text;
-    if (w == "perspective") next(), c.orthographic = false;
-    else if (w == "orthographic") next(), c.orthographic = true;
+    if (w == "perspective")
+      next(), c.orthographic = false;
+    else if (w == "orthographic")
+      next(), c.orthographic = true;
     else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" || w == "panoramic" ||
              w == "spherical" || w == "cylinder") {
       next();
       if (w == "cylinder") number("the cylinder camera's type");
       unsupported_warning(t.pos, "the " + w + " camera", "a perspective camera is used");
-    } else if (w == "location") next(), c.location = vector("location");
-    else if (w == "direction") next(), c.direction = vector("direction");
-    else if (w == "up") next(), c.up = vector("up");
-    else if (w == "right") next(), c.right = vector("right");
-    else if (w == "sky") next(), c.sky = vector("sky");
+    } else if (w == "location")
+      next(), c.location = vector("location");
+    else if (w == "direction")
+      next(), c.direction = vector("direction");
+    else if (w == "up")
+      next(), c.up = vector("up");
+    else if (w == "right")
+      next(), c.right = vector("right");
+    else if (w == "sky")
+      next(), c.sky = vector("sky");
     else if (w == "angle") {
       next();
       angle = number("angle");
@@ -92,8 +99,8 @@ Camera Interpreter::camera_block(const Camera& base) {
       c.direction = d / length(d) * dl;
       c.right = r / length(r) * (handed > 0 ? rl : -rl);
       c.up = cross(d / length(d), r / length(r)) * ul;
-    } else if (w == "focal_point" || w == "aperture" || w == "blur_samples" ||
-               w == "confidence" || w == "variance") {
+    } else if (w == "focal_point" || w == "aperture" || w == "blur_samples" || w == "confidence" ||
+               w == "variance") {
       next();
       expression();
       if (accept_symbol(",")) expression();
@@ -145,11 +152,16 @@ Node Interpreter::light_block() {
   while (!accept_symbol("}")) {
     const Token t = tok();
     const std::string& w = t.text;
-    if (w == "spotlight") next(), l.kind = Light::Spot;
-    else if (w == "point_at") next(), l.point_at = vector("point_at");
-    else if (w == "radius") next(), l.radius = number("radius");
-    else if (w == "falloff") next(), l.falloff = number("falloff");
-    else if (w == "color" || w == "colour" || w == "rgb") l.colour = colour("the light");
+    if (w == "spotlight")
+      next(), l.kind = Light::Spot;
+    else if (w == "point_at")
+      next(), l.point_at = vector("point_at");
+    else if (w == "radius")
+      next(), l.radius = number("radius");
+    else if (w == "falloff")
+      next(), l.falloff = number("falloff");
+    else if (w == "color" || w == "colour" || w == "rgb")
+      l.colour = colour("the light");
     else if (w == "tightness") {
       next();
       if (number("tightness") != 0) unsupported_warning(t.pos, "spotlight tightness");
@@ -232,15 +244,20 @@ void Interpreter::global_settings_block() {
     } else if (w == "number_of_waves" || w == "noise_generator" || w == "max_intersections" ||
                w == "irid_wavelength" || w == "hf_gray_16") {
       next();
-      if (w == "irid_wavelength") colour("irid_wavelength");
-      else if (w != "hf_gray_16" || starts_colour()) number(w.c_str());
+      if (w == "irid_wavelength")
+        colour("irid_wavelength");
+      else if (w != "hf_gray_16" || starts_colour())
+        number(w.c_str());
     } else if (w == "radiosity" || w == "photons" || w == "subsurface" || w == "mm_per_unit") {
       next();
       unsupported_warning(t.pos, w);
-      if (w == "mm_per_unit") number(w.c_str());
-      else skip_block(w);
+      if (w == "mm_per_unit")
+        number(w.c_str());
+      else
+        skip_block(w);
     } else {
-      unexpected("a global setting (assumed_gamma, max_trace_level, ambient_light, adc_bailout ...)");
+      unexpected(
+          "a global setting (assumed_gamma, max_trace_level, ambient_light, adc_bailout ...)");
     }
   }
 }
@@ -276,7 +293,9 @@ PovScene Interpreter::run() {
     } else if (pov::is_symbol(t, ";")) {
       next();
     } else {
-      unexpected("a scene item (camera, light_source, an object, global_settings, background, a directive)");
+      unexpected(
+          "a scene item (camera, light_source, an object, global_settings, background, a "
+          "directive)");
     }
   }
   return std::move(scene_);

@@ -12,20 +12,71 @@
 namespace raycast::pov {
 
 namespace {
-const char* const kPatterns[] = {
-    "agate", "average", "boxed", "bozo", "brick", "bumps", "cells", "crackle", "cylindrical",
-    "density_file", "dents", "facets", "function", "gradient", "granite", "hexagon", "leopard",
-    "marble", "object", "onion", "pavement", "pigment_pattern", "planar", "quilted", "radial",
-    "ripples", "spherical", "spiral1", "spiral2", "spotted", "square", "tiling", "triangular",
-    "waves", "wood", "wrinkles", "mandel", "julia", "magnet", "image_pattern", "slope", "aoi",
-    "cubic", "checker", "image_map", "pattern", "tiles", "hexagon", "brick"};
-const char* const kPatternModifiers[] = {
-    "turbulence", "octaves", "omega", "lambda", "frequency", "phase", "ramp_wave",
-    "triangle_wave", "sine_wave", "scallop_wave", "cubic_wave", "poly_wave", "noise_generator",
-    "metric", "form", "offset", "solid", "exponent", "accuracy", "interpolate", "once",
-    "map_type", "use_color", "use_colour", "use_index", "color_space", "orientation", "mortar",
-    "coords", "max_iteration", "precision", "repeat", "agate_turb", "brick_size", "control0",
-    "control1", "fractal_interior_type", "fractal_exterior_type", "interior", "exterior"};
+const char* const kPatterns[] = {"agate",       "average",
+                                 "boxed",       "bozo",
+                                 "brick",       "bumps",
+                                 "cells",       "crackle",
+                                 "cylindrical", "density_file",
+                                 "dents",       "facets",
+                                 "function",    "gradient",
+                                 "granite",     "hexagon",
+                                 "leopard",     "marble",
+                                 "object",      "onion",
+                                 "pavement",    "pigment_pattern",
+                                 "planar",      "quilted",
+                                 "radial",      "ripples",
+                                 "spherical",   "spiral1",
+                                 "spiral2",     "spotted",
+                                 "square",      "tiling",
+                                 "triangular",  "waves",
+                                 "wood",        "wrinkles",
+                                 "mandel",      "julia",
+                                 "magnet",      "image_pattern",
+                                 "slope",       "aoi",
+                                 "cubic",       "checker",
+                                 "image_map",   "pattern",
+                                 "tiles",       "hexagon",
+                                 "brick"};
+const char* const kPatternModifiers[] = {"turbulence",
+                                         "octaves",
+                                         "omega",
+                                         "lambda",
+                                         "frequency",
+                                         "phase",
+                                         "ramp_wave",
+                                         "triangle_wave",
+                                         "sine_wave",
+                                         "scallop_wave",
+                                         "cubic_wave",
+                                         "poly_wave",
+                                         "noise_generator",
+                                         "metric",
+                                         "form",
+                                         "offset",
+                                         "solid",
+                                         "exponent",
+                                         "accuracy",
+                                         "interpolate",
+                                         "once",
+                                         "map_type",
+                                         "use_color",
+                                         "use_colour",
+                                         "use_index",
+                                         "color_space",
+                                         "orientation",
+                                         "mortar",
+                                         "coords",
+                                         "max_iteration",
+                                         "precision",
+                                         "repeat",
+                                         "agate_turb",
+                                         "brick_size",
+                                         "control0",
+                                         "control1",
+                                         "fractal_interior_type",
+                                         "fractal_exterior_type",
+                                         "interior",
+                                         "exterior"};
 // Whether `w` is one of the two keyword lists (sets made once: asked for many words).
 bool in(const char* const* list, std::size_t n, const std::string& w) {
   static const std::unordered_set<std::string_view> patterns(std::begin(kPatterns),
@@ -37,7 +88,8 @@ bool in(const char* const* list, std::size_t n, const std::string& w) {
 }
 Colour to_colour(const Value& v) {
   if (v.kind == Value::Float) return {v.v[0], v.v[0], v.v[0], 0, 0};
-  return {v.v[0], v.v[1], v.dims > 2 ? v.v[2] : 0, v.dims > 3 ? v.v[3] : 0, v.dims > 4 ? v.v[4] : 0};
+  return {v.v[0], v.v[1], v.dims > 2 ? v.v[2] : 0, v.dims > 3 ? v.v[3] : 0,
+          v.dims > 4 ? v.v[4] : 0};
 }
 }  // namespace
 
@@ -118,12 +170,13 @@ bool Interpreter::starts_colour() {
 Colour Interpreter::colour(const char* what) {
   const Pos at = tok().pos;
   const Token& t = tok();
-  const bool component_first = t.kind == Token::Word &&
-                               (t.text == "red" || t.text == "green" || t.text == "blue" ||
+  const bool component_first =
+      t.kind == Token::Word && (t.text == "red" || t.text == "green" || t.text == "blue" ||
                                 t.text == "filter" || t.text == "transmit");
   const Value v = component_first ? colour_modifiers(Value::vector({0, 0, 0, 0, 0}))
                                   : colour_modifiers(expression());
-  if (!v.is_numeric()) fail_at(at, std::string("expected a colour for ") + what + ", got " + kind_name(v));
+  if (!v.is_numeric())
+    fail_at(at, std::string("expected a colour for ") + what + ", got " + kind_name(v));
   return to_colour(v);
 }
 
@@ -164,7 +217,9 @@ bool Interpreter::transform_item(std::vector<XformOp>& ops) {
   const Pos at = tok().pos;
   if (is_word("translate") || is_word("scale") || is_word("rotate")) {
     XformOp op;
-    op.kind = is_word("translate") ? XformOp::Translate : is_word("scale") ? XformOp::Scale : XformOp::Rotate;
+    op.kind = is_word("translate") ? XformOp::Translate
+              : is_word("scale")   ? XformOp::Scale
+                                   : XformOp::Rotate;
     next();
     op.v = vector("the transformation");
     if (op.kind == XformOp::Scale && (op.v.x == 0 || op.v.y == 0 || op.v.z == 0)) {
@@ -220,7 +275,8 @@ std::vector<XformOp> Interpreter::transform_block() {
         continue;
       }
     }
-    if (!transform_item(ops)) unexpected("translate, rotate, scale, matrix or inverse in transform");
+    if (!transform_item(ops))
+      unexpected("translate, rotate, scale, matrix or inverse in transform");
   }
   if (inverse) {
     // The inverse of a sequence: the inverted steps in reverse order.
@@ -242,18 +298,22 @@ std::vector<XformOp> Interpreter::transform_block() {
       if (o.kind == XformOp::Matrix) {
         // Rows r0 r1 r2 (3x3, row-vector form) and translation t: p' = p A + t.
         const auto& m = o.m;
-        const double a = m[0], b = m[1], c = m[2], d = m[3], e = m[4], f = m[5], g = m[6], h = m[7], i = m[8];
+        const double a = m[0], b = m[1], c = m[2], d = m[3], e = m[4], f = m[5], g = m[6], h = m[7],
+                     i = m[8];
         const double det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
         if (det == 0) fail_here("transform { inverse } of a singular matrix");
-        std::array<double, 9> r = {(e * i - f * h) / det, (c * h - b * i) / det, (b * f - c * e) / det,
-                                   (f * g - d * i) / det, (a * i - c * g) / det, (c * d - a * f) / det,
-                                   (d * h - e * g) / det, (b * g - a * h) / det, (a * e - b * d) / det};
+        std::array<double, 9> r = {
+            (e * i - f * h) / det, (c * h - b * i) / det, (b * f - c * e) / det,
+            (f * g - d * i) / det, (a * i - c * g) / det, (c * d - a * f) / det,
+            (d * h - e * g) / det, (b * g - a * h) / det, (a * e - b * d) / det};
         XformOp q;
         q.kind = XformOp::Matrix;
-        for (int k = 0; k < 9; ++k) q.m[static_cast<std::size_t>(k)] = r[static_cast<std::size_t>(k)];
+        for (int k = 0; k < 9; ++k)
+          q.m[static_cast<std::size_t>(k)] = r[static_cast<std::size_t>(k)];
         for (int col = 0; col < 3; ++col) {
           double s = 0;
-          for (int row = 0; row < 3; ++row) s += m[static_cast<std::size_t>(9 + row)] * r[static_cast<std::size_t>(3 * row + col)];
+          for (int row = 0; row < 3; ++row)
+            s += m[static_cast<std::size_t>(9 + row)] * r[static_cast<std::size_t>(3 * row + col)];
           q.m[static_cast<std::size_t>(9 + col)] = -s;
         }
         inv.push_back(q);
@@ -307,7 +367,8 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
       p.c0 = {0.5, 0.5, 0.5, 0, 0};
     } else if (t.kind == Token::Word && in(kPatterns, std::size(kPatterns), w)) {
       next();
-      unsupported_warning(t.pos, "the " + w + " pattern", "drawn in its colour map's middle colour");
+      unsupported_warning(t.pos, "the " + w + " pattern",
+                          "drawn in its colour map's middle colour");
       p.checker = false;
       p.pattern = w;
       pattern_arguments(t, true);
@@ -327,11 +388,11 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
         skip_comma();
         expression();
       } else if (w == "turbulence" || w == "frequency" || w == "phase" || w == "octaves" ||
-          w == "omega" || w == "lambda" || w == "noise_generator" || w == "metric" ||
-          w == "offset" || w == "exponent" || w == "accuracy" || w == "interpolate" ||
-          w == "map_type" || w == "poly_wave" || w == "color_space" || w == "max_iteration" ||
-          w == "precision" || w == "agate_turb" || w == "brick_size" || w == "control0" ||
-          w == "control1")
+                 w == "omega" || w == "lambda" || w == "noise_generator" || w == "metric" ||
+                 w == "offset" || w == "exponent" || w == "accuracy" || w == "interpolate" ||
+                 w == "map_type" || w == "poly_wave" || w == "color_space" ||
+                 w == "max_iteration" || w == "precision" || w == "agate_turb" ||
+                 w == "brick_size" || w == "control0" || w == "control1")
         expression();
       else if (w == "form" || w == "orientation" || w == "coords" || w == "mortar" || w == "repeat")
         expression();
@@ -389,8 +450,7 @@ void Interpreter::reflection_block(Finish& f) {
   if (values.empty()) return;
   // { min, max fresnel on }: raycast's Fresnel split starts from the minimum; without fresnel,
   // POV-Ray's variable reflection is drawn at its mean.
-  f.reflection = f.fresnel ? values.front()
-                           : 0.5 * (values.front() + values.back());
+  f.reflection = f.fresnel ? values.front() : 0.5 * (values.front() + values.back());
 }
 
 Finish Interpreter::finish_block(const Finish& base) {
@@ -410,8 +470,10 @@ Finish Interpreter::finish_block(const Finish& base) {
   while (!accept_symbol("}")) {
     const Token t = tok();
     const std::string& w = t.text;
-    if (w == "ambient") next(), f.ambient = grey("ambient");
-    else if (w == "emission") next(), f.ambient += grey("emission");
+    if (w == "ambient")
+      next(), f.ambient = grey("ambient");
+    else if (w == "emission")
+      next(), f.ambient += grey("emission");
     else if (w == "diffuse") {
       next();
       if (is_word("albedo")) next();
@@ -421,7 +483,8 @@ Finish Interpreter::finish_block(const Finish& base) {
       next();
       if (is_word("albedo")) next();
       f.phong = number("phong");
-    } else if (w == "phong_size") next(), f.phong_size = number("phong_size");
+    } else if (w == "phong_size")
+      next(), f.phong_size = number("phong_size");
     else if (w == "specular") {
       next();
       if (is_word("albedo")) next();
@@ -555,7 +618,8 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
       unsupported_warning(k.pos, "patterned textures", "the first texture is used");
       patterned = true;
       pattern_arguments(k, false);
-    } else if (k.kind == Token::Word && in(kPatternModifiers, std::size(kPatternModifiers), k.text)) {
+    } else if (k.kind == Token::Word &&
+               in(kPatternModifiers, std::size(kPatternModifiers), k.text)) {
       next();
       if (starts_colour()) expression();
     } else if (is_word("warp")) {
@@ -563,8 +627,9 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
       skip_block("warp");
     } else if (is_word("uv_mapping")) {
       next();
-    } else if (k.kind == Token::Word && (k.text == "scale" || k.text == "translate" ||
-                                         k.text == "rotate" || k.text == "matrix" || k.text == "transform")) {
+    } else if (k.kind == Token::Word &&
+               (k.text == "scale" || k.text == "translate" || k.text == "rotate" ||
+                k.text == "matrix" || k.text == "transform")) {
       std::vector<XformOp> ops;
       transform_item(ops);
       for (const XformOp& o : ops)

@@ -109,10 +109,10 @@ struct Node {
   std::vector<Vec3> vertices, normals;
   std::vector<std::array<int, 3>> triangles;
   std::vector<Node> children;
-  std::optional<Light> light;  // LightSource
+  std::optional<Light> light;       // LightSource
   std::shared_ptr<const Node> ref;  // Reference: shared, never copied
   std::size_t weight = 0;           // this object's count against Limits::scene_weight
-  bool inverse = false;        // `inverse`: the solid's complement
+  bool inverse = false;             // `inverse`: the solid's complement
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
 };
@@ -125,14 +125,13 @@ struct Camera {
   bool given = false;
 };
 
-
 /// What the scene's global_settings, INI options and #version ask for.
 struct Settings {
-  double assumed_gamma = 1;     // 1 (linear), 2.2, or 0 for srgb
-  bool gamma_given = false;     // assumed_gamma was written (POV-Ray 3.7 defaults apply if not)
+  double assumed_gamma = 1;  // 1 (linear), 2.2, or 0 for srgb
+  bool gamma_given = false;  // assumed_gamma was written (POV-Ray 3.7 defaults apply if not)
   double version = 3.7;
-  int width = 0, height = 0;    // from an INI file or +W/+H; 0: not given
-  int antialias_depth = 0;      // +A: 0 off
+  int width = 0, height = 0;  // from an INI file or +W/+H; 0: not given
+  int antialias_depth = 0;    // +A: 0 off
   double antialias_threshold = 0.3;
 };
 

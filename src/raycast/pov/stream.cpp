@@ -185,9 +185,8 @@ void Interpreter::unsupported_warning(const Pos& at, const std::string& kind,
   const std::string& name = at.file >= 0 && at.file < static_cast<int>(scene_.sources.names.size())
                                 ? scene_.sources.names[static_cast<std::size_t>(at.file)]
                                 : std::string("<pov>");
-  scene_.warnings.push_back(name + ":" + std::to_string(at.line) + ":" +
-                            std::to_string(at.column) + ": warning: " + text +
-                            "; left out (--strict makes this an error)");
+  scene_.warnings.push_back(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                            ": warning: " + text + "; left out (--strict makes this an error)");
 }
 
 void Interpreter::skip_block(const std::string& what) {
@@ -236,7 +235,8 @@ void Interpreter::include(const Pos& at) {
       frames_.begin(), frames_.end(), [](const Frame& f) { return f.kind == FrameKind::Include; }));
   if (depth >= options_.limits.include_depth)
     fail_at(at, "#include files are nested deeper than " +
-                    std::to_string(options_.limits.include_depth) + " (an include including itself?)");
+                    std::to_string(options_.limits.include_depth) +
+                    " (an include including itself?)");
   const std::string path = find_include(name, at);
   std::ifstream in(path, std::ios::binary);
   std::stringstream ss;
@@ -287,7 +287,8 @@ void Interpreter::directive_body(const Token& d) {
     unread();
     begin_if(d, w == "ifdef" ? defined : !defined);
   } else if (w == "else" || w == "elseif") {
-    if (frames_.empty() || frames_.back().inputs != inputs_.size()) fail_at(d.pos, "#" + w + " without #if");
+    if (frames_.empty() || frames_.back().inputs != inputs_.size())
+      fail_at(d.pos, "#" + w + " without #if");
     if (frames_.back().kind == FrameKind::Switch && w == "else") return;  // falls through
     if (frames_.back().kind != FrameKind::If) fail_at(d.pos, "#" + w + " without #if");
     skip_to(false, false);
@@ -322,8 +323,7 @@ void Interpreter::directive_body(const Token& d) {
     if (pov::is_symbol(peek_operator(), ";")) next();
   } else if (w == "default") {
     default_block();
-  } else if (w == "debug" || w == "warning" || w == "error" || w == "render" ||
-             w == "statistics") {
+  } else if (w == "debug" || w == "warning" || w == "error" || w == "render" || w == "statistics") {
     message_directive(d);
   } else if (w == "fopen") {
     fopen_directive();
@@ -341,7 +341,8 @@ void Interpreter::directive_body(const Token& d) {
 double Interpreter::paren_number(const char* what) {
   const Pos at = tok().pos;
   const Value v = expression();
-  if (v.kind != Value::Float) fail_at(at, std::string(what) + " needs a float, got " + kind_name(v));
+  if (v.kind != Value::Float)
+    fail_at(at, std::string(what) + " needs a float, got " + kind_name(v));
   return v.v[0];
 }
 

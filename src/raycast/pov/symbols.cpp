@@ -175,11 +175,11 @@ void Interpreter::apply_declares() {
 
 namespace {
 bool is_skipped_block(const std::string& w) {
-  static const char* const kinds[] = {"normal",      "pigment_map", "normal_map", "texture_map",
-                                      "slope_map",   "density_map", "material_map", "density",
-                                      "media",       "fog",         "rainbow",    "sky_sphere",
-                                      "photons",     "radiosity",   "interior_texture",
-                                      "bump_map",    "image_pattern", "image_map"};
+  static const char* const kinds[] = {
+      "normal",      "pigment_map",   "normal_map", "texture_map", "slope_map",
+      "density_map", "material_map",  "density",    "media",       "fog",
+      "rainbow",     "sky_sphere",    "photons",    "radiosity",   "interior_texture",
+      "bump_map",    "image_pattern", "image_map"};
   for (const char* k : kinds)
     if (w == k) return true;
   return false;

@@ -46,7 +46,7 @@ struct Value {
   std::array<double, 5> v{};
   std::string text;  // String: the characters; Opaque: the block's keyword
   std::shared_ptr<ArrayValue> array;
-  std::shared_ptr<const Node> object;  // Object (a light_source is an Object too)
+  std::shared_ptr<const Node> object;           // Object (a light_source is an Object too)
   std::shared_ptr<const pov::Texture> texture;  // Texture, Material (with its interior)
   std::shared_ptr<const pov::Pigment> pigment;
   std::shared_ptr<const pov::Finish> finish;
@@ -102,8 +102,8 @@ struct MacroDef {
   std::string name;
   std::vector<std::string> params;
   std::vector<bool> optional;
-  int file = 0;                  // Sources index of the body
-  std::size_t body_offset = 0;   // the cursor just after the parameter list
+  int file = 0;                 // Sources index of the body
+  std::size_t body_offset = 0;  // the cursor just after the parameter list
   int body_line = 1, body_column = 1;
 };
 

@@ -339,9 +339,9 @@ class Writer {
         f.params = {"x", "y", "z"};
         f.body = n.function;
         const std::string text = formula_text(f, mirror_);
-        if (text.empty()) fail_at(n.pos, "raycast's formulas cannot express this isosurface's function");
-        o << "implicit: {function: \"" << text
-          << "\", bounds: " << bounds_text(*n.bounds);
+        if (text.empty())
+          fail_at(n.pos, "raycast's formulas cannot express this isosurface's function");
+        o << "implicit: {function: \"" << text << "\", bounds: " << bounds_text(*n.bounds);
         if (n.open) o << ", open: true";
         o << "}";
         break;
@@ -411,7 +411,6 @@ class Writer {
     if (!mat.empty()) line(n.pos, more + "material: " + mat);
     if (!xf.empty()) line(n.pos, more + "transform: " + xf);
   }
-
 
   const PovScene& s_;
   std::string name_;
