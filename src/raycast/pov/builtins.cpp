@@ -234,6 +234,12 @@ Value Interpreter::builtin(const Token& t) {
   }
   if (!is_symbol(")")) unexpected("')' to close " + w + "(");
   next();
+  return call_builtin(t, a, at);
+}
+
+Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
+                                const std::vector<Pos>& at) {
+  const std::string& w = t.text;
   auto need = [&](std::size_t n) {
     if (a.size() != n)
       fail_at(t.pos,
@@ -242,12 +248,6 @@ Value Interpreter::builtin(const Token& t) {
   auto f = [&](std::size_t i) {
     if (a[i].kind != Value::Float) fail_at(at[i], w + ": expected a float, got " + kind_name(a[i]));
     return a[i].v[0];
-  };
-  auto vv = [&](std::size_t i) -> Vec3 {
-    if (a[i].kind == Value::Float) return {a[i].v[0], a[i].v[0], a[i].v[0]};
-    if (a[i].kind != Value::Vector)
-      fail_at(at[i], w + ": expected a vector, got " + kind_name(a[i]));
-    return {a[i].v[0], a[i].v[1], a[i].dims > 2 ? a[i].v[2] : 0};
   };
   auto s = [&](std::size_t i) -> const std::string& {
     if (a[i].kind != Value::String)
@@ -314,63 +314,86 @@ Value Interpreter::builtin(const Token& t) {
         static_cast<std::uint64_t>(static_cast<std::int64_t>(f(0))) * 0x9E3779B97F4A7C15ULL + 1);
     return Value::number(static_cast<double>(random_streams_.size() - 1));
   }
-  if (sig.size() == 1 && sig[0] == Arg::F) {
-    const double x = f(0);
-    double r;
-    if (w == "abs")
-      r = std::fabs(x);
-    else if (w == "acos")
-      r = std::acos(x);
-    else if (w == "acosh")
-      r = std::acosh(x);
-    else if (w == "asin")
-      r = std::asin(x);
-    else if (w == "asinh")
-      r = std::asinh(x);
-    else if (w == "atan")
-      r = std::atan(x);
-    else if (w == "atanh")
-      r = std::atanh(x);
-    else if (w == "ceil")
-      r = std::ceil(x);
-    else if (w == "cos")
-      r = std::cos(x);
-    else if (w == "cosh")
-      r = std::cosh(x);
-    else if (w == "degrees")
-      r = x / kDegree;
-    else if (w == "exp")
-      r = std::exp(x);
-    else if (w == "floor")
-      r = std::floor(x);
-    else if (w == "int")
-      r = std::trunc(x);
-    else if (w == "ln")
-      r = std::log(x);
-    else if (w == "log")
-      r = std::log10(x);
-    else if (w == "radians")
-      r = x * kDegree;
-    else if (w == "sin")
-      r = std::sin(x);
-    else if (w == "sinh")
-      r = std::sinh(x);
-    else if (w == "sqrt")
-      r = std::sqrt(x);
-    else if (w == "tan")
-      r = std::tan(x);
-    else if (w == "tanh")
-      r = std::tanh(x);
-    else if (w == "chr") {
-      if (!(x >= 1 && x < 256)) fail_at(at[0], "chr needs a code in [1, 255]");
-      return Value::string(std::string(1, static_cast<char>(static_cast<int>(x))));
-    } else if (w == "datetime") {
-      return Value::string("2000-01-01 00:00:00");
-    } else
-      r = x;
-    if (std::isnan(r)) fail_at(t.pos, w + "(" + format_number(x, 0, 6) + ") is not a number");
-    return Value::number(r);
-  }
+  if (sig.size() == 1 && sig[0] == Arg::F) return float_builtin(t, f(0), at[0]);
+  return vector_string_builtin(t, a, at);
+}
+
+Value Interpreter::float_builtin(const Token& t, double x, const Pos& at0) {
+  const std::string& w = t.text;
+  double r;
+  if (w == "abs")
+    r = std::fabs(x);
+  else if (w == "acos")
+    r = std::acos(x);
+  else if (w == "acosh")
+    r = std::acosh(x);
+  else if (w == "asin")
+    r = std::asin(x);
+  else if (w == "asinh")
+    r = std::asinh(x);
+  else if (w == "atan")
+    r = std::atan(x);
+  else if (w == "atanh")
+    r = std::atanh(x);
+  else if (w == "ceil")
+    r = std::ceil(x);
+  else if (w == "cos")
+    r = std::cos(x);
+  else if (w == "cosh")
+    r = std::cosh(x);
+  else if (w == "degrees")
+    r = x / kDegree;
+  else if (w == "exp")
+    r = std::exp(x);
+  else if (w == "floor")
+    r = std::floor(x);
+  else if (w == "int")
+    r = std::trunc(x);
+  else if (w == "ln")
+    r = std::log(x);
+  else if (w == "log")
+    r = std::log10(x);
+  else if (w == "radians")
+    r = x * kDegree;
+  else if (w == "sin")
+    r = std::sin(x);
+  else if (w == "sinh")
+    r = std::sinh(x);
+  else if (w == "sqrt")
+    r = std::sqrt(x);
+  else if (w == "tan")
+    r = std::tan(x);
+  else if (w == "tanh")
+    r = std::tanh(x);
+  else if (w == "chr") {
+    if (!(x >= 1 && x < 256)) fail_at(at0, "chr needs a code in [1, 255]");
+    return Value::string(std::string(1, static_cast<char>(static_cast<int>(x))));
+  } else if (w == "datetime") {
+    return Value::string("2000-01-01 00:00:00");
+  } else
+    r = x;
+  if (std::isnan(r)) fail_at(t.pos, w + "(" + format_number(x, 0, 6) + ") is not a number");
+  return Value::number(r);
+}
+
+Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value>& a,
+                                         const std::vector<Pos>& at) {
+  const std::string& w = t.text;
+  auto f = [&](std::size_t i) {
+    if (a[i].kind != Value::Float) fail_at(at[i], w + ": expected a float, got " + kind_name(a[i]));
+    return a[i].v[0];
+  };
+  auto vv = [&](std::size_t i) -> Vec3 {
+    if (a[i].kind == Value::Float) return {a[i].v[0], a[i].v[0], a[i].v[0]};
+    if (a[i].kind != Value::Vector)
+      fail_at(at[i], w + ": expected a vector, got " + kind_name(a[i]));
+    return {a[i].v[0], a[i].v[1], a[i].dims > 2 ? a[i].v[2] : 0};
+  };
+  auto s = [&](std::size_t i) -> const std::string& {
+    if (a[i].kind != Value::String)
+      fail_at(at[i], w + ": expected a string, got " + kind_name(a[i]));
+    return a[i].text;
+  };
   if (w == "atan2") return Value::number(std::atan2(f(0), f(1)));
   if (w == "div") return Value::number(std::trunc(f(0) / f(1)));
   if (w == "mod") return Value::number(std::fmod(f(0), f(1)));

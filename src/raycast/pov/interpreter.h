@@ -76,6 +76,11 @@ class Interpreter {
   /// The values after a pattern's keyword (a number, a vector, a block ...).
   void pattern_arguments(const Token& t, bool colours);
   Value builtin(const Token& name);
+  // builtin()'s parts: the functions by their argument types.
+  Value call_builtin(const Token& t, const std::vector<Value>& a, const std::vector<Pos>& at);
+  Value float_builtin(const Token& t, double x, const Pos& at0);
+  Value vector_string_builtin(const Token& t, const std::vector<Value>& a,
+                              const std::vector<Pos>& at);
   /// A built-in float constant (clock, image_width ...) for function bodies.
   Value builtin_constant(const Token& name);
   Value primary(int vector_depth);
