@@ -608,6 +608,21 @@ void Interpreter::mesh2_body(Node& n, int) {
     fail_at(n.pos, "normal_indices must have one entry per face");
   if (face_normals.empty() && !norms.empty() && norms.size() != verts.size())
     fail_at(n.pos, "without normal_indices, normal_vectors must have one normal per vertex");
+  if (face_normals.empty()) {
+    // Vertices and their normals (if any) correspond one to one: the indices stay as written.
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      for (std::size_t k = 0; k < 3; ++k)
+        if (faces[f][k] >= static_cast<long>(verts.size()))
+          fail_at(face_pos[f], "face " + std::to_string(f) + ": vertex index " +
+                                   std::to_string(faces[f][k]) + " out of range (" +
+                                   std::to_string(verts.size()) + " vertices)");
+      n.triangles.push_back({static_cast<int>(faces[f][0]), static_cast<int>(faces[f][1]),
+                             static_cast<int>(faces[f][2])});
+    }
+    n.vertices = std::move(verts);
+    n.normals = std::move(norms);
+    return;
+  }
   std::map<std::pair<long, long>, int> index;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     std::array<int, 3> tri{};
