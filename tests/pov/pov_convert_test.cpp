@@ -263,6 +263,14 @@ TEST(PovImport, CliConvertAndRender) {
   const auto b = test::run("convert '" + bad + "'");
   EXPECT_EQ(b.code, 2);
   EXPECT_NE(b.err.find("bad.pov:2:15: unknown word 'invert'"), std::string::npos) << b.err;
+  // -D declares before the scene (and stops at the SCENE); --library-path finds includes.
+  const std::string inc_dir = (test::temp_dir() / "incs").string();
+  std::filesystem::create_directories(inc_dir);
+  test::write("incs/r.inc", "#declare R = 2;\n");
+  const std::string uses = test::write("uses.pov", "#include \"r.inc\"\nsphere { 0, R * Q }\n");
+  const auto d = test::run("render -D Q=0.5 --library-path '" + inc_dir + "' '" + uses + "' -o '" +
+                           (test::temp_dir() / "d.png").string() + "' --width 8 --height 6");
+  EXPECT_EQ(d.code, 0) << d.err;
   const std::string warned = test::write("warned.pov", "sphere { 0, 1 pigment { bozo } }\n");
   const auto w = test::run("render '" + warned + "' --strict -o '" +
                            (test::temp_dir() / "w.png").string() + "' --width 8 --height 6");
