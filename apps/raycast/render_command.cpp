@@ -30,11 +30,6 @@ struct Options {
   int width = 0, height = 0, spp = 0, threads = 0;
 };
 
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "raycast render: %s\n", message.c_str());
-  return 2;
-}
-
 /// An output that cannot be written is not bad input (docs/cli.md: exit 1).
 int output_error(const std::string& message) {
   std::fprintf(stderr, "raycast render: %s\n", message.c_str());

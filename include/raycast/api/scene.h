@@ -133,6 +133,8 @@ class Scene {
 
   /// Renders the scene from `camera` (or the scene's camera when absent).
   Image render(const Camera* camera, const RenderOptions& options) const;
+  /// The width and height render() uses for RenderOptions' zero width and height.
+  std::array<int, 2> image_size() const;
 
   struct Impl;  // the engine behind the wall (opaque to users)
 
