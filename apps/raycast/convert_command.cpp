@@ -7,22 +7,23 @@
 #include "commands.h"
 #include "io/scene_error.h"
 #include "load/pov_loader.h"
-#include "pov/import.h"
+#include "pov_options.h"
 
 namespace raycast::cli {
 
 Action add_convert_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "convert", "Convert a POV-Ray scene (.pov, a documented subset) to raycast's YAML format");
+  auto* cmd = app.add_subcommand("convert",
+                                 "Convert a POV-Ray scene (.pov or .ini) to raycast's YAML format");
   auto scene = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>("-");
   cmd->add_option("SCENE", *scene, "POV-Ray scene file (.pov)")->required();
   cmd->add_option("-o,--output", *output, "YAML file to write (default -: standard output)");
+  add_pov_options(cmd);
   return [scene, output]() -> int {
-    if (!pov::is_pov_path(*scene))
+    if (!is_pov_path(*scene))
       throw SceneError(*scene, 0, 0,
-                       "convert reads POV-Ray scenes: the file name must end in .pov");
-    const std::string yaml = convert_pov_file(*scene);
+                       "convert reads POV-Ray scenes: the file name must end in .pov or .ini");
+    const std::string yaml = convert_pov_file(*scene, default_pov_options());
     if (*output == "-") {
       std::fwrite(yaml.data(), 1, yaml.size(), stdout);
       return 0;

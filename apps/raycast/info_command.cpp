@@ -1,3 +1,4 @@
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -68,7 +69,10 @@ Action add_info_command(CLI::App& app) {
       std::fprintf(stderr, "raycast info: give a SCENE, or --system\n");
       return 2;
     }
+    const auto start = std::chrono::steady_clock::now();
     const Scene scene = load_scene_file(*scene_path);
+    const double load_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::map<std::string, int> by_type;
     for (const Object& o : scene.objects) ++by_type[shape_name(o)];
     std::printf("scene: %s\n", scene.source.c_str());
@@ -79,6 +83,7 @@ Action add_info_command(CLI::App& app) {
     print_box("finite bounds", scene.finite_bounds());
     std::printf("acceleration: top-level BVH, %zu bytes, built in %.3f ms\n", scene.accel_bytes(),
                 scene.build_ms());
+    std::printf("loaded in %.3f ms (reading and building the objects, then the BVH)\n", load_ms);
     print_meshes(scene);
     return 0;
   };

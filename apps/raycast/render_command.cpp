@@ -16,6 +16,7 @@
 #include "load/loader.h"
 #include "load/validate.h"
 #include "output_file.h"
+#include "pov_options.h"
 #include "render/renderer.h"
 #include "render_frames.h"
 #include "render_output.h"
@@ -98,6 +99,7 @@ Action add_render_command(CLI::App& app) {
                       "(neighbour), 2 (subdivide) or variance (overrides the scene and --spp)");
   auto* threads =
       cmd->add_option("--threads", opt->threads, "Worker threads (default and 0: all cores)");
+  add_pov_options(cmd);
   cmd->add_option("--integrator", opt->integrator,
                   "whitted, raycast, depth, normal or id (overrides the scene)");
   cmd->add_option("--aov", opt->aovs,

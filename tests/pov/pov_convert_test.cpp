@@ -167,25 +167,36 @@ TEST_P(PovConvertRoundTrip, ConvertedYamlRendersIdentically) {
 INSTANTIATE_TEST_SUITE_P(Scenes, PovConvertRoundTrip,
                          ::testing::Values("basic", "csg", "surfaces", "glass", "transmit"));
 
-TEST(PovImport, LoaderErrorsPointIntoThePovFile) {
-  try {
-    load_pov_scene_text("camera { location <0, 0, -5> }\n\n  sphere { 0, -1 }", "t.pov", ".");
-    FAIL() << "expected an error";
-  } catch (const SceneError& e) {
-    EXPECT_EQ(e.file(), "t.pov");
-    EXPECT_EQ(e.line(), 3);
-    EXPECT_EQ(e.column(), 3);
-    EXPECT_NE(e.message().find("radius"), std::string::npos) << e.what();
-  }
+TEST(PovImport, DegenerateShapesAreLeftOutWithTheirPosition) {
+  // POV-Ray draws nothing for a sphere of negative radius; raycast says so and goes on.
+  std::vector<std::string> warnings;
+  const Scene s = load_pov_scene_text("camera { location <0, 0, -5> }\n\n  sphere { 0, -1 }",
+                                      "t.pov", ".", -1, {}, &warnings);
+  EXPECT_TRUE(s.objects.empty());
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind("t.pov:3:3: warning: raycast does not render degenerate shapes", 0),
+            0u)
+      << warnings[0];
+  EXPECT_NE(warnings[0].find("radius"), std::string::npos) << warnings[0];
 }
 
-TEST(PovImport, OpenSurfacesCannotBeCsgOperands) {
+TEST(PovImport, OpenSurfacesInCsgAreAWarningOrAnErrorWhenStrict) {
+  const std::string text = "difference {\n  sphere { 0, 1 }\n  disc { 0, y, 2 }\n}";
+  std::vector<std::string> warnings;
+  const Scene s = load_pov_scene_text(text, "t.pov", ".", -1, {}, &warnings);
+  EXPECT_EQ(s.objects.size(), 1u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(
+      warnings[0].rfind("t.pov:3:3: warning: raycast does not render open surfaces in CSG", 0), 0u)
+      << warnings[0];
+  pov::Options strict;
+  strict.strict = true;
   try {
-    load_pov_scene_text("difference {\n  sphere { 0, 1 }\n  disc { 0, y, 2 }\n}", "t.pov", ".");
+    load_pov_scene_text(text, "t.pov", ".", -1, strict);
     FAIL() << "expected an error";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.line(), 3) << e.what();
-    EXPECT_NE(e.message().find("open surface"), std::string::npos) << e.what();
+    EXPECT_NE(e.message().find("open surfaces in CSG"), std::string::npos) << e.what();
   }
 }
 
@@ -248,12 +259,25 @@ TEST(PovImport, CliConvertAndRender) {
   EXPECT_EQ(r.code, 0) << r.err;
   const auto info = test::run("info '" + scene + "'");
   EXPECT_EQ(info.code, 0) << info.err;
-  const std::string bad = test::write("bad.pov", "sphere { 0, 1 }\nsphere { 0, 1 inverse }\n");
+  const std::string bad = test::write("bad.pov", "sphere { 0, 1 }\nsphere { 0, 1 invert }\n");
   const auto b = test::run("convert '" + bad + "'");
   EXPECT_EQ(b.code, 2);
-  EXPECT_NE(b.err.find("bad.pov:2:15: 'inverse' is not supported by the POV-Ray import"),
+  EXPECT_NE(b.err.find("bad.pov:2:15: unknown word 'invert'"), std::string::npos) << b.err;
+  // -D declares before the scene (and stops at the SCENE); --library-path finds includes.
+  const std::string inc_dir = (test::temp_dir() / "incs").string();
+  std::filesystem::create_directories(inc_dir);
+  test::write("incs/r.inc", "#declare R = 2;\n");
+  const std::string uses = test::write("uses.pov", "#include \"r.inc\"\nsphere { 0, R * Q }\n");
+  const auto d = test::run("render -D Q=0.5 --library-path '" + inc_dir + "' '" + uses + "' -o '" +
+                           (test::temp_dir() / "d.png").string() + "' --width 8 --height 6");
+  EXPECT_EQ(d.code, 0) << d.err;
+  const std::string warned = test::write("warned.pov", "sphere { 0, 1 pigment { bozo } }\n");
+  const auto w = test::run("render '" + warned + "' --strict -o '" +
+                           (test::temp_dir() / "w.png").string() + "' --width 8 --height 6");
+  EXPECT_EQ(w.code, 2);
+  EXPECT_NE(w.err.find("warned.pov:1:25: raycast does not render the bozo pattern"),
             std::string::npos)
-      << b.err;
+      << w.err;
   const auto v =
       test::run("render '" + bad + "' -o '" + (test::temp_dir() / "x.png").string() + "'");
   EXPECT_EQ(v.code, 2);

@@ -15,7 +15,6 @@
 #include "load/yaml_reader.h"
 #include "objects/csg_tree.h"
 #include "objects/prototype.h"
-#include "pov/import.h"
 
 namespace raycast {
 
@@ -343,8 +342,8 @@ Scene load_scene_file(const std::string& path, int frame) {
     if (std::cin.bad()) throw SceneError("<stdin>", 0, 0, "cannot read the scene");
     return load_scene_text(ss.str(), "<stdin>", ".", frame);
   }
-  if (pov::is_pov_path(path))
-    return load_pov_scene_file(path, frame);  // POV-Ray's language (docs/pov-import.md)
+  if (is_pov_path(path))
+    return load_pov_scene_file(path, frame, default_pov_options());  // docs/pov-import.md
   const SceneFileText file = read_scene_file(path);
   return load_scene_text(file.text, path, file.dir, frame);
 }

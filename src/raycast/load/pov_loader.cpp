@@ -1,61 +1,585 @@
 #include "load/pov_loader.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
+#include <iostream>
+#include <map>
+#include <numbers>
+#include <set>
+#include <sstream>
 
-#include "load/loader.h"
-#include "pov/import.h"
+#include "io/scene_file.h"
+#include "objects/csg_tree.h"
+#include "pov/checker_grid.h"
+#include "pov/ini_file.h"
+#include "pov/interpreter.h"
+#include "pov/yaml_writer.h"
 
 namespace raycast {
 
 namespace {
 
-// The loader's positions are lines of the generated YAML: each maps to the POV-Ray construct
-// it was written for.
-SourceMark remap(const pov::Imported& im, const SourceMark& m) {
-  if (m.line <= 0 || m.line > static_cast<int>(im.yaml.line_pos.size())) return {};
-  const pov::Pos& p = im.yaml.line_pos[static_cast<std::size_t>(m.line - 1)];
-  return p.file == 0 ? SourceMark{p.line, p.column} : SourceMark{};
+using pov::Node;
+using pov::XformOp;
+
+// Builds the engine's scene from the interpreted description. POV-Ray's frame is left-handed
+// when (up x direction) . right > 0 (the default camera): then z is negated everywhere, which
+// shows the same picture in raycast's right-handed frame.
+class Builder {
+ public:
+  Builder(const pov::PovScene& s, Scene& scene, bool strict)
+      : s_(s), scene_(scene), strict_(strict) {
+    const pov::Camera& c = s.camera;
+    mirror_ = dot(cross(c.up, c.direction), c.right) > 0;
+    const double g = s.settings.assumed_gamma;
+    gamma_ = s.settings.gamma_given && g != 1 ? (g == 0 ? -1 : g) : 1;
+  }
+
+  void run() {
+    scene_.materials.push_back(Material{});  // materials[0]: the default
+    camera();
+    scene_.render.max_depth = std::max(0, s_.max_trace_level - 1);
+    scene_.render.background = rgb(s_.background);
+    scene_.render.ambient = rgb(s_.ambient_light);
+    if (s_.adc_bailout) scene_.render.bailout = *s_.adc_bailout;
+    if (s_.settings.width > 0) scene_.image.width = s_.settings.width;
+    if (s_.settings.height > 0) scene_.image.height = s_.settings.height;
+    if (s_.settings.antialias_depth > 0) {
+      scene_.render.antialias.method = AntialiasMethod::kNeighbour;
+      scene_.render.antialias.depth = s_.settings.antialias_depth;
+      scene_.render.antialias.threshold = s_.settings.antialias_threshold;
+    }
+    scene_.objects.reserve(s_.objects.size());
+    std::vector<Object> out;
+    for (const Node& n : s_.objects) {
+      const int entry = scene_.entries;
+      out.clear();
+      add(n, nullptr, std::nullopt, entry, out);
+      if (out.empty()) continue;
+      ++scene_.entries;
+      scene_.marks.entries.push_back({n.pos.file == 0 ? n.pos.line : 0, n.pos.column});
+      for (Object& o : out) scene_.objects.push_back(std::move(o));
+    }
+  }
+
+ private:
+  [[noreturn]] void fail_at(const pov::Pos& p, const std::string& m) const {
+    pov::fail(s_.sources, p, m);
+  }
+  Vec3 m(const Vec3& v) const { return mirror_ ? Vec3{v.x, v.y, -v.z} : v; }
+  // A point of a shape: mirrored, and moved by the checker offset of the shape being built.
+  Vec3 pt(const Vec3& v) const { return m(v) + shift_; }
+
+  // A colour of the scene in linear light: POV-Ray 3.7 with assumed_gamma G treats the scene's
+  // colours as encoded with that gamma (srgb: the sRGB curve).
+  double linear(double c) const {
+    if (gamma_ == 1 || c <= 0) return c;
+    if (gamma_ < 0) return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    return std::pow(c, gamma_);
+  }
+  Color rgb(const pov::Colour& c) const { return {linear(c.r), linear(c.g), linear(c.b)}; }
+
+  void camera() {
+    const pov::Camera& c = s_.camera;
+    CameraDesc d;
+    d.position = m(c.location);
+    d.look_at = m(c.location + c.direction);
+    d.up = m(c.up);
+    if (c.orthographic) {
+      d.type = CameraType::kOrthographic;
+      d.height = length(c.up);
+    } else {
+      // The vertical field of view from up's length against direction's.
+      d.fov = 2 * std::atan(0.5 * length(c.up) / length(c.direction)) * 180 / std::numbers::pi;
+      if (!(d.fov > 0 && d.fov < 180))
+        fail_at(c.pos, "the camera's field of view is not in (0, 180)");
+    }
+    scene_.camera = d;
+    scene_.marks.camera = {c.pos.file == 0 ? c.pos.line : 0, c.pos.column};
+    // POV-Ray's image has right's length over up's as its aspect ratio; raycast's image size
+    // decides it, so a scene asks for that ratio at 480 lines unless the size is given.
+    const double aspect = length(c.right) / length(c.up);
+    if (s_.settings.width == 0 && aspect > 0.1 && aspect < 10) {
+      scene_.image.height = 480;
+      scene_.image.width = std::max(1, static_cast<int>(std::lround(480 * aspect)));
+    }
+  }
+
+  void light(const pov::Light& l, const std::optional<Transform>& xf) {
+    Light out;
+    auto place = [&](const Vec3& p) { return xf ? xf->point(m(p)) : m(p); };
+    out.color = rgb(l.colour);
+    out.position = place(l.position);
+    if (l.area) {
+      out.type = LightType::kSphere;
+      out.radius = std::max(0.5 * std::max(length(l.axis1), length(l.axis2)), 1e-6);
+      out.samples = std::clamp(l.size1 * l.size2, 1, 256);
+    } else if (l.kind == pov::Light::Spot) {
+      out.type = LightType::kSpot;
+      const Vec3 d = place(l.point_at) - out.position;
+      if (!(length(d) > 0)) fail_at(l.pos, "the spotlight's point_at is its position");
+      out.direction = d / length(d);
+      out.angle = l.falloff;
+      out.falloff = l.falloff - l.radius;
+    }
+    scene_.lights.push_back(out);
+    scene_.marks.lights.push_back({l.pos.file == 0 ? l.pos.line : 0, l.pos.column});
+  }
+
+  int material(const pov::Texture& t) {
+    Material mat;
+    const pov::Pigment& p = t.pigment;
+    const pov::Finish& f = t.finish;
+    const double tr = std::min(1.0, p.c0.filter + p.c0.transmit);
+    if (p.checker) {
+      // Negating z swaps the parity of floor(z): swap the colours back.
+      mat.has_checker = true;
+      mat.checker.c0 = rgb(mirror_ ? p.c1 : p.c0);
+      mat.checker.c1 = rgb(mirror_ ? p.c0 : p.c1);
+      mat.checker.scale = p.scale;
+    } else {
+      mat.color = rgb(p.c0);
+    }
+    double specular = f.phong, shininess = f.phong_size;
+    if (f.specular > 0) {
+      // Blinn's (n.h)^(1/roughness) as a Phong lobe: the half-vector's angle is about half the
+      // mirror direction's, so the exponent is a quarter.
+      if (f.phong == 0) shininess = 1 / (4 * f.roughness);
+      specular += f.specular;
+    }
+    // POV-Ray weighs a surface's own ambient and diffuse light by its opacity.
+    const double opacity = 1 - tr;
+    mat.ambient = f.ambient * opacity;
+    mat.diffuse = f.diffuse * opacity;
+    mat.specular = specular;
+    mat.shininess = std::max(shininess, 1e-3);
+    mat.reflection = std::min(1.0, f.reflection);
+    mat.transmission = tr;
+    mat.fresnel = f.fresnel && tr > 0;
+    if (t.ior) mat.ior = *t.ior;
+    const MaterialKey key = {mat.color.x,
+                             mat.color.y,
+                             mat.color.z,
+                             double(mat.has_checker),
+                             mat.checker.c0.x,
+                             mat.checker.c0.y,
+                             mat.checker.c0.z,
+                             mat.checker.c1.x,
+                             mat.checker.c1.y,
+                             mat.checker.c1.z,
+                             mat.checker.scale,
+                             mat.ambient,
+                             mat.diffuse,
+                             mat.specular,
+                             mat.shininess,
+                             mat.reflection,
+                             mat.transmission,
+                             double(mat.fresnel),
+                             mat.ior};
+    const auto it = materials_.find(key);
+    if (it != materials_.end()) return it->second;
+    mat.name = t.name;
+    if (mat.name.empty()) mat.name.append("m").append(std::to_string(scene_.materials.size()));
+    scene_.materials.push_back(mat);
+    const int index = static_cast<int>(scene_.materials.size()) - 1;
+    materials_[key] = index;
+    return index;
+  }
+
+  // The node's own transformations (object -> its parent), in raycast's frame.
+  std::optional<Transform> own_transform(const Node& n, bool axial, const Vec3& shift = {}) const {
+    Transform t;
+    bool any = false;
+    auto then = [&](const Transform& x) {
+      t = any ? x * t : x;
+      any = true;
+    };
+    if (shift.x != 0) then(Transform::translate(shift * -1.0));
+    // Torus, lathe and sor are about y in POV-Ray, about z in raycast: turn z onto y. (They are
+    // symmetric about their axis, so mirroring z leaves this turn as it is.)
+    if (axial) then(Transform::rotate({1, 0, 0}, -90));
+    const double s = mirror_ ? -1 : 1;
+    for (const XformOp& x : n.xforms) {
+      switch (x.kind) {
+        case XformOp::Translate:
+          then(Transform::translate(m(x.v)));
+          break;
+        case XformOp::Scale:
+          then(Transform::scale(x.v));
+          break;
+        case XformOp::Rotate: {
+          // POV-Ray turns about x, then y, then z; conjugated by the mirror, the x and y
+          // angles change sign.
+          const double a[3] = {x.v.x * s, x.v.y * s, x.v.z};
+          const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+          for (int i = 0; i < 3; ++i)
+            if (a[i] != 0) then(Transform::rotate(axes[i], a[i]));
+          break;
+        }
+        case XformOp::Matrix: {
+          // POV-Ray's rows act on row vectors: p' = x r0 + y r1 + z r2 + t.
+          const double sign[4] = {1, 1, s, 1};
+          Mat4 mm;
+          for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+              const double v = i == 3   ? (j == 3 ? 1 : 0)
+                               : j == 3 ? x.m[static_cast<std::size_t>(9 + i)]
+                                        : x.m[static_cast<std::size_t>(3 * j + i)];
+              mm.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+                  v * sign[i] * sign[j];
+            }
+          const std::optional<Transform> tm = Transform::from_matrix(mm);
+          if (!tm) fail_at(n.pos, "the matrix cannot be inverted");
+          then(*tm);
+          break;
+        }
+      }
+    }
+    if (!any) return std::nullopt;
+    return t;
+  }
+
+  static std::optional<Transform> compose(const std::optional<Transform>& parent,
+                                          const std::optional<Transform>& own) {
+    if (!parent) return own;
+    if (!own) return parent;
+    return *parent * *own;
+  }
+
+  Aabb box_of(const std::array<Vec3, 2>& b) const {
+    Vec3 lo = b[0], hi = b[1];
+    if (mirror_) std::swap(lo.z, hi.z), lo.z = -lo.z, hi.z = -hi.z;
+    return {lo, hi};
+  }
+
+  std::string polynomial_text(const Node& n) const {
+    std::ostringstream e;
+    e.precision(17);
+    bool first = true;
+    for (const auto& [k, c] : n.terms) {
+      const double v = mirror_ && k[2] % 2 ? -c : c;
+      if (v == 0) continue;
+      e << (first ? "(" : " + (") << v << ")";
+      first = false;
+      const char* var[3] = {"x", "y", "z"};
+      for (int i = 0; i < 3; ++i)
+        if (k[static_cast<std::size_t>(i)])
+          e << "*" << var[i] << "^" << k[static_cast<std::size_t>(i)];
+    }
+    return first ? "0" : e.str();
+  }
+
+  // The shape of a primitive node, or nothing (with a warning) when raycast cannot build it.
+  std::optional<ShapeVariant> shape(const Node& n, bool& axial) {
+    axial = false;
+    switch (n.kind) {
+      case Node::Sphere:
+        return make_sphere(pt(n.points[0]), n.values[0]);
+      case Node::Box:
+        return make_box(box_of({n.points[0], n.points[1]}).lo + shift_,
+                        box_of({n.points[0], n.points[1]}).hi + shift_);
+      case Node::Plane: {
+        const Vec3 nn = n.points[0];
+        const double l = length(nn);
+        if (!(l > 0)) fail_at(n.pos, "a plane's normal must not be zero");
+        // POV-Ray's distance is measured along the normal made unit length.
+        return make_plane(m(nn), pt(nn * (n.values[0] / l)));
+      }
+      case Node::Cylinder:
+        return make_cylinder(pt(n.points[0]), pt(n.points[1]), n.values[0], !n.open);
+      case Node::Cone:
+        return make_cone(pt(n.points[0]), pt(n.points[1]), n.values[0], n.values[1], !n.open);
+      case Node::Disc:
+        return make_disk(pt(n.points[0]), m(n.points[1]), n.values[0], n.values[1]);
+      case Node::Torus:
+        axial = true;
+        return make_torus(n.values[0], n.values[1]);
+      case Node::Quadric: {
+        QuadricCoefficients c{};
+        for (std::size_t i = 0; i < 10; ++i) c[i] = n.values[i];
+        if (mirror_) c[4] = -c[4], c[5] = -c[5], c[8] = -c[8];  // the xz, yz and z terms
+        return make_quadric(c);
+      }
+      case Node::Poly:
+        if (!n.bounds) {
+          warn(n.pos, "unbounded polynomials",
+               "raycast needs bounded_by { box } or an intersection with a box");
+          return std::nullopt;
+        }
+        return make_algebraic(polynomial_text(n), box_of(*n.bounds));
+      case Node::Isosurface: {
+        pov::FunctionValue f;
+        f.params = {"x", "y", "z"};
+        f.body = n.function;
+        const std::string text = pov::formula_text(f, mirror_);
+        if (text.empty()) {
+          warn(n.pos, "isosurfaces of this function", "internal or pattern functions");
+          return std::nullopt;
+        }
+        return make_implicit(text, box_of(*n.bounds), n.open);
+      }
+      case Node::Lathe:
+      case Node::Sor: {
+        axial = true;
+        std::vector<std::array<double, 2>> profile;
+        for (const Vec3& p : n.points) profile.push_back({p.x, p.y});
+        return make_revolution(profile, ProfileCurve::kLinear, n.kind == Node::Sor && !n.open);
+      }
+      case Node::Mesh: {
+        std::vector<Vec3f> pos, nor;
+        for (const Vec3& v : n.vertices) {
+          const Vec3 q = pt(v);
+          pos.push_back(
+              {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
+        }
+        for (const Vec3& v : n.normals) {
+          const Vec3 q = m(v);
+          nor.push_back(
+              {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});
+        }
+        std::vector<std::array<std::uint32_t, 3>> tris;
+        tris.reserve(n.triangles.size());
+        for (const auto& t : n.triangles) {
+          // Mirroring reverses the winding: swap two corners to keep the faces' sides.
+          const auto a = static_cast<std::uint32_t>(t[0]), b = static_cast<std::uint32_t>(t[1]),
+                     c = static_cast<std::uint32_t>(t[2]);
+          tris.push_back(mirror_ ? std::array<std::uint32_t, 3>{a, c, b}
+                                 : std::array<std::uint32_t, 3>{a, b, c});
+        }
+        MeshOptions opt;
+        opt.smooth = !nor.empty();
+        return MeshShape{make_mesh(std::move(pos), std::move(tris), std::move(nor), opt)};
+      }
+      default:
+        return std::nullopt;
+    }
+  }
+
+  void warn(const pov::Pos& at, const std::string& kind, const std::string& detail) {
+    if (strict_)
+      fail_at(at, "raycast does not render " + kind + " yet (" + detail +
+                      "); without --strict it is a warning and is left out");
+    if (!warned_.insert(kind).second) return;
+    const std::string& name = s_.sources.names[static_cast<std::size_t>(at.file)];
+    warnings_.push_back(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                        ": warning: raycast does not render " + kind + " yet (" + detail +
+                        "); left out");
+  }
+
+  static bool is_csg(Node::Kind k) {
+    return k == Node::Intersection || k == Node::Difference || k == Node::Merge;
+  }
+
+  // One leaf object, its transform relative to `parent`.
+  std::optional<Object> leaf(const Node& n, const pov::Texture* tex,
+                             const std::optional<Transform>& parent) {
+    bool axial = false;
+    std::optional<ShapeVariant> sh;
+    shift_ = Vec3{0, 0, 0};
+    if (tex && tex->pigment.checker && pov::on_checker_grid(n, tex->pigment.scale)) {
+      const double e = pov::kCheckerOffset * tex->pigment.scale;
+      shift_ = m(Vec3{e, e, e});
+    }
+    try {
+      sh = shape(n, axial);
+    } catch (const std::invalid_argument& e) {
+      // POV-Ray draws degenerate shapes (a flat box, a zero radius) as nothing or a sliver.
+      warn(n.pos, "degenerate shapes", e.what());
+      return std::nullopt;
+    }
+    if (!sh) return std::nullopt;
+    Object o;
+    o.shape = std::move(*sh);
+    o.xf = compose(parent, own_transform(n, axial, shift_));
+    shift_ = Vec3{0, 0, 0};
+    if (tex) o.material = material(*tex);
+    return o;
+  }
+
+  // A top-level node (or a child of a union outside CSG): groups flatten into `out`.
+  void add(const Node& n, const pov::Texture* inherited, const std::optional<Transform>& parent,
+           int entry, std::vector<Object>& out) {
+    const pov::Texture* tex = n.texture ? &*n.texture : inherited;
+    if (n.kind == Node::LightSource) {
+      light(*n.light, parent);
+      return;
+    }
+    if (n.kind == Node::Union) {
+      const std::optional<Transform> xf = compose(parent, own_transform(n, false));
+      for (const Node& c : n.children) add(c, tex, xf, entry, out);
+      return;
+    }
+    if (n.kind == Node::Reference) {
+      add(*n.ref, tex, compose(parent, own_transform(n, false)), entry, out);
+      return;
+    }
+    if (is_csg(n.kind)) {
+      CsgTree tree;
+      csg_operation(n, tex, std::nullopt, tree);
+      if (tree.leaves.empty()) return;
+      Object o;
+      try {
+        o.shape = CsgShape{finish_csg_tree(std::move(tree))};
+      } catch (const std::invalid_argument& e) {
+        fail_at(n.pos, e.what());
+      }
+      o.xf = compose(parent, own_transform(n, false));
+      o.material = tex ? material(*tex) : -1;
+      o.entry = entry;
+      out.push_back(std::move(o));
+      return;
+    }
+    std::optional<Object> o = leaf(n, tex, parent);
+    if (!o) return;
+    o->entry = entry;
+    out.push_back(std::move(*o));
+  }
+
+  std::int32_t csg_operation(const Node& n, const pov::Texture* tex,
+                             const std::optional<Transform>& here, CsgTree& tree) {
+    const std::size_t index = tree.nodes.size();
+    tree.nodes.emplace_back();
+    tree.nodes[index].op = n.kind == Node::Intersection ? CsgOp::kIntersection
+                           : n.kind == Node::Difference ? CsgOp::kDifference
+                                                        : CsgOp::kUnion;
+    for (const Node& c : n.children) {
+      const pov::Texture* ct = c.texture ? &*c.texture : tex;
+      if (c.kind == Node::Reference && c.ref->texture) ct = &*c.ref->texture;
+      if (c.kind == Node::LightSource) {
+        light(*c.light, std::nullopt);
+        continue;
+      }
+      std::int32_t code;
+      const Node* part = &c;
+      std::optional<Transform> at = here;
+      while (part->kind == Node::Reference) {  // object { Name }: the shared object, placed
+        at = compose(at, own_transform(*part, false));
+        part = part->ref.get();
+        if (part->texture && !c.texture) ct = &*part->texture;
+      }
+      if (part->kind == Node::Union || is_csg(part->kind)) {
+        const std::optional<Transform> xf = part == &c ? compose(here, own_transform(c, false))
+                                                       : compose(at, own_transform(*part, false));
+        code = csg_operation(*part, ct, xf, tree);
+      } else if (part->kind == Node::LightSource) {
+        light(*part->light, at);
+        continue;
+      } else {
+        std::optional<Object> o = leaf(*part, ct, at);
+        if (!o) continue;
+        if (!is_closed(*o)) {
+          warn(c.pos, "open surfaces in CSG", "raycast's CSG needs closed solids");
+          continue;
+        }
+        o->material = part->texture ? material(*part->texture)
+                      : c.texture   ? material(*c.texture)
+                                    : -1;
+        tree.leaves.push_back(std::move(*o));
+        code = csg_leaf_code(tree.leaves.size() - 1);
+      }
+      tree.nodes[index].operands.push_back(code);
+    }
+    if (tree.nodes[index].operands.empty()) {
+      // Every operand was left out: an empty solid stays empty as an empty intersection.
+      Object o;
+      o.shape = make_sphere({0, 0, 0}, 1e-9);
+      tree.leaves.push_back(o);
+      tree.nodes[index].operands.push_back(csg_leaf_code(tree.leaves.size() - 1));
+    }
+    return static_cast<std::int32_t>(index);
+  }
+
+ public:
+  std::vector<std::string> warnings_;
+
+ private:
+  const pov::PovScene& s_;
+  Scene& scene_;
+  bool strict_ = false;
+  Vec3 shift_{0, 0, 0};  // the checker offset of the shape being built
+  bool mirror_ = false;
+  double gamma_ = 1;
+  // Equal materials are stored once: every field of raycast's material, as written.
+  using MaterialKey = std::array<double, 19>;
+  std::map<MaterialKey, int> materials_;
+  std::set<std::string> warned_;
+};
+
+void report(const std::vector<std::string>& in, std::vector<std::string>* out) {
+  for (const std::string& w : in) {
+    if (out)
+      out->push_back(w);
+    else
+      std::cerr << w << "\n";
+  }
 }
 
-Scene load_imported(const pov::Imported& im, const std::string& dir, int frame) {
-  const std::string& name = im.sources.names.front();
+Scene build(pov::PovScene ps, const std::string& name, std::vector<std::string>* warnings,
+            bool strict) {
   Scene scene;
-  try {
-    scene = load_scene_text(im.yaml.text, name, dir, frame);
-  } catch (const SceneError& e) {
-    const int line = e.line();
-    if (line <= 0 || line > static_cast<int>(im.yaml.line_pos.size()))
-      throw SceneError(name, 0, 0, e.message());
-    const pov::Pos& p = im.yaml.line_pos[static_cast<std::size_t>(line - 1)];
-    const std::string& file = im.sources.names[static_cast<std::size_t>(p.file)];
-    throw SceneError(file, p.line, p.column, e.message() + " (after conversion from POV-Ray)");
-  }
-  scene.marks.camera = remap(im, scene.marks.camera);
-  for (SourceMark& m : scene.marks.lights) m = remap(im, m);
-  for (SourceMark& m : scene.marks.entries) m = remap(im, m);
-  for (std::size_t i = 1; i < im.sources.paths.size(); ++i)
-    scene.marks.files.push_back(im.sources.paths[i]);
+  scene.source = name;
+  Builder b(ps, scene, strict);
+  b.run();
+  report(ps.warnings, warnings);
+  report(b.warnings_, warnings);
+  for (std::size_t i = 1; i < ps.sources.paths.size(); ++i)
+    scene.marks.files.push_back(ps.sources.paths[i]);
+  scene.build();
   return scene;
+}
+
+pov::Options with_frame(pov::Options o, int frame) {
+  if (frame >= 0 && !o.clock_on) {
+    o.frame = frame;
+  }
+  return o;
 }
 
 }  // namespace
 
-Scene load_pov_scene_file(const std::string& path, int frame) {
-  const pov::Imported im = pov::import_pov_file(path);
-  const std::string dir = std::filesystem::path(path).parent_path().string();
-  return load_imported(im, dir.empty() ? "." : dir, frame);
+pov::Options& default_pov_options() {
+  static pov::Options o;
+  return o;
+}
+
+bool is_pov_path(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".pov" || ext == ".ini";
 }
 
 Scene load_pov_scene_text(const std::string& text, const std::string& name, const std::string& dir,
-                          int frame) {
-  return load_imported(pov::import_pov_text(text, name, dir), dir, frame);
+                          int frame, const pov::Options& options,
+                          std::vector<std::string>* warnings) {
+  return build(pov::interpret_pov(text, name, dir, with_frame(options, frame)), name, warnings,
+               options.strict);
 }
 
-std::string convert_pov_file(const std::string& path) {
-  const pov::Imported im = pov::import_pov_file(path);
-  const std::string dir = std::filesystem::path(path).parent_path().string();
-  load_imported(im, dir.empty() ? "." : dir, -1);  // the same checks as `render`
-  return im.yaml.text;
+Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options& options,
+                          std::vector<std::string>* warnings) {
+  pov::Options o = with_frame(options, frame);
+  std::string scene_path = path;
+  if (path.size() >= 4 &&
+      (path.substr(path.size() - 4) == ".ini" || path.substr(path.size() - 4) == ".INI"))
+    scene_path = pov::read_ini_file(path, o);
+  const SceneFileText file = read_scene_file(scene_path);
+  return build(pov::interpret_pov(file.text, scene_path, file.dir, o), scene_path, warnings,
+               o.strict);
+}
+
+std::string convert_pov_file(const std::string& path, const pov::Options& options) {
+  pov::Options o = options;
+  std::string scene_path = path;
+  if (path.size() >= 4 && path.substr(path.size() - 4) == ".ini")
+    scene_path = pov::read_ini_file(path, o);
+  const SceneFileText file = read_scene_file(scene_path);
+  pov::PovScene ps = pov::interpret_pov(file.text, scene_path, file.dir, o);
+  report(ps.warnings, nullptr);
+  return pov::write_yaml(ps, scene_path).text;
 }
 
 }  // namespace raycast

@@ -1,20 +1,173 @@
 #include "pov/function_expr.h"
 
+#include <cmath>
 #include <cstdio>
+#include <map>
+#include <numbers>
 #include <sstream>
 
 namespace raycast::pov {
 
 namespace {
+
 std::string number_text(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
 }
+
+constexpr int kMaxCallDepth = 64;
+
+double eval(const FnNode& n, const std::vector<double>& a, int depth) {
+  auto arg = [&](std::size_t i) { return eval(*n.args[i], a, depth); };
+  switch (n.kind) {
+    case FnNode::Number:
+      return n.number;
+    case FnNode::Variable:
+      return a.size() > static_cast<std::size_t>(n.variable - 'x')
+                 ? a[static_cast<std::size_t>(n.variable - 'x')]
+                 : 0;
+    case FnNode::Param: {
+      const auto i = static_cast<std::size_t>(n.number);
+      return i < a.size() ? a[i] : 0;
+    }
+    case FnNode::Negate:
+      return -arg(0);
+    case FnNode::Add:
+      return arg(0) + arg(1);
+    case FnNode::Subtract:
+      return arg(0) - arg(1);
+    case FnNode::Multiply:
+      return arg(0) * arg(1);
+    case FnNode::Divide:
+      return arg(0) / arg(1);
+    case FnNode::Power:
+      return std::pow(arg(0), arg(1));
+    case FnNode::User: {
+      if (depth > kMaxCallDepth || !n.callee || !n.callee->body) return std::nan("");
+      std::vector<double> b;
+      for (std::size_t i = 0; i < n.args.size(); ++i) b.push_back(arg(i));
+      return eval(*n.callee->body, b, depth + 1);
+    }
+    case FnNode::Call:
+      break;
+  }
+  const std::string& f = n.function;
+  const std::size_t k = n.args.size();
+  if (k == 1) {
+    static const std::map<std::string, double (*)(double)> one = {
+        {"sin", [](double v) { return std::sin(v); }},
+        {"cos", [](double v) { return std::cos(v); }},
+        {"tan", [](double v) { return std::tan(v); }},
+        {"asin", [](double v) { return std::asin(v); }},
+        {"acos", [](double v) { return std::acos(v); }},
+        {"atan", [](double v) { return std::atan(v); }},
+        {"sinh", [](double v) { return std::sinh(v); }},
+        {"cosh", [](double v) { return std::cosh(v); }},
+        {"tanh", [](double v) { return std::tanh(v); }},
+        {"asinh", [](double v) { return std::asinh(v); }},
+        {"acosh", [](double v) { return std::acosh(v); }},
+        {"atanh", [](double v) { return std::atanh(v); }},
+        {"sqrt", [](double v) { return std::sqrt(v); }},
+        {"exp", [](double v) { return std::exp(v); }},
+        {"log", [](double v) { return std::log(v); }},
+        {"log10", [](double v) { return std::log10(v); }},
+        {"abs", [](double v) { return std::fabs(v); }},
+        {"floor", [](double v) { return std::floor(v); }},
+        {"ceil", [](double v) { return std::ceil(v); }},
+        {"int", [](double v) { return std::trunc(v); }},
+        {"not", [](double v) { return v == 0 ? 1.0 : 0.0; }},
+        {"radians", [](double v) { return v * std::numbers::pi / 180; }},
+        {"degrees", [](double v) { return v * 180 / std::numbers::pi; }}};
+    const auto it = one.find(f);
+    if (it != one.end()) return it->second(arg(0));
+  }
+  if (f == "min" || f == "max") {
+    double r = arg(0);
+    for (std::size_t i = 1; i < k; ++i) r = f == "min" ? std::min(r, arg(i)) : std::max(r, arg(i));
+    return r;
+  }
+  if (k == 2) {
+    const double p = arg(0), q = arg(1);
+    if (f == "pow") return std::pow(p, q);
+    if (f == "atan2") return std::atan2(p, q);
+    if (f == "mod") return std::fmod(p, q);
+    if (f == "lt") return p < q;
+    if (f == "le") return p <= q;
+    if (f == "gt") return p > q;
+    if (f == "ge") return p >= q;
+    if (f == "eq") return p == q;
+    if (f == "ne") return p != q;
+    if (f == "and") return p != 0 && q != 0;
+    if (f == "or") return p != 0 || q != 0;
+  }
+  if (f == "select" && (k == 3 || k == 4)) {
+    const double s = arg(0);
+    if (k == 3) return s < 0 ? arg(1) : arg(2);
+    return s < 0 ? arg(1) : s == 0 ? arg(2) : arg(3);
+  }
+  if (f == "if" && k == 3) return arg(0) != 0 ? arg(1) : arg(2);
+  return std::nan("");
+}
+
+// The tree with every user call replaced by the callee's body over the call's arguments.
+std::shared_ptr<const FnNode> inline_calls(const std::shared_ptr<const FnNode>& n,
+                                           const std::vector<std::shared_ptr<const FnNode>>& args,
+                                           int depth) {
+  if (depth > kMaxCallDepth) return nullptr;
+  if (n->kind == FnNode::Param) {
+    const auto i = static_cast<std::size_t>(n->number);
+    return i < args.size() ? args[i] : nullptr;
+  }
+  auto out = std::make_shared<FnNode>(*n);
+  for (auto& a : out->args) {
+    a = inline_calls(a, args, depth);
+    if (!a) return nullptr;
+  }
+  if (n->kind == FnNode::User) {
+    if (!n->callee || !n->callee->body) return nullptr;
+    return inline_calls(n->callee->body, out->args, depth + 1);
+  }
+  return out;
+}
+
+bool expressible(const FnNode& n) {
+  if (n.kind == FnNode::Call) {
+    static const char* const ok[] = {"sqrt", "exp", "log", "sin", "cos",
+                                     "tan",  "abs", "min", "max", "pow"};
+    bool found = false;
+    for (const char* o : ok) found = found || n.function == o;
+    if (!found) return false;
+  }
+  if (n.kind == FnNode::User || n.kind == FnNode::Param) return false;
+  for (const auto& a : n.args)
+    if (!expressible(*a)) return false;
+  return true;
+}
+
 }  // namespace
 
+double evaluate(const FunctionValue& f, const std::vector<double>& args) {
+  if (!f.body) return std::nan("");
+  return eval(*f.body, args, 0);
+}
+
+std::string formula_text(const FunctionValue& f, bool mirror_z) {
+  if (!f.body || !f.opaque.empty()) return "";
+  std::vector<std::shared_ptr<const FnNode>> xyz;
+  for (char c : {'x', 'y', 'z'}) {
+    auto v = std::make_shared<FnNode>();
+    v->kind = FnNode::Variable;
+    v->variable = c;
+    xyz.push_back(v);
+  }
+  const auto body = inline_calls(f.body, xyz, 0);
+  if (!body || !expressible(*body)) return "";
+  return formula_text(*body, mirror_z);
+}
+
 std::string formula_text(const FnNode& f, bool mirror_z) {
-  // Every compound is parenthesised: the text is for the loader, which has its own precedence.
+  // Every compound is parenthesised: the text is for the formula parser, with its own precedence.
   std::ostringstream o;
   auto arg = [&](std::size_t i) { return formula_text(*f.args[i], mirror_z); };
   const char* op = nullptr;
@@ -51,6 +204,9 @@ std::string formula_text(const FnNode& f, bool mirror_z) {
       for (std::size_t i = 0; i < f.args.size(); ++i) o << (i ? ", " : "") << arg(i);
       o << ")";
       return o.str();
+    case FnNode::Param:
+    case FnNode::User:
+      return "0";
   }
   o << "(" << arg(0) << op << arg(1) << ")";
   return o.str();

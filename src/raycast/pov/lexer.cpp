@@ -7,118 +7,108 @@
 namespace raycast::pov {
 
 namespace {
+
 bool is_word_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
 constexpr int kMaxCommentNesting = 256;
-}  // namespace
 
-void Lexer::advance() {
-  if (pos_ >= text_.size()) return;
-  if (text_[pos_] == '\n') {
-    ++line_;
-    column_ = 1;
-  } else {
-    ++column_;
+class Reader {
+ public:
+  Reader(std::string_view text, int file, const Sources& sources, Cursor& c)
+      : t_(text), file_(file), sources_(sources), c_(c) {}
+
+  char peek(std::size_t ahead = 0) const {
+    return c_.offset + ahead < t_.size() ? t_[c_.offset + ahead] : '\0';
   }
-  ++pos_;
-}
-
-void Lexer::skip_space_and_comments() {
-  for (;;) {
-    const char c = peek();
-    if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
-      advance();
-    } else if (c == '/' && peek(1) == '/') {
-      while (pos_ < text_.size() && peek() != '\n') advance();
-    } else if (c == '/' && peek(1) == '*') {
-      const Pos start = here();
-      int depth = 0;
-      do {
-        if (pos_ >= text_.size())
-          fail(sources_, start, "unterminated comment: '/*' is never closed");
-        if (peek() == '/' && peek(1) == '*') {
-          if (++depth > kMaxCommentNesting)
-            fail(sources_, here(), "comments are nested deeper than 256");
-          advance();
-          advance();
-        } else if (peek() == '*' && peek(1) == '/') {
-          --depth;
-          advance();
-          advance();
-        } else {
-          advance();
-        }
-      } while (depth > 0);
+  bool at_end() const { return c_.offset >= t_.size(); }
+  void advance() {
+    if (at_end()) return;
+    if (t_[c_.offset] == '\n') {
+      ++c_.line;
+      c_.column = 1;
     } else {
-      return;
+      ++c_.column;
+    }
+    ++c_.offset;
+  }
+  Pos here() const { return {file_, c_.line, c_.column}; }
+  [[noreturn]] void error(const Pos& p, const std::string& m) const { fail(sources_, p, m); }
+
+  void skip_space_and_comments() {
+    for (;;) {
+      const char c = peek();
+      if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
+        advance();
+      } else if (c == '/' && peek(1) == '/') {
+        while (!at_end() && peek() != '\n') advance();
+      } else if (c == '/' && peek(1) == '*') {
+        block_comment();
+      } else {
+        return;
+      }
     }
   }
-}
 
-Token Lexer::number(Pos start) {
-  const std::size_t begin = pos_;
-  while (is_digit(peek())) advance();
-  if (peek() == '.') {
-    advance();
+  Token number(Pos start) {
+    const std::size_t begin = c_.offset;
     while (is_digit(peek())) advance();
-  }
-  if (peek() == 'e' || peek() == 'E') {
-    advance();
-    if (peek() == '+' || peek() == '-') advance();
-    if (!is_digit(peek()))
-      fail(sources_, start,
-           "malformed number '" + std::string(text_.substr(begin, pos_ - begin)) +
-               "': the exponent has no digits");
-    while (is_digit(peek())) advance();
-  }
-  if (is_word_char(peek()) || peek() == '.')
-    fail(sources_, start,
-         "malformed number '" + std::string(text_.substr(begin, pos_ - begin + 1)) + "'");
-  Token t;
-  t.kind = Token::Number;
-  t.pos = start;
-  t.text = std::string(text_.substr(begin, pos_ - begin));
-  if (t.text == ".") fail(sources_, start, "malformed number '.'");
-  t.number = std::strtod(t.text.c_str(), nullptr);
-  if (!std::isfinite(t.number))
-    fail(sources_, start, "number '" + t.text + "' is out of range (not a finite double)");
-  return t;
-}
-
-Token Lexer::next() {
-  skip_space_and_comments();
-  Token t;
-  t.pos = here();
-  if (pos_ >= text_.size()) return t;
-  const char c = peek();
-  if (is_digit(c) || (c == '.' && is_digit(peek(1)))) return number(t.pos);
-  if (is_word_start(c)) {
-    const std::size_t begin = pos_;
-    while (is_word_char(peek())) advance();
-    t.kind = Token::Word;
-    t.text = std::string(text_.substr(begin, pos_ - begin));
+    if (peek() == '.') {
+      advance();
+      while (is_digit(peek())) advance();
+    }
+    if ((peek() == 'e' || peek() == 'E') &&
+        (is_digit(peek(1)) || ((peek(1) == '+' || peek(1) == '-') && is_digit(peek(2))))) {
+      advance();
+      if (peek() == '+' || peek() == '-') advance();
+      while (is_digit(peek())) advance();
+    }
+    Token t;
+    t.kind = Token::Number;
+    t.pos = start;
+    const std::string_view s = t_.substr(begin, c_.offset - begin);
+    t.text = std::string(s);
+    t.number = std::strtod(t.text.c_str(), nullptr);
+    if (!std::isfinite(t.number))
+      error(start, "number '" + t.text + "' is out of range (not a finite double)");
     return t;
   }
-  if (c == '#') {
+
+  Token string(Pos start) {
     advance();
-    while (peek() == ' ' || peek() == '\t') advance();  // POV-Ray allows "# declare"
-    const std::size_t begin = pos_;
-    while (is_word_char(peek())) advance();
-    if (begin == pos_) fail(sources_, t.pos, "'#' must be followed by a directive name");
-    t.kind = Token::Directive;
-    t.text = std::string(text_.substr(begin, pos_ - begin));
-    return t;
-  }
-  if (c == '"') {
-    advance();
+    Token t;
     t.kind = Token::String;
+    t.pos = start;
     while (peek() != '"') {
-      if (pos_ >= text_.size() || peek() == '\n')
-        fail(sources_, t.pos, "unterminated string: '\"' is never closed on its line");
+      if (at_end()) error(start, "unterminated string: '\"' is never closed");
       if (peek() == '\\') {
         advance();
-        if (pos_ >= text_.size()) break;
+        if (at_end()) break;
+        const char e = peek();
+        switch (e) {
+          case 'n':
+            t.text += '\n';
+            break;
+          case 't':
+            t.text += '\t';
+            break;
+          case 'r':
+            t.text += '\r';
+            break;
+          case 'a':
+            t.text += '\a';
+            break;
+          case '\\':
+          case '"':
+          case '\'':
+            t.text += e;
+            break;
+          default:
+            t.text += '\\';
+            t.text += e;  // kept as written (Windows paths)
+        }
+        advance();
+        continue;
       }
       t.text += peek();
       advance();
@@ -126,18 +116,87 @@ Token Lexer::next() {
     advance();
     return t;
   }
-  static const std::string_view symbols = "{}<>()[],;:+-*/=?!&|.";
-  if (symbols.find(c) != std::string_view::npos) {
-    advance();
-    t.kind = Token::Symbol;
-    t.text = std::string(1, c);
+
+ private:
+  void block_comment() {
+    const Pos start = here();
+    int depth = 0;
+    do {
+      if (at_end()) error(start, "unterminated comment: '/*' is never closed");
+      if (peek() == '/' && peek(1) == '*') {
+        if (++depth > kMaxCommentNesting) error(here(), "comments are nested deeper than 256");
+        advance();
+        advance();
+      } else if (peek() == '*' && peek(1) == '/') {
+        --depth;
+        advance();
+        advance();
+      } else {
+        advance();
+      }
+    } while (depth > 0);
+  }
+
+  std::string_view t_;
+  int file_;
+  const Sources& sources_;
+  Cursor& c_;
+};
+
+}  // namespace
+
+Token read_token(std::string_view text, int file, const Sources& sources, Cursor& cursor) {
+  Reader r(text, file, sources, cursor);
+  r.skip_space_and_comments();
+  // A '#' with no directive name after it is skipped, as POV-Ray does.
+  while (r.peek() == '#') {
+    Cursor after = cursor;
+    Reader look(text, file, sources, after);
+    look.advance();
+    look.skip_space_and_comments();
+    const char c = look.peek();
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') break;
+    cursor = after;
+  }
+  Token t;
+  t.pos = r.here();
+  if (r.at_end()) return t;
+  const char c = r.peek();
+  if (is_digit(c) || (c == '.' && is_digit(r.peek(1)))) return r.number(t.pos);
+  if (is_word_start(c)) {
+    const std::size_t begin = cursor.offset;
+    while (is_word_char(r.peek())) r.advance();
+    t.kind = Token::Word;
+    t.text = std::string(text.substr(begin, cursor.offset - begin));
     return t;
   }
-  std::string shown = std::isprint(static_cast<unsigned char>(c))
-                          ? std::string(1, c)
-                          : "\\x" + std::string(1, "0123456789abcdef"[(c >> 4) & 15]) +
-                                std::string(1, "0123456789abcdef"[c & 15]);
-  fail(sources_, t.pos, "unexpected character '" + shown + "'");
+  if (c == '#') {
+    r.advance();
+    r.skip_space_and_comments();  // POV-Ray allows "# declare", even across lines
+    const std::size_t begin = cursor.offset;
+    while (is_word_char(r.peek())) r.advance();
+    if (begin == cursor.offset) r.error(t.pos, "'#' must be followed by a directive name");
+    t.kind = Token::Directive;
+    t.text = std::string(text.substr(begin, cursor.offset - begin));
+    return t;
+  }
+  if (c == '"') return r.string(t.pos);
+  static constexpr std::string_view kSymbols = "{}<>()[],;:+-*/=?!&|.";
+  if (kSymbols.find(c) != std::string_view::npos) {
+    r.advance();
+    t.kind = Token::Symbol;
+    t.text = std::string(1, c);
+    if ((c == '<' || c == '>' || c == '!') && r.peek() == '=') {
+      r.advance();
+      t.text += '=';
+    }
+    return t;
+  }
+  const std::string shown =
+      std::isprint(static_cast<unsigned char>(c))
+          ? std::string(1, c)
+          : std::string("\\x") + "0123456789abcdef"[(c >> 4) & 15] + "0123456789abcdef"[c & 15];
+  r.error(t.pos, "unexpected character '" + shown + "'");
 }
 
 }  // namespace raycast::pov

@@ -6,7 +6,7 @@
 #include <map>
 #include <numbers>
 
-#include "pov/parser_impl.h"
+#include "pov/interpreter.h"
 
 namespace raycast::pov {
 
@@ -33,8 +33,19 @@ const std::map<std::string, Node::Kind>& object_kinds() {
                                                           {"union", Node::Union},
                                                           {"intersection", Node::Intersection},
                                                           {"difference", Node::Difference},
-                                                          {"merge", Node::Merge}};
+                                                          {"merge", Node::Merge},
+                                                          {"light_group", Node::Union}};
   return kinds;
+}
+
+bool is_unbuilt_shape(const std::string& w) {
+  static const char* const shapes[] = {
+      "blob",     "height_field",    "prism",         "sphere_sweep", "superellipsoid",
+      "text",     "julia_fractal",   "bicubic_patch", "parametric",   "polygon",
+      "triangle", "smooth_triangle", "lemon",         "ovus"};
+  for (const char* s : shapes)
+    if (w == s) return true;
+  return false;
 }
 
 bool is_csg(Node::Kind k) {
@@ -70,21 +81,23 @@ std::size_t weight(const Node& n) {
 
 }  // namespace
 
-void Parser::add_weight(std::size_t w, const Pos& at) {
+void Interpreter::add_weight(std::size_t w, const Pos& at) {
   weight_ += w;
-  if (weight_ > kMaxPovWeight)
+  if (weight_ > options_.limits.scene_weight)
     fail_at(at, "the scene is too large: its objects (" + std::to_string(kPovNodeWeight) +
                     " units each), points, vertices, triangles and terms exceed " +
-                    std::to_string(kMaxPovWeight) +
+                    std::to_string(options_.limits.scene_weight) +
                     " units (declared objects copied into each "
                     "other?)");
 }
 
-bool Parser::is_object_keyword() const {
-  return tok().kind == Token::Word && (object_kinds().count(tok().text) || tok().text == "object");
+bool Interpreter::is_object_keyword() {
+  const Token& t = tok();
+  return t.kind == Token::Word && (object_kinds().count(t.text) || t.text == "object" ||
+                                   t.text == "light_source" || is_unbuilt_shape(t.text));
 }
 
-long Parser::count(const char* what) {
+long Interpreter::count(const char* what) {
   const Pos at = tok().pos;
   const double n = number(what);
   if (!(n >= 0 && n <= static_cast<double>(kMaxPovCount)) || n != std::floor(n))
@@ -93,25 +106,60 @@ long Parser::count(const char* what) {
   return static_cast<long>(n);
 }
 
-Node Parser::object(int depth) {
+std::optional<Node> Interpreter::object(int depth) {
   if (depth > kMaxPovNesting)
     fail_here("objects are nested deeper than " + std::to_string(kMaxPovNesting));
   const Token kw = tok();
+  if (kw.text == "light_source") return light_block();
   next();
-  expect_symbol('{', ("after " + kw.text).c_str());
+  if (is_unbuilt_shape(kw.text)) {
+    unsupported_warning(kw.pos, "the " + kw.text + " shape");
+    skip_block(kw.text);
+    return std::nullopt;
+  }
+  if (kw.text == "light_group") unsupported_warning(kw.pos, "light_group", "read as a union");
+  expect_symbol("{", ("after " + kw.text).c_str());
   Node n;
   n.pos = kw.pos;
+  bool skipped = false;  // an object raycast does not build: its modifiers are still read
   if (kw.text == "object") {
-    const auto it = tok().kind == Token::Word ? symbols_.find(tok().text) : symbols_.end();
-    if (it == symbols_.end() || it->second.kind != Declared::Object) {
-      if (is_object_keyword())
-        n = object(depth + 1);
-      else
+    const Value* v = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+    Value element;
+    bool name_read = false;
+    if (v && v->kind == Value::Array) {  // object { Objects[I] }
+      const Pos at = tok().pos;
+      element = expression();
+      if (element.kind != Value::Object)
+        fail_at(at, "expected an object, got " + std::string(kind_name(element)));
+      v = &element;
+      name_read = true;
+    }
+    if (!v || v->kind != Value::Object) {
+      if (is_object_keyword()) {
+        std::optional<Node> inner = object(depth + 1);
+        if (inner)
+          n = std::move(*inner);
+        else
+          skipped = true;
+      } else {
         unexpected("a declared object's name or an object");
+      }
     } else {
-      add_weight(weight(*it->second.node), tok().pos);  // a copy
-      n = *it->second.node;
-      next();
+      if (v->object) {
+        add_weight(v->object->weight, tok().pos);  // a use counts as a copy
+        const Node::Kind k = v->object->kind;
+        if (is_csg(k) || k == Node::Union || k == Node::Mesh || k == Node::Reference) {
+          // A composite is shared, not copied (a mesh of millions of triangles, a union of
+          // thousands of objects): this node places it.
+          n.kind = Node::Reference;
+          n.ref = v->object;
+        } else {
+          n = *v->object;
+        }
+      } else {
+        skipped = true;
+      }
+      if (!name_read) next();
     }
   } else {
     n.kind = object_kinds().at(kw.text);
@@ -121,10 +169,8 @@ Node Parser::object(int depth) {
     } else if (kw.text == "poly") {
       const Pos at = tok().pos;
       const double order = number("poly's order");
-      if (!(order >= 2 && order <= 16) || order != std::floor(order))
-        fail_at(at,
-                "poly's order must be a whole number in [2, 16] (raycast's algebraic "
-                "surfaces go to degree 16)");
+      if (!(order >= 2 && order <= 35) || order != std::floor(order))
+        fail_at(at, "poly's order must be a whole number in [2, 35]");
       skip_comma();
       poly_coefficients(n, static_cast<int>(order));
     } else if (kw.text == "polynomial") {
@@ -136,17 +182,17 @@ Node Parser::object(int depth) {
       while (is_word("xyz")) {
         const Pos t = tok().pos;
         next();
-        expect_symbol('(', "after xyz");
+        expect_symbol("(", "after xyz");
         std::array<int, 3> e{};
         for (int i = 0; i < 3; ++i) {
           const double v = number("an exponent");
           if (!(v >= 0 && v <= order) || v != std::floor(v))
             fail_at(t, "xyz exponents must be whole numbers in [0, order]");
           e[static_cast<std::size_t>(i)] = static_cast<int>(v);
-          if (i < 2) expect_symbol(',', "between xyz exponents");
+          if (i < 2) expect_symbol(",", "between xyz exponents");
         }
-        expect_symbol(')', "to close xyz(");
-        expect_symbol(':', "after xyz(...)");
+        expect_symbol(")", "to close xyz(");
+        expect_symbol(":", "after xyz(...)");
         if (e[0] + e[1] + e[2] > order) fail_at(t, "the term's degree is above the order");
         n.terms[e] += number("a coefficient");
         skip_comma();
@@ -157,25 +203,30 @@ Node Parser::object(int depth) {
       mesh2_body(n, depth);
     }
   }
-  while (!accept_symbol('}')) {
-    if (directive()) continue;
+  while (!accept_symbol("}")) {
     if (is_csg(n.kind) && is_object_keyword()) {
-      n.children.push_back(object(depth + 1));
+      if (std::optional<Node> c = object(depth + 1)) n.children.push_back(std::move(*c));
       continue;
     }
-    if (!modifier(n, depth)) unexpected(("an object modifier in " + kw.text).c_str());
+    if (!modifier(n, depth)) unexpected("an object modifier in " + kw.text);
   }
-  if (kw.text != "object")  // its own data (children were counted when they were read)
-    add_weight(kPovNodeWeight + n.points.size() + n.vertices.size() + n.normals.size() +
-                   n.triangles.size() + n.terms.size(),
-               n.pos);
+  if (skipped) return std::nullopt;
+  if (kw.text != "object") {  // its own data (children were counted when they were read)
+    const std::size_t own = kPovNodeWeight + n.points.size() + n.vertices.size() +
+                            n.normals.size() + n.triangles.size() + n.terms.size();
+    add_weight(own, n.pos);
+    n.weight = own;
+    for (const Node& c : n.children) n.weight += c.weight;
+  } else {
+    n.weight = n.kind == Node::Reference ? n.ref->weight + kPovNodeWeight : weight(n);
+  }
   if (n.kind == Node::Intersection) fold_poly_bounds(n);
   if (n.kind == Node::Poly && n.terms.empty()) fail_at(n.pos, "the polynomial has no terms");
-  if (is_csg(n.kind) && n.children.empty()) fail_at(n.pos, kw.text + " needs at least one object");
+  if (is_csg(n.kind) && n.children.empty()) return std::nullopt;  // every part left out
   return n;
 }
 
-void Parser::object_body(Node& n, int depth) {
+void Interpreter::object_body(Node& n, int depth) {
   switch (n.kind) {
     case Node::Sphere:
       n.points = {vector("sphere's centre")};
@@ -223,7 +274,7 @@ void Parser::object_body(Node& n, int depth) {
       skip_comma();
       n.points = {c, nn};
       n.values = {number("disc's radius"), 0};
-      if (accept_symbol(',')) n.values[1] = number("disc's hole radius");
+      if (accept_symbol(",")) n.values[1] = number("disc's hole radius");
       break;
     }
     case Node::Torus: {
@@ -255,15 +306,16 @@ void Parser::object_body(Node& n, int depth) {
   }
 }
 
-void Parser::poly_coefficients(Node& n, int order) {
-  expect_symbol('<', "to open the coefficients");
+void Interpreter::poly_coefficients(Node& n, int order) {
+  expect_symbol("<", "to open the coefficients");
   std::vector<double> c;
   for (;;) {
-    c.push_back(number("a coefficient"));
+    c.push_back(number_in_vector("a coefficient"));
     if (c.size() > 1000) fail_here("too many coefficients");
-    if (!accept_symbol(',')) break;
+    accept_symbol(",");
+    if (is_symbol(">")) break;
   }
-  expect_symbol('>', "to close the coefficients");
+  expect_symbol(">", "to close the coefficients");
   const std::size_t want = static_cast<std::size_t>((order + 1) * (order + 2) * (order + 3) / 6);
   if (c.size() != want)
     fail_at(n.pos, "a polynomial of order " + std::to_string(order) + " has " +
@@ -278,103 +330,7 @@ void Parser::poly_coefficients(Node& n, int order) {
       }
 }
 
-std::shared_ptr<const FnNode> Parser::function_expression(int depth) {
-  if (depth > kMaxPovNesting) fail_here("the function is nested too deeply");
-  auto make = [](FnNode::Kind k, std::vector<std::shared_ptr<const FnNode>> args) {
-    auto f = std::make_shared<FnNode>();
-    f->kind = k;
-    f->args = std::move(args);
-    return std::shared_ptr<const FnNode>(f);
-  };
-  auto num = [](double v) {
-    auto f = std::make_shared<FnNode>();
-    f->number = v;
-    return std::shared_ptr<const FnNode>(f);
-  };
-  std::function<std::shared_ptr<const FnNode>(int)> unary, power, primary;
-  primary = [&](int d) -> std::shared_ptr<const FnNode> {
-    if (d > kMaxPovNesting) fail_here("the function is nested too deeply");
-    const Token t = tok();
-    if (t.kind == Token::Number) {
-      next();
-      return num(t.number);
-    }
-    if (accept_symbol('(')) {
-      auto e = function_expression(d + 1);
-      expect_symbol(')', "to close '('");
-      return e;
-    }
-    if (t.kind != Token::Word) unexpected("a number, x, y, z, a function or '('");
-    next();
-    if (t.text == "x" || t.text == "y" || t.text == "z") {
-      auto f = std::make_shared<FnNode>();
-      f->kind = FnNode::Variable;
-      f->variable = t.text[0];
-      return f;
-    }
-    if (t.text == "pi") return num(std::numbers::pi);
-    if (const auto it = symbols_.find(t.text); it != symbols_.end()) {
-      if (it->second.kind != Declared::Value || it->second.val.dims != 1)
-        fail_at(t.pos, "'" + t.text + "' is not a float (functions take floats)");
-      return num(it->second.val.v[0]);
-    }
-    static const std::map<std::string, std::pair<std::string, int>> fns = {
-        {"sin", {"sin", 1}}, {"cos", {"cos", 1}}, {"tan", {"tan", 1}}, {"sqrt", {"sqrt", 1}},
-        {"exp", {"exp", 1}}, {"ln", {"log", 1}},  {"log", {"log", 1}}, {"abs", {"abs", 1}},
-        {"min", {"min", 2}}, {"max", {"max", 2}}, {"pow", {"pow", 2}}};
-    const auto fn = fns.find(t.text);
-    if (fn == fns.end()) fail_at(t.pos, unsupported(t.text) + " in an isosurface function");
-    expect_symbol('(', ("after " + t.text).c_str());
-    std::vector<std::shared_ptr<const FnNode>> args;
-    for (;;) {
-      args.push_back(function_expression(d + 1));
-      if (!accept_symbol(',')) break;
-    }
-    expect_symbol(')', ("to close " + t.text + "(").c_str());
-    if (static_cast<int>(args.size()) != fn->second.second)
-      fail_at(t.pos, t.text + " takes " + std::to_string(fn->second.second) + " argument(s)");
-    auto call = std::make_shared<FnNode>();
-    call->kind = FnNode::Call;
-    call->function = fn->second.first;
-    call->args = std::move(args);
-    if (t.text == "log")  // POV-Ray's log is decimal
-      return make(FnNode::Divide, {call, num(std::log(10.0))});
-    return call;
-  };
-  power = [&](int d) {
-    auto base = primary(d);
-    if (accept_symbol('^')) return make(FnNode::Power, {base, unary(d + 1)});
-    return base;
-  };
-  unary = [&](int d) -> std::shared_ptr<const FnNode> {
-    if (d > kMaxPovNesting) fail_here("the function is nested too deeply");
-    if (accept_symbol('-')) return make(FnNode::Negate, {unary(d + 1)});
-    if (accept_symbol('+')) return unary(d + 1);
-    return power(d);
-  };
-  auto term = [&]() {
-    auto v = unary(depth);
-    for (;;) {
-      if (accept_symbol('*'))
-        v = make(FnNode::Multiply, {v, unary(depth)});
-      else if (accept_symbol('/'))
-        v = make(FnNode::Divide, {v, unary(depth)});
-      else
-        return v;
-    }
-  };
-  auto v = term();
-  for (;;) {
-    if (accept_symbol('+'))
-      v = make(FnNode::Add, {v, term()});
-    else if (accept_symbol('-'))
-      v = make(FnNode::Subtract, {v, term()});
-    else
-      return v;
-  }
-}
-
-void Parser::isosurface_body(Node& n, int depth) {
+void Interpreter::isosurface_body(Node& n, int depth) {
   double threshold = 0;
   std::shared_ptr<const FnNode> f;
   n.bounds = std::array<Vec3, 2>{Vec3{-1, -1, -1}, Vec3{1, 1, 1}};  // POV-Ray's default container
@@ -383,37 +339,37 @@ void Parser::isosurface_body(Node& n, int depth) {
     const Pos at = tok().pos;
     if (is_word("function")) {
       next();
-      expect_symbol('{', "after function");
-      f = function_expression(depth);
-      expect_symbol('}', "to close the function");
+      expect_symbol("{", "after function");
+      f = function_expression(depth, {"x", "y", "z"});
+      expect_symbol("}", "to close the function");
     } else if (is_word("contained_by")) {
       next();
-      expect_symbol('{', "after contained_by");
+      expect_symbol("{", "after contained_by");
       if (is_word("box")) {
         next();
-        expect_symbol('{', "after box");
+        expect_symbol("{", "after box");
         const Vec3 a = vector("box's corner");
         skip_comma();
         const Vec3 b = vector("box's corner");
-        expect_symbol('}', "to close the box");
+        expect_symbol("}", "to close the box");
         n.bounds =
             std::array<Vec3, 2>{Vec3{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)},
                                 Vec3{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}};
         n.contained_by_sphere = false;
       } else if (is_word("sphere")) {
         next();
-        expect_symbol('{', "after sphere");
+        expect_symbol("{", "after sphere");
         const Vec3 c = vector("sphere's centre");
         skip_comma();
         const double r = number("sphere's radius");
-        expect_symbol('}', "to close the sphere");
+        expect_symbol("}", "to close the sphere");
         if (!(r > 0)) fail_at(at, "the containing sphere's radius must be > 0");
         n.bounds = std::array<Vec3, 2>{c - Vec3{r, r, r}, c + Vec3{r, r, r}};
         n.contained_by_sphere = true;
       } else {
         unexpected("box or sphere in contained_by");
       }
-      expect_symbol('}', "to close contained_by");
+      expect_symbol("}", "to close contained_by");
     } else if (is_word("threshold")) {
       next();
       threshold = number("threshold");
@@ -426,7 +382,12 @@ void Parser::isosurface_body(Node& n, int depth) {
       next();
       n.open = boolean_option();
     } else if (is_word("evaluate")) {
-      fail_here(unsupported("evaluate"));
+      next();
+      expression();
+      skip_comma();
+      expression();
+      skip_comma();
+      expression();
     } else {
       break;
     }
@@ -441,18 +402,22 @@ void Parser::isosurface_body(Node& n, int depth) {
     f = s;
   }
   n.function = f;
-  if (n.open && n.contained_by_sphere)
-    fail_at(n.pos, unsupported("open isosurface contained_by a sphere") + " (use a box)");
+  if (n.open && n.contained_by_sphere) {
+    unsupported_warning(n.pos, "open isosurfaces in a sphere", "closed by the sphere's box");
+    n.contained_by_sphere = false;
+  }
 }
 
-void Parser::spline_points(Node& n, int min_count) {
+void Interpreter::spline_points(Node& n, int min_count) {
   std::string spline = "linear_spline";
   if (n.kind == Node::Lathe) {
     if (is_word("linear_spline") || is_word("cubic_spline") || is_word("bezier_spline")) {
       spline = tok().text;
       next();
     } else if (is_word("quadratic_spline")) {
-      fail_here(unsupported("quadratic_spline"));
+      unsupported_warning(tok().pos, "quadratic_spline lathes", "drawn as a cubic_spline");
+      next();
+      spline = "cubic_spline";
     }
   }
   const Pos at = tok().pos;
@@ -466,7 +431,7 @@ void Parser::spline_points(Node& n, int min_count) {
   for (long i = 0; i < cnt; ++i) {
     skip_comma();
     const Pos v = tok().pos;
-    const Val pt = expression();
+    const Value pt = expression();
     if (pt.dims != 2) fail_at(v, "expected a 2-vector <r, y>");
     p.push_back({pt.v[0], pt.v[1], 0});
   }
@@ -479,7 +444,7 @@ void Parser::spline_points(Node& n, int min_count) {
     for (std::size_t i = 0; i + 3 < p.size(); ++i) {
       const double y1 = p[i + 1].y, y2 = p[i + 2].y;
       if (!(p[i + 2].y > p[i].y && p[i + 3].y > p[i + 1].y && y2 > y1))
-        fail_at(n.pos, "a sor's points must rise in y");
+        fail_at(n.pos, "a sor's points must rise in y (each point's y above the one before)");
       // r^2 is a cubic in y through the two middle points, with slopes from their neighbours.
       const double k1 = p[i + 1].x * p[i + 1].x, k2 = p[i + 2].x * p[i + 2].x;
       const double s1 = (k2 - p[i].x * p[i].x) / (p[i + 2].y - p[i].y);
@@ -520,7 +485,7 @@ void Parser::spline_points(Node& n, int min_count) {
   n.spline = spline;
 }
 
-void Parser::mesh_body(Node& n, int) {
+void Interpreter::mesh_body(Node& n, int) {
   std::map<std::array<double, 6>, int> index;
   bool any_smooth = false, any_flat = false;
   auto vertex = [&](const Vec3& p, const Vec3& nn) {
@@ -535,7 +500,7 @@ void Parser::mesh_body(Node& n, int) {
   while (is_word("triangle") || is_word("smooth_triangle")) {
     const bool smooth = is_word("smooth_triangle");
     next();
-    expect_symbol('{', "after triangle");
+    expect_symbol("{", "after triangle");
     std::array<Vec3, 3> p, nn{};
     for (int i = 0; i < 3; ++i) {
       if (i) skip_comma();
@@ -545,16 +510,19 @@ void Parser::mesh_body(Node& n, int) {
         nn[static_cast<std::size_t>(i)] = vector("a vertex normal");
       }
     }
-    if (!is_symbol('}'))
-      fail_here(unsupported(describe(tok()) + " in a mesh triangle") + " (textures per triangle)");
-    next();
+    while (!accept_symbol("}")) {  // a texture per triangle: raycast has one per mesh
+      if (!is_word("texture")) unexpected("'}' or a texture to close the triangle");
+      next();
+      skip_block("texture");
+      unsupported_warning(tok().pos, "textures per mesh triangle");
+    }
     (smooth ? any_smooth : any_flat) = true;
     n.triangles.push_back({vertex(p[0], nn[0]), vertex(p[1], nn[1]), vertex(p[2], nn[2])});
     if (n.triangles.size() > static_cast<std::size_t>(kMaxPovCount))
       fail_here("a mesh has at most " + std::to_string(kMaxPovCount) + " triangles");
   }
   if (any_smooth && any_flat)
-    fail_at(n.pos, unsupported("a mesh mixing triangle and smooth_triangle"));
+    unsupported_warning(n.pos, "meshes mixing triangle and smooth_triangle");
   if (!any_smooth) n.normals.clear();
   if (n.triangles.empty()) fail_at(n.pos, "the mesh has no triangles");
   if (is_word("inside_vector")) {
@@ -563,20 +531,31 @@ void Parser::mesh_body(Node& n, int) {
   }
 }
 
-void Parser::mesh2_body(Node& n, int) {
+void Interpreter::mesh2_body(Node& n, int) {
   auto block = [&](const char* name, int dims, auto&& each) {
     next();
-    expect_symbol('{', (std::string("after ") + name).c_str());
+    expect_symbol("{", (std::string("after ") + name).c_str());
     const long cnt = count((std::string("the number of ") + name).c_str());
     for (long i = 0; i < cnt; ++i) {
       skip_comma();
       const Pos at = tok().pos;
-      const Val v = expression();
+      ++item_value_;
+      const Value v = expression();
+      --item_value_;
       if (v.dims != dims)
         fail_at(at, std::string(name) + " holds " + std::to_string(dims) + "-vectors");
       each(v, at);
+      // face_indices may give each face's texture index (or three): read and not used.
+      if (std::string(name) == "face_indices")
+        for (int k = 0; k < 3 && pov::is_symbol(peek_operator(), ",") && !pending_; ++k) {
+          next();
+          if (tok().kind != Token::Number && !(tok().kind == Token::Word && lookup(tok().text) &&
+                                               lookup(tok().text)->kind == Value::Float))
+            break;
+          number("a texture index");
+        }
     }
-    if (!is_symbol('}'))
+    if (!is_symbol("}"))
       fail_here(std::string(name) + " announced " + std::to_string(cnt) + " items, got more");
     next();
   };
@@ -584,18 +563,22 @@ void Parser::mesh2_body(Node& n, int) {
   std::vector<std::array<long, 3>> faces, face_normals;
   std::vector<Pos> face_pos, normal_pos;
   if (is_word("vertex_vectors"))
-    block("vertex_vectors", 3, [&](const Val& v, const Pos&) {
+    block("vertex_vectors", 3, [&](const Value& v, const Pos&) {
       verts.push_back({v.v[0], v.v[1], v.v[2]});
     });
   else
     unexpected("vertex_vectors in mesh2");
   if (is_word("normal_vectors"))
-    block("normal_vectors", 3, [&](const Val& v, const Pos&) {
+    block("normal_vectors", 3, [&](const Value& v, const Pos&) {
       norms.push_back({v.v[0], v.v[1], v.v[2]});
     });
-  if (is_word("uv_vectors") || is_word("texture_list")) fail_here(unsupported(tok().text));
+  while (is_word("uv_vectors") || is_word("texture_list")) {
+    const std::string w = tok().text;
+    next();
+    skip_block(w);
+  }
   auto index_block = [&](const char* name, auto& out, auto& pos) {
-    block(name, 3, [&](const Val& v, const Pos& at) {
+    block(name, 3, [&](const Value& v, const Pos& at) {
       std::array<long, 3> f{};
       for (int i = 0; i < 3; ++i) {
         const double x = v.v[static_cast<std::size_t>(i)];
@@ -612,6 +595,10 @@ void Parser::mesh2_body(Node& n, int) {
   else
     unexpected("face_indices in mesh2");
   if (is_word("normal_indices")) index_block("normal_indices", face_normals, normal_pos);
+  while (is_word("uv_indices") || is_word("normal_indices")) {  // uv coordinates: not used
+    next();
+    skip_block("uv_indices");
+  }
   if (is_word("inside_vector")) {
     next();
     vector("inside_vector");
@@ -621,6 +608,21 @@ void Parser::mesh2_body(Node& n, int) {
     fail_at(n.pos, "normal_indices must have one entry per face");
   if (face_normals.empty() && !norms.empty() && norms.size() != verts.size())
     fail_at(n.pos, "without normal_indices, normal_vectors must have one normal per vertex");
+  if (face_normals.empty()) {
+    // Vertices and their normals (if any) correspond one to one: the indices stay as written.
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      for (std::size_t k = 0; k < 3; ++k)
+        if (faces[f][k] >= static_cast<long>(verts.size()))
+          fail_at(face_pos[f], "face " + std::to_string(f) + ": vertex index " +
+                                   std::to_string(faces[f][k]) + " out of range (" +
+                                   std::to_string(verts.size()) + " vertices)");
+      n.triangles.push_back({static_cast<int>(faces[f][0]), static_cast<int>(faces[f][1]),
+                             static_cast<int>(faces[f][2])});
+    }
+    n.vertices = std::move(verts);
+    n.normals = std::move(norms);
+    return;
+  }
   std::map<std::pair<long, long>, int> index;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     std::array<int, 3> tri{};
@@ -644,76 +646,85 @@ void Parser::mesh2_body(Node& n, int) {
   }
 }
 
-bool Parser::modifier(Node& n, int depth) {
-  const Pos at = tok().pos;
+bool Interpreter::modifier(Node& n, int depth) {
+  const Token t = tok();
+  const std::string& w = t.text;
   auto own_texture = [&]() -> Texture& {
     if (!n.texture) n.texture = default_texture_;
     return *n.texture;
   };
-  if (is_word("translate") || is_word("scale") || is_word("rotate")) {
-    XformOp op;
-    op.kind = is_word("translate") ? XformOp::Translate
-              : is_word("scale")   ? XformOp::Scale
-                                   : XformOp::Rotate;
-    next();
-    op.v = vector("the transformation");
-    if (op.kind == XformOp::Scale && (op.v.x == 0 || op.v.y == 0 || op.v.z == 0))
-      fail_at(at, "scale must not be 0 on any axis");
-    n.xforms.push_back(op);
-  } else if (is_word("matrix")) {
-    next();
-    expect_symbol('<', "after matrix");
-    XformOp op;
-    op.kind = XformOp::Matrix;
-    for (int i = 0; i < 12; ++i) {
-      if (i) expect_symbol(',', "between the matrix's 12 values");
-      op.m[static_cast<std::size_t>(i)] = number("a matrix value");
-    }
-    expect_symbol('>', "after the matrix's 12 values");
-    n.xforms.push_back(op);
-  } else if (is_word("texture")) {
+  if (t.kind != Token::Word) return false;
+  if (transform_item(n.xforms)) return true;
+  if (w == "texture") {
     next();
     const std::optional<double> ior = n.texture ? n.texture->ior : std::nullopt;
+    if (n.texture) {
+      unsupported_warning(t.pos, "layered textures", "the last layer is used");
+    }
     n.texture = texture_block(default_texture_, depth + 1);
     if (!n.texture->ior) n.texture->ior = ior;
-  } else if (is_word("pigment")) {
+  } else if (w == "pigment") {
     next();
-    Texture& t = own_texture();
-    t.pigment = pigment_block(t.pigment);
-    t.name.clear();
-  } else if (is_word("finish")) {
+    Texture& tx = own_texture();
+    tx.pigment = pigment_block(tx.pigment);
+    tx.name.clear();
+  } else if (w == "finish") {
     next();
-    Texture& t = own_texture();
-    t.finish = finish_block(t.finish);
-    t.name.clear();
-  } else if (is_word("interior")) {
+    Texture& tx = own_texture();
+    tx.finish = finish_block(tx.finish);
+    tx.name.clear();
+  } else if (w == "normal") {
+    next();
+    unsupported_warning(t.pos, "normal perturbations");
+    skip_block("normal");
+  } else if (w == "interior") {
     next();
     const std::optional<double> ior = interior_block();
-    Texture& t = own_texture();
-    t.ior = ior;
-    t.name.clear();
-  } else if (is_word("material")) {
+    Texture& tx = own_texture();
+    tx.ior = ior;
+    tx.name.clear();
+  } else if (w == "material") {
     next();
-    n.texture = material_block(default_texture_, depth + 1);
-  } else if (is_word("hollow")) {
+    n.texture = material_block(n.texture ? *n.texture : default_texture_, depth + 1);
+  } else if (w == "global_lights" && n.kind == Node::Union) {
     next();
-    boolean_option();  // only matters for media, which the subset has not
-  } else if (is_word("sturm")) {
+    boolean_option();
+  } else if (w == "hollow" || w == "sturm" || w == "no_shadow" || w == "no_image" ||
+             w == "no_reflection" || w == "double_illuminate" || w == "no_radiosity" ||
+             w == "split_union" || w == "cutaway_textures" || w == "uv_mapping" ||
+             w == "all_intersections") {
     next();
-    boolean_option();  // raycast's polynomial solver always isolates every root
-  } else if (is_word("open") &&
-             (n.kind == Node::Cylinder || n.kind == Node::Cone || n.kind == Node::Sor)) {
+    if (w != "cutaway_textures" && w != "uv_mapping" && w != "all_intersections") boolean_option();
+    if (w == "no_shadow" || w == "no_image" || w == "no_reflection" || w == "double_illuminate")
+      unsupported_warning(t.pos, w);
+  } else if (w == "inverse") {
+    next();
+    n.inverse = !n.inverse;
+    unsupported_warning(t.pos, "inverse", "the object is drawn as it is");
+  } else if (w == "open" &&
+             (n.kind == Node::Cylinder || n.kind == Node::Cone || n.kind == Node::Sor ||
+              n.kind == Node::Lathe || n.kind == Node::Isosurface)) {
     next();
     n.open = boolean_option();
-  } else if (is_word("bounded_by")) {
+  } else if (w == "bounded_by") {
     next();
-    expect_symbol('{', "after bounded_by");
-    if (!is_word("box")) unexpected("a box in bounded_by");
-    const Node b = object(depth + 1);
-    expect_symbol('}', "to close bounded_by");
-    if (!b.xforms.empty()) fail_at(b.pos, unsupported("a transformed bounded_by box"));
-    // Only an optimisation in POV-Ray; a poly needs it as its bounds in raycast.
-    if (n.kind == Node::Poly) n.bounds = std::array<Vec3, 2>{b.points[0], b.points[1]};
+    expect_symbol("{", "after bounded_by");
+    if (is_word("clipped_by")) {
+      next();
+    } else {
+      while (!is_symbol("}")) {
+        const std::optional<Node> b = object(depth + 1);
+        // Only an optimisation in POV-Ray; a poly needs it as its bounds in raycast.
+        if (b && b->kind == Node::Box && b->xforms.empty() && n.kind == Node::Poly)
+          n.bounds = std::array<Vec3, 2>{b->points[0], b->points[1]};
+      }
+    }
+    expect_symbol("}", "to close bounded_by");
+  } else if (w == "clipped_by" || w == "photons" || w == "radiosity" || w == "interior_texture" ||
+             w == "texture_list" || w == "uv_vectors") {
+    next();
+    if (w != "texture_list" && w != "uv_vectors") unsupported_warning(t.pos, w);
+    skip_block(w);
   } else {
     return false;
   }

@@ -2,6 +2,7 @@
 // What the POV-Ray parser produces: the scene in POV-Ray's own (left-handed) coordinates and
 // terms, before it is mapped to raycast's scene format by yaml_writer.
 #include <array>
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -19,10 +20,21 @@ struct Colour {
   double r = 0, g = 0, b = 0, filter = 0, transmit = 0;
 };
 
+/// One entry of a colour_map: the pattern value and its colour.
+struct MapEntry {
+  double at = 0;
+  Colour colour;
+};
+
+/// A pigment: a colour, a checker, an image, or a pattern raycast does not build yet (then
+/// `pattern` names it and `c0` is the colour it is drawn with: the map's middle colour).
 struct Pigment {
   bool checker = false;
   Colour c0, c1{1, 1, 1, 0, 0};  // a plain pigment is c0; checker's defaults: blue and green
   double scale = 1;              // the checker's uniform scale (pigment transforms)
+  std::string pattern;           // a pattern that is not built ("bozo", "agate", ...)
+  std::string image_file;        // image_map { png "file" }: the file as resolved
+  std::vector<MapEntry> map;     // the pattern's colour_map, kept for the texture system
 };
 
 struct Finish {
@@ -49,6 +61,17 @@ struct XformOp {
   std::array<double, 12> m{};  // matrix <...>: rows of POV-Ray's row-vector form
 };
 
+struct Light {
+  enum Kind { Point, Spot } kind = Point;
+  Vec3 position, point_at{0, 0, 1};
+  Colour colour{1, 1, 1, 0, 0};
+  double radius = 30, falloff = 45;  // spotlight degrees
+  bool area = false;
+  Vec3 axis1, axis2;
+  int size1 = 1, size2 = 1;
+  Pos pos;
+};
+
 struct Node {
   enum Kind {
     Sphere,
@@ -67,7 +90,9 @@ struct Node {
     Union,
     Intersection,
     Difference,
-    Merge
+    Merge,
+    LightSource,  // a light_source (in a union, it moves with it)
+    Reference     // object { Name } of a composite object: `ref`, placed by this node
   };
   Kind kind = Sphere;
   Pos pos;
@@ -84,6 +109,10 @@ struct Node {
   std::vector<Vec3> vertices, normals;
   std::vector<std::array<int, 3>> triangles;
   std::vector<Node> children;
+  std::optional<Light> light;       // LightSource
+  std::shared_ptr<const Node> ref;  // Reference: shared, never copied
+  std::size_t weight = 0;           // this object's count against Limits::scene_weight
+  bool inverse = false;             // `inverse`: the solid's complement
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
 };
@@ -96,26 +125,26 @@ struct Camera {
   bool given = false;
 };
 
-struct Light {
-  enum Kind { Point, Spot } kind = Point;
-  Vec3 position, point_at{0, 0, 1};
-  Colour colour{1, 1, 1, 0, 0};
-  double radius = 30, falloff = 45;  // spotlight degrees
-  bool area = false;
-  Vec3 axis1, axis2;
-  int size1 = 1, size2 = 1;
-  Pos pos;
+/// What the scene's global_settings, INI options and #version ask for.
+struct Settings {
+  double assumed_gamma = 1;  // 1 (linear), 2.2, or 0 for srgb
+  bool gamma_given = false;  // assumed_gamma was written (POV-Ray 3.7 defaults apply if not)
+  double version = 3.7;
+  int width = 0, height = 0;  // from an INI file or +W/+H; 0: not given
+  int antialias_depth = 0;    // +A: 0 off
+  double antialias_threshold = 0.3;
 };
 
 struct PovScene {
   Camera camera;
-  std::vector<Light> lights;
-  std::vector<Node> objects;
+  std::deque<Node> objects;  // a deque: 100,000s of nodes are never moved as it grows
   Colour background;
   Colour ambient_light{1, 1, 1, 0, 0};
   int max_trace_level = 5;
   std::optional<double> adc_bailout;
+  Settings settings;
   Sources sources;
+  std::vector<std::string> warnings;  // formatted "file:line:col: warning: ..."
 };
 
 }  // namespace raycast::pov

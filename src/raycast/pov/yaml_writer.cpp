@@ -1,5 +1,7 @@
 #include "pov/yaml_writer.h"
 
+#include "pov/checker_grid.h"
+
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -9,49 +11,6 @@
 namespace raycast::pov {
 
 namespace {
-
-// Whether a flat face of the shape lies in a plane x, y or z = k * scale (k whole), where the
-// checker's floor() flips with rounding.
-bool on_checker_grid(const Node& n, double scale) {
-  auto on = [&](double v) { return std::floor(v / scale) == v / scale; };
-  auto axis_of = [](const Vec3& d) {  // the axis d is along, or -1
-    if (d.y == 0 && d.z == 0) return 0;
-    if (d.x == 0 && d.z == 0) return 1;
-    if (d.x == 0 && d.y == 0) return 2;
-    return -1;
-  };
-  auto at = [](const Vec3& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
-  switch (n.kind) {
-    case Node::Plane: {
-      const int a = axis_of(n.points[0]);
-      return a >= 0 && on(n.values[0]);  // the plane is at +-distance on that axis
-    }
-    case Node::Box:
-      for (const Vec3& c : n.points)
-        if (on(c.x) || on(c.y) || on(c.z)) return true;
-      return false;
-    case Node::Disc: {
-      const int a = axis_of(n.points[1]);
-      return a >= 0 && on(at(n.points[0], a));
-    }
-    case Node::Cylinder:
-    case Node::Cone: {
-      const int a = axis_of(n.points[1] - n.points[0]);
-      return a >= 0 && (on(at(n.points[0], a)) || on(at(n.points[1], a)));
-    }
-    case Node::Mesh:
-      for (const auto& t : n.triangles)
-        for (int a = 0; a < 3; ++a) {
-          const double v = at(n.vertices[static_cast<std::size_t>(t[0])], a);
-          if (on(v) && at(n.vertices[static_cast<std::size_t>(t[1])], a) == v &&
-              at(n.vertices[static_cast<std::size_t>(t[2])], a) == v)
-            return true;
-        }
-      return false;
-    default:
-      return false;  // curved surfaces meet the grid's planes along curves only
-  }
-}
 
 std::string num(double v) {
   if (v == 0) v = 0;  // no "-0" in the output
@@ -94,10 +53,13 @@ class Writer {
       line({}, "materials:");
       for (const auto& [name, m] : material_order_) line(m.second, "  " + name + ": " + m.first);
     }
-    if (!s_.lights.empty()) {
-      line({}, "lights:");
-      for (const Light& l : s_.lights) light(l);
-    }
+    bool any_light = false;
+    for (const Node& n : s_.objects)
+      if (n.kind == Node::LightSource) {
+        if (!any_light) line({}, "lights:");
+        any_light = true;
+        light(*n.light);
+      }
     out_.insert(out_.end(), object_lines.begin(), object_lines.end());
     pos_.insert(pos_.end(), object_pos.begin(), object_pos.end());
     YamlScene y;
@@ -115,11 +77,12 @@ class Writer {
   [[noreturn]] void fail_at(const Pos& p, const std::string& m) const { fail(s_.sources, p, m); }
 
   Vec3 m(const Vec3& v) const { return mirror_ ? Vec3{v.x, v.y, -v.z} : v; }
-  static std::string vec(const Vec3& v) {
-    return "[" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + "]";
-  }
-  static std::string rgb(const Colour& c) {
-    return "[" + num(c.r) + ", " + num(c.g) + ", " + num(c.b) + "]";
+  static std::string vec(const Vec3& v) { return triple(v.x, v.y, v.z); }
+  static std::string rgb(const Colour& c) { return triple(c.r, c.g, c.b); }
+  static std::string triple(double a, double b, double c) {
+    std::string s("[");
+    s.append(num(a)).append(", ").append(num(b)).append(", ").append(num(c)).append("]");
+    return s;
   }
 
   void camera() {
@@ -292,6 +255,15 @@ class Writer {
   // One object at `indent` list depth. `solid`: it is a CSG operand (POV-Ray's union becomes
   // raycast's solid union there, and a group elsewhere, keeping its inner surfaces).
   void object(const Node& n, int indent, bool solid, const Texture* inherited) {
+    if (n.kind == Node::LightSource) return;  // written under lights:
+    if (n.kind == Node::Reference) {  // object { Name }: a union of the shared object, placed
+      Node wrap = n;
+      wrap.kind = Node::Union;
+      wrap.children = {*n.ref};
+      wrap.ref.reset();
+      object(wrap, indent, solid, inherited);
+      return;
+    }
     const std::string pad(static_cast<std::size_t>(2 * indent), ' ');
     const std::string more(static_cast<std::size_t>(2 * indent + 2), ' ');
     std::ostringstream o;
@@ -362,12 +334,18 @@ class Writer {
         o << "algebraic: {equation: \"" << polynomial_text(n)
           << "\", bounds: " << bounds_text(*n.bounds) << "}";
         break;
-      case Node::Isosurface:
-        o << "implicit: {function: \"" << formula_text(*n.function, mirror_)
-          << "\", bounds: " << bounds_text(*n.bounds);
+      case Node::Isosurface: {
+        FunctionValue f;
+        f.params = {"x", "y", "z"};
+        f.body = n.function;
+        const std::string text = formula_text(f, mirror_);
+        if (text.empty())
+          fail_at(n.pos, "raycast's formulas cannot express this isosurface's function");
+        o << "implicit: {function: \"" << text << "\", bounds: " << bounds_text(*n.bounds);
         if (n.open) o << ", open: true";
         o << "}";
         break;
+      }
       case Node::Lathe:
       case Node::Sor: {
         axial = true;
@@ -399,6 +377,8 @@ class Writer {
         o << "}";
         break;
       }
+      case Node::LightSource:
+      case Node::Reference:
       case Node::Union:
       case Node::Merge:
       case Node::Intersection:
@@ -431,8 +411,6 @@ class Writer {
     if (!mat.empty()) line(n.pos, more + "material: " + mat);
     if (!xf.empty()) line(n.pos, more + "transform: " + xf);
   }
-
-  static constexpr double kCheckerOffset = 1e-3;
 
   const PovScene& s_;
   std::string name_;

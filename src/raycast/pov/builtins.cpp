@@ -1,0 +1,467 @@
+// Built-in constants and functions of floats, vectors and strings (POV-Ray 3.7's reference,
+// "Float Functions", "Vector Functions", "String Functions", "Built-in Constants").
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <numbers>
+
+#include "pov/interpreter.h"
+
+namespace raycast::pov {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180;
+
+enum class Arg { F, V, S, Any };
+
+// POV-Ray rotates about x, then y, then z, each by the right-hand rule's matrix.
+Vec3 rotate_xyz(Vec3 p, const Vec3& deg) {
+  const double a = deg.x * kDegree, b = deg.y * kDegree, c = deg.z * kDegree;
+  p = {p.x, p.y * std::cos(a) - p.z * std::sin(a), p.y * std::sin(a) + p.z * std::cos(a)};
+  p = {p.x * std::cos(b) + p.z * std::sin(b), p.y, -p.x * std::sin(b) + p.z * std::cos(b)};
+  p = {p.x * std::cos(c) - p.y * std::sin(c), p.x * std::sin(c) + p.y * std::cos(c), p.z};
+  return p;
+}
+
+Vec3 axis_rotate(const Vec3& p, Vec3 k, double deg) {
+  const double l = length(k);
+  if (!(l > 0)) return p;
+  k = k / l;
+  const double a = deg * kDegree, c = std::cos(a), s = std::sin(a);
+  return p * c + cross(k, p) * s + k * (dot(k, p) * (1 - c));
+}
+
+Value vec3(const Vec3& v) { return Value::vector({v.x, v.y, v.z}); }
+
+std::string format_number(double v, double width, double precision) {
+  char buf[512];
+  const int w = static_cast<int>(std::clamp(width, -100.0, 100.0));
+  const int p = precision < 0 ? 6 : static_cast<int>(std::min(precision, 100.0));
+  if (w < 0)
+    std::snprintf(buf, sizeof buf, "%0*.*f", -w, p, v);
+  else
+    std::snprintf(buf, sizeof buf, "%*.*f", w, p, v);
+  return buf;
+}
+
+const std::map<std::string, int>& float_constants() {
+  static const std::map<std::string, int> k = {
+      {"pi", 0},           {"true", 1},          {"yes", 1},
+      {"on", 1},           {"false", 2},         {"no", 2},
+      {"off", 2},          {"clock", 3},         {"clock_delta", 4},
+      {"clock_on", 5},     {"final_clock", 6},   {"final_frame", 7},
+      {"frame_number", 8}, {"initial_clock", 9}, {"initial_frame", 10},
+      {"image_width", 11}, {"image_height", 12}, {"version", 13},
+      {"tau", 14}};
+  return k;
+}
+
+const std::map<std::string, std::vector<Arg>>& functions() {
+  using A = Arg;
+  static const std::map<std::string, std::vector<Arg>> f = {
+      {"abs", {A::F}},
+      {"acos", {A::F}},
+      {"acosh", {A::F}},
+      {"asin", {A::F}},
+      {"asinh", {A::F}},
+      {"atan", {A::F}},
+      {"atanh", {A::F}},
+      {"atan2", {A::F, A::F}},
+      {"ceil", {A::F}},
+      {"cos", {A::F}},
+      {"cosh", {A::F}},
+      {"degrees", {A::F}},
+      {"div", {A::F, A::F}},
+      {"exp", {A::F}},
+      {"floor", {A::F}},
+      {"int", {A::F}},
+      {"ln", {A::F}},
+      {"log", {A::F}},
+      {"mod", {A::F, A::F}},
+      {"pow", {A::F, A::F}},
+      {"radians", {A::F}},
+      {"sin", {A::F}},
+      {"sinh", {A::F}},
+      {"sqrt", {A::F}},
+      {"tan", {A::F}},
+      {"tanh", {A::F}},
+      {"bitwise_and", {A::F, A::F}},
+      {"bitwise_or", {A::F, A::F}},
+      {"bitwise_xor", {A::F, A::F}},
+      {"seed", {A::F}},
+      {"vdot", {A::V, A::V}},
+      {"vlength", {A::V}},
+      {"vcross", {A::V, A::V}},
+      {"vnormalize", {A::V}},
+      {"vrotate", {A::V, A::V}},
+      {"vaxis_rotate", {A::V, A::V, A::F}},
+      {"vturbulence", {A::F, A::F, A::F, A::V}},
+      {"strlen", {A::S}},
+      {"strupr", {A::S}},
+      {"strlwr", {A::S}},
+      {"strcmp", {A::S, A::S}},
+      {"substr", {A::S, A::F, A::F}},
+      {"chr", {A::F}},
+      {"asc", {A::S}},
+      {"val", {A::S}},
+      {"str", {A::F, A::F, A::F}},
+      {"vstr", {A::F, A::V, A::S, A::F, A::F}},
+      {"file_exists", {A::S}},
+      {"datetime", {A::F}}};
+  return f;
+}
+
+}  // namespace
+
+bool Interpreter::is_builtin(const std::string& w) const {
+  static const char* const special[] = {"x",
+                                        "y",
+                                        "z",
+                                        "t",
+                                        "u",
+                                        "v",
+                                        "min",
+                                        "max",
+                                        "select",
+                                        "concat",
+                                        "defined",
+                                        "dimensions",
+                                        "dimension_size",
+                                        "rand",
+                                        "inside",
+                                        "trace",
+                                        "min_extent",
+                                        "max_extent",
+                                        "now"};
+  for (const char* s : special)
+    if (w == s) return true;
+  return float_constants().count(w) || functions().count(w);
+}
+
+Value Interpreter::builtin_constant(const Token& t) {
+  if (!float_constants().count(t.text)) return Value::string("");
+  // builtin() consumes its name token: give it one, then restore the stream's lookahead.
+  const Token keep = cur_;
+  const bool had = have_, was_pending = pending_;
+  cur_ = t;
+  have_ = true;
+  pending_ = false;
+  Value v = builtin(t);
+  cur_ = keep;
+  have_ = had;
+  pending_ = was_pending;
+  return v;
+}
+
+Value Interpreter::builtin(const Token& t) {
+  const std::string& w = t.text;
+  next();
+  if (w.size() == 1 && std::string("xyztuv").find(w[0]) != std::string::npos) {
+    if (w == "x") return Value::vector({1, 0, 0});
+    if (w == "y") return Value::vector({0, 1, 0});
+    if (w == "z") return Value::vector({0, 0, 1});
+    if (w == "t") return Value::vector({0, 0, 0, 1});
+    if (w == "u") return Value::vector({1, 0});
+    return Value::vector({0, 1});
+  }
+  if (const auto c = float_constants().find(w); c != float_constants().end()) {
+    const Options& o = options_;
+    switch (c->second) {
+      case 0:
+        return Value::number(std::numbers::pi);
+      case 1:
+        return Value::number(1);
+      case 2:
+        return Value::number(0);
+      case 3:
+        return Value::number(o.clock);
+      case 4:
+        return Value::number(o.final_frame > o.initial_frame ? (o.final_clock - o.initial_clock) /
+                                                                   (o.final_frame - o.initial_frame)
+                                                             : 0);
+      case 5:
+        return Value::number(o.clock_on);
+      case 6:
+        return Value::number(o.final_clock);
+      case 7:
+        return Value::number(o.final_frame);
+      case 8:
+        return Value::number(o.frame);
+      case 9:
+        return Value::number(o.initial_clock);
+      case 10:
+        return Value::number(o.initial_frame);
+      case 11:
+        return Value::number(o.width > 0 ? o.width : 640);
+      case 12:
+        return Value::number(o.height > 0 ? o.height : 480);
+      case 13:
+        return Value::number(scene_.settings.version);
+      default:
+        return Value::number(2 * std::numbers::pi);
+    }
+  }
+  if (w == "now") return Value::number(0);
+  expect_symbol("(", ("after " + w).c_str());
+  if (w == "defined") {
+    const Token nt = raw_name();
+    if (nt.kind != Token::Word)
+      fail_at(nt.pos, "expected a name in defined( ), got " + describe(nt));
+    const bool d = find_symbol(nt.text) != nullptr;
+    expect_symbol(")", "to close defined(");
+    return Value::number(d);
+  }
+  // The arguments, read whole.
+  std::vector<Value> a;
+  std::vector<Pos> at;
+  if (!is_symbol(")")) {
+    for (;;) {
+      at.push_back(tok().pos);
+      if (w == "trace" && a.size() == 3) {  // the normal's output variable, maybe undeclared
+        const Token nt = raw_name();
+        if (nt.kind != Token::Word) fail_at(nt.pos, "trace's fourth argument is a name");
+        assign(nt.text, Value::vector({0, 0, 0}), false, nt.pos);
+        a.push_back(Value::number(0));
+      } else {
+        a.push_back(rvalue());
+      }
+      if (!accept_symbol(",")) break;
+    }
+  }
+  if (!is_symbol(")")) unexpected("')' to close " + w + "(");
+  next();
+  return call_builtin(t, a, at);
+}
+
+Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
+                                const std::vector<Pos>& at) {
+  const std::string& w = t.text;
+  auto need = [&](std::size_t n) {
+    if (a.size() != n)
+      fail_at(t.pos,
+              w + " takes " + std::to_string(n) + " argument(s), got " + std::to_string(a.size()));
+  };
+  auto f = [&](std::size_t i) {
+    if (a[i].kind != Value::Float) fail_at(at[i], w + ": expected a float, got " + kind_name(a[i]));
+    return a[i].v[0];
+  };
+  auto s = [&](std::size_t i) -> const std::string& {
+    if (a[i].kind != Value::String)
+      fail_at(at[i], w + ": expected a string, got " + kind_name(a[i]));
+    return a[i].text;
+  };
+  if (w == "min" || w == "max") {
+    if (a.empty()) fail_at(t.pos, w + " needs at least one argument");
+    double r = f(0);
+    for (std::size_t i = 1; i < a.size(); ++i)
+      r = w == "min" ? std::min(r, f(i)) : std::max(r, f(i));
+    return Value::number(r);
+  }
+  if (w == "select") {
+    if (a.size() != 3 && a.size() != 4) fail_at(t.pos, "select takes 3 or 4 arguments");
+    const double c = f(0);
+    if (a.size() == 3) return c < 0 ? a[1] : a[2];
+    return c < 0 ? a[1] : c == 0 ? a[2] : a[3];
+  }
+  if (w == "concat") {
+    std::string r;
+    for (std::size_t i = 0; i < a.size(); ++i) r += s(i);
+    if (r.size() > options_.limits.string_bytes) fail_at(t.pos, "the string is too long");
+    return Value::string(r);
+  }
+  if (w == "dimensions" || w == "dimension_size") {
+    if (a.empty() || a[0].kind != Value::Array) fail_at(t.pos, w + " needs an array");
+    const auto& sizes = a[0].array->sizes;
+    if (w == "dimensions") return Value::number(static_cast<double>(sizes.size()));
+    need(2);
+    const double d = f(1);
+    if (!(d >= 1 && d <= sizes.size())) return Value::number(0);
+    return Value::number(sizes[static_cast<std::size_t>(d) - 1]);
+  }
+  if (w == "rand") {
+    need(1);
+    const double id = f(0);
+    if (!(id >= 0 && id < static_cast<double>(random_streams_.size())))
+      fail_at(at[0], "rand needs a stream made by seed( )");
+    // A 64-bit linear congruential generator per stream (Knuth's MMIX constants), its top 53
+    // bits as [0, 1).
+    std::uint64_t& st = random_streams_[static_cast<std::size_t>(id)];
+    st = st * 6364136223846793005ULL + 1442695040888963407ULL;
+    return Value::number(static_cast<double>(st >> 11) * 0x1.0p-53);
+  }
+  if (w == "trace" && a.size() == 4) {
+    // The fourth argument is a name that receives the normal (declared if new).
+    unsupported_warning(t.pos, "the trace function", "its answer is <0, 0, 0>");
+    return Value::vector({0, 0, 0});
+  }
+  if (w == "inside" || w == "trace" || w == "min_extent" || w == "max_extent") {
+    unsupported_warning(t.pos, "the " + w + " function", "its answer is 0");
+    return w == "inside" ? Value::number(0) : Value::vector({0, 0, 0});
+  }
+  const auto& sig = functions().at(w);
+  if (w == "str" || w == "vstr" || w == "substr" || w == "vturbulence" || w == "vaxis_rotate")
+    need(sig.size());
+  else if (w == "datetime")
+    ;
+  else
+    need(sig.size());
+  if (w == "seed") {
+    random_streams_.push_back(
+        static_cast<std::uint64_t>(static_cast<std::int64_t>(f(0))) * 0x9E3779B97F4A7C15ULL + 1);
+    return Value::number(static_cast<double>(random_streams_.size() - 1));
+  }
+  if (sig.size() == 1 && sig[0] == Arg::F) return float_builtin(t, f(0), at[0]);
+  return vector_string_builtin(t, a, at);
+}
+
+Value Interpreter::float_builtin(const Token& t, double x, const Pos& at0) {
+  const std::string& w = t.text;
+  double r;
+  if (w == "abs")
+    r = std::fabs(x);
+  else if (w == "acos")
+    r = std::acos(x);
+  else if (w == "acosh")
+    r = std::acosh(x);
+  else if (w == "asin")
+    r = std::asin(x);
+  else if (w == "asinh")
+    r = std::asinh(x);
+  else if (w == "atan")
+    r = std::atan(x);
+  else if (w == "atanh")
+    r = std::atanh(x);
+  else if (w == "ceil")
+    r = std::ceil(x);
+  else if (w == "cos")
+    r = std::cos(x);
+  else if (w == "cosh")
+    r = std::cosh(x);
+  else if (w == "degrees")
+    r = x / kDegree;
+  else if (w == "exp")
+    r = std::exp(x);
+  else if (w == "floor")
+    r = std::floor(x);
+  else if (w == "int")
+    r = std::trunc(x);
+  else if (w == "ln")
+    r = std::log(x);
+  else if (w == "log")
+    r = std::log10(x);
+  else if (w == "radians")
+    r = x * kDegree;
+  else if (w == "sin")
+    r = std::sin(x);
+  else if (w == "sinh")
+    r = std::sinh(x);
+  else if (w == "sqrt")
+    r = std::sqrt(x);
+  else if (w == "tan")
+    r = std::tan(x);
+  else if (w == "tanh")
+    r = std::tanh(x);
+  else if (w == "chr") {
+    if (!(x >= 1 && x < 256)) fail_at(at0, "chr needs a code in [1, 255]");
+    return Value::string(std::string(1, static_cast<char>(static_cast<int>(x))));
+  } else if (w == "datetime") {
+    return Value::string("2000-01-01 00:00:00");
+  } else
+    r = x;
+  if (std::isnan(r)) fail_at(t.pos, w + "(" + format_number(x, 0, 6) + ") is not a number");
+  return Value::number(r);
+}
+
+Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value>& a,
+                                         const std::vector<Pos>& at) {
+  const std::string& w = t.text;
+  auto f = [&](std::size_t i) {
+    if (a[i].kind != Value::Float) fail_at(at[i], w + ": expected a float, got " + kind_name(a[i]));
+    return a[i].v[0];
+  };
+  auto vv = [&](std::size_t i) -> Vec3 {
+    if (a[i].kind == Value::Float) return {a[i].v[0], a[i].v[0], a[i].v[0]};
+    if (a[i].kind != Value::Vector)
+      fail_at(at[i], w + ": expected a vector, got " + kind_name(a[i]));
+    return {a[i].v[0], a[i].v[1], a[i].dims > 2 ? a[i].v[2] : 0};
+  };
+  auto s = [&](std::size_t i) -> const std::string& {
+    if (a[i].kind != Value::String)
+      fail_at(at[i], w + ": expected a string, got " + kind_name(a[i]));
+    return a[i].text;
+  };
+  if (w == "atan2") return Value::number(std::atan2(f(0), f(1)));
+  if (w == "div") return Value::number(std::trunc(f(0) / f(1)));
+  if (w == "mod") return Value::number(std::fmod(f(0), f(1)));
+  if (w == "pow") return Value::number(std::pow(f(0), f(1)));
+  if (w.rfind("bitwise_", 0) == 0) {
+    const auto p = static_cast<std::int64_t>(f(0)), q = static_cast<std::int64_t>(f(1));
+    return Value::number(static_cast<double>(w == "bitwise_and"  ? (p & q)
+                                             : w == "bitwise_or" ? (p | q)
+                                                                 : (p ^ q)));
+  }
+  if (w == "vdot") return Value::number(dot(vv(0), vv(1)));
+  if (w == "vlength") return Value::number(length(vv(0)));
+  if (w == "vcross") return vec3(cross(vv(0), vv(1)));
+  if (w == "vnormalize") {
+    const Vec3 p = vv(0);
+    const double l = length(p);
+    return vec3(l > 0 ? p / l : Vec3{0, 0, 0});
+  }
+  if (w == "vrotate") return vec3(rotate_xyz(vv(0), vv(1)));
+  if (w == "vaxis_rotate") return vec3(axis_rotate(vv(0), vv(1), f(2)));
+  if (w == "vturbulence") {
+    unsupported_warning(t.pos, "the vturbulence function", "its answer is <0, 0, 0>");
+    return vec3({0, 0, 0});
+  }
+  if (w == "strlen") return Value::number(static_cast<double>(s(0).size()));
+  if (w == "strupr" || w == "strlwr") {
+    std::string r = s(0);
+    for (char& c : r)
+      c = static_cast<char>(w == "strupr" ? std::toupper(static_cast<unsigned char>(c))
+                                          : std::tolower(static_cast<unsigned char>(c)));
+    return Value::string(r);
+  }
+  if (w == "strcmp") return Value::number(s(0).compare(s(1)) < 0 ? -1 : s(0) == s(1) ? 0 : 1);
+  if (w == "substr") {
+    const std::string& x = s(0);
+    const double start = f(1), len = f(2);
+    if (!(start >= 1 && len >= 0 && start - 1 + len <= x.size()))
+      fail_at(t.pos, "substr: the range is outside the string");
+    return Value::string(
+        x.substr(static_cast<std::size_t>(start) - 1, static_cast<std::size_t>(len)));
+  }
+  if (w == "asc") return Value::number(s(0).empty() ? 0 : static_cast<unsigned char>(s(0)[0]));
+  if (w == "val") return Value::number(std::strtod(s(0).c_str(), nullptr));
+  if (w == "str") return Value::string(format_number(f(0), f(1), f(2)));
+  if (w == "vstr") {
+    const double n = f(0);
+    const Value& v = a[1];
+    if (v.kind != Value::Vector && v.kind != Value::Float) fail_at(at[1], "vstr needs a vector");
+    std::string r;
+    for (int i = 0; i < std::clamp(static_cast<int>(n), 1, 5); ++i) {
+      if (i) r += s(2);
+      const double c = v.kind == Value::Float ? v.v[0]
+                       : i < v.dims           ? v.v[static_cast<std::size_t>(i)]
+                                              : 0;
+      r += format_number(c, f(3), f(4));
+    }
+    return Value::string(r);
+  }
+  if (w == "file_exists") {
+    std::error_code ec;
+    const std::string& name = s(0);
+    namespace fs = std::filesystem;
+    if (fs::is_regular_file(fs::path(dirs_[0]) / name, ec)) return Value::number(1);
+    for (const std::string& d : options_.library_paths)
+      if (fs::is_regular_file(fs::path(d) / name, ec)) return Value::number(1);
+    return Value::number(0);
+  }
+  fail_at(t.pos, "the function " + w + " is not available");
+}
+
+}  // namespace raycast::pov

@@ -1,0 +1,239 @@
+#pragma once
+// The POV-Ray scene language's interpreter (docs/pov-import.md): a token stream in which
+// directives run as they are met (POV-Ray allows them mid-statement), symbol tables with
+// POV-Ray's scoping, expressions over every value type, and the statements that build the
+// scene description (pov_scene.h). Split over several files by topic:
+//   stream.cpp      tokens, includes, the directive dispatch, conditionals and loops
+//   macros.cpp      #macro definitions and calls, arguments by reference
+//   symbols.cpp     scopes, #declare / #local / #undef, rvalues of every kind
+//   expression.cpp  operators, vectors, colours, postfix access
+//   builtins.cpp    built-in constants and functions
+//   files.cpp       #debug / #warning / #error / #fopen / #read / #write
+//   parse_textures.cpp, parse_settings.cpp, parse_objects.cpp  the statements
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "pov/lexer.h"
+#include "pov/options.h"
+#include "pov/value.h"
+
+namespace raycast::pov {
+
+/// One symbol: a value, or (a macro's by-reference parameter) the caller's symbol it stands for.
+struct Symbol {
+  Value value;
+  Symbol* ref = nullptr;
+};
+
+class Interpreter {
+ public:
+  Interpreter(const std::string& text, const std::string& name, const std::string& dir,
+              const Options& options);
+  /// Runs the whole scene; throws SceneError with the position of the first error.
+  PovScene run();
+
+  // ---- the token stream (stream.cpp) ----
+  /// The current token (directives and macro calls before it have run).
+  const Token& tok();
+  /// Consumes the current token (the next one is read when asked for).
+  void next() { have_ = false; }
+  bool is_word(const char* w) { return tok().kind == Token::Word && tok().text == w; }
+  bool is_symbol(const char* s) { return pov::is_symbol(tok(), s); }
+  bool accept_symbol(const char* s);
+  void expect_symbol(const char* s, const char* where);
+  void skip_comma() { accept_symbol(","); }
+  /// The current token when it continues an expression: a directive or macro call that ends
+  /// a statement is left for the statement level (so loops do not nest the C++ stack).
+  const Token& peek_operator();
+  [[noreturn]] void fail_here(const std::string& message);
+  [[noreturn]] void fail_at(const Pos& p, const std::string& message) const;
+  [[noreturn]] void unexpected(const std::string& expected);
+  std::string describe(const Token& t) const;
+  /// One warning per kind for what raycast reads but does not render; an error with --strict.
+  void unsupported_warning(const Pos& at, const std::string& kind, const std::string& detail = "");
+  /// Consumes a `{ ... }` block (directives inside still run).
+  void skip_block(const std::string& what);
+
+  // ---- expressions (expression.cpp, builtins.cpp) ----
+  Value expression();
+  double number(const char* what);
+  /// A float inside `< >` lists (matrix, poly coefficients): a bare '>' ends it.
+  double number_in_vector(const char* what);
+  Vec3 vector(const char* what);
+  Colour colour(const char* what);
+  std::string string_value(const char* what);
+  bool boolean_option();
+  bool starts_colour();
+  /// Whether the next token starts a float or vector expression (not a colour keyword).
+  bool numeric_ahead();
+  /// A declared value of `kind` at the current token (a name, or an array element), consumed.
+  std::optional<Value> declared(Value::Kind kind);
+  /// The values after a pattern's keyword (a number, a vector, a block ...).
+  void pattern_arguments(const Token& t, bool colours);
+  Value builtin(const Token& name);
+  // builtin()'s parts: the functions by their argument types.
+  Value call_builtin(const Token& t, const std::vector<Value>& a, const std::vector<Pos>& at);
+  Value float_builtin(const Token& t, double x, const Pos& at0);
+  Value vector_string_builtin(const Token& t, const std::vector<Value>& a,
+                              const std::vector<Pos>& at);
+  /// A built-in float constant (clock, image_width ...) for function bodies.
+  Value builtin_constant(const Token& name);
+  Value primary(int vector_depth);
+  Value sub_expression(int vector_depth);
+  Value vector_literal(const Pos& at);
+  Value colour_keyword(const Token& kw);
+  Value colour_expression(const Pos& at);
+  /// Applies `red 1 filter 0.5 ...` after a colour.
+  Value colour_modifiers(Value c);
+  Value postfix(Value v);
+  /// Calls a function or spline value with the arguments in ( ).
+  Value call_value(const Value& f, const Token& name);
+  bool pending_now() const;
+  Pos tok_pos();
+  bool is_builtin(const std::string& w) const;
+
+  // ---- symbols (symbols.cpp) ----
+  Symbol* find_symbol(const std::string& name);
+  const Value* lookup(const std::string& name);
+  /// Reads a value of any kind: an expression, a string, or a block (object, texture ...).
+  Value rvalue();
+  void assign(const std::string& name, Value v, bool local, const Pos& at);
+
+  // ---- statements ----
+  Texture texture_block(const Texture& base, int depth);
+  Pigment pigment_block(const Pigment& base);
+  Finish finish_block(const Finish& base);
+  std::optional<double> interior_block();
+  Texture material_block(const Texture& base, int depth);
+  void reflection_block(Finish& f);
+  std::vector<MapEntry> colour_map_block();
+  std::vector<XformOp> transform_block();
+  bool transform_item(std::vector<XformOp>& ops);
+  Camera camera_block(const Camera& base);
+  Node light_block();
+  void global_settings_block();
+  bool is_object_keyword();
+  std::optional<Node> object(int depth);
+  void object_body(Node& n, int depth);
+  bool modifier(Node& n, int depth);
+  void poly_coefficients(Node& n, int order);
+  std::shared_ptr<const FnNode> function_expression(int depth,
+                                                    const std::vector<std::string>& params);
+  Value function_block(const Pos& at);
+  Value spline_block(const Pos& at);
+  void isosurface_body(Node& n, int depth);
+  void spline_points(Node& n, int min_count);
+  void mesh_body(Node& n, int depth);
+  void mesh2_body(Node& n, int depth);
+  long count(const char* what);
+  void add_weight(std::size_t w, const Pos& at);
+
+  PovScene scene_;
+  Texture default_texture_;
+  const Options& options_;
+
+ private:
+  struct Input {
+    int file = 0;
+    Cursor cursor;
+  };
+  enum class FrameKind { If, While, For, Switch, Macro, Include };
+  struct Frame {
+    FrameKind kind = FrameKind::If;
+    Pos pos;
+    std::size_t inputs = 0;  // inputs_.size() when the frame opened
+    Cursor loop;             // While: the condition; For: after the header
+    std::string variable;    // For: the loop variable
+    double end = 0, step = 1;
+    std::size_t scopes = 0;                               // Macro: scopes_.size() before the call
+    std::vector<std::pair<Symbol*, std::string>> by_ref;  // Macro
+  };
+
+  // stream.cpp
+  Token raw();
+  void fetch();
+  void directive(const Token& d);
+  void directive_body(const Token& d);
+  void open_file(const std::string& text, const std::string& name, const std::string& path,
+                 const std::string& dir);
+  void include(const Pos& at);
+  std::string find_include(const std::string& name, const Pos& at);
+  void close_file();
+  /// Skips raw tokens to the #else / #elseif / #end (or, in a switch, #case / #range) of the
+  /// construct being skipped; returns that directive (nested constructs are skipped whole).
+  Token skip_to(bool stop_at_else, bool stop_at_case);
+  void begin_if(const Token& d, bool value);
+  void begin_switch(const Token& d);
+  void end_directive(const Token& d);
+  void begin_while(const Token& d);
+  void begin_for(const Token& d);
+  void break_directive(const Token& d);
+  void count_iteration(const Frame& f);
+  Value condition();
+  double paren_number(const char* what);
+  bool is_defined_test();
+
+  // macros.cpp
+  void define_macro(const Token& d);
+  void call_macro(const Token& name, const MacroDef& m);
+  void end_macro();
+
+  // symbols.cpp
+  void declare(const Token& d, bool local);
+  void undef();
+  void default_block();
+  void apply_declares();
+
+  // files.cpp
+  void message_directive(const Token& d);
+  void fopen_directive();
+  void read_directive();
+  void write_directive();
+  void fclose_directive();
+
+  std::vector<std::shared_ptr<const std::string>> texts_;  // by file index
+  std::vector<std::string> dirs_;                          // by file index
+  std::vector<Input> inputs_;
+  std::vector<Frame> frames_;
+  std::vector<std::unordered_map<std::string, Symbol>> scopes_;
+  void unread();
+  /// The next token without running it as a macro call (a name being declared or tested).
+  Token raw_name();
+  Token cur_;
+  std::size_t cur_input_ = 0;  // the input cur_ was read from, and the cursor before it
+  Cursor cur_before_;
+  int opaque_ = 0;
+
+ public:
+  // > 0 while reading a value inside a block (an object's numbers, a count): POV-Ray compares
+  // there only inside parentheses, so `14 <-1, 0, 0>` is a count and a vector.
+  int item_value_ = 0;
+
+ private:  // > 0: peek_operator runs no directive (a directive's own arguments)
+  bool have_ = false;
+  bool pending_ = false;  // cur_ is a directive or macro call not yet run (peek_operator)
+  long long iterations_ = 0;
+  int macro_depth_ = 0;
+  std::size_t weight_ = 0;
+  long long reads_ = 0;
+  std::set<std::string> warned_;
+  std::vector<std::uint64_t> random_streams_;
+  struct OpenFile;
+  std::map<std::string, std::shared_ptr<OpenFile>> files_;
+};
+
+/// Reads a POV-Ray scene (and the files it includes) to its description.
+PovScene interpret_pov(const std::string& text, const std::string& name, const std::string& dir,
+                       const Options& options);
+
+/// Limits on nesting in expressions and blocks (the C++ stack).
+inline constexpr int kMaxPovNesting = 200;
+inline constexpr long kMaxPovCount = 100'000'000;  // counts in meshes and point lists
+inline constexpr std::size_t kPovNodeWeight = 64;  // an object's weight against scene_weight
+
+}  // namespace raycast::pov

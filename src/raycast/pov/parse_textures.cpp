@@ -1,0 +1,670 @@
+// Textures, pigments, finishes, interiors, materials, colour maps and transforms. What raycast's
+// material cannot show yet (patterns other than checker, normals, layered textures ...) is read
+// whole and warned about once per kind.
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "pov/interpreter.h"
+
+namespace raycast::pov {
+
+namespace {
+const char* const kPatterns[] = {"agate",       "average",
+                                 "boxed",       "bozo",
+                                 "brick",       "bumps",
+                                 "cells",       "crackle",
+                                 "cylindrical", "density_file",
+                                 "dents",       "facets",
+                                 "function",    "gradient",
+                                 "granite",     "hexagon",
+                                 "leopard",     "marble",
+                                 "object",      "onion",
+                                 "pavement",    "pigment_pattern",
+                                 "planar",      "quilted",
+                                 "radial",      "ripples",
+                                 "spherical",   "spiral1",
+                                 "spiral2",     "spotted",
+                                 "square",      "tiling",
+                                 "triangular",  "waves",
+                                 "wood",        "wrinkles",
+                                 "mandel",      "julia",
+                                 "magnet",      "image_pattern",
+                                 "slope",       "aoi",
+                                 "cubic",       "checker",
+                                 "image_map",   "pattern",
+                                 "tiles",       "hexagon",
+                                 "brick"};
+const char* const kPatternModifiers[] = {"turbulence",
+                                         "octaves",
+                                         "omega",
+                                         "lambda",
+                                         "frequency",
+                                         "phase",
+                                         "ramp_wave",
+                                         "triangle_wave",
+                                         "sine_wave",
+                                         "scallop_wave",
+                                         "cubic_wave",
+                                         "poly_wave",
+                                         "noise_generator",
+                                         "metric",
+                                         "form",
+                                         "offset",
+                                         "solid",
+                                         "exponent",
+                                         "accuracy",
+                                         "interpolate",
+                                         "once",
+                                         "map_type",
+                                         "use_color",
+                                         "use_colour",
+                                         "use_index",
+                                         "color_space",
+                                         "orientation",
+                                         "mortar",
+                                         "coords",
+                                         "max_iteration",
+                                         "precision",
+                                         "repeat",
+                                         "agate_turb",
+                                         "brick_size",
+                                         "control0",
+                                         "control1",
+                                         "fractal_interior_type",
+                                         "fractal_exterior_type",
+                                         "interior",
+                                         "exterior"};
+// Whether `w` is one of the two keyword lists (sets made once: asked for many words).
+bool in(const char* const* list, std::size_t n, const std::string& w) {
+  static const std::unordered_set<std::string_view> patterns(std::begin(kPatterns),
+                                                             std::end(kPatterns));
+  static const std::unordered_set<std::string_view> modifiers(std::begin(kPatternModifiers),
+                                                              std::end(kPatternModifiers));
+  (void)n;
+  return (list == kPatterns ? patterns : modifiers).count(w) > 0;
+}
+Colour to_colour(const Value& v) {
+  if (v.kind == Value::Float) return {v.v[0], v.v[0], v.v[0], 0, 0};
+  return {v.v[0], v.v[1], v.dims > 2 ? v.v[2] : 0, v.dims > 3 ? v.v[3] : 0,
+          v.dims > 4 ? v.v[4] : 0};
+}
+}  // namespace
+
+std::optional<Value> Interpreter::declared(Value::Kind kind) {
+  if (tok().kind != Token::Word) return std::nullopt;
+  const Value* v = lookup(tok().text);
+  if (!v) return std::nullopt;
+  if (v->kind == kind || (kind == Value::Texture && v->kind == Value::Material)) {
+    Value copy = *v;
+    next();
+    return copy;
+  }
+  if (v->kind != Value::Array) return std::nullopt;
+  const Pos at = tok().pos;
+  Value e = expression();  // an element: Textures[I]
+  if (e.kind != kind && !(kind == Value::Texture && e.kind == Value::Material))
+    fail_at(at, std::string("expected ") + (kind == Value::Texture ? "a texture" : "a pigment") +
+                    ", got " + kind_name(e));
+  return e;
+}
+
+void Interpreter::pattern_arguments(const Token& t, bool colours) {
+  const std::string& w = t.text;
+  if (w == "function" || w == "pigment_pattern" || w == "object" || w == "image_pattern" ||
+      w == "image_map" || w == "tiles" || w == "slope") {
+    if (w == "slope" && !is_symbol("{")) {
+      expression();
+      return;
+    }
+    if (w == "function" && !is_symbol("{")) {  // function F: a declared function's name
+      if (tok().kind == Token::Word) next();
+      return;
+    }
+    skip_block(w);
+  } else if (w == "density_file") {
+    tok();
+    next();  // df3
+    string_value("density_file");
+  } else if (colours && (w == "brick" || w == "hexagon" || w == "checker")) {
+    while (starts_colour()) {
+      colour("the pattern");
+      skip_comma();
+    }
+  } else {
+    // The pattern's own values: a number, a vector, or (julia) a vector and a number.
+    for (int k = 0; k < 3 && numeric_ahead(); ++k) {
+      expression();
+      skip_comma();
+    }
+  }
+}
+
+bool Interpreter::numeric_ahead() {
+  const Token& t = peek_operator();
+  if (pending_) return false;
+  if (t.kind == Token::Number || pov::is_symbol(t, "<") || pov::is_symbol(t, "(") ||
+      pov::is_symbol(t, "-"))
+    return true;
+  if (t.kind != Token::Word) return false;
+  if (t.text == "x" || t.text == "y" || t.text == "z") return true;
+  const Value* v = lookup(t.text);
+  return v && v->is_numeric();
+}
+
+bool Interpreter::starts_colour() {
+  const Token& t = tok();
+  if (t.kind == Token::Number || pov::is_symbol(t, "<") || pov::is_symbol(t, "(")) return true;
+  if (t.kind != Token::Word) return false;
+  const std::string& w = t.text;
+  if (w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") return true;
+  if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" ||
+      w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft")
+    return true;
+  const Value* v = lookup(w);
+  return v && v->is_numeric();
+}
+
+Colour Interpreter::colour(const char* what) {
+  const Pos at = tok().pos;
+  const Token& t = tok();
+  const bool component_first =
+      t.kind == Token::Word && (t.text == "red" || t.text == "green" || t.text == "blue" ||
+                                t.text == "filter" || t.text == "transmit");
+  const Value v = component_first ? colour_modifiers(Value::vector({0, 0, 0, 0, 0}))
+                                  : colour_modifiers(expression());
+  if (!v.is_numeric())
+    fail_at(at, std::string("expected a colour for ") + what + ", got " + kind_name(v));
+  return to_colour(v);
+}
+
+std::vector<MapEntry> Interpreter::colour_map_block() {
+  expect_symbol("{", "after color_map");
+  std::vector<MapEntry> map;
+  if (tok().kind == Token::Word) {
+    const Value* v = lookup(tok().text);
+    if (v && v->kind == Value::ColourMap) {
+      map = *v->colour_map;
+      next();
+    }
+  }
+  while (!accept_symbol("}")) {
+    if (!is_symbol("[")) unexpected("'[' to open a colour map entry");
+    next();
+    const double a = number("a colour map value");
+    skip_comma();
+    if (!is_symbol("]") && tok().kind == Token::Number) {
+      // [a, b colour c0 colour c1]: POV-Ray's older two-colour form.
+      const double b = number("a colour map value");
+      skip_comma();
+      const Colour c0 = colour("the colour map");
+      skip_comma();
+      const Colour c1 = colour("the colour map");
+      map.push_back({a, c0});
+      map.push_back({b, c1});
+    } else {
+      map.push_back({a, colour("the colour map")});
+    }
+    expect_symbol("]", "to close the colour map entry");
+    if (map.size() > 256) fail_here("a colour map has at most 256 entries");
+  }
+  return map;
+}
+
+bool Interpreter::transform_item(std::vector<XformOp>& ops) {
+  const Pos at = tok().pos;
+  if (is_word("translate") || is_word("scale") || is_word("rotate")) {
+    XformOp op;
+    op.kind = is_word("translate") ? XformOp::Translate
+              : is_word("scale")   ? XformOp::Scale
+                                   : XformOp::Rotate;
+    next();
+    op.v = vector("the transformation");
+    if (op.kind == XformOp::Scale && (op.v.x == 0 || op.v.y == 0 || op.v.z == 0)) {
+      unsupported_warning(at, "scale by 0", "taken as 1 on that axis");
+      if (op.v.x == 0) op.v.x = 1;
+      if (op.v.y == 0) op.v.y = 1;
+      if (op.v.z == 0) op.v.z = 1;
+    }
+    ops.push_back(op);
+  } else if (is_word("matrix")) {
+    next();
+    expect_symbol("<", "after matrix");
+    XformOp op;
+    op.kind = XformOp::Matrix;
+    for (int i = 0; i < 12; ++i) {
+      if (i) expect_symbol(",", "between the matrix's 12 values");
+      op.m[static_cast<std::size_t>(i)] = number_in_vector("a matrix value");
+    }
+    expect_symbol(">", "after the matrix's 12 values");
+    ops.push_back(op);
+  } else if (is_word("transform")) {
+    next();
+    const Value* v = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+    if (v && v->kind == Value::Transform) {
+      const auto t = v->transform;
+      next();
+      ops.insert(ops.end(), t->begin(), t->end());
+    } else {
+      const auto t = transform_block();
+      ops.insert(ops.end(), t.begin(), t.end());
+    }
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::vector<XformOp> Interpreter::transform_block() {
+  expect_symbol("{", "after transform");
+  std::vector<XformOp> ops;
+  bool inverse = false;
+  while (!accept_symbol("}")) {
+    if (is_word("inverse")) {
+      next();
+      inverse = true;
+      continue;
+    }
+    if (tok().kind == Token::Word) {
+      const Value* v = lookup(tok().text);
+      if (v && v->kind == Value::Transform) {
+        ops.insert(ops.end(), v->transform->begin(), v->transform->end());
+        next();
+        continue;
+      }
+    }
+    if (!transform_item(ops))
+      unexpected("translate, rotate, scale, matrix or inverse in transform");
+  }
+  if (inverse) {
+    // The inverse of a sequence: the inverted steps in reverse order.
+    std::vector<XformOp> inv;
+    for (auto it = ops.rbegin(); it != ops.rend(); ++it) {
+      XformOp o = *it;
+      if (o.kind == XformOp::Translate) o.v = o.v * -1.0;
+      if (o.kind == XformOp::Scale) o.v = {1 / o.v.x, 1 / o.v.y, 1 / o.v.z};
+      if (o.kind == XformOp::Rotate) {
+        // Rotations about x, then y, then z undone: -z, then -y, then -x.
+        for (int k = 2; k >= 0; --k) {
+          XformOp r;
+          r.kind = XformOp::Rotate;
+          r.v = {k == 0 ? -o.v.x : 0, k == 1 ? -o.v.y : 0, k == 2 ? -o.v.z : 0};
+          inv.push_back(r);
+        }
+        continue;
+      }
+      if (o.kind == XformOp::Matrix) {
+        // Rows r0 r1 r2 (3x3, row-vector form) and translation t: p' = p A + t.
+        const auto& m = o.m;
+        const double a = m[0], b = m[1], c = m[2], d = m[3], e = m[4], f = m[5], g = m[6], h = m[7],
+                     i = m[8];
+        const double det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
+        if (det == 0) fail_here("transform { inverse } of a singular matrix");
+        std::array<double, 9> r = {
+            (e * i - f * h) / det, (c * h - b * i) / det, (b * f - c * e) / det,
+            (f * g - d * i) / det, (a * i - c * g) / det, (c * d - a * f) / det,
+            (d * h - e * g) / det, (b * g - a * h) / det, (a * e - b * d) / det};
+        XformOp q;
+        q.kind = XformOp::Matrix;
+        for (int k = 0; k < 9; ++k)
+          q.m[static_cast<std::size_t>(k)] = r[static_cast<std::size_t>(k)];
+        for (int col = 0; col < 3; ++col) {
+          double s = 0;
+          for (int row = 0; row < 3; ++row)
+            s += m[static_cast<std::size_t>(9 + row)] * r[static_cast<std::size_t>(3 * row + col)];
+          q.m[static_cast<std::size_t>(9 + col)] = -s;
+        }
+        inv.push_back(q);
+        continue;
+      }
+      inv.push_back(o);
+    }
+    ops = inv;
+  }
+  return ops;
+}
+
+Pigment Interpreter::pigment_block(const Pigment& base) {
+  const Pos start = tok().pos;
+  expect_symbol("{", "after pigment");
+  Pigment p = base;
+  if (const std::optional<Value> v = declared(Value::Pigment)) p = *v->pigment;
+  while (!accept_symbol("}")) {
+    const Token t = tok();
+    const std::string& w = t.text;
+    if (t.kind == Token::Word && (w == "rgb" || w == "color" || w == "colour")) {
+      p.checker = false;  // the common case first
+      p.pattern.clear();
+      p.c0 = colour("pigment");
+    } else if (t.kind == Token::Word && w == "checker") {
+      next();
+      p.checker = true;
+      p.pattern.clear();
+      p.c0 = {0, 0, 1, 0, 0};  // POV-Ray's defaults: blue and green
+      p.c1 = {0, 1, 0, 0, 0};
+      if (starts_colour()) {
+        p.c0 = colour("checker");
+        skip_comma();
+        if (starts_colour()) p.c1 = colour("checker");
+      } else if (is_word("pigment")) {
+        unsupported_warning(t.pos, "checker of pigments", "their colours are used");
+        next();
+        p.c0 = pigment_block(p).c0;
+        skip_comma();
+        if (is_word("pigment")) {
+          next();
+          p.c1 = pigment_block(p).c0;
+        }
+      }
+    } else if (t.kind == Token::Word && (w == "image_map" || w == "image_pattern")) {
+      next();
+      unsupported_warning(t.pos, "image_map pigments", "drawn grey");
+      skip_block(w);
+      p.checker = false;
+      p.pattern = w;
+      p.c0 = {0.5, 0.5, 0.5, 0, 0};
+    } else if (t.kind == Token::Word && in(kPatterns, std::size(kPatterns), w)) {
+      next();
+      unsupported_warning(t.pos, "the " + w + " pattern",
+                          "drawn in its colour map's middle colour");
+      p.checker = false;
+      p.pattern = w;
+      pattern_arguments(t, true);
+    } else if (t.kind == Token::Word && (w == "color_map" || w == "colour_map")) {
+      next();
+      p.map = colour_map_block();
+      if (!p.map.empty()) p.c0 = p.map[p.map.size() / 2].colour;
+    } else if (t.kind == Token::Word && (w == "pigment_map" || w == "slope_map")) {
+      next();
+      unsupported_warning(t.pos, w);
+      skip_block(w);
+    } else if (t.kind == Token::Word && in(kPatternModifiers, std::size(kPatternModifiers), w)) {
+      next();
+      if (w == "fractal_interior_type" || w == "fractal_exterior_type" || w == "interior" ||
+          w == "exterior") {
+        expression();
+        skip_comma();
+        expression();
+      } else if (w == "turbulence" || w == "frequency" || w == "phase" || w == "octaves" ||
+                 w == "omega" || w == "lambda" || w == "noise_generator" || w == "metric" ||
+                 w == "offset" || w == "exponent" || w == "accuracy" || w == "interpolate" ||
+                 w == "map_type" || w == "poly_wave" || w == "color_space" ||
+                 w == "max_iteration" || w == "precision" || w == "agate_turb" ||
+                 w == "brick_size" || w == "control0" || w == "control1")
+        expression();
+      else if (w == "form" || w == "orientation" || w == "coords" || w == "mortar" || w == "repeat")
+        expression();
+    } else if (t.kind == Token::Word && w == "warp") {
+      next();
+      skip_block("warp");
+    } else if (t.kind == Token::Word && (w == "quick_color" || w == "quick_colour")) {
+      next();
+      colour("quick_color");
+    } else if (t.kind == Token::Word && w == "uv_mapping") {
+      next();
+    } else if (t.kind == Token::Word && (w == "scale" || w == "translate" || w == "rotate" ||
+                                         w == "matrix" || w == "transform")) {
+      std::vector<XformOp> ops;
+      transform_item(ops);
+      for (const XformOp& o : ops) {
+        if (o.kind == XformOp::Scale && o.v.x == o.v.y && o.v.y == o.v.z && o.v.x > 0)
+          p.scale *= o.v.x;
+        else if (p.checker)
+          unsupported_warning(t.pos, "pigment transformations other than a uniform scale");
+      }
+    } else if (t.kind == Token::Word && starts_colour()) {
+      p.checker = false;
+      p.pattern.clear();
+      p.c0 = colour("pigment");
+    } else if (t.kind != Token::Word && starts_colour()) {
+      p.checker = false;
+      p.c0 = colour("pigment");
+    } else {
+      unexpected("a colour or a pattern in pigment");
+    }
+  }
+  (void)start;
+  return p;
+}
+
+void Interpreter::reflection_block(Finish& f) {
+  std::vector<double> values;
+  while (!accept_symbol("}")) {
+    if (is_word("fresnel")) {
+      next();
+      f.fresnel = boolean_option();
+    } else if (is_word("falloff") || is_word("exponent") || is_word("metallic")) {
+      unsupported_warning(tok().pos, "reflection " + tok().text);
+      next();
+      if (starts_colour()) number("a reflection setting");
+    } else if (starts_colour()) {
+      const Colour c = colour("reflection");
+      values.push_back((c.r + c.g + c.b) / 3);
+      skip_comma();
+    } else {
+      unexpected("a reflection value or fresnel");
+    }
+  }
+  if (values.empty()) return;
+  // { min, max fresnel on }: raycast's Fresnel split starts from the minimum; without fresnel,
+  // POV-Ray's variable reflection is drawn at its mean.
+  f.reflection = f.fresnel ? values.front() : 0.5 * (values.front() + values.back());
+}
+
+Finish Interpreter::finish_block(const Finish& base) {
+  expect_symbol("{", "after finish");
+  Finish f = base;
+  if (tok().kind == Token::Word) {
+    const Value* v = lookup(tok().text);
+    if (v && v->kind == Value::Finish) {
+      f = *v->finish;
+      next();
+    }
+  }
+  auto grey = [&](const char* what) {
+    const Colour c = colour(what);
+    return (c.r + c.g + c.b) / 3;
+  };
+  while (!accept_symbol("}")) {
+    const Token t = tok();
+    const std::string& w = t.text;
+    if (w == "ambient")
+      next(), f.ambient = grey("ambient");
+    else if (w == "emission")
+      next(), f.ambient += grey("emission");
+    else if (w == "diffuse") {
+      next();
+      if (is_word("albedo")) next();
+      f.diffuse = number("diffuse");
+      if (accept_symbol(",")) number("diffuse's back side");
+    } else if (w == "phong") {
+      next();
+      if (is_word("albedo")) next();
+      f.phong = number("phong");
+    } else if (w == "phong_size")
+      next(), f.phong_size = number("phong_size");
+    else if (w == "specular") {
+      next();
+      if (is_word("albedo")) next();
+      f.specular = number("specular");
+    } else if (w == "roughness") {
+      next();
+      f.roughness = std::max(number("roughness"), 1e-6);
+    } else if (w == "reflection") {
+      next();
+      if (accept_symbol("{"))
+        reflection_block(f);
+      else {
+        f.fresnel = false;
+        f.reflection = grey("reflection");
+      }
+    } else if (w == "conserve_energy") {
+      next();
+      f.conserve_energy = boolean_option();
+    } else if (w == "brilliance" || w == "metallic" || w == "crand" || w == "irid" ||
+               w == "subsurface" || w == "reflection_exponent") {
+      next();
+      if (w == "irid" || w == "subsurface") {
+        skip_block(w);
+      } else if (w == "metallic") {
+        boolean_option();
+      } else {
+        number(w.c_str());
+      }
+      unsupported_warning(t.pos, "finish " + w);
+    } else {
+      unexpected("a finish item (ambient, diffuse, phong, specular, roughness, reflection ...)");
+    }
+  }
+  return f;
+}
+
+std::optional<double> Interpreter::interior_block() {
+  expect_symbol("{", "after interior");
+  std::optional<double> ior;
+  if (tok().kind == Token::Word) {
+    const Value* v = lookup(tok().text);
+    if (v && v->kind == Value::Interior) {
+      ior = v->ior;
+      next();
+    }
+  }
+  while (!accept_symbol("}")) {
+    const Token t = tok();
+    if (t.text == "ior") {
+      next();
+      ior = number("ior");
+      if (*ior <= 0) fail_at(t.pos, "ior must be > 0");
+    } else if (t.text == "media") {
+      next();
+      unsupported_warning(t.pos, "media");
+      skip_block("media");
+    } else if (t.text == "caustics" || t.text == "dispersion" || t.text == "dispersion_samples" ||
+               t.text == "fade_distance" || t.text == "fade_power") {
+      next();
+      number(t.text.c_str());
+      unsupported_warning(t.pos, "interior " + t.text);
+    } else if (t.text == "fade_color" || t.text == "fade_colour") {
+      next();
+      colour("fade_color");
+      unsupported_warning(t.pos, "interior " + t.text);
+    } else {
+      unexpected("ior, media, caustics, dispersion or fade settings in interior");
+    }
+  }
+  return ior;
+}
+
+Texture Interpreter::texture_block(const Texture& base, int depth) {
+  if (depth > kMaxPovNesting) fail_here("textures are nested too deeply");
+  expect_symbol("{", "after texture");
+  Texture t = base;
+  t.name.clear();
+  if (const std::optional<Value> v = declared(Value::Texture)) {
+    const std::optional<double> ior = t.ior;
+    t = *v->texture;
+    if (!t.ior) t.ior = ior;
+  }
+  bool patterned = false, first_layer = true;
+  while (!accept_symbol("}")) {
+    const Token k = tok();
+    if (is_word("texture") && patterned) {  // the textures of a pattern: the first one shows
+      next();
+      const Texture layer = texture_block(base, depth + 1);
+      if (first_layer) t = layer;
+      first_layer = false;
+      skip_comma();
+    } else if (is_word("pigment")) {
+      next();
+      t.pigment = pigment_block(t.pigment);
+    } else if (is_word("finish")) {
+      next();
+      t.finish = finish_block(t.finish);
+    } else if (is_word("normal")) {
+      next();
+      unsupported_warning(k.pos, "normal perturbations");
+      skip_block("normal");
+    } else if (is_word("texture_map") || is_word("material_map")) {
+      next();
+      unsupported_warning(k.pos, k.text, "the first texture is used");
+      expect_symbol("{", ("after " + k.text).c_str());
+      bool first = true;
+      int depth = 0;  // braces of an entry's own items: [0.2 pigment { Jade } finish { ... }]
+      while (depth > 0 || !accept_symbol("}")) {
+        if (is_symbol("{")) ++depth;
+        if (is_symbol("}")) --depth;
+        if (is_word("texture")) {
+          next();
+          const Texture layer = texture_block(base, depth + 1);
+          if (first) t = layer;
+          first = false;
+        } else {
+          if (tok().kind == Token::End) fail_here(k.text + " { is never closed");
+          if (tok().kind == Token::Word) {
+            if (const std::optional<Value> v = declared(Value::Texture)) {
+              if (first) t = *v->texture;
+              first = false;
+              continue;
+            }
+          }
+          next();
+        }
+      }
+    } else if (k.kind == Token::Word && in(kPatterns, std::size(kPatterns), k.text)) {
+      // a patterned texture (texture { gradient x texture_map { ... } })
+      next();
+      unsupported_warning(k.pos, "patterned textures", "the first texture is used");
+      patterned = true;
+      pattern_arguments(k, false);
+    } else if (k.kind == Token::Word &&
+               in(kPatternModifiers, std::size(kPatternModifiers), k.text)) {
+      next();
+      if (starts_colour()) expression();
+    } else if (is_word("warp")) {
+      next();
+      skip_block("warp");
+    } else if (is_word("uv_mapping")) {
+      next();
+    } else if (k.kind == Token::Word &&
+               (k.text == "scale" || k.text == "translate" || k.text == "rotate" ||
+                k.text == "matrix" || k.text == "transform")) {
+      std::vector<XformOp> ops;
+      transform_item(ops);
+      for (const XformOp& o : ops)
+        if (o.kind == XformOp::Scale && o.v.x == o.v.y && o.v.y == o.v.z && o.v.x > 0)
+          t.pigment.scale *= o.v.x;
+    } else {
+      unexpected("pigment, finish, normal or a transformation in texture");
+    }
+  }
+  return t;
+}
+
+Texture Interpreter::material_block(const Texture& base, int depth) {
+  expect_symbol("{", "after material");
+  Texture t = base;
+  if (const std::optional<Value> v = declared(Value::Texture)) t = *v->texture;
+  while (!accept_symbol("}")) {
+    if (is_word("texture")) {
+      next();
+      const std::optional<double> ior = t.ior;
+      t = texture_block(t, depth + 1);
+      t.ior = ior;
+    } else if (is_word("interior")) {
+      next();
+      t.ior = interior_block();
+    } else if (is_word("interior_texture")) {
+      unsupported_warning(tok().pos, "interior_texture");
+      next();
+      skip_block("interior_texture");
+    } else {
+      std::vector<XformOp> ops;
+      if (!transform_item(ops)) unexpected("texture or interior in material");
+    }
+  }
+  return t;
+}
+
+}  // namespace raycast::pov
