@@ -30,183 +30,186 @@ std::shared_ptr<const FnNode> call(const std::string& name,
 }
 }  // namespace
 
-// The function language: POV-Ray's float expression syntax over the parameters.
+// The function language, POV-Ray's float expression syntax over the parameters, read by
+// recursive descent from the interpreter's token stream into a tree of FnNode.
+class FunctionParser {
+ public:
+  Interpreter& in;
+  const std::vector<std::string>& params;
+  int depth;
+  std::shared_ptr<const FnNode> cond() {
+    auto c = logic();
+    if (in.accept_symbol("?")) {
+      auto a = cond();
+      in.expect_symbol(":", "in 'a ? b : c'");
+      auto b = cond();
+      return call("if", {c, a, b});
+    }
+    return c;
+  }
+  std::shared_ptr<const FnNode> logic() {
+    auto a = compare();
+    for (;;) {
+      if (in.accept_symbol("&"))
+        a = call("and", {a, compare()});
+      else if (in.accept_symbol("|"))
+        a = call("or", {a, compare()});
+      else
+        return a;
+    }
+  }
+  std::shared_ptr<const FnNode> compare() {
+    auto a = sum();
+    for (;;) {
+      const char* n = in.is_symbol("<")    ? "lt"
+                      : in.is_symbol("<=") ? "le"
+                      : in.is_symbol(">")  ? "gt"
+                      : in.is_symbol(">=") ? "ge"
+                      : in.is_symbol("=")  ? "eq"
+                      : in.is_symbol("!=") ? "ne"
+                                           : nullptr;
+      if (!n) return a;
+      in.next();
+      a = call(n, {a, sum()});
+    }
+  }
+  std::shared_ptr<const FnNode> sum() {
+    auto a = product();
+    for (;;) {
+      if (in.accept_symbol("+"))
+        a = make(FnNode::Add, {a, product()});
+      else if (in.accept_symbol("-"))
+        a = make(FnNode::Subtract, {a, product()});
+      else
+        return a;
+    }
+  }
+  std::shared_ptr<const FnNode> product() {
+    auto a = unary();
+    for (;;) {
+      if (in.accept_symbol("*"))
+        a = make(FnNode::Multiply, {a, unary()});
+      else if (in.accept_symbol("/"))
+        a = make(FnNode::Divide, {a, unary()});
+      else
+        return a;
+    }
+  }
+  std::shared_ptr<const FnNode> unary() {
+    if (++depth > kMaxPovNesting) in.fail_here("the function is nested too deeply");
+    std::shared_ptr<const FnNode> r;
+    if (in.accept_symbol("-"))
+      r = make(FnNode::Negate, {unary()});
+    else if (in.accept_symbol("+"))
+      r = unary();
+    else if (in.accept_symbol("!"))
+      r = call("not", {unary()});
+    else
+      r = primary();
+    --depth;
+    return r;
+  }
+  std::vector<std::shared_ptr<const FnNode>> args() {
+    in.expect_symbol("(", "to open the arguments");
+    std::vector<std::shared_ptr<const FnNode>> a;
+    if (!in.is_symbol(")")) {
+      for (;;) {
+        a.push_back(cond());
+        if (!in.accept_symbol(",")) break;
+      }
+    }
+    in.expect_symbol(")", "to close the arguments");
+    return a;
+  }
+  std::shared_ptr<const FnNode> primary() {
+    const Token t = in.tok();
+    if (t.kind == Token::Number) {
+      in.next();
+      return num(t.number);
+    }
+    if (in.accept_symbol("(")) {
+      auto e = cond();
+      in.expect_symbol(")", "to close '('");
+      return e;
+    }
+    if (t.kind != Token::Word) in.unexpected("a number, a parameter or a function");
+    in.next();
+    for (std::size_t i = 0; i < params.size(); ++i)
+      if (params[i] == t.text) {
+        auto f = std::make_shared<FnNode>();
+        f->kind = FnNode::Param;
+        f->number = static_cast<double>(i);
+        return f;
+      }
+    if (t.text == "pi") return num(std::numbers::pi);
+    if (!in.lookup(t.text) && in.is_builtin(t.text) && t.text != "x" && t.text != "y" &&
+        t.text != "z" && t.text != "min" && t.text != "max" && t.text != "select" &&
+        !in.is_symbol("(")) {
+      // A constant of the scene (clock, image_width ...), fixed when the function is read.
+      const Value c = in.builtin_constant(t);
+      if (c.kind == Value::Float) return num(c.v[0]);
+    }
+    if (t.text == "internal") {
+      args();
+      auto f = std::make_shared<FnNode>();
+      f->kind = FnNode::Call;
+      f->function = "internal";
+      return f;
+    }
+    if (const Value* v = in.lookup(t.text)) {
+      if (v->kind == Value::Float) return num(v->v[0]);
+      if (v->kind == Value::Function) {
+        auto f = std::make_shared<FnNode>();
+        f->kind = FnNode::User;
+        f->callee = v->function;
+        f->args = args();
+        if (in.is_symbol(".")) {  // a component of a vector or colour function's value
+          in.next();
+          in.tok();
+          in.next();
+          return call("component", {f});
+        }
+        return f;
+      }
+      if (v->kind == Value::Vector && in.is_symbol(".")) {
+        in.next();
+        const std::string c = in.tok().text;
+        in.next();
+        const int k = c == "x" || c == "u"   ? 0
+                      : c == "y" || c == "v" ? 1
+                      : c == "z"             ? 2
+                      : c == "t"             ? 3
+                                             : 4;
+        return num(v->v[static_cast<std::size_t>(std::min(k, 4))]);
+      }
+      in.fail_at(t.pos, "'" + t.text + "' is " + kind_name(*v) + ", not a float or a function");
+    }
+    if (t.text == "ln") return call("log", args());
+    if (t.text == "log") return make(FnNode::Divide, {call("log", args()), num(std::log(10.0))});
+    static const char* const known[] = {
+        "sin",   "cos",   "tan",   "asin",  "acos", "atan",   "sinh",    "cosh",   "tanh",
+        "asinh", "acosh", "atanh", "sqrt",  "exp",  "abs",    "floor",   "ceil",   "int",
+        "min",   "max",   "pow",   "atan2", "mod",  "select", "radians", "degrees"};
+    for (const char* k : known)
+      if (t.text == k) {
+        auto a = args();
+        if (t.text == "pow" && a.size() == 2) return make(FnNode::Power, a);
+        return call(t.text, a);
+      }
+    if (t.text == "x" || t.text == "y" || t.text == "z") {
+      auto f = std::make_shared<FnNode>();
+      f->kind = FnNode::Variable;
+      f->variable = t.text[0];
+      return f;
+    }
+    in.fail_at(t.pos, "unknown word '" + t.text + "' in a function");
+  }
+};
+
 std::shared_ptr<const FnNode> Interpreter::function_expression(
     int depth, const std::vector<std::string>& params) {
   if (depth > kMaxPovNesting) fail_here("the function is nested too deeply");
-  struct P {
-    Interpreter& in;
-    const std::vector<std::string>& params;
-    int depth;
-    std::shared_ptr<const FnNode> cond() {
-      auto c = logic();
-      if (in.accept_symbol("?")) {
-        auto a = cond();
-        in.expect_symbol(":", "in 'a ? b : c'");
-        auto b = cond();
-        return call("if", {c, a, b});
-      }
-      return c;
-    }
-    std::shared_ptr<const FnNode> logic() {
-      auto a = compare();
-      for (;;) {
-        if (in.accept_symbol("&"))
-          a = call("and", {a, compare()});
-        else if (in.accept_symbol("|"))
-          a = call("or", {a, compare()});
-        else
-          return a;
-      }
-    }
-    std::shared_ptr<const FnNode> compare() {
-      auto a = sum();
-      for (;;) {
-        const char* n = in.is_symbol("<")    ? "lt"
-                        : in.is_symbol("<=") ? "le"
-                        : in.is_symbol(">")  ? "gt"
-                        : in.is_symbol(">=") ? "ge"
-                        : in.is_symbol("=")  ? "eq"
-                        : in.is_symbol("!=") ? "ne"
-                                             : nullptr;
-        if (!n) return a;
-        in.next();
-        a = call(n, {a, sum()});
-      }
-    }
-    std::shared_ptr<const FnNode> sum() {
-      auto a = product();
-      for (;;) {
-        if (in.accept_symbol("+"))
-          a = make(FnNode::Add, {a, product()});
-        else if (in.accept_symbol("-"))
-          a = make(FnNode::Subtract, {a, product()});
-        else
-          return a;
-      }
-    }
-    std::shared_ptr<const FnNode> product() {
-      auto a = unary();
-      for (;;) {
-        if (in.accept_symbol("*"))
-          a = make(FnNode::Multiply, {a, unary()});
-        else if (in.accept_symbol("/"))
-          a = make(FnNode::Divide, {a, unary()});
-        else
-          return a;
-      }
-    }
-    std::shared_ptr<const FnNode> unary() {
-      if (++depth > kMaxPovNesting) in.fail_here("the function is nested too deeply");
-      std::shared_ptr<const FnNode> r;
-      if (in.accept_symbol("-"))
-        r = make(FnNode::Negate, {unary()});
-      else if (in.accept_symbol("+"))
-        r = unary();
-      else if (in.accept_symbol("!"))
-        r = call("not", {unary()});
-      else
-        r = primary();
-      --depth;
-      return r;
-    }
-    std::vector<std::shared_ptr<const FnNode>> args() {
-      in.expect_symbol("(", "to open the arguments");
-      std::vector<std::shared_ptr<const FnNode>> a;
-      if (!in.is_symbol(")")) {
-        for (;;) {
-          a.push_back(cond());
-          if (!in.accept_symbol(",")) break;
-        }
-      }
-      in.expect_symbol(")", "to close the arguments");
-      return a;
-    }
-    std::shared_ptr<const FnNode> primary() {
-      const Token t = in.tok();
-      if (t.kind == Token::Number) {
-        in.next();
-        return num(t.number);
-      }
-      if (in.accept_symbol("(")) {
-        auto e = cond();
-        in.expect_symbol(")", "to close '('");
-        return e;
-      }
-      if (t.kind != Token::Word) in.unexpected("a number, a parameter or a function");
-      in.next();
-      for (std::size_t i = 0; i < params.size(); ++i)
-        if (params[i] == t.text) {
-          auto f = std::make_shared<FnNode>();
-          f->kind = FnNode::Param;
-          f->number = static_cast<double>(i);
-          return f;
-        }
-      if (t.text == "pi") return num(std::numbers::pi);
-      if (!in.lookup(t.text) && in.is_builtin(t.text) && t.text != "x" && t.text != "y" &&
-          t.text != "z" && t.text != "min" && t.text != "max" && t.text != "select" &&
-          !in.is_symbol("(")) {
-        // A constant of the scene (clock, image_width ...), fixed when the function is read.
-        const Value c = in.builtin_constant(t);
-        if (c.kind == Value::Float) return num(c.v[0]);
-      }
-      if (t.text == "internal") {
-        args();
-        auto f = std::make_shared<FnNode>();
-        f->kind = FnNode::Call;
-        f->function = "internal";
-        return f;
-      }
-      if (const Value* v = in.lookup(t.text)) {
-        if (v->kind == Value::Float) return num(v->v[0]);
-        if (v->kind == Value::Function) {
-          auto f = std::make_shared<FnNode>();
-          f->kind = FnNode::User;
-          f->callee = v->function;
-          f->args = args();
-          if (in.is_symbol(".")) {  // a component of a vector or colour function's value
-            in.next();
-            in.tok();
-            in.next();
-            return call("component", {f});
-          }
-          return f;
-        }
-        if (v->kind == Value::Vector && in.is_symbol(".")) {
-          in.next();
-          const std::string c = in.tok().text;
-          in.next();
-          const int k = c == "x" || c == "u"   ? 0
-                        : c == "y" || c == "v" ? 1
-                        : c == "z"             ? 2
-                        : c == "t"             ? 3
-                                               : 4;
-          return num(v->v[static_cast<std::size_t>(std::min(k, 4))]);
-        }
-        in.fail_at(t.pos, "'" + t.text + "' is " + kind_name(*v) + ", not a float or a function");
-      }
-      if (t.text == "ln") return call("log", args());
-      if (t.text == "log") return make(FnNode::Divide, {call("log", args()), num(std::log(10.0))});
-      static const char* const known[] = {
-          "sin",   "cos",   "tan",   "asin",  "acos", "atan",   "sinh",    "cosh",   "tanh",
-          "asinh", "acosh", "atanh", "sqrt",  "exp",  "abs",    "floor",   "ceil",   "int",
-          "min",   "max",   "pow",   "atan2", "mod",  "select", "radians", "degrees"};
-      for (const char* k : known)
-        if (t.text == k) {
-          auto a = args();
-          if (t.text == "pow" && a.size() == 2) return make(FnNode::Power, a);
-          return call(t.text, a);
-        }
-      if (t.text == "x" || t.text == "y" || t.text == "z") {
-        auto f = std::make_shared<FnNode>();
-        f->kind = FnNode::Variable;
-        f->variable = t.text[0];
-        return f;
-      }
-      in.fail_at(t.pos, "unknown word '" + t.text + "' in a function");
-    }
-  };
-  P p{*this, params, depth};
+  FunctionParser p{*this, params, depth};
   return p.cond();
 }
 

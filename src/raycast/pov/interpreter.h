@@ -31,6 +31,8 @@ struct Symbol {
 };
 
 class Interpreter {
+  friend class FunctionParser;  // functions.cpp: reads `function { }` bodies from the tokens
+
  public:
   Interpreter(const std::string& text, const std::string& name, const std::string& dir,
               const Options& options);
