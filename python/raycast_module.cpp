@@ -10,6 +10,8 @@
 
 namespace raycast::python {
 
+void bind_explain(py::module_& m);  // explain_binding.cpp
+
 namespace {
 
 constexpr std::uint32_t kInvalidId = std::numeric_limits<std::uint32_t>::max();  // Open3D's
@@ -609,6 +611,7 @@ PYBIND11_MODULE(raycast, m) {
           py::arg("width") = 0, py::arg("height") = 0, py::arg("samples") = 0,
           py::arg("integrator") = "", py::arg("camera") = py::none(),
           "Renders into a (height, width, 3) float32 array of linear RGB.");
+  bind_explain(m);
 }
 
 }  // namespace raycast::python

@@ -1,5 +1,6 @@
 // `raycast render [SCENE] [-o out.png] ...` (docs/cli.md): renders a scene, or the
 // built-in demo, to an image whose format follows the extension; AOVs go beside it.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +17,7 @@
 #include "render/renderer.h"
 #include "render_frames.h"
 #include "render_output.h"
+#include "render_recorded.h"
 #include "scene/demo_scene.h"
 #include "scene/loader.h"
 #include "scene/validate.h"
@@ -25,9 +27,22 @@ namespace raycast::cli {
 namespace {
 
 struct Options {
-  std::string scene, output = "out.png", integrator, aovs, antialias, frames;
+  std::string scene, output = "out.png", integrator, aovs, antialias, frames, max_depth;
   int width = 0, height = 0, spp = 0, threads = 0;
+  bool stats = false, heatmap = false;
 };
+
+/// `--max-depth N` or `A-B` (a sweep): false for anything else or numbers outside [0, 64].
+bool parse_depths(const std::string& text, int& first, int& last) {
+  constexpr int kMaxSweepDepth = 64;
+  char dash = 0, extra = 0;
+  const int n = std::sscanf(text.c_str(), "%d%c%d%c", &first, &dash, &last, &extra);
+  if (n == 1)
+    last = first;
+  else if (n != 3 || dash != '-')
+    return false;
+  return first >= 0 && last >= first && last <= kMaxSweepDepth;
+}
 
 int usage_error(const std::string& message) {
   std::fprintf(stderr, "raycast render: %s\n", message.c_str());
@@ -107,7 +122,16 @@ Action add_render_command(CLI::App& app) {
                   "whitted, raycast, depth, normal or id (overrides the scene)");
   cmd->add_option("--aov", opt->aovs,
                   "Comma-separated extra outputs written beside the image as OUT.<name>.pfm: "
-                  "depth, normal, id, albedo");
+                  "depth, normal, id, albedo; the Whitted terms ambient, diffuse, specular, "
+                  "reflection, refraction, shadowed; the costs cost.rays, cost.depth, cost.time");
+  cmd->add_flag("--heatmap", opt->heatmap,
+                "Also write the shadowed and cost outputs as false-colour OUT.<name>.png with a "
+                "colour bar");
+  cmd->add_flag("--stats", opt->stats,
+                "Print a statistics report: rays by kind, time by phase, the BVHs' shape");
+  cmd->add_option("--max-depth", opt->max_depth,
+                  "Secondary ray depth (overrides the scene); A-B renders each depth and writes "
+                  "them side by side as one contact sheet");
   cmd->add_option("--frames", opt->frames,
                   "Render frames A-B: {frame} / {frame:04d} in the scene's data paths and in -o");
   return [opt, width, height, spp, threads, antialias] {
@@ -142,9 +166,32 @@ Action add_render_command(CLI::App& app) {
                            opt->integrator + "'");
     }
     std::vector<std::pair<std::string, RenderMode>> aovs;
-    if (std::string bad; !parse_aov_list(opt->aovs, aovs, bad))
-      return usage_error(std::string("--aov takes a comma-separated list of ") + kAovNames +
-                         "; got '" + bad + "'");
+    RecordedRequest recorded;
+    const std::string plain_aovs = take_recorded_outputs(opt->aovs, recorded.outputs);
+    if (std::string bad; !parse_aov_list(plain_aovs, aovs, bad))
+      return usage_error(std::string("--aov takes a comma-separated list of ") + kAovNames + ", " +
+                         kRecordedOutputNames + "; got '" + bad + "'");
+    int depth_first = -1, depth_last = -1;
+    if (!opt->max_depth.empty() && !parse_depths(opt->max_depth, depth_first, depth_last))
+      return usage_error("--max-depth must be N or A-B with 0 <= A <= B <= 64, got '" +
+                         opt->max_depth + "'");
+    recorded.stats = opt->stats;
+    recorded.heatmap = opt->heatmap;
+    const bool records = recorded.stats || !recorded.outputs.empty();
+    if (records && (antialias->count() > 0 || !opt->frames.empty() || !aovs.empty() ||
+                    depth_last > depth_first))
+      return usage_error(
+          "--stats and the term and cost outputs render fixed samples one image at a time: "
+          "not with --antialias, --frames, the depth, normal, id or albedo outputs or a "
+          "--max-depth sweep");
+    if (opt->heatmap && recorded.outputs.empty())
+      return usage_error("--heatmap draws the shadowed and cost outputs: add --aov cost.rays ...");
+    if (records && options.integrator && *options.integrator != RenderMode::kWhitted)
+      return usage_error("--stats and the term and cost outputs record the whitted integrator");
+    if ((records || depth_last > depth_first) && is_stdout(opt->output))
+      return usage_error(
+          "--stats, the term and cost outputs and a --max-depth sweep need a file, "
+          "not -");
     if (is_stdout(opt->output)) {
       if (!aovs.empty()) return usage_error("--aov writes files beside -o: it needs a file, not -");
       if (!opt->frames.empty()) return usage_error("--frames writes one file per frame, not -");
@@ -165,9 +212,16 @@ Action add_render_command(CLI::App& app) {
     if (!opt->frames.empty()) return render_frames(opt->scene, opt->output, opt->frames, options);
     if (const std::string problem = output_problem(opt->output); !problem.empty())
       return output_error(problem);
+    if (distributed::active() && (records || !opt->max_depth.empty()))
+      return usage_error(
+          "--stats, the term and cost outputs and --max-depth render in one process");
     if (distributed::active())  // under mpirun: tiles over the ranks (docs/distributed.md)
       return distributed::render_image(opt->scene, opt->output, options, aovs);
-    const Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
+    const auto load_start = std::chrono::steady_clock::now();
+    Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
+    recorded.load_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+    if (depth_first >= 0) scene.render.max_depth = depth_first;
     if (const std::string warning = no_lights_warning(scene, render_mode(scene, options));
         !warning.empty())
       std::fprintf(stderr, "raycast render: warning: %s\n", warning.c_str());
@@ -177,6 +231,9 @@ Action add_render_command(CLI::App& app) {
     if (pixels > kMaxImagePixels)
       return usage_error("the image must be at most " + std::to_string(kMaxImagePixels) +
                          " pixels, got " + std::to_string(pixels));
+    if (depth_last > depth_first)
+      return render_depth_sweep(scene, options, opt->output, depth_first, depth_last);
+    if (records) return render_and_record(scene, options, opt->output, recorded);
     RenderStats stats;
     const Image image = render(scene, options, &stats);
     const bool depth = render_mode(scene, options) == RenderMode::kDepth;

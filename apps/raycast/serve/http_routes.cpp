@@ -9,6 +9,8 @@
 #include <memory>
 #include <sstream>
 
+#include "render/explain.h"
+#include "render/explain_format.h"
 #include "scene/scene_error.h"
 #include "scene/yaml_reader.h"
 #include "serve/camera_request.h"
@@ -222,6 +224,31 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
                           "x and y must lie inside the " + std::to_string(w) + "x" +
                               std::to_string(h) + " image");
       send_json(res, 200, pick_json(*scene, camera, w, h, x, y));
+    });
+  });
+
+  // One pixel's ray tree at the view shown (docs/explain.md), 1 sample at the pixel's centre.
+  server.Post("/explain", [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
+    guarded(res, [&] {
+      const YAML::Node root = parse_request_object(req.body, max_body);
+      const SourceContext ctx{"request", "."};
+      Fields f(ctx, root, "explain");
+      const double x = f.number("x"), y = f.number("y");
+      f.finish();
+      CameraDesc camera;
+      const std::shared_ptr<const Scene> scene = loop.scene(&camera);
+      if (!scene) return send_error(res, 409, "the scene has not loaded yet");
+      const int w = scene->image.width, h = scene->image.height;
+      if (!(x >= 0 && x < w && y >= 0 && y < h))
+        return send_error(res, 400,
+                          "x and y must lie inside the " + std::to_string(w) + "x" +
+                              std::to_string(h) + " image");
+      ExplainOptions o;
+      o.x = int(x);
+      o.y = int(y);
+      o.spp = 1;
+      o.camera = camera;
+      send_json(res, 200, explain_json(*scene, explain_pixel(*scene, o)));
     });
   });
 }

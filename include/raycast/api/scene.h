@@ -133,6 +133,11 @@ class Scene {
 
   /// Renders the scene from `camera` (or the scene's camera when absent).
   Image render(const Camera* camera, const RenderOptions& options) const;
+  /// Pixel (x, y)'s ray tree (docs/explain.md) as the JSON text of `raycast explain --json`:
+  /// sample `sample` of the pixel at the scene's camera, `options`' width, height and samples
+  /// overriding the scene's (0: the scene's; the integrator option is not used). Throws
+  /// std::invalid_argument for a pixel or sample outside the image.
+  std::string explain_json(int x, int y, const RenderOptions& options, int sample = 0) const;
 
   struct Impl;  // the engine behind the wall (opaque to users)
 

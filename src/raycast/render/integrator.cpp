@@ -148,10 +148,29 @@ Color Integrator::diagnostic_hit(const Ray& ray, bool found, const SceneHit& hit
 }
 
 Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double weight) const {
+  if (state.recorder) [[unlikely]]
+    return whitted_recorded(ray, depth, state, weight);
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
   return whitted_hit(ray, hit, depth, state, weight);
+}
+
+Color Integrator::whitted_recorded(const Ray& ray, int depth, SampleState& state,
+                                   double weight) const {
+  RayRecorder& recorder = *state.recorder;
+  recorder.begin_ray(ray, depth);
+  ++state.rays;
+  SceneHit hit;
+  if (!scene_.intersect(ray, hit)) {
+    recorder.miss(scene_.render.background);
+    recorder.stop(RayStop::kMiss);
+    recorder.end_ray(scene_.render.background);
+    return scene_.render.background;
+  }
+  const Color radiance = whitted_hit(ray, hit, depth, state, weight);
+  recorder.end_ray(radiance);
+  return radiance;
 }
 
 inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
@@ -173,39 +192,57 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   // (a temporary at its own call: a std::optional here had GCC zero 120 bytes per hit).
   const unsigned exponent = exponents_[mi];
   Color result = m.ambient * mul(scene_.render.ambient, c);
+  if (state.recorder) [[unlikely]] {
+    state.recorder->hit(hit, si, mi, outside, n);
+    state.recorder->ambient(result);
+  }
   if (objects_[std::size_t(hit.object)].terminator)
     direct(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state, result);
   else
     direct(si, si, n, v, m, exponent, c, state, result);
-  if (depth >= scene_.render.max_depth) return result;
+  if (depth >= scene_.render.max_depth) {
+    if (state.recorder) [[unlikely]]
+      state.recorder->stop(RayStop::kMaxDepth);
+    return result;
+  }
 
   // Split between the mirror and the refracted ray (fixed weights, or exact Fresnel).
   double w_reflect = m.reflection, w_refract = m.transmission;
   Vec3 t_dir;
+  bool tir = false;
+  double fresnel = -1;
   if (w_refract > 0) {
     const double eta_i = outside ? 1 : m.ior, eta_t = outside ? m.ior : 1;
     const bool refracted = refract(wi, n, eta_i / eta_t, t_dir);
     if (m.fresnel) {
-      const double f = fresnel_dielectric(dot(v, n), eta_i, eta_t);
-      w_reflect += w_refract * f;
-      w_refract *= 1 - f;
+      fresnel = fresnel_dielectric(dot(v, n), eta_i, eta_t);
+      w_reflect += w_refract * fresnel;
+      w_refract *= 1 - fresnel;
     }
     if (!refracted) {  // total internal reflection: the refracted weight goes to the mirror ray
       w_reflect += w_refract;
       w_refract = 0;
+      tir = true;
     }
   }
   // Like POV-Ray's adc_bailout: a ray whose contribution to the pixel (the product of the
   // weights along its path) is below the cut-off is not traced (w > 0 keeps bailout 0 exact).
   const double cutoff = scene_.render.bailout;
+  if (state.recorder) [[unlikely]]
+    state.recorder->split(w_reflect, w_refract, tir, fresnel, cutoff / weight);
   if (w_reflect > 0 && weight * w_reflect >= cutoff) {
     const Vec3 m_dir = reflect(wi, n);
+    if (state.recorder) [[unlikely]]
+      state.recorder->child(RayKind::kReflection, w_reflect);
     result += w_reflect *
               whitted({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
   }
-  if (w_refract > 0 && weight * w_refract >= cutoff)
+  if (w_refract > 0 && weight * w_refract >= cutoff) {
+    if (state.recorder) [[unlikely]]
+      state.recorder->child(RayKind::kRefraction, w_refract);
     result += w_refract *
               whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
+  }
   return result;
 }
 
@@ -243,12 +280,18 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
   // point and spot lights have them, and add's shadow rays to such a light end at it).
   const DirectionLists* lists = nullptr;
   // One light direction l towards `target` (a point, or a direction when at infinity).
+  // The light of the loop below, for a recorder.
+  std::size_t light_index = 0;
   auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e)
       __attribute__((always_inline)) {
     const double nl = dot(n, l);
     // A light with no positive channel (e <= 0) gives a term <= 0: the test of the term below
     // drops it, without a test of e here for every light.
-    if (!(nl > 0)) return;
+    if (!(nl > 0)) {
+      if (state.recorder) [[unlikely]]
+        state.recorder->light({light_index, l, nl, {}, {}, false, {}, {}});
+      return;
+    }
     // Diffuse and Phong highlight: e * (kd nl C + ks max(0, r.v)^shininess), r = l mirrored
     // about n. pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
     const Vec3 r = 2 * nl * n - l;
@@ -261,6 +304,31 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const Color term = mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
+    if (state.recorder) [[unlikely]] {
+      const Color diffuse = mul(e, m.diffuse * nl * c);
+      const Color specular = highlight * e;
+      if (!(max_component(term) > 0)) {
+        state.recorder->light({light_index, l, nl, diffuse, specular, false, {}, {}});
+        return;
+      }
+      const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
+      const Vec3& o = origin_towards(from, l);
+      const Ray segment = lists         ? Ray{o, lists->apex() - o, 0, 1}
+                          : at_infinity ? Ray{o, target, 0, kInfinity}
+                                        : Ray{o, target - o, 0, 1};
+      // The same queries as below, in the same order.
+      Color through{1, 1, 1};
+      bool visible;
+      if (!any_transmissive_)
+        visible = !(lists ? blocked_to(o, *lists, state) : blocked(o, target, at_infinity, state));
+      else
+        visible = lists ? filters_to(o, *lists, state, through)
+                        : filters(o, target, at_infinity, state, through);
+      if (visible) sum += any_transmissive_ ? mul(through, term) : term;
+      state.recorder->light(
+          {light_index, l, nl, diffuse, specular, true, segment, visible ? through : Color{}});
+      return;
+    }
     if (!(max_component(term) > 0)) return;
     // (lit is si itself except on smooth meshes: then no side test.)
     const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
@@ -286,6 +354,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const Light& light = lights[li];
     const Color& emitted = emitted_by[li];
     lists = light_lists_[li];
+    light_index = li;
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "render/ray_recorder.h"
 #include "render/rng.h"
 #include "render/texture.h"
 #include "scene/scene.h"
@@ -12,10 +13,13 @@
 namespace raycast {
 
 /// The mutable state of one sample: its random numbers and its ray count (every intersect or
-/// occluded query on the scene counts one ray: primary, secondary and shadow rays alike).
+/// occluded query on the scene counts one ray: primary, secondary and shadow rays alike), and
+/// the observer of the Whitted integrator's work (render/ray_recorder.h; null: none, the render's
+/// case).
 struct SampleState {
   Rng rng;
   std::uint64_t rays = 0;
+  RayRecorder* recorder = nullptr;
 };
 
 /// A stable colour for a top-level object entry (the `id` integrator): a hash of the index,
@@ -52,6 +56,9 @@ class Integrator {
   Color shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
  private:
+  /// whitted() with state.recorder told every step (kept out of whitted's own frame).
+  [[gnu::noinline]] Color whitted_recorded(const Ray& ray, int depth, SampleState& state,
+                                           double weight) const;
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
   /// li_diagnostic() after its query (found, hit: scene.intersect's answer); counts no ray.
