@@ -18,13 +18,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
   int code = -1;
   std::string out;  // standard output, then standard error
 };
 
-Run run(const std::string& args) {
-  Run r;
+CliRun run(const std::string& args) {
+  CliRun r;
   const std::string command = std::string(RAYCAST_BINARY) + " " + args + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::array<char, 4096> buffer;
@@ -55,8 +55,8 @@ TEST_F(ExplainCli, Json_RootColourIsTheRenderedPixel) {
   ASSERT_EQ(run("render -o " + path("demo.pfm") + " --width 32 --height 24 --spp 1").code, 0);
   const Image image = load_pfm(path("demo.pfm"));
   for (const auto& [x, y] : {std::pair{16, 12}, std::pair{3, 20}, std::pair{25, 5}}) {
-    const Run r = run("explain --pixel " + std::to_string(x) + " " + std::to_string(y) +
-                      " --width 32 --height 24 --spp 1 --json");
+    const CliRun r = run("explain --pixel " + std::to_string(x) + " " + std::to_string(y) +
+                         " --width 32 --height 24 --spp 1 --json");
     ASSERT_EQ(r.code, 0) << r.out;
     const YAML::Node root = YAML::Load(r.out);
     EXPECT_EQ(float(root["color"][0].as<double>()), image.at(x, y).x);
@@ -67,14 +67,14 @@ TEST_F(ExplainCli, Json_RootColourIsTheRenderedPixel) {
 }
 
 TEST_F(ExplainCli, Text_ShowsTheShadingSum) {
-  const Run r = run("explain " + scene("scenes/demo.yaml") + " --pixel 320 300");
+  const CliRun r = run("explain " + scene("scenes/demo.yaml") + " --pixel 320 300");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("camera ray, depth 0"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("= ambient"), std::string::npos) << r.out;
 }
 
 TEST_F(ExplainCli, Svg_IsWritten) {
-  const Run r =
+  const CliRun r =
       run("explain " + scene("scenes/demo.yaml") + " --pixel 320 240 --svg " + path("tree.svg"));
   ASSERT_EQ(r.code, 0) << r.out;
   std::ifstream in(path("tree.svg"));
@@ -83,7 +83,7 @@ TEST_F(ExplainCli, Svg_IsWritten) {
 }
 
 TEST_F(ExplainCli, PixelOutsideTheImage_ExitTwo) {
-  const Run r = run("explain --pixel 640 0");
+  const CliRun r = run("explain --pixel 800 0");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("outside"), std::string::npos) << r.out;
   EXPECT_EQ(run("explain --pixel 1").code, 2);
@@ -96,7 +96,7 @@ TEST_F(ExplainCli, PovScene_IsExplained) {
                         "light_source { <3, 5, -4> color rgb 1 }\n"
                         "sphere { <0, 0.5, 0>, 0.8 pigment { color rgb <1, 0.2, 0.2> } }\n"
                         "plane { y, 0 pigment { color rgb 1 } }\n";
-  const Run r = run("explain " + pov + " --pixel 160 120 --width 320 --height 240 --json");
+  const CliRun r = run("explain " + pov + " --pixel 160 120 --width 320 --height 240 --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const YAML::Node root = YAML::Load(r.out);
   EXPECT_TRUE(root["ray"]["hit"].IsMap());
@@ -104,18 +104,18 @@ TEST_F(ExplainCli, PovScene_IsExplained) {
 }
 
 TEST_F(ExplainCli, RenderStats_PrintsTheReport) {
-  const Run r = run("render " + scene("scenes/demo.yaml") + " -o " + path("s.png") +
-                    " --width 32 --height 24 --spp 1 --stats");
+  const CliRun r = run("render " + scene("scenes/demo.yaml") + " -o " + path("s.png") +
+                       " --width 32 --height 24 --spp 1 --stats");
   ASSERT_EQ(r.code, 0) << r.out;
   for (const char* word : {"rays by kind", "shadow", "time by phase", "per pixel"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word << "\n" << r.out;
 }
 
 TEST_F(ExplainCli, TermAndCostOutputs_AreWrittenWithHeatmaps) {
-  const Run r = run("render " + scene("scenes/demo.yaml") + " -o " + path("t.pfm") +
-                    " --width 32 --height 24 --spp 1 --heatmap --aov "
-                    "ambient,diffuse,specular,reflection,refraction,shadowed,cost.rays,"
-                    "cost.depth,cost.time");
+  const CliRun r = run("render " + scene("scenes/demo.yaml") + " -o " + path("t.pfm") +
+                       " --width 32 --height 24 --spp 1 --heatmap --aov "
+                       "ambient,diffuse,specular,reflection,refraction,shadowed,cost.rays,"
+                       "cost.depth,cost.time");
   ASSERT_EQ(r.code, 0) << r.out;
   const Image beauty = load_pfm(path("t.pfm"));
   Image sum(32, 24);
@@ -135,8 +135,8 @@ TEST_F(ExplainCli, TermAndCostOutputs_AreWrittenWithHeatmaps) {
 }
 
 TEST_F(ExplainCli, MaxDepthSweep_WritesOneContactSheet) {
-  const Run r = run("render " + scene("scenes/demo.yaml") + " -o " + path("sweep.png") +
-                    " --width 40 --height 30 --spp 1 --max-depth 0-3");
+  const CliRun r = run("render " + scene("scenes/demo.yaml") + " -o " + path("sweep.png") +
+                       " --width 40 --height 30 --spp 1 --max-depth 0-3");
   ASSERT_EQ(r.code, 0) << r.out;
   const Image sheet = load_png(path("sweep.png"));
   EXPECT_EQ(sheet.width, 4 * 40 + 5 * 4);

@@ -48,6 +48,12 @@ std::string object_text(const Scene& scene, std::int32_t index) {
   return text;
 }
 
+/// The material's name, or its index for one without a name.
+std::string material_text(const Scene& scene, std::size_t index) {
+  const std::string& name = scene.materials[index].name;
+  return name.empty() ? (index == 0 ? std::string("default") : std::to_string(index)) : name;
+}
+
 const char* light_type_name(LightType type) {
   switch (type) {
     case LightType::kPoint:
@@ -90,7 +96,7 @@ class TextWriter {
     const ExplainedHit& h = *r.hit;
     line(indent, "hit " + object_text(scene_, h.hit.object) + " at t " + num(h.hit.local.t) + ", " +
                      (h.outside ? "entering" : "leaving") + ", material " +
-                     std::to_string(h.material));
+                     material_text(scene_, h.material));
     line(indent + 1, "point " + vec_text(h.si.p) + " normal " + vec_text(h.si.n) +
                          " shading normal " + vec_text(h.si.shading_n) + " uv (" + num(h.si.u) +
                          ", " + num(h.si.v) + ")");
@@ -138,6 +144,7 @@ class TextWriter {
   }
 
   void split(const ExplainedRay& r, int indent) {
+    if (!(r.w_reflect > 0) && !(r.w_refract > 0)) return;  // an opaque surface: nothing to split
     std::string text =
         "split: reflection weight " + num(r.w_reflect) + ", refraction weight " + num(r.w_refract);
     if (r.fresnel >= 0) text += " (Fresnel F " + num(r.fresnel) + ")";
