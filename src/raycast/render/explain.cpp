@@ -1,6 +1,7 @@
 #include "render/explain.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 
@@ -135,6 +136,7 @@ const char* ray_kind_name(RayKind kind) {
 }
 
 Explanation explain_pixel(const Scene& scene, const ExplainOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   Explanation e;
   e.width = options.width > 0 ? options.width : scene.image.width;
   e.height = options.height > 0 ? options.height : scene.image.height;
@@ -175,6 +177,7 @@ Explanation explain_pixel(const Scene& scene, const ExplainOptions& options) {
   }
   e.rays = state.rays;
   complete_tree(scene, e.root);
+  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return e;
 }
 

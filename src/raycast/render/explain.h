@@ -72,6 +72,7 @@ struct Explanation {
   Color color;  // the sample's linear colour: at 1 spp, the rendered pixel
   ExplainedRay root;
   std::uint64_t rays = 0;  // scene queries of the sample: camera, secondary and shadow rays
+  double seconds = 0;      // wall time of explain_pixel (set-up, tracing, the shadow details)
 };
 
 /// Traces sample `options.sample` of the pixel as `render` does at fixed samples (the earlier

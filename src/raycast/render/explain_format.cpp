@@ -294,7 +294,7 @@ std::string explain_json(const Scene& scene, const Explanation& e) {
   w.out = "{\"pixel\": [" + std::to_string(e.x) + ", " + std::to_string(e.y) +
           "], \"sample\": " + std::to_string(e.sample) + ", \"samples\": " + std::to_string(e.spp) +
           ", \"color\": " + vec_json(e.color) + ", \"rays\": " + std::to_string(e.rays) +
-          ", \"ray\": ";
+          ", \"seconds\": " + json_double(e.seconds) + ", \"ray\": ";
   w.ray(e.root);
   w.out += "}\n";
   return w.out;

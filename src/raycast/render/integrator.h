@@ -56,9 +56,10 @@ class Integrator {
   Color shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
  private:
-  /// whitted() with state.recorder told every step (kept out of whitted's own frame).
-  [[gnu::noinline]] Color whitted_recorded(const Ray& ray, int depth, SampleState& state,
-                                           double weight) const;
+  /// whitted() in one mode for the whole recursion: kRecord tells state.recorder every step;
+  /// without it the code has no trace of the recorder (a render pays one test per whitted()).
+  template <bool kRecord>
+  Color trace(const Ray& ray, int depth, SampleState& state, double weight) const;
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
   /// li_diagnostic() after its query (found, hit: scene.intersect's answer); counts no ray.
@@ -66,6 +67,7 @@ class Integrator {
   /// whitted() after its query, for a ray that hit (hit: scene.intersect's answer); counts no
   /// ray for it (its shadow and secondary rays are counted). Inlined into whitted() and li_hit()
   /// (as a call it cost whitted 1% more instructions).
+  template <bool kRecord>
   [[gnu::always_inline]] Color whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
                                            SampleState& state, double weight) const;
   /// The shadow segment's passage through object `index`: false when an opaque part of it
@@ -86,6 +88,7 @@ class Integrator {
   /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
   /// (render/terminator.h), the others from si. `exponent`: m.shininess as an integer (0: not
   /// one, std::pow). Adds the lights' sum to `result` in one addition (`result += sum`).
+  template <bool kRecord>
   void direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
               const Material& m, unsigned exponent, const Color& c, SampleState& state,
               Color& result) const;
