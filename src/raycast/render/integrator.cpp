@@ -138,28 +138,33 @@ Color Integrator::diagnostic_hit(const Ray& ray, bool found, const SceneHit& hit
   return {0, 0, 0};
 }
 
-// The recording mode is compiled in integrator_record.cpp: with both modes in this file GCC
-// stopped inlining offset_ray_origin into the render's mode (3 % more instructions on
+// The recording modes are compiled in integrator_record.cpp: with them in this file GCC stopped
+// inlining offset_ray_origin into the render's mode (3 % more instructions on
 // bench/scenes/glass.yaml under bench/render_instructions.sh).
-extern template Color Integrator::trace<true>(const Ray& ray, int depth, SampleState& state,
-                                              double weight) const;
+extern template Color Integrator::trace<Integrator::kCount>(const Ray& ray, int depth,
+                                                            SampleState& state,
+                                                            double weight) const;
+extern template Color Integrator::trace<Integrator::kRecord>(const Ray& ray, int depth,
+                                                             SampleState& state,
+                                                             double weight) const;
 
 Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double weight) const {
   if (state.recorder) [[unlikely]]
-    return trace<true>(ray, depth, state, weight);
+    return state.recorder->events ? trace<kRecord>(ray, depth, state, weight)
+                                  : trace<kCount>(ray, depth, state, weight);
   // trace<false>'s body, here rather than called: a call per camera ray cost 0.5 % more
   // instructions on bench/scenes/whitted.yaml.
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
-  return whitted_hit<false>(ray, hit, depth, state, weight);
+  return whitted_hit<kPlain>(ray, hit, depth, state, weight);
 }
 
 Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
                          SampleState& state) const {
   ++state.rays;
   if (mode_ != RenderMode::kWhitted) return diagnostic_hit(ray, found, hit);
-  return found ? whitted_hit<false>(ray, hit, 0, state, 1) : scene_.render.background;
+  return found ? whitted_hit<kPlain>(ray, hit, 0, state, 1) : scene_.render.background;
 }
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,

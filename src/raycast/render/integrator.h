@@ -44,6 +44,11 @@ class Integrator {
   /// (camera-ray packets, render/camera_packets.h).
   Color li_hit(const Ray& ray, bool found, const SceneHit& hit, SampleState& state) const;
 
+  /// How the Whitted recursion runs: kPlain without a recorder (a render: no trace of the
+  /// recorder in its code), kCount keeping only state.recorder->counts (RayRecorder::events
+  /// false), kRecord also calling the recorder's hooks.
+  enum TraceMode { kPlain, kCount, kRecord };
+
   /// Whitted radiance along a ray `depth` secondary bounces deep (primary rays: 0) whose
   /// radiance reaches the pixel multiplied by `weight` (primary rays: 1); its reflected and
   /// refracted rays are traced only when their weight is at least render.bailout.
@@ -56,9 +61,8 @@ class Integrator {
   Color shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
  private:
-  /// whitted() in one mode for the whole recursion: kRecord tells state.recorder every step;
-  /// without it the code has no trace of the recorder (a render pays one test per whitted()).
-  template <bool kRecord>
+  /// whitted() in one mode for the whole recursion (TraceMode).
+  template <TraceMode M>
   Color trace(const Ray& ray, int depth, SampleState& state, double weight) const;
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
@@ -67,7 +71,7 @@ class Integrator {
   /// whitted() after its query, for a ray that hit (hit: scene.intersect's answer); counts no
   /// ray for it (its shadow and secondary rays are counted). Inlined into whitted() and li_hit()
   /// (as a call it cost whitted 1% more instructions).
-  template <bool kRecord>
+  template <TraceMode M>
   [[gnu::always_inline]] Color whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
                                            SampleState& state, double weight) const;
   /// The shadow segment's passage through object `index`: false when an opaque part of it
@@ -88,7 +92,7 @@ class Integrator {
   /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
   /// (render/terminator.h), the others from si. `exponent`: m.shininess as an integer (0: not
   /// one, std::pow). Adds the lights' sum to `result` in one addition (`result += sum`).
-  template <bool kRecord>
+  template <TraceMode M>
   void direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
               const Material& m, unsigned exponent, const Color& c, SampleState& state,
               Color& result) const;

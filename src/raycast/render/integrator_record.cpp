@@ -1,5 +1,5 @@
-// The Whitted recursion's recording mode (render/whitted_trace.inl with kRecord true), compiled
-// apart from the render's mode so that adding it changes nothing in how that one is optimised.
+// The Whitted recursion's counting and recording modes (render/whitted_trace.inl), compiled
+// apart from the render's mode so that they change nothing in how that one is optimised.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -12,7 +12,9 @@
 
 namespace raycast {
 
-template Color Integrator::trace<true>(const Ray& ray, int depth, SampleState& state,
-                                       double weight) const;
+template Color Integrator::trace<Integrator::kCount>(const Ray& ray, int depth, SampleState& state,
+                                                     double weight) const;
+template Color Integrator::trace<Integrator::kRecord>(const Ray& ray, int depth, SampleState& state,
+                                                      double weight) const;
 
 }  // namespace raycast

@@ -21,37 +21,21 @@ constexpr std::array<const char*, 9> kNames = {"ambient",    "diffuse",    "spec
                                                "reflection", "refraction", "shadowed",
                                                "cost.rays",  "cost.depth", "cost.time"};
 
-/// What one sample's recorder gathers: the camera ray's terms, and its rays by kind.
+/// What one sample's recorder gathers: the camera ray's terms (its rays by kind are the
+/// integrator's RayRecorder::counts). Without terms to gather it asks for no events.
 class SampleRecorder final : public RayRecorder {
  public:
-  RayCounts counts;
   Color ambient_term, diffuse_term, specular_term, reflection_term, refraction_term;
   double lit = 0, unshadowed = 0;  // the direct light that arrived, and before shadows
-  int depth = 0;                   // the sample's deepest ray
 
   void reset() {
     ambient_term = diffuse_term = specular_term = reflection_term = refraction_term = Color{};
     lit = unshadowed = 0;
-    depth = 0;
     open_.clear();
   }
   void child(RayKind kind, double weight) override { next_ = {kind, weight}; }
-  void begin_ray(const Ray&, int depth) override {
-    const Open ray = open_.empty() ? Open{RayKind::kCamera, 1} : next_;
-    open_.push_back(ray);
-    switch (ray.kind) {
-      case RayKind::kCamera:
-        ++counts.camera;
-        break;
-      case RayKind::kReflection:
-        ++counts.reflection;
-        break;
-      case RayKind::kRefraction:
-        ++counts.refraction;
-        break;
-    }
-    counts.max_depth = std::max(counts.max_depth, depth);
-    this->depth = std::max(this->depth, depth);
+  void begin_ray(const Ray&, int) override {
+    open_.push_back(open_.empty() ? Open{RayKind::kCamera, 1} : next_);
   }
   // A camera ray that misses has the background as its one term: put with ambient.
   void miss(const Color& background) override {
@@ -62,9 +46,7 @@ class SampleRecorder final : public RayRecorder {
     if (open_.size() == 1) ambient_term = term;
   }
   void light(const LightSample& s) override {
-    if (!s.shadow_ray) return;
-    ++counts.shadow;
-    if (open_.size() != 1) return;
+    if (!s.shadow_ray || open_.size() != 1) return;
     const Color term = s.diffuse + s.specular;
     diffuse_term += mul(s.visibility, s.diffuse);
     specular_term += mul(s.visibility, s.specular);
@@ -151,13 +133,20 @@ RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
   result.image = Image(width, height);
   for (std::size_t k = 0; k < outputs.size(); ++k) result.outputs.emplace_back(width, height);
   tbb::enumerable_thread_specific<RayCounts> counts;
+  const bool timed =
+      std::find(outputs.begin(), outputs.end(), RecordedOutput::kCostTime) != outputs.end();
+  const bool terms = std::any_of(outputs.begin(), outputs.end(),
+                                 [](RecordedOutput k) { return k <= RecordedOutput::kShadowed; });
   const auto start = std::chrono::steady_clock::now();
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     SampleRecorder recorder;
+    recorder.events = terms;
     std::vector<Color> sums(outputs.size());
     for (int y = rows.begin(); y != rows.end(); ++y)
       for (int x = 0; x < width; ++x) {
-        const auto pixel_start = std::chrono::steady_clock::now();
+        // The clock only where cost.time asks for it (two reads per pixel are 10 % of a render).
+        const auto pixel_start =
+            timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
         SampleState state{Rng::for_pixel(x, y, scene.render.seed), 0, &recorder};
         std::fill(sums.begin(), sums.end(), Color{});
         Color sum{0, 0, 0};
@@ -170,23 +159,27 @@ RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
           }
           recorder.reset();
           const std::uint64_t rays_before = state.rays;
+          const int deepest = recorder.counts.max_depth;
+          recorder.counts.max_depth = 0;  // the sample's own deepest ray, below
           const Color c = integrator.li(camera.ray(x + ox, y + oy), state);
+          const int depth = recorder.counts.max_depth;
+          recorder.counts.max_depth = std::max(deepest, depth);
           sum += c;
           for (std::size_t o = 0; o < outputs.size(); ++o) {
             if (is_term(outputs[o])) {
               sums[o] += term_value(outputs[o], recorder);
               continue;
             }
-            const double g =
-                grey_value(outputs[o], recorder, state.rays - rays_before, recorder.depth);
+            const double g = grey_value(outputs[o], recorder, state.rays - rays_before, depth);
             sums[o] += Color{g, g, g};
           }
         }
         // As the renderer's fixed-sample loop: one sample's value as it is, else the mean.
         result.image.set(x, y, Vec3f(spp == 1 ? sum : sum / double(spp)));
-        const double micros = std::chrono::duration<double, std::micro>(
-                                  std::chrono::steady_clock::now() - pixel_start)
-                                  .count();
+        const double micros = timed ? std::chrono::duration<double, std::micro>(
+                                          std::chrono::steady_clock::now() - pixel_start)
+                                          .count()
+                                    : 0;
         for (std::size_t o = 0; o < outputs.size(); ++o) {
           const Color v = outputs[o] == RecordedOutput::kCostTime ? Color{micros, micros, micros}
                                                                   : sums[o] / double(spp);

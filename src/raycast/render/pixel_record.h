@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/image.h"
+#include "render/ray_recorder.h"
 #include "render/renderer.h"
 
 namespace raycast {
@@ -34,13 +35,6 @@ const char* recorded_output_name(RecordedOutput output);
 inline constexpr const char* kRecordedOutputNames =
     "ambient, diffuse, specular, reflection, refraction, shadowed, cost.rays, cost.depth, "
     "cost.time";
-
-/// Rays cast by kind over a render.
-struct RayCounts {
-  std::uint64_t camera = 0, reflection = 0, refraction = 0, shadow = 0;
-  int max_depth = 0;  // the deepest secondary ray
-  std::uint64_t total() const { return camera + reflection + refraction + shadow; }
-};
 
 struct RecordedRender {
   Image image;                 // the beauty image, as render() gives it at fixed samples

@@ -5,6 +5,7 @@
 // integrator calls a recorder only through SampleState::recorder, which is null in an ordinary
 // render: then each hook costs one predicted branch.
 #include <cstddef>
+#include <cstdint>
 
 #include "geometry/hit.h"
 #include "geometry/ray.h"
@@ -37,12 +38,23 @@ struct LightSample {
   Color visibility;         // what reached the hit through the segment: 0 blocked, 1 free
 };
 
+/// Rays cast by kind (shadow rays: those actually cast, one per light term above 0).
+struct RayCounts {
+  std::uint64_t camera = 0, reflection = 0, refraction = 0, shadow = 0;
+  int max_depth = 0;  // the deepest secondary ray
+  std::uint64_t total() const { return camera + reflection + refraction + shadow; }
+};
+
 /// The observer's hooks, in the order the integrator calls them for one ray:
 /// begin_ray; then miss, or hit, ambient, light (once per light term), split, and for each
 /// traced secondary ray a nested begin_ray ... end_ray after `child`; then end_ray.
 class RayRecorder {
  public:
   virtual ~RayRecorder() = default;
+  /// Kept by the integrator itself while the recorder is attached.
+  RayCounts counts;
+  /// false: only `counts` is kept and no hook is called (the integrator's cheaper counting mode).
+  bool events = true;
   /// The next begin_ray is a secondary ray of this kind carrying `weight` of its parent.
   virtual void child(RayKind kind, double weight) = 0;
   /// A ray is cast (the first of a sample is a camera ray).

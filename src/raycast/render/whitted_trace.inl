@@ -1,11 +1,12 @@
-// The Whitted recursion, written once for its two modes (render/integrator.h): included by
-// integrator.cpp (the render's mode, kRecord false) and integrator_record.cpp (kRecord true, the
-// mode of `raycast explain` and the recorded outputs), so that each translation unit is compiled
-// and inlined as if it had one mode only.
+// The Whitted recursion, written once for its three modes (Integrator::TraceMode): included by
+// integrator.cpp (kPlain, the render's) and integrator_record.cpp (kCount and kRecord, for
+// `raycast explain` and the recorded outputs), so that the render's translation unit is compiled
+// and inlined as if there were one mode only.
 // Needs, before it: render/integrator.h, geometry/spawn.h, render/optics.h, render/terminator.h,
 // <algorithm>, <cmath>, <numbers>.
 
 namespace raycast {
+
 
 namespace {
 
@@ -23,29 +24,34 @@ double spot_factor(const Light& light, const Vec3& from_light) {
 
 }  // namespace
 
-template <bool kRecord>
+template <Integrator::TraceMode M>
 Color Integrator::trace(const Ray& ray, int depth, SampleState& state, double weight) const {
-  if constexpr (kRecord) state.recorder->begin_ray(ray, depth);
+  if constexpr (M != kPlain) {
+    RayCounts& counts = state.recorder->counts;
+    if (depth == 0) ++counts.camera;  // secondary rays are counted where they are cast
+    counts.max_depth = std::max(counts.max_depth, depth);
+  }
+  if constexpr (M == kRecord) state.recorder->begin_ray(ray, depth);
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) {
-    if constexpr (kRecord) {
+    if constexpr (M == kRecord) {
       state.recorder->miss(scene_.render.background);
       state.recorder->stop(RayStop::kMiss);
       state.recorder->end_ray(scene_.render.background);
     }
     return scene_.render.background;
   }
-  if constexpr (!kRecord) {
-    return whitted_hit<false>(ray, hit, depth, state, weight);
+  if constexpr (M != kRecord) {
+    return whitted_hit<M>(ray, hit, depth, state, weight);
   } else {
-    const Color radiance = whitted_hit<true>(ray, hit, depth, state, weight);
+    const Color radiance = whitted_hit<M>(ray, hit, depth, state, weight);
     state.recorder->end_ray(radiance);
     return radiance;
   }
 }
 
-template <bool kRecord>
+template <Integrator::TraceMode M>
 inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
                                      SampleState& state, double weight) const {
   // The material is resolved once per hit (CSG and instances search their parts for it).
@@ -65,17 +71,17 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   // (a temporary at its own call: a std::optional here had GCC zero 120 bytes per hit).
   const unsigned exponent = exponents_[mi];
   Color result = m.ambient * mul(scene_.render.ambient, c);
-  if constexpr (kRecord) {
+  if constexpr (M == kRecord) {
     state.recorder->hit(hit, si, mi, outside, n);
     state.recorder->ambient(result);
   }
   if (objects_[std::size_t(hit.object)].terminator)
-    direct<kRecord>(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state,
+    direct<M>(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state,
                     result);
   else
-    direct<kRecord>(si, si, n, v, m, exponent, c, state, result);
+    direct<M>(si, si, n, v, m, exponent, c, state, result);
   if (depth >= scene_.render.max_depth) {
-    if constexpr (kRecord) state.recorder->stop(RayStop::kMaxDepth);
+    if constexpr (M == kRecord) state.recorder->stop(RayStop::kMaxDepth);
     return result;
   }
 
@@ -101,22 +107,24 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   // Like POV-Ray's adc_bailout: a ray whose contribution to the pixel (the product of the
   // weights along its path) is below the cut-off is not traced (w > 0 keeps bailout 0 exact).
   const double cutoff = scene_.render.bailout;
-  if constexpr (kRecord) state.recorder->split(w_reflect, w_refract, tir, fresnel, cutoff / weight);
+  if constexpr (M == kRecord) state.recorder->split(w_reflect, w_refract, tir, fresnel, cutoff / weight);
   if (w_reflect > 0 && weight * w_reflect >= cutoff) {
     const Vec3 m_dir = reflect(wi, n);
-    if constexpr (kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
-    result += w_reflect * trace<kRecord>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
+    if constexpr (M != kPlain) ++state.recorder->counts.reflection;
+    if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
+    result += w_reflect * trace<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
                                          weight * w_reflect);
   }
   if (w_refract > 0 && weight * w_refract >= cutoff) {
-    if constexpr (kRecord) state.recorder->child(RayKind::kRefraction, w_refract);
-    result += w_refract * trace<kRecord>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
+    if constexpr (M != kPlain) ++state.recorder->counts.refraction;
+    if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract);
+    result += w_refract * trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
                                          weight * w_refract);
   }
   return result;
 }
 
-template <bool kRecord>
+template <Integrator::TraceMode M>
 void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
                         const Material& m, unsigned exponent, const Color& c, SampleState& state,
                         Color& result) const {
@@ -152,7 +160,8 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     // A light with no positive channel (e <= 0) gives a term <= 0: the test of the term below
     // drops it, without a test of e here for every light.
     if (!(nl > 0)) {
-      if constexpr (kRecord) state.recorder->light({light_index, l, nl, {}, {}, false, {}, {}});
+      if constexpr (M == kRecord)
+        state.recorder->light({light_index, l, nl, {}, {}, false, {}, {}});
       return;
     }
     // Diffuse and Phong highlight: e * (kd nl C + ks max(0, r.v)^shininess), r = l mirrored
@@ -167,18 +176,16 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const Color term = mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
-    if constexpr (kRecord) {
-      const Color diffuse = mul(e, m.diffuse * nl * c);
-      const Color specular = highlight * e;
+    if constexpr (M != kPlain) {
       if (!(max_component(term) > 0)) {
-        state.recorder->light({light_index, l, nl, diffuse, specular, false, {}, {}});
+        if constexpr (M == kRecord)
+          state.recorder->light(
+              {light_index, l, nl, mul(e, m.diffuse * nl * c), highlight * e, false, {}, {}});
         return;
       }
+      ++state.recorder->counts.shadow;
       const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
       const Vec3& o = origin_towards(from, l);
-      const Ray segment = lists         ? Ray{o, lists->apex() - o, 0, 1}
-                          : at_infinity ? Ray{o, target, 0, kInfinity}
-                                        : Ray{o, target - o, 0, 1};
       // The same queries as below (shadow() is blocked() or filters() with their answer as a
       // colour: the filter product, which has a channel above 0 when the light is not blocked).
       Color visibility{1, 1, 1};
@@ -188,9 +195,14 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
         visibility = blocked_to(o, *lists, state) ? Color{} : Color{1, 1, 1};
       else if (!filters_to(o, *lists, state, visibility))
         visibility = Color{};
-      const bool visible = max_component(visibility) > 0;
-      if (visible) sum += any_transmissive_ ? mul(visibility, term) : term;
-      state.recorder->light({light_index, l, nl, diffuse, specular, true, segment, visibility});
+      if (max_component(visibility) > 0) sum += any_transmissive_ ? mul(visibility, term) : term;
+      if constexpr (M == kRecord) {
+        const Ray segment = lists         ? Ray{o, lists->apex() - o, 0, 1}
+                            : at_infinity ? Ray{o, target, 0, kInfinity}
+                                          : Ray{o, target - o, 0, 1};
+        state.recorder->light({light_index, l, nl, mul(e, m.diffuse * nl * c), highlight * e,
+                               true, segment, visibility});
+      }
       return;
     }
     if (!(max_component(term) > 0)) return;
