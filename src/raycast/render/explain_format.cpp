@@ -284,7 +284,8 @@ std::string explain_text(const Scene& scene, const Explanation& e) {
   w.line(0, "pixel (" + std::to_string(e.x) + ", " + std::to_string(e.y) + ") of " +
                 std::to_string(e.width) + "x" + std::to_string(e.height) + ", sample " +
                 std::to_string(e.sample) + " of " + std::to_string(e.spp) + ": color " +
-                vec_text(e.color) + ", " + std::to_string(e.rays) + " rays");
+                vec_text(e.color) + ", " + std::to_string(e.rays) + " rays, traced in " +
+                num(e.seconds * 1e3) + " ms");
   w.ray(e.root, 1);
   return w.out;
 }

@@ -4,6 +4,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,13 @@
 namespace raycast {
 
 namespace {
+
+/// CPU seconds used so far by the whole process (every thread).
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
 
 constexpr std::array<const char*, 9> kNames = {"ambient",    "diffuse",    "specular",
                                                "reflection", "refraction", "shadowed",
@@ -138,6 +146,7 @@ RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
   const bool terms = std::any_of(outputs.begin(), outputs.end(),
                                  [](RecordedOutput k) { return k <= RecordedOutput::kShadowed; });
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = process_cpu_seconds();
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     SampleRecorder recorder;
     recorder.events = terms;
@@ -209,6 +218,7 @@ RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
     stats->threads =
         int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
     stats->seconds = seconds;
+    stats->cpu_seconds = process_cpu_seconds() - cpu_start;
     stats->samples = std::uint64_t(width) * height * spp;
     stats->rays = result.counts.total();
   }
