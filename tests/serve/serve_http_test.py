@@ -195,7 +195,7 @@ def main():
         # Explain: the centre pixel's ray tree, its root colour `raycast explain --json`'s.
         status, tree = server.post("/explain", {"x": 40, "y": 30})
         assert status == 200 and tree["pixel"] == [40, 30], tree
-        assert tree["ray"]["kind"] == "camera" and tree["ray"]["hit"]["object"] == 1, tree
+        assert tree["ray"]["kind"] == "camera" and tree["ray"]["hit"]["shape"] == "sphere", tree
         cli = json.loads(subprocess.run(
             [os.environ["RAYCAST_BINARY"], "explain", scene, "--pixel", "40", "30", "--spp", "1",
              "--json"], capture_output=True, text=True, check=True).stdout)
