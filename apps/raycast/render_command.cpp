@@ -94,6 +94,45 @@ bool parse_antialias(const std::string& text, AntialiasSettings& aa, std::string
   return true;
 }
 
+/// --heatmap, --stats and --max-depth (docs/rendering.md "Term outputs" to "Depth sweep").
+void add_recording_flags(CLI::App& cmd, Options& opt) {
+  cmd.add_flag("--heatmap", opt.heatmap,
+               "Also write the shadowed and cost outputs as false-colour OUT.<name>.png with a "
+               "colour bar");
+  cmd.add_flag("--stats", opt.stats,
+               "Print a statistics report: rays by kind, time by phase, the BVHs' shape");
+  cmd.add_option("--max-depth", opt.max_depth,
+                 "Secondary ray depth (overrides the scene); A-B renders each depth and writes "
+                 "them side by side as one contact sheet");
+}
+
+/// Renders the image and the depth, normal, id and albedo outputs, writes them and prints the
+/// summary line. Returns the exit code.
+int render_and_save(const Scene& scene, const RenderOptions& options, const std::string& source,
+                    const std::string& output,
+                    const std::vector<std::pair<std::string, RenderMode>>& aovs) {
+  RenderStats stats;
+  const Image image = render(scene, options, &stats);
+  const bool depth = render_mode(scene, options) == RenderMode::kDepth;
+  try {
+    save_render(image, output, depth);
+    for (const auto& [name, aov] : aovs) {
+      RenderOptions aov_options = options;
+      aov_options.aov = aov;
+      aov_options.progress = false;
+      RenderStats aov_stats;
+      save_image(render(scene, aov_options, &aov_stats), aov_path(output, name));
+      stats.rays += aov_stats.rays;
+      stats.seconds += aov_stats.seconds;
+    }
+  } catch (const ImageError& e) {
+    return output_error(e.what());
+  }
+  std::fprintf(stderr, "raycast render: %s -> %s: %s\n", source.empty() ? "<demo>" : source.c_str(),
+               is_stdout(output) ? "<stdout>" : output.c_str(), format_summary(stats).c_str());
+  return 0;
+}
+
 }  // namespace
 
 Action add_render_command(CLI::App& app) {
@@ -124,14 +163,7 @@ Action add_render_command(CLI::App& app) {
                   "Comma-separated extra outputs written beside the image as OUT.<name>.pfm: "
                   "depth, normal, id, albedo; the Whitted terms ambient, diffuse, specular, "
                   "reflection, refraction, shadowed; the costs cost.rays, cost.depth, cost.time");
-  cmd->add_flag("--heatmap", opt->heatmap,
-                "Also write the shadowed and cost outputs as false-colour OUT.<name>.png with a "
-                "colour bar");
-  cmd->add_flag("--stats", opt->stats,
-                "Print a statistics report: rays by kind, time by phase, the BVHs' shape");
-  cmd->add_option("--max-depth", opt->max_depth,
-                  "Secondary ray depth (overrides the scene); A-B renders each depth and writes "
-                  "them side by side as one contact sheet");
+  add_recording_flags(*cmd, *opt);
   cmd->add_option("--frames", opt->frames,
                   "Render frames A-B: {frame} / {frame:04d} in the scene's data paths and in -o");
   return [opt, width, height, spp, threads, antialias] {
@@ -178,20 +210,12 @@ Action add_render_command(CLI::App& app) {
     recorded.stats = opt->stats;
     recorded.heatmap = opt->heatmap;
     const bool records = recorded.stats || !recorded.outputs.empty();
-    if (records && (antialias->count() > 0 || !opt->frames.empty() || !aovs.empty() ||
-                    depth_last > depth_first))
-      return usage_error(
-          "--stats and the term and cost outputs render fixed samples one image at a time: "
-          "not with --antialias, --frames, the depth, normal, id or albedo outputs or a "
-          "--max-depth sweep");
-    if (opt->heatmap && recorded.outputs.empty())
-      return usage_error("--heatmap draws the shadowed and cost outputs: add --aov cost.rays ...");
-    if (records && options.integrator && *options.integrator != RenderMode::kWhitted)
-      return usage_error("--stats and the term and cost outputs record the whitted integrator");
-    if ((records || depth_last > depth_first) && is_stdout(opt->output))
-      return usage_error(
-          "--stats, the term and cost outputs and a --max-depth sweep need a file, "
-          "not -");
+    if (const std::string problem = recording_problem(
+            recorded, antialias->count() > 0 || !opt->frames.empty() || !aovs.empty(),
+            depth_last > depth_first, options.integrator.value_or(RenderMode::kWhitted),
+            is_stdout(opt->output));
+        !problem.empty())
+      return usage_error(problem);
     if (is_stdout(opt->output)) {
       if (!aovs.empty()) return usage_error("--aov writes files beside -o: it needs a file, not -");
       if (!opt->frames.empty()) return usage_error("--frames writes one file per frame, not -");
@@ -234,28 +258,7 @@ Action add_render_command(CLI::App& app) {
     if (depth_last > depth_first)
       return render_depth_sweep(scene, options, opt->output, depth_first, depth_last);
     if (records) return render_and_record(scene, options, opt->output, recorded);
-    RenderStats stats;
-    const Image image = render(scene, options, &stats);
-    const bool depth = render_mode(scene, options) == RenderMode::kDepth;
-    try {
-      save_render(image, opt->output, depth);
-      for (const auto& [name, aov] : aovs) {
-        RenderOptions aov_options = options;
-        aov_options.aov = aov;
-        aov_options.progress = false;
-        RenderStats aov_stats;
-        save_image(render(scene, aov_options, &aov_stats), aov_path(opt->output, name));
-        stats.rays += aov_stats.rays;
-        stats.seconds += aov_stats.seconds;
-      }
-    } catch (const ImageError& e) {
-      return output_error(e.what());
-    }
-    std::fprintf(stderr, "raycast render: %s -> %s: %s\n",
-                 opt->scene.empty() ? "<demo>" : opt->scene.c_str(),
-                 is_stdout(opt->output) ? "<stdout>" : opt->output.c_str(),
-                 format_summary(stats).c_str());
-    return 0;
+    return render_and_save(scene, options, opt->scene, opt->output, aovs);
   };
 }
 

@@ -38,6 +38,22 @@ std::string take_recorded_outputs(const std::string& list,
   return rest;
 }
 
+std::string recording_problem(const RecordedRequest& request, bool others, bool sweep,
+                              RenderMode integrator, bool to_stdout) {
+  const bool records = request.stats || !request.outputs.empty();
+  if (records && (others || sweep))
+    return "--stats and the term and cost outputs render fixed samples one image at a time: "
+           "not with --antialias, --frames, the depth, normal, id or albedo outputs or a "
+           "--max-depth sweep";
+  if (request.heatmap && request.outputs.empty())
+    return "--heatmap draws the shadowed and cost outputs: add --aov cost.rays ...";
+  if (records && integrator != RenderMode::kWhitted)
+    return "--stats and the term and cost outputs record the whitted integrator";
+  if ((records || sweep) && to_stdout)
+    return "--stats, the term and cost outputs and a --max-depth sweep need a file, not -";
+  return "";
+}
+
 int render_and_record(const Scene& scene, const RenderOptions& options, const std::string& output,
                       const RecordedRequest& request) {
   std::vector<RecordedOutput> kinds;

@@ -29,6 +29,12 @@ int render_and_record(const Scene& scene, const RenderOptions& options, const st
 int render_depth_sweep(Scene& scene, const RenderOptions& options, const std::string& output,
                        int first, int last);
 
+/// Why the request cannot be rendered, or an empty string: `others` (adaptive antialiasing,
+/// frames or the depth, normal, id and albedo outputs), a depth `sweep`, an `integrator` other
+/// than whitted, or `to_stdout` conflict with recording; --heatmap needs an output to draw.
+std::string recording_problem(const RecordedRequest& request, bool others, bool sweep,
+                              RenderMode integrator, bool to_stdout);
+
 /// Splits the `--aov` list into the names render_recorded makes (appended to `recorded`) and
 /// the others (returned, comma-separated, for parse_aov_list).
 std::string take_recorded_outputs(const std::string& list,

@@ -96,6 +96,14 @@ class Integrator {
   void direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
               const Material& m, unsigned exponent, const Color& c, SampleState& state,
               Color& result) const;
+  /// direct()'s light term (sample: its light, l, N.L, diffuse and specular parts) in the
+  /// counting and recording modes: the render's shadow query for it from `o`, counted, the term
+  /// added to `sum` when visible, and the sample with its shadow ray told to the recorder
+  /// (kRecord).
+  template <TraceMode M>
+  void light_recorded(LightSample& sample, const Vec3& o, const Vec3& target, bool at_infinity,
+                      const DirectionLists* lists, const Color& term, SampleState& state,
+                      Color& sum) const;
   /// shadow() for a scene with no transmissive material: whether an object blocks the segment
   /// (visibility 0) or not (1).
   bool blocked(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;

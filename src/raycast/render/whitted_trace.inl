@@ -7,7 +7,6 @@
 
 namespace raycast {
 
-
 namespace {
 
 constexpr double kDegrees = std::numbers::pi / 180;
@@ -76,8 +75,7 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
     state.recorder->ambient(result);
   }
   if (objects_[std::size_t(hit.object)].terminator)
-    direct<M>(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state,
-                    result);
+    direct<M>(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state, result);
   else
     direct<M>(si, si, n, v, m, exponent, c, state, result);
   if (depth >= scene_.render.max_depth) {
@@ -107,19 +105,20 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   // Like POV-Ray's adc_bailout: a ray whose contribution to the pixel (the product of the
   // weights along its path) is below the cut-off is not traced (w > 0 keeps bailout 0 exact).
   const double cutoff = scene_.render.bailout;
-  if constexpr (M == kRecord) state.recorder->split(w_reflect, w_refract, tir, fresnel, cutoff / weight);
+  if constexpr (M == kRecord)
+    state.recorder->split(w_reflect, w_refract, tir, fresnel, cutoff / weight);
   if (w_reflect > 0 && weight * w_reflect >= cutoff) {
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
-    result += w_reflect * trace<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
-                                         weight * w_reflect);
+    result += w_reflect *
+              trace<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
   }
   if (w_refract > 0 && weight * w_refract >= cutoff) {
     if constexpr (M != kPlain) ++state.recorder->counts.refraction;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract);
-    result += w_refract * trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
-                                         weight * w_refract);
+    result += w_refract *
+              trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
   }
   return result;
 }
@@ -177,32 +176,15 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
     if constexpr (M != kPlain) {
+      LightSample sample{light_index,   l,     nl, mul(e, m.diffuse * nl * c),
+                         highlight * e, false, {}, {}};
       if (!(max_component(term) > 0)) {
-        if constexpr (M == kRecord)
-          state.recorder->light(
-              {light_index, l, nl, mul(e, m.diffuse * nl * c), highlight * e, false, {}, {}});
+        if constexpr (M == kRecord) state.recorder->light(sample);
         return;
       }
-      ++state.recorder->counts.shadow;
       const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
-      const Vec3& o = origin_towards(from, l);
-      // The same queries as below (shadow() is blocked() or filters() with their answer as a
-      // colour: the filter product, which has a channel above 0 when the light is not blocked).
-      Color visibility{1, 1, 1};
-      if (!lists)
-        visibility = shadow(o, target, at_infinity, state);
-      else if (!any_transmissive_)
-        visibility = blocked_to(o, *lists, state) ? Color{} : Color{1, 1, 1};
-      else if (!filters_to(o, *lists, state, visibility))
-        visibility = Color{};
-      if (max_component(visibility) > 0) sum += any_transmissive_ ? mul(visibility, term) : term;
-      if constexpr (M == kRecord) {
-        const Ray segment = lists         ? Ray{o, lists->apex() - o, 0, 1}
-                            : at_infinity ? Ray{o, target, 0, kInfinity}
-                                          : Ray{o, target - o, 0, 1};
-        state.recorder->light({light_index, l, nl, mul(e, m.diffuse * nl * c), highlight * e,
-                               true, segment, visibility});
-      }
+      light_recorded<M>(sample, origin_towards(from, l), target, at_infinity, lists, term, state,
+                        sum);
       return;
     }
     if (!(max_component(term) > 0)) return;
@@ -285,6 +267,31 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     }
   }
   result += sum;
+}
+
+template <Integrator::TraceMode M>
+void Integrator::light_recorded(LightSample& sample, const Vec3& o, const Vec3& target,
+                                bool at_infinity, const DirectionLists* lists, const Color& term,
+                                SampleState& state, Color& sum) const {
+  ++state.recorder->counts.shadow;
+  // The render's queries (shadow() is blocked() or filters() with their answer as a colour: the
+  // filter product, which has a channel above 0 when the light is not blocked).
+  Color visibility{1, 1, 1};
+  if (!lists)
+    visibility = shadow(o, target, at_infinity, state);
+  else if (!any_transmissive_)
+    visibility = blocked_to(o, *lists, state) ? Color{} : Color{1, 1, 1};
+  else if (!filters_to(o, *lists, state, visibility))
+    visibility = Color{};
+  if (max_component(visibility) > 0) sum += any_transmissive_ ? mul(visibility, term) : term;
+  if constexpr (M == kRecord) {
+    sample.shadow_ray = true;
+    sample.shadow = lists         ? Ray{o, lists->apex() - o, 0, 1}
+                    : at_infinity ? Ray{o, target, 0, kInfinity}
+                                  : Ray{o, target - o, 0, 1};
+    sample.visibility = visibility;
+    state.recorder->light(sample);
+  }
 }
 
 }  // namespace raycast
