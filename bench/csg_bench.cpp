@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/loader.h"
-#include "scene/prototype.h"
+#include "load/loader.h"
+#include "objects/prototype.h"
 
 namespace raycast {
 namespace {

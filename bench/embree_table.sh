@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The mesh table against Embree (docs/performance-mesh.md): every cell of issue 8's grid run RUNS
+# The mesh table against Embree (docs/performance.md): every cell of the grid below run RUNS
 # times with `raycast bench --vs embree --json`, then one markdown row per cell with the median
 # ratio by wall time, the median CPU-time ratio and its range, the median run's Mrays/s, the
 # build CPU ratio (Embree / raycast) and raycast's bytes per triangle.

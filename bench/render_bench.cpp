@@ -2,8 +2,8 @@
 // integrator, reporting rays per second.
 #include <benchmark/benchmark.h>
 
+#include "load/demo_scene.h"
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
 
 namespace {
 

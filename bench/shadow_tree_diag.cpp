@@ -1,5 +1,5 @@
 // Diagnostic (not part of the library, not a test): why Embree traces the bench's shadow rays
-// faster than raycast (docs/performance-mesh.md, session 12: shadow12). It separates the tree from
+// faster than raycast, where it does. It separates the tree from
 // the kernel:
 //   - counts, per shadow ray, what a scalar copy of the any-hit walk visits in a mesh BVH (nodes,
 //     leaves, groups of 4 triangles, triangles, bytes of nodes and leaves), and the tree's SAH

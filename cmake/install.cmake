@@ -3,8 +3,8 @@
 
 # Every library target of the engine's layers (whatever layers exist), plus the public API.
 get_property(layer_targets DIRECTORY ${PROJECT_SOURCE_DIR}/src/raycast PROPERTY BUILDSYSTEM_TARGETS)
-set(raycast_install_targets raycast raycast_options raycast_public)
-set(raycast_pc_libs "-lraycast_public")
+set(raycast_install_targets raycast raycast_options)
+set(raycast_pc_libs "")
 foreach(t ${layer_targets})
   get_target_property(type ${t} TYPE)
   if(t MATCHES "^raycast_" AND (type STREQUAL "STATIC_LIBRARY" OR type STREQUAL "INTERFACE_LIBRARY"))
@@ -13,12 +13,13 @@ foreach(t ${layer_targets})
 endforeach()
 # Link order for pkg-config: higher layers first. A static layer missing here stops the
 # configure, so that a new layer cannot leave the pkg-config link incomplete.
-set(raycast_pc_order api render scene pov mesh csg volume io accel geometry math)
+set(raycast_pc_order api cast render load pov scene objects mesh csg volume accel geometry io math)
 foreach(layer ${raycast_pc_order})
   if(TARGET raycast_${layer})
     get_target_property(type raycast_${layer} TYPE)
     if(type STREQUAL "STATIC_LIBRARY")
       string(APPEND raycast_pc_libs " -lraycast_${layer}")
+      string(STRIP "${raycast_pc_libs}" raycast_pc_libs)
     endif()
   endif()
 endforeach()

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Benchmarks of the Python module (docs/performance-python.md). Short runs; say the load.
+"""Benchmarks of the Python module (docs/performance.md). Short runs; say the load.
 
   PYTHONPATH=build/release/python /usr/bin/python3 python/bench_python.py [--open3d] [--distance]
 

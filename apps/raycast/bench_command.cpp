@@ -5,7 +5,7 @@
 
 #include "bench/bench.h"
 #include "commands.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
 
 namespace raycast::cli {
 

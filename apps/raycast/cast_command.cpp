@@ -3,12 +3,12 @@
 #include <iostream>
 #include <string>
 
-#include "api/cast.h"
+#include "cast/cast.h"
 #include "commands.h"
 #include "distributed/distributed.h"
 #include "distributed/launch.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast::cli {
 

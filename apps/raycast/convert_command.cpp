@@ -5,9 +5,9 @@
 #include <string>
 
 #include "commands.h"
+#include "io/scene_error.h"
+#include "load/pov_loader.h"
 #include "pov/import.h"
-#include "scene/pov_loader.h"
-#include "scene/scene_error.h"
 
 namespace raycast::cli {
 

@@ -11,8 +11,8 @@
 #include "render/explain.h"
 #include "render/explain_format.h"
 #include "render/explain_svg.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
 
 namespace raycast::cli {
 

@@ -5,8 +5,8 @@
 #include <thread>
 
 #include "commands.h"
+#include "load/loader.h"
 #include "math/isa.h"
-#include "scene/loader.h"
 
 namespace raycast::cli {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "commands.h"
-#include "scene/did_you_mean.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "load/did_you_mean.h"
 
 namespace {
 

@@ -13,14 +13,14 @@
 #include "distributed/distributed.h"
 #include "distributed/launch.h"
 #include "io/image.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
+#include "load/validate.h"
 #include "output_file.h"
 #include "render/renderer.h"
 #include "render_frames.h"
 #include "render_output.h"
 #include "render_recorded.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
-#include "scene/validate.h"
 
 namespace raycast::cli {
 

@@ -6,9 +6,9 @@
 
 #include "distributed/distributed.h"
 #include "distributed/launch.h"
+#include "load/frame_pattern.h"
+#include "load/loader.h"
 #include "output_file.h"
-#include "scene/frame_pattern.h"
-#include "scene/loader.h"
 
 namespace raycast::cli {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "commands.h"
-#include "scene/validate.h"
+#include "load/validate.h"
 
 namespace raycast::cli {
 namespace {

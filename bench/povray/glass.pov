@@ -1,4 +1,4 @@
-// POV-Ray 3.7 twin of bench/scenes/glass.yaml (benchmark suite, docs/performance-render.md).
+// POV-Ray 3.7 twin of bench/scenes/glass.yaml (benchmark suite, docs/performance.md).
 // Glass as in analytic.pov: raycast's transmission t, colour C, ior and Fresnel are rgbt <C, t>,
 // reflection { 0, 1 fresnel on } with conserve_energy and interior ior. POV-Ray's shadows through
 // transmit pigments are filtered like raycast's (transmission * C per object, unrefracted).

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes the benchmark suite's mesh (docs/performance-render.md) in both formats, same vertices:
+"""Writes the benchmark suite's mesh (docs/performance.md) in both formats, same vertices:
 bench/scenes/bumpy.obj for raycast and bench/povray/bumpy.inc (a mesh2) for POV-Ray.
 A latitude/longitude sphere of 64 x 32 quads (4,032 triangles once the pole quads become single
 triangles), radius 1 displaced radially by 0.08 sin(5 theta) sin(4 phi): deterministic, no

@@ -1,4 +1,4 @@
-// POV-Ray 3.7 twin of bench/scenes/mesh.yaml (benchmark suite, docs/performance-render.md).
+// POV-Ray 3.7 twin of bench/scenes/mesh.yaml (benchmark suite, docs/performance.md).
 // bumpy.inc (bench/povray/make_mesh.py) holds the same vertices and triangles as bumpy.obj.
 // Conventions as in analytic.pov.
 #version 3.7;

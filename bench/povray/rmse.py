@@ -4,7 +4,7 @@ colour channel, of the difference of their sRGB codes scaled to [0, 1] (8-bit: c
 16-bit: code / 65535).
     bench/povray/rmse.py A.png B.png        -> prints the RMSE
 The images are compared pixel by pixel: both renderers put pixel (0, 0) at the top-left corner of
-the same view (docs/performance-render.md). Reads non-interlaced grey/RGB/RGBA PNGs of 8 or 16
+the same view (docs/performance.md). Reads non-interlaced grey/RGB/RGBA PNGs of 8 or 16
 bits with zlib (alpha is ignored)."""
 import math
 import struct

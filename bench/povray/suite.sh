@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The rendering benchmark suite against POV-Ray 3.7 (docs/performance-render.md): every scene
+# The rendering benchmark suite against POV-Ray 3.7 (docs/performance.md): every scene
 # rendered by both at the same size on each thread count, at 1 sample per pixel and with
 # antialiasing, reporting POV-Ray's own "Trace Time" (and the CPU-seconds it prints beside it)
 # against raycast's render time (the pixel loop's wall and CPU time from its summary line), the

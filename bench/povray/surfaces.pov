@@ -1,4 +1,4 @@
-// POV-Ray 3.7 twin of bench/scenes/surfaces.yaml (benchmark suite, docs/performance-render.md).
+// POV-Ray 3.7 twin of bench/scenes/surfaces.yaml (benchmark suite, docs/performance.md).
 // Conventions as in analytic.pov. The heart is a sturm polynomial inside its box, the implicit
 // surfaces isosurfaces with contained_by boxes and max_gradient bounds checked by hand
 // (sin/cos: |grad| <= 6.9 in its box; gyroid: each partial derivative is at most 2 in size, so

@@ -1,4 +1,4 @@
-// POV-Ray 3.7 twin of bench/scenes/textured.yaml (benchmark suite, docs/performance-render.md).
+// POV-Ray 3.7 twin of bench/scenes/textured.yaml (benchmark suite, docs/performance.md).
 // globe.png is bench/scenes/globe.png (bench/povray/make_texture.py). raycast's sphere has its
 // pole on z and u = atan2(y, x) / 2 pi; turned by -90 about x its pole is +y and its u runs from
 // +x towards -z. POV-Ray's spherical map (map_type 1) has its pole on y and u = atan2(x, z) / 2 pi,

@@ -1,4 +1,4 @@
-// POV-Ray 3.7 twin of bench/scenes/whitted.yaml (benchmark suite, docs/performance-render.md).
+// POV-Ray 3.7 twin of bench/scenes/whitted.yaml (benchmark suite, docs/performance.md).
 // Conventions as in analytic.pov: coordinates copied, right -x*aspect makes the frame right-handed,
 // angle is the horizontal fov for raycast's vertical 40 degrees, #default is raycast's default
 // material, max_trace_level = max_depth + 1 (POV-Ray counts the primary ray).

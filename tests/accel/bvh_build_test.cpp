@@ -70,7 +70,7 @@ TEST(BvhBuild, RandomBoxes_EveryPrimOnceAndBoxesNest) {
     c.leaf_block = seed % 2 ? 4 : 1;
     c.bins = seed % 2 ? 16 : 32;
     c.parallel_binning_threshold = 2048;
-    const Bvh bvh = build_bvh(in.boxes, in.centres, c);
+    const Bvh bvh = build_bvh(in.boxes, c);
     check_structure(bvh, in, c.max_leaf_size);
   }
 }
@@ -94,7 +94,7 @@ std::vector<std::uint32_t> leaves_in_order(const Bvh& bvh) {
 
 Bvh build_with_threads(const Input& in, const BvhBuildConfig& c, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-  return build_bvh(in.boxes, in.centres, c);
+  return build_bvh(in.boxes, c);
 }
 
 TEST(BvhBuild, OneTwoAndFourThreads_SameTree) {
@@ -137,14 +137,14 @@ TEST(BvhBuild, SerialOrParallelPartition_SameLeaves) {
     }
     return out;
   };
-  EXPECT_EQ(sorted_leaves(build_bvh(in.boxes, in.centres, serial)),
-            sorted_leaves(build_bvh(in.boxes, in.centres, parallel)));
+  EXPECT_EQ(sorted_leaves(build_bvh(in.boxes, serial)),
+            sorted_leaves(build_bvh(in.boxes, parallel)));
 }
 
 TEST(BvhBuild, NearestTraversal_MatchesBruteForceOverBoxes) {
   std::mt19937 rng(7);
   const Input in = random_boxes(rng, 3000, false);
-  const Bvh bvh = build_bvh(in.boxes, in.centres);
+  const Bvh bvh = build_bvh(in.boxes);
   std::uniform_real_distribution<double> u(-12, 12);
   for (int i = 0; i < 500; ++i) {
     const Vec3 o{u(rng), u(rng), u(rng)}, d{u(rng), u(rng), u(rng)};
@@ -164,7 +164,7 @@ TEST(BvhBuild, NearestTraversal_MatchesBruteForceOverBoxes) {
 }
 
 TEST(BvhBuild, Empty_HasNoNodes) {
-  const Bvh bvh = build_bvh({}, {});
+  const Bvh bvh = build_bvh({});
   EXPECT_TRUE(bvh.empty());
   EXPECT_TRUE(bvh.prims.empty());
 }
@@ -186,7 +186,7 @@ TEST(BvhBuild, HugeAndTinyCoordinates_EveryPrimOnceAndBoxesHoldThem) {
   in.centres.push_back({0, 0, 0});
   BvhBuildConfig c;
   c.max_leaf_size = 4;
-  check_structure(build_bvh(in.boxes, in.centres, c), in, 4);
+  check_structure(build_bvh(in.boxes, c), in, 4);
 }
 
 TEST(BvhBuild, BuildRef_RoundsOutwardsToTheNearestFloats) {
@@ -209,7 +209,7 @@ TEST(BvhBuild, SahCost_TwoSeparateBoxes) {
                  {{0.5, 0.5, 0.5}, {9.5, 0.5, 0.5}}};
   BvhBuildConfig c;
   c.max_leaf_size = 1;
-  const Bvh bvh = build_bvh(in.boxes, in.centres, c);
+  const Bvh bvh = build_bvh(in.boxes, c);
   ASSERT_EQ(bvh.nodes.size(), 3u);
   EXPECT_DOUBLE_EQ(sah_cost(bvh, c), 1 + 2 * 3.0 / 21);
   c.traversal_cost = 2;

@@ -118,7 +118,7 @@ void compare_with_brute_force(const Bvh& bvh, const Prims& p, testing::Rng& rng,
 }
 
 TEST(Bvh, NoPrimitives_EmptyTreeAndNoHits) {
-  const Bvh bvh = build_bvh({}, {});
+  const Bvh bvh = build_bvh({});
   EXPECT_TRUE(bvh.empty());
   EXPECT_TRUE(bvh.prims.empty());
   double tmax = kInfinity;
@@ -134,7 +134,7 @@ TEST(Bvh, NoPrimitives_EmptyTreeAndNoHits) {
 TEST(Bvh, OnePrimitive_SingleLeaf) {
   Prims p;
   p.add(make_box({1, -1, -1}, {2, 1, 1}));
-  const Bvh bvh = build_bvh(p.boxes, p.centres);
+  const Bvh bvh = build_bvh(p.boxes);
   ASSERT_EQ(bvh.nodes.size(), 1u);
   EXPECT_TRUE(bvh.nodes[0].is_leaf());
   check_structure(bvh, p, 8);
@@ -155,7 +155,7 @@ TEST(Bvh, AllEqualCentres_SplitByIndexAndStillCorrect) {
   }
   BvhBuildConfig config;
   config.max_leaf_size = 4;
-  const Bvh bvh = build_bvh(p.boxes, p.centres, config);
+  const Bvh bvh = build_bvh(p.boxes, config);
   const int depth = check_structure(bvh, p, 4);
   EXPECT_LE(depth, 12);  // halving 1000 down to leaves of 4
   testing::Rng rng(2);
@@ -168,7 +168,7 @@ TEST(Bvh, RandomBoxes_NearestAndAnyHitMatchBruteForce) {
   testing::Rng rng(seed);
   for (int n : {2, 3, 17, 100, 2000}) {
     const Prims p = random_boxes(rng, n, 10);
-    const Bvh bvh = build_bvh(p.boxes, p.centres);
+    const Bvh bvh = build_bvh(p.boxes);
     check_structure(bvh, p, BvhBuildConfig{}.max_leaf_size);
     compare_with_brute_force(bvh, p, rng, n >= 2000 ? 300 : 1000, 12);
   }
@@ -181,8 +181,8 @@ TEST(Bvh, ParallelBuild_SameTreeAsSerial) {
   serial.parallel_threshold = ~std::size_t{0};
   BvhBuildConfig parallel;
   parallel.parallel_threshold = 64;
-  const Bvh a = build_bvh(p.boxes, p.centres, serial);
-  const Bvh b = build_bvh(p.boxes, p.centres, parallel);
+  const Bvh a = build_bvh(p.boxes, serial);
+  const Bvh b = build_bvh(p.boxes, parallel);
   check_structure(b, p, 8);
   EXPECT_EQ(a.prims, b.prims);
   compare_with_brute_force(b, p, rng, 100, 55);
@@ -199,7 +199,7 @@ TEST(Bvh, SuperExponentiallySpacedBoxes_DepthBoundedAndTraversalComplete) {
   }
   BvhBuildConfig config;
   config.max_leaf_size = 1;
-  const Bvh bvh = build_bvh(p.boxes, p.centres, config);
+  const Bvh bvh = build_bvh(p.boxes, config);
   const int depth = check_structure(bvh, p, 1);
   EXPECT_LE(depth, 100);
   // A ray along the chain crosses every box: every one must be visited, the last one found.

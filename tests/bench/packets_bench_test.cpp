@@ -5,7 +5,7 @@
 
 #include "bench/bench.h"
 #include "bench/embree_peer.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
 
 namespace raycast {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "csg_oracle.h"
-#include "scene/prototype.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "objects/prototype.h"
 
 namespace raycast {
 namespace {

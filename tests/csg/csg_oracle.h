@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "scene/loader.h"
+#include "load/loader.h"
 #include "support/random.h"
 
 namespace raycast::csg_test {

@@ -2,8 +2,8 @@
 // hit (the subtracted sphere's own, the library entry's own), not the enclosing object's.
 #include <gtest/gtest.h>
 
+#include "load/loader.h"
 #include "render/texture.h"
-#include "scene/loader.h"
 
 namespace raycast {
 namespace {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "csg_oracle.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
 
 namespace raycast {
 namespace {

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -10,9 +10,9 @@
 
 #include "csg/first_crossing.h"
 #include "csg_oracle.h"
+#include "objects/csg_tree.h"
+#include "objects/prototype.h"
 #include "random_tree.h"
-#include "scene/csg_tree.h"
-#include "scene/prototype.h"
 
 namespace raycast {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "csg/span_ops.h"
-#include "scene/csg_tree.h"
+#include "objects/csg_tree.h"
 
 namespace raycast::csg_test {
 

@@ -12,9 +12,9 @@
 #include <string>
 #include <string_view>
 
-#include "mesh/mesh_file.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "io/mesh_file.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "scene/pov_loader.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "load/pov_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -7,9 +7,9 @@
 #include <sstream>
 #include <string>
 
-#include "api/cast.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "cast/cast.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const raycast::Scene scene = raycast::load_scene_text(

@@ -1,4 +1,5 @@
 #include "geometry/algebraic.h"
+#include "geometry/shape_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -337,7 +338,7 @@ TEST(Algebraic, Heart_RandomRaysMatchLongDoubleReference) {
   const Algebraic s = make_algebraic(kHeart, Aabb{{-1.5, -1, -1.5}, {1.5, 1, 1.5}});
   int compared = 0;
   for (unsigned seed = 0; seed < 600; ++seed) {
-    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
     const Vec3 o{4 * u(rng), 4 * u(rng), 4 * u(rng)};
@@ -369,19 +370,8 @@ TEST(Algebraic, Heart_SpansMatchInsideOracleAndNormalsOutward) {
     SCOPED_TRACE(i);
     const Vec3 o{3 * u(rng), 3 * u(rng), 3 * u(rng)};
     const Ray r{o, Vec3{1.2 * u(rng), 0.7 * u(rng), 1.2 * u(rng)} - o};
-    SpanList l;
-    spans(s, r, l);
-    for (int k = 0; k <= 300; ++k) {
-      const double t = 3.0 * k / 300;
-      bool in_span = false, near_end = false;
-      for (const Span& sp : l) {
-        in_span = in_span || (t >= sp.in.t && t <= sp.out.t);
-        near_end = near_end || std::abs(t - sp.in.t) < 1e-9 || std::abs(t - sp.out.t) < 1e-9;
-      }
-      if (!near_end) {
-        EXPECT_EQ(in_span, contains(s, r.at(t))) << "t " << t;
-      }
-    }
+    testing::check_spans_against_oracle(
+        s, r, [&](const Vec3& p) { return contains(s, p); }, 0, 3.0, 300);
     LocalHit h;
     if (!intersect(s, r, h)) continue;
     const SurfaceInfo si = surface(s, r, h);

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "scene/object.h"
+#include "objects/object.h"
 #include "shape_checks.h"
 
 namespace raycast {

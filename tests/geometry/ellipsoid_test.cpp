@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "geometry/sphere.h"
-#include "scene/object.h"
+#include "objects/object.h"
 #include "shape_checks.h"
 
 namespace raycast {

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "scene/object.h"
+#include "objects/object.h"
 #include "shape_checks.h"
 
 namespace raycast {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "scene/object.h"
+#include "objects/object.h"
 #include "shape_checks.h"
 
 namespace raycast {

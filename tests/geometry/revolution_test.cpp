@@ -1,4 +1,5 @@
 #include "geometry/revolution.h"
+#include "geometry/shape_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -108,7 +109,7 @@ TEST(Revolution, Frustum_RandomRaysMatchLongDoubleReference) {
   const Revolution s = make_revolution({{1, 0}, {0.5, 2}}, ProfileCurve::kLinear);
   int compared = 0;
   for (unsigned seed = 0; seed < 800; ++seed) {
-    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
     const Vec3 o{3 * u(rng), 3 * u(rng), 1 + 3 * u(rng)};
@@ -153,7 +154,7 @@ TEST(Revolution, BSplineVase_RandomRaysMatchLongDoubleReference) {
   const Revolution s = make_revolution(kVase, ProfileCurve::kBSpline);
   int compared = 0;
   for (unsigned seed = 0; seed < 300; ++seed) {
-    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
     const Vec3 o{4 * u(rng), 4 * u(rng), 1.5 + 1.2 * u(rng)};
@@ -184,19 +185,8 @@ TEST(Revolution, BSplineVase_SpansMatchInsideOracleAndNormalsOutward) {
     SCOPED_TRACE(i);
     const Vec3 o{3 * u(rng), 3 * u(rng), 1.5 + 3 * u(rng)};
     const Ray r{o, Vec3{u(rng), u(rng), 1.5 + 1.5 * u(rng)} - o};
-    SpanList l;
-    spans(s, r, l);
-    for (int k = 0; k <= 300; ++k) {
-      const double t = -1 + 4.0 * k / 300;
-      bool in_span = false, near_end = false;
-      for (const Span& sp : l) {
-        in_span = in_span || (t >= sp.in.t && t <= sp.out.t);
-        near_end = near_end || std::abs(t - sp.in.t) < 1e-9 || std::abs(t - sp.out.t) < 1e-9;
-      }
-      if (!near_end) {
-        EXPECT_EQ(in_span, contains(s, r.at(t))) << "t " << t;
-      }
-    }
+    testing::check_spans_against_oracle(
+        s, r, [&](const Vec3& p) { return contains(s, p); }, -1, 3.0, 300);
     LocalHit h;
     if (!intersect(s, r, h)) continue;
     const SurfaceInfo si = surface(s, r, h);

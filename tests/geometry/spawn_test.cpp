@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "scene/object.h"
+#include "objects/object.h"
 #include "shape_checks.h"
 #include "support/objects.h"
 

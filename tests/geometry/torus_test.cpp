@@ -1,4 +1,5 @@
 #include "geometry/torus.h"
+#include "geometry/shape_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -126,7 +127,7 @@ TEST(Torus, RandomRays_MatchLongDoubleReference) {
   const Torus s = make_torus(1.0, 0.3);
   int compared = 0;
   for (unsigned seed = 0; seed < 1500; ++seed) {
-    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
     const Vec3 o{4 * u(rng), 4 * u(rng), 4 * u(rng)};
@@ -183,19 +184,8 @@ TEST(Torus, SpansMatchInsideOracle) {
     const Vec3 o{3 * u(rng), 3 * u(rng), 3 * u(rng)};
     const Vec3 target{1.2 * u(rng), 1.2 * u(rng), 0.4 * u(rng)};
     const Ray r{o, target - o};
-    SpanList l;
-    spans(s, r, l);
-    for (int k = 0; k <= 400; ++k) {
-      const double t = -1 + 4.0 * k / 400;
-      bool in_span = false, near_end = false;
-      for (const Span& sp : l) {
-        in_span = in_span || (t >= sp.in.t && t <= sp.out.t);
-        near_end = near_end || std::abs(t - sp.in.t) < 1e-9 || std::abs(t - sp.out.t) < 1e-9;
-      }
-      if (!near_end) {
-        EXPECT_EQ(in_span, contains(s, r.at(t))) << "t " << t;
-      }
-    }
+    testing::check_spans_against_oracle(
+        s, r, [&](const Vec3& p) { return contains(s, p); }, -1, 3.0, 400);
   }
 }
 

@@ -1,11 +1,11 @@
-// Shapes placed by a transform (through scene/object.h's Object) against the same shape built
+// Shapes placed by a transform (through objects/object.h's Object) against the same shape built
 // directly in world space.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "scene/object.h"
+#include "objects/object.h"
 #include "shape_checks.h"
 #include "support/objects.h"
 

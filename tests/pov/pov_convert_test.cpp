@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "../support/cli_runner.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
+#include "load/pov_loader.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
-#include "scene/pov_loader.h"
-#include "scene/scene_error.h"
 
 namespace raycast {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "../support/cli_runner.h"
 #include "io/image.h"
+#include "load/loader.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
 
 namespace raycast {
 namespace {

@@ -8,10 +8,10 @@
 #include <sstream>
 #include <string>
 
+#include "load/loader.h"
 #include "mesh/procedural.h"
 #include "render/antialias.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
 #include "scene/scene_packets.h"
 #include "support/scene_text.h"
 

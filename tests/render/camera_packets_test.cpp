@@ -8,9 +8,9 @@
 #include <sstream>
 #include <string>
 
+#include "load/loader.h"
 #include "mesh/procedural.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
 #include "scene/scene_packets.h"
 #include "support/scene_text.h"
 

@@ -4,9 +4,9 @@
 // material's colour, which must be the albedo mode's (material_of per hit) at every pixel.
 #include <gtest/gtest.h>
 
+#include "load/loader.h"
 #include "render/camera.h"
 #include "render/integrator.h"
-#include "scene/loader.h"
 
 namespace raycast {
 namespace {

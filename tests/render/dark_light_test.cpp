@@ -4,9 +4,9 @@
 
 #include <string>
 
+#include "load/loader.h"
 #include "render/camera.h"
 #include "render/integrator.h"
-#include "scene/loader.h"
 
 namespace raycast {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "io/image.h"
+#include "load/demo_scene.h"
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
 
 namespace raycast {
 namespace {

@@ -10,8 +10,8 @@
 #include "render/explain_format.h"
 #include "render/explain_svg.h"
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

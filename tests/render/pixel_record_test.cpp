@@ -9,8 +9,8 @@
 #include "render/heatmap.h"
 #include "render/pixel_record.h"
 #include "render/ray_stats.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <stdexcept>
 
+#include "load/demo_scene.h"
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
 
 namespace raycast {
 namespace {

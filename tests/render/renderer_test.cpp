@@ -6,12 +6,12 @@
 #include <set>
 #include <vector>
 
+#include "io/scene_error.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
 #include "render/camera.h"
 #include "render/integrator.h"
 #include "render/renderer.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
 
 namespace raycast {
 namespace {

@@ -1,4 +1,4 @@
-// The shadow rays' walk (ObjectSet::any_along, scene/ball_list.h): its ball culling against
+// The shadow rays' walk (ObjectSet::any_along, objects/ball_list.h): its ball culling against
 // brute force, and
 // the integrator's shadow() against every object asked in turn, with no culling at all.
 #include <gtest/gtest.h>
@@ -8,9 +8,9 @@
 #include <sstream>
 #include <string>
 
+#include "load/loader.h"
+#include "objects/ball_list.h"
 #include "render/integrator.h"
-#include "scene/ball_list.h"
-#include "scene/loader.h"
 
 namespace raycast {
 namespace {
@@ -66,7 +66,7 @@ Vec3 random_point(std::mt19937_64& rng, double half) {
   return {u(rng), u(rng), u(rng)};
 }
 
-// CSG objects and instances whose balls (scene/bounding_ball.h) are much tighter than their
+// CSG objects and instances whose balls (objects/bounding_ball.h) are much tighter than their
 // boxes': a rotated cube minus a sphere, a lens, a rotated notched torus, a union of spheres, a
 // Steinmetz solid, and instances of a sphere minus a bar; `alt` as in scene_text.
 std::string csg_scene_text(bool transmissive) {

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "io/image.h"
+#include "load/loader.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
 
 namespace raycast {
 namespace {

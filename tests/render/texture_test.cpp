@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
+#include "load/loader.h"
 #include "render/integrator.h"
 #include "render/texture.h"
-#include "scene/loader.h"
 
 namespace raycast {
 namespace {

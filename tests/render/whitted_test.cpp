@@ -6,10 +6,10 @@
 #include <string>
 #include <utility>
 
+#include "io/scene_error.h"
+#include "load/loader.h"
 #include "render/integrator.h"
 #include "render/renderer.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
 
 namespace raycast {
 namespace {

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "../support/cli_runner.h"
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
 #include "volume/vdb_file.h"
 
 namespace raycast {

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "geometry/plane.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "scene/loader.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
+#include "load/shape_parsers.h"
 #include "scene/scene.h"
-#include "scene/scene_error.h"
-#include "scene/shape_parsers.h"
 
 namespace raycast {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -4,7 +4,7 @@
 #include <optional>
 #include <utility>
 
-#include "scene/object.h"
+#include "objects/object.h"
 
 namespace raycast::testing {
 

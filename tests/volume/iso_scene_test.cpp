@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "../support/cli_runner.h"
-#include "scene/frame_pattern.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "load/frame_pattern.h"
+#include "load/loader.h"
 
 namespace raycast {
 namespace {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "../support/cli_runner.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
 #include "volume/vdb_file.h"
 
 #if RAYCAST_HAVE_OPENVDB

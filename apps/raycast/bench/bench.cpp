@@ -18,12 +18,12 @@
 
 #include "bench/embree_peer.h"
 #include "geometry/spawn.h"
-#include "mesh/mesh_file.h"
+#include "io/mesh_file.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
+#include "math/lane_array.h"
 #include "mesh/mesh_packet16.h"
 #include "mesh/procedural.h"
-#include "scene/lane_array.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
 
 namespace raycast {
 
@@ -181,39 +181,33 @@ std::vector<BenchRay> incoherent_rays(const Aabb& box, std::size_t count) {
   return rays;
 }
 
-BenchResult run_bench(const BenchOptions& o) {
-  if (o.vs_embree && !EmbreePeer::available())
-    throw SceneError("--vs embree", 0, 0,
-                     "this build has no Embree (install libembree-dev and reconfigure)");
-  const int threads =
-      o.threads > 0 ? o.threads : static_cast<int>(tbb::info::default_concurrency());
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
-                            static_cast<std::size_t>(threads));
-  BenchResult r;
-  r.threads = threads;
-  r.ray_kind = o.rays == BenchRays::kPrimary
-                   ? "primary"
-                   : (o.rays == BenchRays::kIncoherent ? "incoherent" : "shadow");
+namespace {
 
-  // The scene: a file, or one mesh (from a file or procedural) as the only object.
+// The bench's scene: a file, or one mesh (from a file or procedural) as the only object.
+Scene bench_scene(const BenchOptions& o, BenchResult& r) {
   Scene scene;
-  double mesh_build_ms = 0;
   if (!o.scene.empty()) {
     scene = load_scene_file(o.scene);
     r.what = o.scene;
-  } else {
-    const auto mesh = bench_mesh(o, r.what);
-    scene.materials.emplace_back();
-    Object obj;
-    obj.shape = MeshShape{mesh};
-    obj.material = 0;
-    obj.entry = 0;
-    scene.objects.push_back(std::move(obj));
-    scene.entries = 1;
-    scene.build();
+    return scene;
   }
+  const auto mesh = bench_mesh(o, r.what);
+  scene.materials.emplace_back();
+  Object obj;
+  obj.shape = MeshShape{mesh};
+  obj.material = 0;
+  obj.entry = 0;
+  scene.objects.push_back(std::move(obj));
+  scene.entries = 1;
+  scene.build();
+  return scene;
+}
+
+// The scene's meshes (for the peer), their triangles, build times and bytes into r.
+std::vector<PeerMesh> measure_meshes(const Scene& scene, const BenchOptions& o, BenchResult& r) {
   std::vector<PeerMesh> peer_meshes;
   std::size_t bvh_bytes = 0, total_bytes = 0;
+  double mesh_build_ms = 0;
   for (const Object& obj : scene.objects)
     if (const auto* m = std::get_if<MeshShape>(&obj.shape)) {
       r.triangles += m->mesh->triangle_count();
@@ -229,93 +223,186 @@ BenchResult run_bench(const BenchOptions& o) {
   const double tris = std::max<double>(1, static_cast<double>(r.triangles));
   r.raycast_bytes_per_tri = (bvh_bytes + scene.accel_bytes()) / tris;
   r.raycast_total_bytes_per_tri = (total_bytes + scene.accel_bytes()) / tris;
+  return peer_meshes;
+}
+
+// --packets: the one mesh of the scene, traced in packets of 8 or 16 consecutive rays.
+const MeshShape* packet_mesh(const Scene& scene, const BenchOptions& o) {
+  if (!o.packets) return nullptr;
+  if (o.rays != BenchRays::kPrimary)
+    throw SceneError("--packets", 0, 0, "packets are for primary (coherent) rays only");
+  const MeshShape* mesh = nullptr;
+  if (scene.objects.size() == 1 && !scene.objects[0].xf)
+    mesh = std::get_if<MeshShape>(&scene.objects[0].shape);
+  if (!mesh)
+    throw SceneError("--packets", 0, 0, "packets need a scene of one mesh without a transform");
+  if (o.packet_width != 8 && o.packet_width != 16)
+    throw SceneError("--packets", 0, 0, "packets of 8 or 16 rays");
+  return mesh;
+}
+
+const SceneHit kMissHit{};
+
+// Packets of `width` consecutive rays: intersect8, or intersect16 (one 16-lane packet with
+// AVX-512). Uninitialised lanes (LaneArray) and the miss copied from a constant: a default Ray /
+// LocalHit array per packet, and a miss built on the stack field by field then copied out with
+// wider loads (a store-forwarding stall), were about half of this loop's samples in perf.
+void trace_packets(const MeshShape& mesh, std::size_t width, const std::vector<BenchRay>& rs,
+                   std::vector<SceneHit>& out) {
+  const std::size_t packets = (rs.size() + width - 1) / width;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, packets, 128),
+                    [&](const tbb::blocked_range<std::size_t>& b) {
+                      for (std::size_t p = b.begin(); p < b.end(); ++p) {
+                        LaneArray<Ray, 16> ray;
+                        LaneArray<LocalHit, 16> local;
+                        int mask = 0;
+                        for (std::size_t l = 0; l < width; ++l) {
+                          const std::size_t i = p * width + l;
+                          if (i >= rs.size()) break;
+                          ray[l] = Ray{rs[i].o, rs[i].d, rs[i].tmin, rs[i].tmax};
+                          if (is_valid(ray[l])) mask |= 1 << l;
+                        }
+                        const int found = width == 16
+                                              ? intersect16(mesh, ray.data(), mask, local.data())
+                                              : intersect8(mesh, ray.data(), mask, local.data());
+                        for (std::size_t l = 0; l < width && p * width + l < rs.size(); ++l) {
+                          SceneHit& h = out[p * width + l];
+                          if (found >> l & 1) {
+                            h.local = local[static_cast<int>(l)];
+                            h.object = 0;
+                          } else {
+                            h = kMissHit;
+                          }
+                        }
+                      }
+                    });
+}
+
+// Nearest hits, one ray at a time: straight into out[i], a miss copied from kMissHit (a local
+// SceneHit written field by field and then copied out with 16-byte loads waited on the store
+// buffer, loads spanning two stores, on every ray).
+void trace_rays(const Scene& scene, const std::vector<BenchRay>& rs, std::vector<SceneHit>& out) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rs.size(), 1024),
+                    [&](const tbb::blocked_range<std::size_t>& b) {
+                      for (std::size_t i = b.begin(); i < b.end(); ++i) {
+                        const BenchRay& q = rs[i];
+                        if (!scene.intersect(Ray{q.o, q.d, q.tmin, q.tmax}, out[i]))
+                          out[i] = kMissHit;
+                      }
+                    });
+}
+
+// Shadow rays from the primary hits (offset by their error bounds) towards the bench's light.
+std::vector<BenchRay> shadow_rays(const Scene& scene, const Aabb& box,
+                                  const std::vector<BenchRay>& rays,
+                                  const std::vector<SceneHit>& hits) {
+  const Vec3 light = bench_light(box);
+  std::vector<BenchRay> shadow;
+  shadow.reserve(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    if (!hits[i].valid()) continue;
+    const Ray ray{rays[i].o, rays[i].d, rays[i].tmin, rays[i].tmax};
+    const SurfaceInfo si = scene.surface(ray, hits[i]);
+    const Vec3 p = offset_ray_origin(si, light - si.p);
+    shadow.push_back(BenchRay{p, light - p, 0, 1});
+  }
+  return shadow;
+}
+
+// Embree on the same rays: its times and its disagreements with raycast's answers into r.
+void run_peer(const Scene& scene, const std::vector<PeerMesh>& meshes, int threads,
+              const BenchOptions& o, const std::vector<BenchRay>& rays,
+              const std::vector<SceneHit>& hits, const std::vector<std::uint8_t>& blocked,
+              BenchResult& r) {
+  const EmbreePeer peer(meshes, threads);
+  r.embree = true;
+  r.embree_build_ms = peer.build_ms();
+  r.embree_build_cpu_ms = peer.build_cpu_ms();
+  r.embree_bytes_per_tri = peer.bytes() / std::max<double>(1, static_cast<double>(r.triangles));
+  double seconds = 0, cpu = 0;
+  if (o.rays == BenchRays::kShadow) {
+    std::vector<std::uint8_t> eb(rays.size());
+    seconds = best_of(
+        o.repeat, [&] { peer.occluded(rays, eb); }, cpu);
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      if (eb[i] != blocked[i]) ++r.disagree_hit;
+    r.disagree = r.disagree_hit;
+  } else {
+    std::vector<PeerHit> eh(rays.size());
+    seconds = best_of(
+        o.repeat,
+        [&] {
+          if (o.packets && o.packet_width == 16)
+            peer.intersect16(rays, eh);
+          else if (o.packets)
+            peer.intersect8(rays, eh);
+          else
+            peer.intersect(rays, eh);
+        },
+        cpu);
+    // The peer's geometry index is the position among the scene's meshes: map it back.
+    std::vector<std::int32_t> object_of;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      if (std::holds_alternative<MeshShape>(scene.objects[i].shape))
+        object_of.push_back(static_cast<std::int32_t>(i));
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const SceneHit& a = hits[i];
+      const PeerHit& b = eh[i];
+      if (a.valid() != (b.geometry >= 0)) {
+        ++r.disagree_hit;
+        ++r.disagree;
+        continue;
+      }
+      if (!a.valid()) continue;
+      const bool dt = t_differs(a.local.t, b.t);
+      const bool dp = a.object != object_of[b.geometry] || a.local.prim != b.prim;
+      r.disagree_t += dt;
+      r.disagree_prim += dp;
+      r.disagree += dt || dp;
+    }
+  }
+  r.embree_mrays = r.rays / seconds / 1e6;
+  r.embree_mrays_cpu = r.rays / cpu / 1e6;
+  r.ratio = r.raycast_mrays / r.embree_mrays;
+}
+
+}  // namespace
+
+BenchResult run_bench(const BenchOptions& o) {
+  if (o.vs_embree && !EmbreePeer::available())
+    throw SceneError("--vs embree", 0, 0,
+                     "this build has no Embree (install libembree-dev and reconfigure)");
+  const int threads =
+      o.threads > 0 ? o.threads : static_cast<int>(tbb::info::default_concurrency());
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                            static_cast<std::size_t>(threads));
+  BenchResult r;
+  r.threads = threads;
+  r.ray_kind = o.rays == BenchRays::kPrimary
+                   ? "primary"
+                   : (o.rays == BenchRays::kIncoherent ? "incoherent" : "shadow");
+  const Scene scene = bench_scene(o, r);
+  const std::vector<PeerMesh> peer_meshes = measure_meshes(scene, o, r);
   const Aabb box =
       scene.finite_bounds().is_empty() ? Aabb{{-1, -1, -1}, {1, 1, 1}} : scene.finite_bounds();
 
-  // The rays.
   std::vector<BenchRay> rays =
       o.rays == BenchRays::kIncoherent
           ? incoherent_rays(box, static_cast<std::size_t>(o.width) * o.height)
           : primary_rays(box, o.width, o.height);
   std::vector<SceneHit> hits(rays.size());
-  // --packets: the one mesh of the scene traced in packets of eight consecutive rays.
-  const MeshShape* packet_mesh = nullptr;
-  if (o.packets) {
-    if (o.rays != BenchRays::kPrimary)
-      throw SceneError("--packets", 0, 0, "packets are for primary (coherent) rays only");
-    if (scene.objects.size() == 1 && !scene.objects[0].xf)
-      packet_mesh = std::get_if<MeshShape>(&scene.objects[0].shape);
-    if (!packet_mesh)
-      throw SceneError("--packets", 0, 0, "packets need a scene of one mesh without a transform");
-    if (o.packet_width != 8 && o.packet_width != 16)
-      throw SceneError("--packets", 0, 0, "packets of 8 or 16 rays");
-    r.packets = true;
-    r.packet_width = o.packet_width;
-  }
-  // Packets of W consecutive rays: intersect8, or intersect16 (one 16-lane packet with AVX-512).
-  static const SceneHit kMissHit{};
-  auto trace_packets = [&](const std::vector<BenchRay>& rs, std::vector<SceneHit>& out) {
-    const std::size_t w = static_cast<std::size_t>(o.packet_width);
-    const std::size_t packets = (rs.size() + w - 1) / w;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, packets, 128),
-                      [&](const tbb::blocked_range<std::size_t>& b) {
-                        for (std::size_t p = b.begin(); p < b.end(); ++p) {
-                          // Uninitialised lanes (LaneArray) and the miss copied from a
-                          // constant: a default Ray / LocalHit array per packet, and a miss built
-                          // on the stack field by field then copied out with wider loads (a
-                          // store-forwarding stall), were ~half of this loop's samples.
-                          LaneArray<Ray, 16> ray;
-                          LaneArray<LocalHit, 16> local;
-                          int mask = 0;
-                          for (std::size_t l = 0; l < w; ++l) {
-                            const std::size_t i = p * w + l;
-                            if (i >= rs.size()) break;
-                            ray[l] = Ray{rs[i].o, rs[i].d, rs[i].tmin, rs[i].tmax};
-                            if (is_valid(ray[l])) mask |= 1 << l;
-                          }
-                          const int found =
-                              w == 16 ? intersect16(*packet_mesh, ray.data(), mask, local.data())
-                                      : intersect8(*packet_mesh, ray.data(), mask, local.data());
-                          for (std::size_t l = 0; l < w && p * w + l < rs.size(); ++l) {
-                            SceneHit& h = out[p * w + l];
-                            if (found >> l & 1) {
-                              h.local = local[static_cast<int>(l)];
-                              h.object = 0;
-                            } else {
-                              h = kMissHit;
-                            }
-                          }
-                        }
-                      });
-  };
+  const MeshShape* packets = packet_mesh(scene, o);
+  r.packets = packets != nullptr;
+  if (packets) r.packet_width = o.packet_width;
   auto trace = [&](const std::vector<BenchRay>& rs, std::vector<SceneHit>& out) {
-    if (packet_mesh) return trace_packets(rs, out);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rs.size(), 1024),
-                      [&](const tbb::blocked_range<std::size_t>& b) {
-                        for (std::size_t i = b.begin(); i < b.end(); ++i) {
-                          const BenchRay& q = rs[i];
-                          // Straight into out[i], a miss copied from kMissHit: a local SceneHit
-                          // written field by field and then copied out with 16-byte loads
-                          // waited on the store buffer (loads spanning two stores) on every ray.
-                          if (!scene.intersect(Ray{q.o, q.d, q.tmin, q.tmax}, out[i]))
-                            out[i] = kMissHit;
-                        }
-                      });
+    if (packets)
+      trace_packets(*packets, static_cast<std::size_t>(o.packet_width), rs, out);
+    else
+      trace_rays(scene, rs, out);
   };
   if (o.rays == BenchRays::kShadow) {
-    // Shadow rays from the primary hits (offset by their error bounds) towards the light.
     trace(rays, hits);
-    const Vec3 light = bench_light(box);
-    std::vector<BenchRay> shadow;
-    shadow.reserve(rays.size());
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-      if (!hits[i].valid()) continue;
-      const Ray ray{rays[i].o, rays[i].d, rays[i].tmin, rays[i].tmax};
-      const SurfaceInfo si = scene.surface(ray, hits[i]);
-      const Vec3 p = offset_ray_origin(si, light - si.p);
-      shadow.push_back(BenchRay{p, light - p, 0, 1});
-    }
-    rays = std::move(shadow);
+    rays = shadow_rays(scene, box, rays, hits);
   }
   r.rays = rays.size();
 
@@ -343,58 +430,7 @@ BenchResult run_bench(const BenchOptions& o) {
   }
   r.raycast_mrays = r.rays / seconds / 1e6;
   r.raycast_mrays_cpu = r.rays / cpu / 1e6;
-
-  if (!o.vs_embree) return r;
-  const EmbreePeer peer(peer_meshes, threads);
-  r.embree = true;
-  r.embree_build_ms = peer.build_ms();
-  r.embree_build_cpu_ms = peer.build_cpu_ms();
-  r.embree_bytes_per_tri = peer.bytes() / tris;
-  double embree_seconds = 0, embree_cpu = 0;
-  if (o.rays == BenchRays::kShadow) {
-    std::vector<std::uint8_t> eb(rays.size());
-    embree_seconds = best_of(
-        o.repeat, [&] { peer.occluded(rays, eb); }, embree_cpu);
-    for (std::size_t i = 0; i < rays.size(); ++i)
-      if (eb[i] != blocked[i]) ++r.disagree_hit;
-  } else {
-    std::vector<PeerHit> eh(rays.size());
-    embree_seconds = best_of(
-        o.repeat,
-        [&] {
-          if (o.packets && o.packet_width == 16)
-            peer.intersect16(rays, eh);
-          else if (o.packets)
-            peer.intersect8(rays, eh);
-          else
-            peer.intersect(rays, eh);
-        },
-        embree_cpu);
-    // The peer's geometry index is the position among the scene's meshes: map it back.
-    std::vector<std::int32_t> object_of;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-      if (std::holds_alternative<MeshShape>(scene.objects[i].shape))
-        object_of.push_back(static_cast<std::int32_t>(i));
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-      const SceneHit& a = hits[i];
-      const PeerHit& b = eh[i];
-      if (a.valid() != (b.geometry >= 0)) {
-        ++r.disagree_hit;
-        ++r.disagree;
-        continue;
-      }
-      if (!a.valid()) continue;
-      const bool dt = t_differs(a.local.t, b.t);
-      const bool dp = a.object != object_of[b.geometry] || a.local.prim != b.prim;
-      r.disagree_t += dt;
-      r.disagree_prim += dp;
-      r.disagree += dt || dp;
-    }
-  }
-  if (o.rays == BenchRays::kShadow) r.disagree = r.disagree_hit;
-  r.embree_mrays = r.rays / embree_seconds / 1e6;
-  r.embree_mrays_cpu = r.rays / embree_cpu / 1e6;
-  r.ratio = r.raycast_mrays / r.embree_mrays;
+  if (o.vs_embree) run_peer(scene, peer_meshes, threads, o, rays, hits, blocked, r);
   return r;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // `raycast bench`: deterministic ray sets traced by raycast and, side by side in the same process,
-// by Embree 3 when the build has it (docs/cli.md; issue 5).
+// by Embree 3 when the build has it (docs/cli.md).
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "api/cast.h"
+#include "cast/cast.h"
 #include "render/renderer.h"
 
 namespace raycast::cli::distributed {

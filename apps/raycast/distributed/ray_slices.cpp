@@ -11,7 +11,7 @@
 
 #include "distributed/distributed.h"
 #include "distributed/mpi_session.h"
-#include "scene/loader.h"
+#include "load/loader.h"
 
 namespace raycast::cli::distributed {
 

@@ -15,10 +15,10 @@
 #include "distributed/distributed.h"
 #include "distributed/mpi_session.h"
 #include "distributed/work_queue.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
 #include "render/texture.h"
 #include "render_output.h"
-#include "scene/demo_scene.h"
-#include "scene/loader.h"
 
 namespace raycast::cli::distributed {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "scene/scene_error.h"
-#include "scene/yaml_reader.h"
+#include "io/scene_error.h"
+#include "load/yaml_reader.h"
 #include "serve/json_text.h"
 
 namespace raycast::serve {

@@ -3,7 +3,7 @@
 // as the scene loader checks a `camera` block, plus a bound on coordinates; NaN is refused.
 #include <string>
 
-#include "scene/camera.h"
+#include "scene/render_settings.h"
 
 namespace raycast::serve {
 

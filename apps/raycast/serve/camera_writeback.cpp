@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "scene/loader.h"
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
+#include "load/loader.h"
 #include "serve/json_text.h"
 
 namespace raycast::serve {

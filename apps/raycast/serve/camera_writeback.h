@@ -5,7 +5,7 @@
 // sidecar file SCENE.camera.yaml instead, for the user to paste.
 #include <string>
 
-#include "scene/camera.h"
+#include "scene/render_settings.h"
 
 namespace raycast::serve {
 

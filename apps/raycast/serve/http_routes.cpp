@@ -9,10 +9,10 @@
 #include <memory>
 #include <sstream>
 
+#include "io/scene_error.h"
+#include "load/yaml_reader.h"
 #include "render/explain.h"
 #include "render/explain_format.h"
-#include "scene/scene_error.h"
-#include "scene/yaml_reader.h"
 #include "serve/camera_request.h"
 #include "serve/camera_writeback.h"
 #include "serve/json_text.h"

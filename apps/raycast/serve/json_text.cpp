@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "scene/scene_error.h"
-#include "scene/yaml_prescan.h"
+#include "io/scene_error.h"
+#include "load/yaml_prescan.h"
 
 namespace raycast::serve {
 

@@ -4,10 +4,10 @@
 #include <new>
 #include <vector>
 
+#include "io/scene_error.h"
+#include "load/loader.h"
 #include "render/renderer.h"
 #include "render_output.h"
-#include "scene/loader.h"
-#include "scene/scene_error.h"
 #include "serve/png_memory.h"
 
 namespace raycast::serve {

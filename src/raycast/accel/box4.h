@@ -2,8 +2,7 @@
 // Four boxes against one ray in one pass, in float (SSE2, the x86-64 baseline; a scalar loop of
 // the same arithmetic elsewhere). A culling test for the top level over objects: it is
 // conservative, so every box whose exact double box the exact segment meets passes (a few more
-// may), and the objects' own exact tests decide. docs/performance-render.md, round 6, gives the
-// error bound; in short:
+// may), and the objects' own exact tests decide. The error bound:
 // - boxes are rounded outwards to float (which only moves entries earlier and exits later);
 // - per ray and axis, t = plane * inv - (o * inv +- s), where s ~ 2^-20 (M + |o|) |inv| covers
 //   the rounding of plane * inv, of o and o * inv and of inv itself in absolute terms (M bounds

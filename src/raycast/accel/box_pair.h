@@ -3,7 +3,7 @@
 // the same arithmetic elsewhere): intersect_slabs (geometry/aabb.h) on two boxes at once, with
 // its result and its entry distance bit for bit. A flat set of a few boxes tests them this way
 // without the float test's per-ray set-up (rounding the ray and the slack, about 150
-// instructions: docs/performance-render.md, session 11). The planes of each pair are stored for
+// instructions). The planes of each pair are stored for
 // one ray octant (near planes in rows 0-2, far in 3-5), so the test loads them in a fixed order.
 #include <cmath>
 #include <cstdint>

@@ -19,7 +19,7 @@
 #include <tbb/task_group.h>
 
 #include "accel/build_memory.h"
-#include "accel/progress.h"
+#include "io/progress.h"
 
 namespace raycast {
 
@@ -544,10 +544,7 @@ Bvh build_bvh_from_refs(BvhBuildRefs refs, const BvhBuildConfig& config) {
   return out;
 }
 
-Bvh build_bvh(std::span<const Aabb> boxes, std::span<const Vec3> centres,
-              const BvhBuildConfig& config) {
-  if (centres.size() != boxes.size())
-    throw std::invalid_argument("build_bvh: one centre per box expected");
+Bvh build_bvh(std::span<const Aabb> boxes, const BvhBuildConfig& config) {
   BvhBuildRefs refs(boxes.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, boxes.size(), 16384),
                     [&](const tbb::blocked_range<std::size_t>& r) {

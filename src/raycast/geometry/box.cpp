@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/shape_error.h"
 #include "math/float_error.h"
 
 namespace raycast {
@@ -10,8 +11,11 @@ namespace raycast {
 Box make_box(const Vec3& lo, const Vec3& hi) {
   if (!is_finite(lo)) throw std::invalid_argument("min must be finite");
   if (!is_finite(hi)) throw std::invalid_argument("max must be finite");
-  if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-    throw std::invalid_argument("min must be < max on every axis");
+  for (int a = 0; a < 3; ++a)
+    if (!(lo[a] < hi[a]))
+      throw ShapeParameterError("max", std::string("must be > min on every axis, got ") +
+                                           format_parameter(hi[a]) +
+                                           " <= " + format_parameter(lo[a]) + " on " + "xyz"[a]);
   return Box{lo, hi};
 }
 

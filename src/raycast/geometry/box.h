@@ -27,7 +27,7 @@ Aabb bounds(const Box& b);
 bool intersect(const Box& b, const Ray& ray, LocalHit& hit);
 void spans(const Box& b, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Box& b, const Ray& ray, const LocalHit& hit);
-/// surface() without (u, v) (left 0) (scene/object.h, SurfaceNeeds).
+/// surface() without (u, v) (left 0) (objects/object.h, SurfaceNeeds).
 SurfaceInfo surface_geometry(const Box& b, const Ray& ray, const LocalHit& hit);
 bool contains(const Box& b, const Vec3& p);
 inline bool is_closed(const Box&) { return true; }

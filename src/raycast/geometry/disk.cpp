@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "geometry/shape_error.h"
 #include "math/float_error.h"
 
 namespace raycast {
@@ -17,7 +18,8 @@ void check_radii(double radius, double inner_radius) {
   if (!(radius > 0) || !std::isfinite(radius))
     throw std::invalid_argument("radius must be > 0 and finite");
   if (!(inner_radius >= 0) || !(inner_radius < radius))
-    throw std::invalid_argument("inner_radius must be in [0, radius)");
+    throw ShapeParameterError("inner_radius",
+                              "must be in [0, radius), got " + format_parameter(inner_radius));
 }
 
 // The angle of the in-plane offset (x, y) in [0, 2 pi).
@@ -57,7 +59,8 @@ Disk make_disk(double radius, double inner_radius, double height, double phi_max
   check_radii(radius, inner_radius);
   if (!std::isfinite(height)) throw std::invalid_argument("height must be finite");
   if (!(phi_max_degrees > 0 && phi_max_degrees <= 360))
-    throw std::invalid_argument("phi_max must be in (0, 360]");
+    throw ShapeParameterError("phi_max",
+                              "must be in (0, 360], got " + format_parameter(phi_max_degrees));
   Disk d;
   d.center = {0, 0, height};
   d.radius = radius;

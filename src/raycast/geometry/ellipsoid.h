@@ -22,7 +22,7 @@ bool intersect(const Ellipsoid& e, const Ray& ray, LocalHit& hit);
 bool occluded(const Ellipsoid& e, const Ray& ray);
 void spans(const Ellipsoid& e, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Ellipsoid& e, const Ray& ray, const LocalHit& hit);
-/// surface() without (u, v) (left 0): no atan2 or acos (scene/object.h, SurfaceNeeds).
+/// surface() without (u, v) (left 0): no atan2 or acos (objects/object.h, SurfaceNeeds).
 SurfaceInfo surface_geometry(const Ellipsoid& e, const Ray& ray, const LocalHit& hit);
 bool contains(const Ellipsoid& e, const Vec3& p);
 inline bool is_closed(const Ellipsoid&) { return true; }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/shape_error.h"
 #include "geometry/triangle.h"
 #include "math/float_error.h"
 
@@ -14,9 +15,9 @@ Parallelogram make_parallelogram(const Vec3& origin, const Vec3& u, const Vec3& 
   const Vec3 w = cross(u, v);
   const double lw = length(w), scale = length(u) * length(v);
   if (!std::isfinite(lw) || !std::isfinite(scale))
-    throw std::invalid_argument("u and v are too large");
+    throw ShapeParameterError("v", "and u are too large");
   if (!(lw > kDegenerateSine * scale))
-    throw std::invalid_argument("u and v must be non-zero and not parallel");
+    throw ShapeParameterError("v", "and u must be non-zero and not parallel");
   Parallelogram q;
   q.origin = origin;
   q.u = u;

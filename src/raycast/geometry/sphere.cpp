@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/shape_error.h"
 #include "math/float_error.h"
 
 namespace raycast {
@@ -37,15 +38,18 @@ Sphere make_sphere(const Vec3& center, double radius, double z_min, double z_max
   if (!(radius > 0) || !std::isfinite(radius))
     throw std::invalid_argument("radius must be > 0 and finite");
   if (std::isnan(z_min) || std::isnan(z_max) || !(z_min < z_max))
-    throw std::invalid_argument("z_min must be < z_max");
+    throw ShapeParameterError("z_max", "must be > z_min, got " + format_parameter(z_max) +
+                                           " <= " + format_parameter(z_min));
   if (!(phi_max_degrees > 0 && phi_max_degrees <= 360))
-    throw std::invalid_argument("phi_max must be in (0, 360]");
+    throw ShapeParameterError("phi_max",
+                              "must be in (0, 360], got " + format_parameter(phi_max_degrees));
   Sphere s;
   s.center = center;
   s.radius = radius;
   s.z_min = std::clamp(z_min, -radius, radius);
   s.z_max = std::clamp(z_max, -radius, radius);
-  if (!(s.z_min < s.z_max)) throw std::invalid_argument("z range misses the sphere");
+  if (!(s.z_min < s.z_max))
+    throw ShapeParameterError("z_min", "and z_max must overlap [-radius, radius]");
   s.phi_max = phi_max_degrees >= 360 ? kTwoPi : phi_max_degrees * std::numbers::pi / 180;
   return s;
 }

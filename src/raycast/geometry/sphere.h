@@ -32,7 +32,7 @@ bool intersect(const Sphere& s, const Ray& ray, LocalHit& hit);
 void spans(const Sphere& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Sphere& s, const Ray& ray, const LocalHit& hit);
 /// surface() without (u, v) (left 0): no atan2 or acos, for hits whose shading needs no
-/// parameters (scene/object.h surface with SurfaceNeeds::kGeometry).
+/// parameters (objects/object.h surface with SurfaceNeeds::kGeometry).
 SurfaceInfo surface_geometry(const Sphere& s, const Ray& ray, const LocalHit& hit);
 bool contains(const Sphere& s, const Vec3& p);
 bool is_closed(const Sphere& s);

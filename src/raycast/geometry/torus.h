@@ -22,7 +22,7 @@ Aabb bounds(const Torus& s);
 bool intersect(const Torus& s, const Ray& ray, LocalHit& hit);
 void spans(const Torus& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Torus& s, const Ray& ray, const LocalHit& hit);
-/// surface() without (u, v) (left 0): no atan2 (scene/object.h, SurfaceNeeds).
+/// surface() without (u, v) (left 0): no atan2 (objects/object.h, SurfaceNeeds).
 SurfaceInfo surface_geometry(const Torus& s, const Ray& ray, const LocalHit& hit);
 bool contains(const Torus& s, const Vec3& p);
 inline bool is_closed(const Torus&) { return true; }

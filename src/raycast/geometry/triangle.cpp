@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/shape_error.h"
 #include "math/float_error.h"
 
 namespace raycast {
@@ -14,9 +15,9 @@ Triangle make_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
   const Vec3 c = cross(e1, e2);
   const double lc = length(c), scale = length(e1) * length(e2);
   if (!std::isfinite(lc) || !std::isfinite(scale))
-    throw std::invalid_argument("vertices are too large");
+    throw ShapeParameterError("vertices", "are too large");
   if (!(lc > kDegenerateSine * scale))
-    throw std::invalid_argument("triangle is degenerate (its vertices are collinear or coincide)");
+    throw ShapeParameterError("vertices", "are collinear or coincide (a degenerate triangle)");
   Triangle t;
   t.p0 = p0;
   t.p1 = p1;

@@ -1,5 +1,5 @@
 #pragma once
-// The PLY format's header and value encodings, shared by the mesh reader (mesh/ply_file.cpp) and
+// The PLY format's header and value encodings, shared by the mesh reader (io/ply_file.cpp) and
 // the particle reader (volume/particle_file.cpp). The header is read line by line as the format
 // defines it: "ply", then format, comment, obj_info, element and property lines, up to a line
 // "end_header".

@@ -116,11 +116,86 @@ double distance2(const Aabb& box, const Vec3& p) {
   return d2;
 }
 
+namespace {
+
+// The triangle range under each node of a binary BVH (leaves are contiguous in leaf order when
+// the builder partitions in place; a subtree whose range has gaps keeps its axis-aligned box).
+struct SubtreeRanges {
+  std::vector<std::uint32_t> lo, hi, count;
+
+  explicit SubtreeRanges(const Bvh& bvh)
+      : lo(bvh.nodes.size()), hi(bvh.nodes.size()), count(bvh.nodes.size()) {
+    visit(bvh, 0);
+  }
+  bool contiguous(std::uint32_t i) const { return count[i] == hi[i] - lo[i]; }
+
+ private:
+  void visit(const Bvh& bvh, std::uint32_t i) {
+    const BvhNode& node = bvh.nodes[i];
+    if (node.is_leaf()) {
+      lo[i] = node.first, hi[i] = node.first + node.count, count[i] = node.count;
+      return;
+    }
+    visit(bvh, node.first);
+    visit(bvh, node.first + 1);
+    lo[i] = std::min(lo[node.first], lo[node.first + 1]);
+    hi[i] = std::max(hi[node.first], hi[node.first + 1]);
+    count[i] = count[node.first] + count[node.first + 1];
+  }
+};
+
+// The children of binary node i that a 4-wide node takes: open the child of largest area until
+// there are 4 (or only leaves). Returns how many of `lanes` are used.
+int wide_children(const Bvh& bvh, std::uint32_t i, std::uint32_t (&lanes)[4]) {
+  lanes[0] = bvh.nodes[i].first, lanes[1] = bvh.nodes[i].first + 1;
+  int used = 2;
+  while (used < 4) {
+    int pick = -1;
+    double area = -1;
+    for (int l = 0; l < used; ++l) {
+      const BvhNode& c = bvh.nodes[lanes[l]];
+      if (!c.is_leaf() && c.box.half_area() > area) pick = l, area = c.box.half_area();
+    }
+    if (pick < 0) break;
+    const std::uint32_t opened = lanes[pick];
+    lanes[pick] = bvh.nodes[opened].first;
+    lanes[used++] = bvh.nodes[opened].first + 1;
+  }
+  return used;
+}
+
+constexpr Vec3 kWorldAxes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+// The oriented box of a patch of triangles (each(f) passes f their corners): the world-aligned
+// box, or one in the patch's frame when that is smaller: its area-weighted mean normal, and in
+// the plane the world axis along which the box `box` is widest. The frame is tried only for
+// patches whose normals mostly agree (|mean| > 0.3 of the summed areas).
+template <class Each>
+Obb patch_box(const Aabb& box, const Vec3& normal_sum, double area, Each&& each) {
+  Obb best = fit(kWorldAxes, each);
+  if (!(length(normal_sum) > 0.3 * area && area > 0)) return best;
+  const Vec3 nz = normalize(normal_sum);
+  const Vec3 e = box.extent();
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int x, int y) { return e[x] > e[y]; });
+  for (int o : order) {
+    const Vec3 u = kWorldAxes[o] - dot(kWorldAxes[o], nz) * nz;
+    if (length(u) < 0.3) continue;
+    const Vec3 nx = normalize(u);
+    const Vec3 axes[3] = {nx, cross(nz, nx), nz};
+    const Obb oriented = fit(axes, each);
+    if (oriented.volume < best.volume) best = oriented;
+    break;
+  }
+  return best;
+}
+
+}  // namespace
+
 MeshDistance::MeshDistance(const Mesh& mesh, const std::optional<Transform>& xf) {
   const std::size_t n = mesh.triangles.size();
   std::vector<Tri> tris(n);
   std::vector<Aabb> boxes(n);
-  std::vector<Vec3> centres(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto& t = mesh.triangles[i];
     Vec3 v[3];
@@ -130,115 +205,66 @@ MeshDistance::MeshDistance(const Mesh& mesh, const std::optional<Transform>& xf)
       boxes[i].grow(v[k]);
     }
     tris[i] = {v[0], v[1], v[2], static_cast<std::int32_t>(mesh.source[i])};
-    centres[i] = boxes[i].centre();
     box_.grow(boxes[i]);
   }
   if (n == 0) return;
   BvhBuildConfig config;
   config.max_leaf_size = 4;
-  const Bvh bvh = build_bvh(boxes, centres, config);
+  const Bvh bvh = build_bvh(boxes, config);
   tris_.resize(n);
   for (std::size_t i = 0; i < bvh.prims.size(); ++i) tris_[i] = tris[bvh.prims[i]];
-
-  // The triangle range under each binary node (leaves are contiguous in leaf order when the
-  // builder partitions in place; a subtree whose range has gaps keeps its axis-aligned box).
-  const std::size_t m = bvh.nodes.size();
-  std::vector<std::uint32_t> lo(m), hi(m), count(m);
-  auto ranges = [&](auto&& self, std::uint32_t i) -> void {
-    const BvhNode& node = bvh.nodes[i];
-    if (node.is_leaf()) {
-      lo[i] = node.first, hi[i] = node.first + node.count, count[i] = node.count;
-      return;
-    }
-    self(self, node.first);
-    self(self, node.first + 1);
-    lo[i] = std::min(lo[node.first], lo[node.first + 1]);
-    hi[i] = std::max(hi[node.first], hi[node.first + 1]);
-    count[i] = count[node.first] + count[node.first + 1];
-  };
-  ranges(ranges, 0);
-
-  // Collapse the binary tree into 4-wide nodes: open the child of largest area until 4.
-  struct Job {
-    std::uint32_t node, lane, source;
-  };
-  std::vector<Job> jobs;
-  auto collapse = [&](auto&& self, std::uint32_t i) -> std::uint32_t {
-    std::uint32_t lanes[4] = {bvh.nodes[i].first, bvh.nodes[i].first + 1, 0, 0};
-    int used = 2;
-    while (used < 4) {
-      int pick = -1;
-      double area = -1;
-      for (int l = 0; l < used; ++l) {
-        const BvhNode& c = bvh.nodes[lanes[l]];
-        if (!c.is_leaf() && c.box.half_area() > area) pick = l, area = c.box.half_area();
-      }
-      if (pick < 0) break;
-      const std::uint32_t opened = lanes[pick];
-      lanes[pick] = bvh.nodes[opened].first;
-      lanes[used++] = bvh.nodes[opened].first + 1;
-    }
-    const auto index = static_cast<std::uint32_t>(nodes_.size());
-    nodes_.emplace_back();
-    for (int l = 0; l < 4; ++l) {
-      std::uint32_t ref = 0, cnt = kNone;
-      if (l < used) {
-        const BvhNode& c = bvh.nodes[lanes[l]];
-        if (c.is_leaf()) {
-          ref = c.first, cnt = c.count;
-        } else {
-          ref = self(self, lanes[l]), cnt = 0;
-        }
-        jobs.push_back({index, static_cast<std::uint32_t>(l), lanes[l]});
-      }
-      nodes_[index].ref[l] = ref;
-      nodes_[index].count[l] = cnt;
-    }
-    return index;
-  };
   if (bvh.nodes[0].is_leaf()) {
     root_ref_ = bvh.nodes[0].first, root_count_ = bvh.nodes[0].count;
     return;
   }
-  collapse(collapse, 0);
+  std::vector<LaneSource> sources;
+  collapse(bvh, 0, sources);
   root_ref_ = 0, root_count_ = 0;
+  fit_lane_boxes(bvh, sources);
+}
 
-  tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t j) {
-    const Job& job = jobs[j];
-    const std::uint32_t s = job.source;
+std::uint32_t MeshDistance::collapse(const Bvh& bvh, std::uint32_t i,
+                                     std::vector<LaneSource>& sources) {
+  std::uint32_t lanes[4] = {0, 0, 0, 0};
+  const int used = wide_children(bvh, i, lanes);
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.emplace_back();
+  for (int l = 0; l < 4; ++l) {
+    std::uint32_t ref = 0, cnt = kNone;
+    if (l < used) {
+      const BvhNode& c = bvh.nodes[lanes[l]];
+      if (c.is_leaf())
+        ref = c.first, cnt = c.count;
+      else
+        ref = collapse(bvh, lanes[l], sources), cnt = 0;
+      sources.push_back({index, static_cast<std::uint32_t>(l), lanes[l]});
+    }
+    nodes_[index].ref[l] = ref;
+    nodes_[index].count[l] = cnt;
+  }
+  return index;
+}
+
+void MeshDistance::fit_lane_boxes(const Bvh& bvh, const std::vector<LaneSource>& sources) {
+  const SubtreeRanges ranges(bvh);
+  tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t j) {
+    const LaneSource& job = sources[j];
+    const std::uint32_t s = job.binary_node;
     const Aabb& box = bvh.nodes[s].box;
-    const Vec3 world[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     Obb best;
-    if (count[s] == hi[s] - lo[s]) {
-      auto each = [&](auto&& f) {
-        for (std::uint32_t t = lo[s]; t < hi[s]; ++t) f(tris_[t].a), f(tris_[t].b), f(tris_[t].c);
-      };
-      best = fit(world, each);
-      // The patch's frame: its area-weighted mean normal, and in the plane the world axis along
-      // which the box is widest. Only for patches whose normals mostly agree.
-      Vec3 sum;
+    if (ranges.contiguous(s)) {
+      const std::uint32_t lo = ranges.lo[s], hi = ranges.hi[s];
+      Vec3 normal_sum;
       double area = 0;
-      for (std::uint32_t t = lo[s]; t < hi[s]; ++t) {
+      for (std::uint32_t t = lo; t < hi; ++t) {
         const Vec3 nt = cross(tris_[t].b - tris_[t].a, tris_[t].c - tris_[t].a);
-        sum += nt, area += length(nt);
+        normal_sum += nt, area += length(nt);
       }
-      if (length(sum) > 0.3 * area && area > 0) {
-        const Vec3 nz = normalize(sum);
-        const Vec3 e = box.extent();
-        int order[3] = {0, 1, 2};
-        std::sort(order, order + 3, [&](int x, int y) { return e[x] > e[y]; });
-        for (int o : order) {
-          const Vec3 u = world[o] - dot(world[o], nz) * nz;
-          if (length(u) < 0.3) continue;
-          const Vec3 nx = normalize(u);
-          const Vec3 axes[3] = {nx, cross(nz, nx), nz};
-          const Obb oriented = fit(axes, each);
-          if (oriented.volume < best.volume) best = oriented;
-          break;
-        }
-      }
+      best = patch_box(box, normal_sum, area, [&](auto&& f) {
+        for (std::uint32_t t = lo; t < hi; ++t) f(tris_[t].a), f(tris_[t].b), f(tris_[t].c);
+      });
     } else if (box.is_bounded()) {
-      best = fit(world, [&](auto&& f) {
+      best = fit(kWorldAxes, [&](auto&& f) {
         for (int k = 0; k < 8; ++k)
           f(Vec3(k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y,
                  k & 4 ? box.hi.z : box.lo.z));
@@ -285,8 +311,9 @@ bool MeshDistance::closest(const Vec3& p, Result& best) const {
   }
   // Best-first: the entry of least bound next (a binary heap), until the least bound exceeds
   // the best so far (allowing for the boxes' rounding). This opens only about the nodes whose
-  // bound is below the final distance; a depth-first walk opened 1.6x as many (docs/
-  // performance-python.md). Ties are never pruned, so the least prim wins whatever the order.
+  // bound is below the final distance; a depth-first walk opens about 1.6x as many on the
+  // curved meshes of python/bench_python.py. Ties are never pruned, so the least prim wins whatever
+  // the order.
   struct Entry {
     double d2;
     std::uint32_t ref, count;

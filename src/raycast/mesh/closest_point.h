@@ -20,7 +20,7 @@ namespace raycast {
 /// than that growth must be opened. An axis-aligned box of a tilted patch is as thick as it is
 /// wide and falls short by about its size; a box aligned with the patch's mean normal is as thin
 /// as the patch's curvature allows, which cuts the nodes opened per query by an order of
-/// magnitude on curved meshes (docs/performance-python.md).
+/// magnitude on curved meshes (python/bench_python.py).
 class MeshDistance {
  public:
   MeshDistance(const Mesh& mesh, const std::optional<Transform>& xf);
@@ -50,6 +50,15 @@ class MeshDistance {
   static constexpr std::uint32_t kNone = 0xffffffffu;
 
  private:
+  // Which binary node's triangles a lane of a 4-wide node bounds.
+  struct LaneSource {
+    std::uint32_t node, lane, binary_node;
+  };
+  // Appends the 4-wide node made from binary node i and its subtree; returns its index.
+  std::uint32_t collapse(const Bvh& bvh, std::uint32_t i, std::vector<LaneSource>& sources);
+  // Each used lane's oriented box (in parallel), and a harmless box in the unused lanes.
+  void fit_lane_boxes(const Bvh& bvh, const std::vector<LaneSource>& sources);
+
   struct Tri {
     Vec3 a, b, c;
     std::int32_t prim;

@@ -18,10 +18,10 @@
 #include <tbb/parallel_sort.h>
 
 #include "accel/build_memory.h"
-#include "accel/progress.h"
+#include "io/progress.h"
+#include "math/lane_array.h"
 #include "mesh/mesh_ray.h"
 #include "mesh/wide_kernels.h"
-#include "scene/lane_array.h"
 
 namespace raycast {
 

@@ -20,11 +20,10 @@ namespace raycast {
 inline constexpr int kNodeWidth = 8;
 
 // Two node formats with the same child references, chosen per mesh by its size
-// (MeshBvhConfig::quantise_above: by default float nodes at every size; docs/performance-mesh.md,
-// session 5 chose quantised ones above 4M triangles; session 14 measured float nodes faster on
-// the 10M sphere too). A child reference is an inner node's index, or (bit 31 set) a leaf: bits
-// 0-28 the first triangle group, bits 29-30 the group count minus 1. An unused slot has its bit
-// clear in `used` and reference 0.
+// (MeshBvhConfig::quantise_above: by default float nodes at every size, which trace faster than
+// quantised ones on the 1M and 10M spheres of bench/embree_table.sh). A child reference is an inner
+// node's index, or (bit 31 set) a leaf: bits 0-28 the first triangle group, bits 29-30 the group
+// count minus 1. An unused slot has its bit clear in `used` and reference 0.
 
 /// A node with up to 8 children, 256 bytes (four cache lines): the child boxes in float, one
 /// 64-byte line per axis holding [lo of the eight children | hi of the eight children] (the
@@ -89,17 +88,17 @@ struct MeshBvhConfig {
   int max_leaf_size = 8;  // triangles per leaf (at most 4 groups of 4)
   // The SAH counts leaf cost per block of this many triangles: 8, one pass of the AVX2 and
   // AVX-512 leaf test (two groups). With 4 the tree had 21 % more nodes and smaller leaves for the
-  // same node visits per ray (docs/performance-mesh.md, session 12: shadow12).
+  // same node visits per ray (bench/embree_table.sh).
   int leaf_block = 8;
   double traversal_cost = 1.0;
   // Meshes of more triangles than this get quantised nodes (half the node bytes: ~51 against
   // ~56 bytes per triangle), smaller ones float nodes. By default none: float nodes trace faster
-  // at 1M and at 10M (docs/performance-mesh.md, session 14: the 10M sphere's primary rays about
-  // 20 % faster, incoherent ones level); the quantised format stays for callers short of memory.
+  // at 1M and at 10M (bench/embree_table.sh: the 10M sphere's primary rays about 20 % faster,
+  // incoherent ones level); the quantised format stays for callers short of memory.
   std::size_t quantise_above = std::numeric_limits<std::size_t>::max();
   // Early split clipping (Ernst and Greiner 2007; mesh/split_refs.h): at most this many extra
   // references per triangle (0.3: +30 %), given to the pieces of most wasted box area first.
-  // Off by default (docs/performance-mesh.md, session 15: split15).
+  // Off by default: it wins only on meshes of long thin triangles (bench/embree_table.sh).
   double split_budget = 0;
   // Only pieces whose box's half area exceeds this many times the area of the triangle inside
   // are split (long thin or diagonal ones; an axis-aligned right triangle has 2; at 4 the

@@ -4,8 +4,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "math/lane_array.h"
 #include "mesh/wide_kernels.h"
-#include "scene/lane_array.h"
 
 #if defined(__x86_64__)
 namespace raycast::kernels_avx512 {

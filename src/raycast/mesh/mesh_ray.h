@@ -43,7 +43,7 @@ namespace mesh_ray_detail {
 // of the compiler's choosing (the bench: o.x and o.y in one 16-byte store, o.z alone, d.x and d.y
 // together, d.z alone) just before the call, and a 16-byte load that spans two such stores (GCC
 // paired d.y with d.z) cannot take its bytes from the store buffer: it waits until both stores
-// have reached the cache (the hottest instruction of this function in perf, session 11). The
+// have reached the cache (it was the hottest instruction of this function in perf). The
 // empty asm keeps the value a scalar of its own, so GCC cannot merge neighbouring loads.
 [[gnu::always_inline]] inline double ray_component(const double& x) {
   double v = x;

@@ -6,14 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "io/triangle_soup.h"
 #include "math/vec3.h"
 
 namespace raycast {
-
-struct TriangleSoup {
-  std::vector<Vec3f> positions;
-  std::vector<std::array<std::uint32_t, 3>> triangles;
-};
 
 /// A closed sphere of radius about 1 around the origin: the octahedron with each face split into
 /// n^2 triangles (8 n^2 in all), vertices pushed to the sphere and displaced radially by

@@ -124,9 +124,9 @@ void split_triangle_refs(std::span<const Vec3f> positions,
     for (int k = 0; k < 3; ++k) v[k] = positions[triangles[t][k]];
   };
   // A piece joins the heap only when its box is much larger than the triangle inside (long thin
-  // or diagonal): a budget spent on the moderate waste of ordinary triangles lost on the forest
-  // (session 15). The heap's order is total (waste, then slot), so the pops do not depend on how
-  // it was filled.
+  // or diagonal): a budget spent on the moderate waste of ordinary triangles loses on the forest
+  // mesh of bench/embree_table.sh. The heap's order is total (waste, then slot), so the pops do not
+  // depend on how it was filled.
   std::vector<Piece> heap;
   auto consider = [&](std::uint32_t slot, double area) {
     const double box = half_area(refs[slot]);

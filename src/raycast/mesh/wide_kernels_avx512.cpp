@@ -129,13 +129,13 @@ inline int intersect_node16(const Node& n, const NodeRay16& r, V8 tmin, V8 tmax,
 #define RAYCAST_KERNEL_NODE16 1
 // The 16-lane node test only where uses_node16 (mesh/wide_traverse.inl) says: elsewhere the 8-lane
 // one (rows by the sign of d, loads folded), whose dependency chain has no lane-crossing permute
-// or half extraction between a node's loads and its mask (docs/performance-mesh.md, session 10:
-// 1M shadow rays ~0.75 -> ~0.85 of Embree's rate).
+// or half extraction between a node's loads and its mask (on 1M shadow rays of
+// bench/embree_table.sh, about 13 % faster than the 16-lane test).
 #define RAYCAST_KERNEL_FOLDED_ROWS 1
 #define RAYCAST_KERNEL_BITS_MINMAX 1
 // The leaf's rows through three byte offsets: without them GCC kept the nine row offsets of the
-// any-hit octant walks in the stack, reloaded at every leaf (docs/performance-mesh.md, session 15:
-// 1M shadow rays ~+4 %; behind in session 11, before the octant walks).
+// any-hit octant walks in the stack, reloaded at every leaf (1M shadow rays of
+// bench/embree_table.sh: about 4 % faster with the offsets).
 #define RAYCAST_KERNEL_ROW_OFFSETS 1
 #define RAYCAST_KERNEL_NS kernels_avx512
 #include "mesh/wide_traverse.inl"

@@ -45,10 +45,9 @@ inline float widen_exit(float t) { return std::max(t * kSlabWiden, t * kSlabNarr
 enum class Query { kNearest, kAny, kAll };
 
 // Whether query Q on a tree of Node takes the kernel's 16-lane node test (RAYCAST_KERNEL_NODE16,
-// AVX-512) rather than the 8-lane one. Measured (docs/performance-mesh.md, session 10): the
-// 8-lane test wins on float nodes, and on quantised ones for any-hit queries (shadow rays, 10M
-// sphere ~0.75 -> ~0.9 of Embree's rate); quantised nearest-hit walks keep the 16-lane test (the
-// 10M sphere's incoherent rays were ahead with it in 4 of 5 rounds).
+// AVX-512) rather than the 8-lane one. On bench/embree_table.sh's meshes the 8-lane test wins on
+// float nodes, and on quantised ones for any-hit queries (10M sphere shadow rays about 20 %
+// faster); quantised nearest-hit walks are faster with the 16-lane test (10M sphere, incoherent).
 template <Query Q, class Node>
 constexpr bool uses_node16() {
 #ifdef RAYCAST_KERNEL_NODE16
@@ -160,7 +159,7 @@ inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
 // reciprocals stay in registers). Oct >= 0: the walk of one direction octant (bit a set when
 // near_off[a] == kNodeWidth), whose row offsets are constants in the loads' addresses: the six
 // per-ray offsets no longer compete for the 16 general registers (GCC reloaded them from the
-// stack at every node; docs/performance-mesh.md, session 11).
+// stack at every node).
 template <int Oct = -1>
 inline void node_distances(const WideNode& n, const RayData& p, V8 d[6]) {
   for (int a = 0; a < 3; ++a) {
@@ -334,9 +333,9 @@ struct PairResult {
 
 // Watertight test of two groups' eight triangles (lanes 0-3 from g0, 4-7 from g1): the hit mask
 // (tmin <= t <= tmax) and, when it is not empty, the lane results.
-// Always inlined where the walk asks for it (intersect_pair below): GCC 12 stopped inlining it
-// into the AVX-512 any-hit octant walks when the walk of every octant became reachable there
-// (session 13), a call per leaf with the walk's vectors spilled around it.
+// Always inlined where the walk asks for it (intersect_pair below): left to itself, GCC 12 does
+// not inline it into the AVX-512 any-hit octant walks (the walk of every octant is reachable
+// there), which costs a call per leaf with the walk's vectors spilled around it.
 [[gnu::always_inline]] inline int intersect_pair_inlined(const TriangleGroup& g0,
                                                          const TriangleGroup& g1, const RayData& p,
                                                          V8 tmax, PairResult& res) {
@@ -427,7 +426,7 @@ inline int intersect_pair(const TriangleGroup& g0, const TriangleGroup& g1, cons
 // Starts loading every hit child (a node's cache lines, or all of a leaf's groups) at once,
 // so that the memory latency of siblings overlaps instead of adding up. Always inlined: GCC 12
 // finds an out-of-line copy free of side effects (__builtin_prefetch does not count) and deletes
-// the calls, so until session 7 no kernel prefetched at all (docs/performance-mesh.md).
+// the calls.
 template <class Node>
 [[gnu::always_inline]] inline void prefetch_child(const MeshBvh& bvh, std::uint32_t ref) {
   const bool leaf = ref & kLeafBit;
@@ -580,9 +579,9 @@ template <Query Q, class Node, int Oct>
 }
 
 // Whether query Q on Node runs one walk per direction octant (row offsets as constants): the
-// float-node walks of the folded-row kernels (AVX-512). Measured (session 11): any-hit ahead in 6
-// of 6 rounds (1M shadow rays, ~+2.5%); the nearest-hit walk, eight times larger in code, was
-// behind in 6 of 6 (1M primary rays, ~-3%).
+// float-node walks of the folded-row kernels (AVX-512). On the 1M sphere of
+// bench/embree_table.sh any-hit walks are about 2.5 % faster so; the nearest-hit walk, eight
+// times larger in code, is about 3 % slower (primary rays).
 template <Query Q, class Node>
 constexpr bool uses_octant_walks() {
 #ifdef RAYCAST_KERNEL_OCTANT_WALKS
@@ -646,8 +645,8 @@ inline bool ordered_ray(const MeshRay& ray) {
 }
 
 // The nearest-hit rays on float nodes that the ordered test does not admit, out of line with their
-// own RayData (inlined beside the ordered walk, or passed its RayData by address, the walk lost:
-// docs/performance-mesh.md, session 14).
+// own RayData (inlined beside the ordered walk, or passed its RayData by address, the ordered
+// walk runs slower).
 template <Query Q, class Node>
 [[gnu::noinline, gnu::cold]] bool traverse_unordered(const MeshBvh& bvh, const MeshRay& ray,
                                                      MeshBvhHit* hit, std::vector<MeshBvhHit>* out,
@@ -687,8 +686,8 @@ template <Query Q, class Node, bool kFromValidRay = false>
 #ifdef RAYCAST_KERNEL_BITS_MINMAX
     // intersect_node8_ordered's rays; the others (NaN, infinities, tmin < 0) take the walk of
     // every octant.
-    // (ordered_ray's test but for its sum: with the sum GCC allocated this walk's registers
-    // worse, sphere 1M shadow ~-4 % in 5 of 6 rounds; session 14.)
+    // (ordered_ray's test but for its sum: with the sum GCC allocates this walk's registers
+    // worse, about 4 % slower on the 1M sphere's shadow rays.)
     if (!(ray.tmin >= 0 && !std::signbit(ray.tmin) && is_finite(ray.o) &&
           (kFromValidRay || (ray.tmax >= ray.tmin && is_finite(ray.d)))))
       return walk<Q, Node, -1>(bvh, p, ray.tmax, hit, out, stack);

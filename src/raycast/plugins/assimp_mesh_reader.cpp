@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "mesh/assimp_plugin_abi.h"
+#include "io/assimp_plugin_abi.h"
 
 namespace raycast {
 namespace {

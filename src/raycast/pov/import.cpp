@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "io/scene_file.h"
 #include "pov/parser.h"
-#include "scene/scene_file.h"
 
 namespace raycast::pov {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
 
 namespace raycast::pov {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "scene/lane_array.h"
+#include "math/lane_array.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

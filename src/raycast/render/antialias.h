@@ -8,7 +8,7 @@
 
 #include "io/image.h"
 #include "render/integrator.h"
-#include "scene/camera.h"
+#include "scene/render_settings.h"
 
 namespace raycast {
 

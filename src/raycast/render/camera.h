@@ -2,7 +2,7 @@
 // Primary rays (docs/rendering.md "Camera"): a pinhole perspective camera with a vertical field of
 // view, or an orthographic one whose `height` is the full view height in scene units.
 #include "geometry/ray.h"
-#include "scene/camera.h"
+#include "scene/render_settings.h"
 
 namespace raycast {
 

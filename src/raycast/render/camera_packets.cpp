@@ -4,7 +4,7 @@
 #include <bit>
 #include <utility>
 
-#include "scene/lane_array.h"
+#include "math/lane_array.h"
 
 namespace raycast {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The fixed-sample pixel loop with the camera rays traced as packets (issue 8): a block of 4x2
+// The fixed-sample pixel loop with the camera rays traced as packets: a block of 4x2
 // pixels (4x4 with 16-ray packets) traces its sample k as one packet through ScenePackets
 // (scene/scene_packets.h), then each lane's hit is shaded on its own (Integrator::li_hit). Every
 // pixel keeps its own SampleState and draws its numbers in the single-ray loop's order, so each

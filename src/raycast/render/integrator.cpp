@@ -8,10 +8,10 @@
 #include <span>
 
 #include "geometry/spawn.h"
+#include "objects/csg_tree.h"
+#include "objects/prototype.h"
 #include "render/optics.h"
 #include "render/terminator.h"
-#include "scene/csg_tree.h"
-#include "scene/prototype.h"
 
 // trace, whitted_hit and direct: their render mode is instantiated here.
 #include "render/whitted_trace.inl"

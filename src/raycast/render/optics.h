@@ -39,7 +39,7 @@ inline double fresnel_dielectric(double cos_i, double eta_i, double eta_t) {
 }
 
 /// x^n for n >= 1 by repeated squaring, for the Phong highlight (a tenth of std::pow's
-/// instructions; docs/performance-render.md, round 7). Each squaring doubles the relative error
+/// instructions). Each squaring doubles the relative error
 /// before it, so the result is within about (n + log2 n) ulps of x^n (relative), e.g. 1e-13 for
 /// n = 200, far below the 1/255 of a displayed code.
 inline double integer_power(double x, unsigned n) {

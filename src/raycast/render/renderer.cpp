@@ -14,11 +14,11 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "math/lane_array.h"
 #include "render/antialias.h"
 #include "render/camera.h"
 #include "render/camera_packets.h"
 #include "render/integrator.h"
-#include "scene/lane_array.h"
 
 namespace raycast {
 
@@ -36,7 +36,7 @@ double process_cpu_seconds() {
 /// Starts oneTBB's scheduler and its worker threads, before the render's clock starts. The
 /// first parallel job of a process loads the scheduler and creates the workers (0.5 ms, 1-2 % of
 /// a 640x480 render on 2 threads); POV-Ray's Trace Time likewise starts inside each render
-/// thread once it runs (docs/performance-render.md, "Session 13: threads13").
+/// thread once it runs, so the comparison of bench/povray/suite.sh is like for like.
 void start_threads() {
   tbb::parallel_for(0, 64, [](int) {});
 }

@@ -4,7 +4,7 @@
 // the neighbouring facets and draws their staircase. Hanika 2021, "Hacking the Shadow
 // Terminator" (Ray Tracing Gems II, ch. 4): start shadow rays from the point the vertex normals'
 // tangent planes describe instead.
-#include "scene/object.h"
+#include "objects/object.h"
 
 namespace raycast {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "scene/scene_error.h"
+#include "io/scene_error.h"
 
 namespace raycast {
 

@@ -6,9 +6,9 @@
 
 #include "math/float_error.h"
 #include "math/isa.h"
+#include "math/lane_array.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_packet16.h"
-#include "scene/lane_array.h"
 
 namespace raycast {
 
@@ -94,7 +94,7 @@ void intersect_batch(const Scene& scene, std::span<const Ray> rays, std::span<Sc
     }
     const int mask = box_lanes(box, &rays[i], n);
     // The lanes without zero-fill, and a miss copied from a constant rather than built on the
-    // stack (as bench --packets' loop: docs/performance-mesh.md, session 11).
+    // stack (as bench --packets' loop).
     static const SceneHit kMiss{};
     LaneArray<LocalHit, 16> local;
     const int hit = !mask   ? 0

@@ -1,6 +1,6 @@
 #pragma once
 // Nearest hits of a batch of rays, through the mesh packet kernel where the rays are coherent
-// (docs/performance-mesh.md "Issue 8, fourth session").
+// (`raycast bench --packets` measures both paths).
 #include <cstdint>
 #include <span>
 

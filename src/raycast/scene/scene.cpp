@@ -31,7 +31,11 @@ void Scene::build(bool direction_lists) {
   if (direction_lists) {
     const CameraDesc view = camera_or_default(*this);
     if (view.type == CameraType::kPerspective) set_.set_view(objects, view.position);
-    set_.set_lights(objects, lights);
+    std::vector<std::optional<Vec3>> light_points(lights.size());
+    for (std::size_t k = 0; k < lights.size(); ++k)
+      if (lights[k].type == LightType::kPoint || lights[k].type == LightType::kSpot)
+        light_points[k] = lights[k].position;
+    set_.set_lights(objects, light_points);
   }
   // The direct path's condition is ObjectSet's own for its sole-mesh path: one object with
   // non-empty, bounded bounds, an untransformed mesh; every other object has empty bounds.

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "scene/camera.h"
+#include "objects/object.h"
+#include "objects/object_set.h"
 #include "scene/light.h"
 #include "scene/material.h"
-#include "scene/object.h"
-#include "scene/object_set.h"
+#include "scene/render_settings.h"
 #include "scene/source_marks.h"
 
 namespace raycast {
@@ -87,8 +87,8 @@ struct Scene {
   ObjectSet set_;  // the objects' BVH and the walks over it
   double build_ms_ = 0;
   // The scene is one untransformed mesh and nothing else that can be hit: intersect and
-  // occluded test its box and call the mesh directly, without the walk over objects
-  // (docs/performance-mesh.md, session 7). The same answers as the general path (test).
+  // occluded test its box and call the mesh directly, without the walk over objects. The same
+  // answers as the general path (test).
   const Mesh* mesh_ = nullptr;  // owned by objects[mesh_object_]
   // occluded's kernel (MeshKernels::occluded_if_valid of the kernels in use), looked up at
   // build: the shadow ray's whole query, validity check included, in one call.

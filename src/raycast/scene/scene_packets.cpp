@@ -4,9 +4,9 @@
 #include <variant>
 
 #include "math/isa.h"
+#include "math/lane_array.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_packet16.h"
-#include "scene/lane_array.h"
 
 namespace raycast {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Nearest hits of packets of up to sixteen rays (the renderer's camera rays, issue 8), each lane's
+// Nearest hits of packets of up to sixteen rays (the renderer's camera rays), each lane's
 // answer Scene::intersect's bit for bit, the scene's meshes traced by the packet kernels
 // (mesh/packet_traverse.inl) and every other object lane by lane.
 #include <cstdint>

@@ -1,0 +1,112 @@
+#include "load/read_materials.h"
+
+#include <filesystem>
+
+#include "io/image.h"
+#include "load/read_settings.h"
+
+namespace raycast {
+
+namespace {
+
+double unit_fraction(Fields& f, const std::string& key, double fallback) {
+  const double v = f.non_negative(key, fallback);
+  if (v > 1) f.fail(key, f.name(key) + " must be in [0, 1], got " + std::to_string(v));
+  return v;
+}
+
+Attenuation read_attenuation(Fields& f) {
+  const std::string a = f.string("attenuation", "none");
+  if (a == "none") return Attenuation::kNone;
+  if (a == "inverse_square") return Attenuation::kInverseSquare;
+  f.fail("attenuation", "light.attenuation must be none or inverse_square, got " + a);
+}
+
+// A data file's path as written, relative to the scene file's folder unless absolute.
+std::string resolve(const SourceContext& ctx, const std::string& path) {
+  const std::filesystem::path p(path);
+  return p.is_absolute() ? path : (std::filesystem::path(ctx.dir) / p).string();
+}
+
+}  // namespace
+
+Material read_material(const SourceContext& ctx, const YAML::Node& node, const std::string& name) {
+  Fields f(ctx, node, "material");
+  Material m;
+  m.name = name;
+  if (f.has("color") && f.has("texture")) f.fail("texture", "material has both color and texture");
+  m.color = read_color(f, "color", m.color);
+  if (f.has("texture")) {
+    Fields t(ctx, f.required("texture"), "texture");
+    if (t.has("checker")) {
+      Fields c(ctx, t.required("checker"), "checker");
+      const YAML::Node colors = c.required("colors");
+      if (!colors.IsSequence() || colors.size() != 2)
+        fail_at(ctx, colors, "checker.colors must be a list of 2 colours");
+      m.has_checker = true;
+      m.checker.c0 = read_vec3(ctx, colors[0], "checker.colors[0]");
+      m.checker.c1 = read_vec3(ctx, colors[1], "checker.colors[1]");
+      m.checker.scale = c.positive("scale", 1.0);
+      c.finish();
+    } else if (t.has("image")) {
+      Fields i(ctx, t.required("image"), "image");
+      m.image_file = resolve(ctx, i.string("file"));
+      if (ctx.files) ctx.files->push_back(m.image_file);
+      // Read now, so that a missing or bad file is an error at its position in every command.
+      try {
+        m.image = load_image_texture(m.image_file);
+      } catch (const ImageError& e) {
+        fail_at(ctx, i.required("file"), std::string("texture image: ") + e.what());
+      }
+      i.finish();
+    } else {
+      fail_at(ctx, t.node(), "texture must be checker or image");
+    }
+    t.finish();
+  }
+  m.ambient = f.non_negative("ambient", m.ambient);
+  m.diffuse = f.non_negative("diffuse", m.diffuse);
+  m.specular = f.non_negative("specular", m.specular);
+  m.shininess = f.non_negative("shininess", m.shininess);
+  m.reflection = unit_fraction(f, "reflection", m.reflection);
+  m.transmission = unit_fraction(f, "transmission", m.transmission);
+  m.ior = f.positive("ior", m.ior);
+  m.fresnel = f.boolean("fresnel", m.fresnel);
+  f.finish();
+  return m;
+}
+
+Light read_light(const SourceContext& ctx, const YAML::Node& node) {
+  Fields f(ctx, node, "light");
+  Light light;
+  const std::string type = f.string("type");
+  light.color = read_color(f, "color", light.color);
+  light.intensity = f.non_negative("intensity", light.intensity);
+  if (type == "point" || type == "spot") {
+    light.type = type == "point" ? LightType::kPoint : LightType::kSpot;
+    light.position = f.vec3("position");
+    light.attenuation = read_attenuation(f);
+    if (type == "spot") {
+      light.direction = normalize(f.direction("direction"));
+      light.angle = f.number("angle", light.angle);
+      if (!(light.angle > 0 && light.angle < 180))
+        f.fail("angle", "light.angle must be in (0, 180)");
+      light.falloff = f.non_negative("falloff", light.falloff);
+    }
+  } else if (type == "directional") {
+    light.type = LightType::kDirectional;
+    light.direction = normalize(f.direction("direction"));
+  } else if (type == "sphere") {
+    light.type = LightType::kSphere;
+    light.position = f.vec3("center");
+    light.radius = f.positive("radius");
+    light.samples = f.integer("samples", light.samples, 1, 4096);
+    light.attenuation = read_attenuation(f);
+  } else {
+    f.fail("type", "light.type must be point, directional, spot or sphere, got " + type);
+  }
+  f.finish();
+  return light;
+}
+
+}  // namespace raycast

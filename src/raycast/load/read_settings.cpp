@@ -1,0 +1,97 @@
+#include "load/read_settings.h"
+
+namespace raycast {
+
+namespace {
+
+// render.antialias: {method, threshold, depth} (docs/scene-format.md).
+void read_antialias(const SourceContext& ctx, const YAML::Node& node, AntialiasSettings& aa) {
+  Fields f(ctx, node, "render.antialias");
+  const std::string method = f.string("method");
+  if (method == "none")
+    aa.method = AntialiasMethod::kNone;
+  else if (method == "1" || method == "neighbour")
+    aa.method = AntialiasMethod::kNeighbour;
+  else if (method == "2" || method == "subdivide")
+    aa.method = AntialiasMethod::kSubdivide;
+  else if (method == "variance")
+    aa.method = AntialiasMethod::kVariance;
+  else
+    f.fail("method",
+           "render.antialias.method must be none, 1 (neighbour), 2 (subdivide) or "
+           "variance, got " +
+               method);
+  aa.threshold = f.non_negative("threshold", aa.threshold);
+  aa.depth = f.integer("depth", aa.depth, 1, 16);
+  f.finish();
+}
+
+}  // namespace
+
+Color read_color(Fields& f, const std::string& key, const Color& fallback) {
+  if (!f.has(key)) return fallback;
+  const Color c = f.vec3(key);
+  if (c.x < 0 || c.y < 0 || c.z < 0) f.fail(key, f.name(key) + " must be >= 0 in every channel");
+  return c;
+}
+
+CameraDesc read_camera(const SourceContext& ctx, const YAML::Node& node) {
+  Fields f(ctx, node, "camera");
+  CameraDesc c;
+  const std::string type = f.string("type", "perspective");
+  c.position = f.vec3("position", c.position);
+  c.look_at = f.vec3("look_at", c.look_at);
+  c.up = f.direction("up", c.up);
+  if (type == "perspective") {
+    c.type = CameraType::kPerspective;
+    c.fov = f.number("fov", c.fov);
+    if (!(c.fov > 0 && c.fov < 180)) f.fail("fov", "camera.fov must be in (0, 180) degrees");
+  } else if (type == "orthographic") {
+    c.type = CameraType::kOrthographic;
+    c.height = f.positive("height", c.height);
+  } else {
+    f.fail("type", "camera.type must be perspective or orthographic, got " + type);
+  }
+  f.finish();
+  if (length_squared(c.look_at - c.position) == 0)
+    fail_at(ctx, node, "camera.look_at must differ from camera.position");
+  if (length_squared(cross(c.look_at - c.position, c.up)) == 0)
+    fail_at(ctx, node, "camera.up must not be parallel to the viewing direction");
+  return c;
+}
+
+ImageSettings read_image(const SourceContext& ctx, const YAML::Node& node) {
+  Fields f(ctx, node, "image");
+  ImageSettings image;
+  image.width = f.integer("width", image.width, 1, kMaxImageSide);
+  image.height = f.integer("height", image.height, 1, kMaxImageSide);
+  image.samples = f.integer("samples", image.samples, 1, 1 << 16);
+  f.finish();
+  if (static_cast<long long>(image.width) * image.height > kMaxImagePixels)
+    fail_at(ctx, node,
+            "image.width * image.height must be at most " + std::to_string(kMaxImagePixels) +
+                " pixels, got " + std::to_string(image.width) + " x " +
+                std::to_string(image.height));
+  return image;
+}
+
+RenderSettings read_render(const SourceContext& ctx, const YAML::Node& node) {
+  Fields f(ctx, node, "render");
+  RenderSettings r;
+  const std::string integrator = f.string("integrator", "whitted");
+  if (const std::optional<RenderMode> mode = integrator_named(integrator))
+    r.integrator = *mode;
+  else
+    f.fail("integrator",
+           std::string("render.integrator must be ") + kIntegratorNames + ", got " + integrator);
+  r.max_depth = f.integer("max_depth", r.max_depth, 0, 1000);
+  r.bailout = f.non_negative("bailout", r.bailout);
+  r.background = read_color(f, "background", r.background);
+  r.ambient = read_color(f, "ambient", r.ambient);
+  r.seed = static_cast<unsigned>(f.integer("seed", 0, 0, 2147483647));
+  if (f.has("antialias")) read_antialias(ctx, f.required("antialias"), r.antialias);
+  f.finish();
+  return r;
+}
+
+}  // namespace raycast
