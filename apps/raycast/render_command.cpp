@@ -32,9 +32,11 @@ struct Options {
   bool stats = false, heatmap = false;
 };
 
-/// `--max-depth N` or `A-B` (a sweep): false for anything else or numbers outside [0, 64].
+/// `--max-depth N` or `A-B` (a sweep), or nothing: false for anything else or numbers outside
+/// [0, 64].
 bool parse_depths(const std::string& text, int& first, int& last) {
   constexpr int kMaxSweepDepth = 64;
+  if (text.empty()) return true;  // not given: first and last stay -1
   char dash = 0, extra = 0;
   const int n = std::sscanf(text.c_str(), "%d%c%d%c", &first, &dash, &last, &extra);
   if (n == 1)
@@ -104,6 +106,14 @@ void add_recording_flags(CLI::App& cmd, Options& opt) {
   cmd.add_option("--max-depth", opt.max_depth,
                  "Secondary ray depth (overrides the scene); A-B renders each depth and writes "
                  "them side by side as one contact sheet");
+}
+
+/// The scene at `path` (the demo for an empty path), and the seconds its loading took.
+Scene load_timed(const std::string& path, double& seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  Scene scene = path.empty() ? load_demo_scene() : load_scene_file(path);
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return scene;
 }
 
 /// Renders the image and the depth, normal, id and albedo outputs, writes them and prints the
@@ -198,17 +208,14 @@ Action add_render_command(CLI::App& app) {
                            opt->integrator + "'");
     }
     std::vector<std::pair<std::string, RenderMode>> aovs;
-    RecordedRequest recorded;
+    RecordedRequest recorded{{}, opt->heatmap, opt->stats, 0};
     const std::string plain_aovs = take_recorded_outputs(opt->aovs, recorded.outputs);
     if (std::string bad; !parse_aov_list(plain_aovs, aovs, bad))
       return usage_error(std::string("--aov takes a comma-separated list of ") + kAovNames + ", " +
                          kRecordedOutputNames + "; got '" + bad + "'");
     int depth_first = -1, depth_last = -1;
-    if (!opt->max_depth.empty() && !parse_depths(opt->max_depth, depth_first, depth_last))
-      return usage_error("--max-depth must be N or A-B with 0 <= A <= B <= 64, got '" +
-                         opt->max_depth + "'");
-    recorded.stats = opt->stats;
-    recorded.heatmap = opt->heatmap;
+    if (!parse_depths(opt->max_depth, depth_first, depth_last))
+      return usage_error("--max-depth must be N or A-B, 0 <= A <= B <= 64: " + opt->max_depth);
     const bool records = recorded.stats || !recorded.outputs.empty();
     if (const std::string problem = recording_problem(
             recorded, antialias->count() > 0 || !opt->frames.empty() || !aovs.empty(),
@@ -237,14 +244,10 @@ Action add_render_command(CLI::App& app) {
     if (const std::string problem = output_problem(opt->output); !problem.empty())
       return output_error(problem);
     if (distributed::active() && (records || !opt->max_depth.empty()))
-      return usage_error(
-          "--stats, the term and cost outputs and --max-depth render in one process");
+      return usage_error("--stats, the outputs it records and --max-depth need one process");
     if (distributed::active())  // under mpirun: tiles over the ranks (docs/distributed.md)
       return distributed::render_image(opt->scene, opt->output, options, aovs);
-    const auto load_start = std::chrono::steady_clock::now();
-    Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
-    recorded.load_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+    Scene scene = load_timed(opt->scene, recorded.load_seconds);
     if (depth_first >= 0) scene.render.max_depth = depth_first;
     if (const std::string warning = no_lights_warning(scene, render_mode(scene, options));
         !warning.empty())

@@ -60,6 +60,31 @@ void guarded(httplib::Response& res, F&& body) {
   }
 }
 
+/// POST /explain: one pixel's ray tree at the view shown (docs/explain.md), one sample at the
+/// pixel's centre.
+void answer_explain(PreviewLoop& loop, std::size_t max_body, const httplib::Request& req,
+                    httplib::Response& res) {
+  const YAML::Node root = parse_request_object(req.body, max_body);
+  const SourceContext ctx{"request", "."};
+  Fields f(ctx, root, "explain");
+  const double x = f.number("x"), y = f.number("y");
+  f.finish();
+  CameraDesc camera;
+  const std::shared_ptr<const Scene> scene = loop.scene(&camera);
+  if (!scene) return send_error(res, 409, "the scene has not loaded yet");
+  const int w = scene->image.width, h = scene->image.height;
+  if (!(x >= 0 && x < w && y >= 0 && y < h))
+    return send_error(
+        res, 400,
+        "x and y must lie inside the " + std::to_string(w) + "x" + std::to_string(h) + " image");
+  ExplainOptions o;
+  o.x = int(x);
+  o.y = int(y);
+  o.spp = 1;
+  o.camera = camera;
+  send_json(res, 200, explain_json(*scene, explain_pixel(*scene, o)));
+}
+
 }  // namespace
 
 void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<std::string>& hosts,
@@ -227,29 +252,8 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
     });
   });
 
-  // One pixel's ray tree at the view shown (docs/explain.md), 1 sample at the pixel's centre.
   server.Post("/explain", [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
-    guarded(res, [&] {
-      const YAML::Node root = parse_request_object(req.body, max_body);
-      const SourceContext ctx{"request", "."};
-      Fields f(ctx, root, "explain");
-      const double x = f.number("x"), y = f.number("y");
-      f.finish();
-      CameraDesc camera;
-      const std::shared_ptr<const Scene> scene = loop.scene(&camera);
-      if (!scene) return send_error(res, 409, "the scene has not loaded yet");
-      const int w = scene->image.width, h = scene->image.height;
-      if (!(x >= 0 && x < w && y >= 0 && y < h))
-        return send_error(res, 400,
-                          "x and y must lie inside the " + std::to_string(w) + "x" +
-                              std::to_string(h) + " image");
-      ExplainOptions o;
-      o.x = int(x);
-      o.y = int(y);
-      o.spp = 1;
-      o.camera = camera;
-      send_json(res, 200, explain_json(*scene, explain_pixel(*scene, o)));
-    });
+    guarded(res, [&] { answer_explain(loop, max_body, req, res); });
   });
 }
 

@@ -97,11 +97,11 @@ class Integrator {
               const Material& m, unsigned exponent, const Color& c, SampleState& state,
               Color& result) const;
   /// direct()'s light term (sample: its light, l, N.L, diffuse and specular parts) in the
-  /// counting and recording modes: the render's shadow query for it from `o`, counted, the term
-  /// added to `sum` when visible, and the sample with its shadow ray told to the recorder
-  /// (kRecord).
+  /// counting and recording modes: when `term` is above 0, the render's shadow query for it from
+  /// `o`, counted, and the term added to `sum` when visible; the sample (with its shadow ray) told
+  /// to the recorder (kRecord).
   template <TraceMode M>
-  void light_recorded(LightSample& sample, const Vec3& o, const Vec3& target, bool at_infinity,
+  void light_recorded(LightSample sample, const Vec3& o, const Vec3& target, bool at_infinity,
                       const DirectionLists* lists, const Color& term, SampleState& state,
                       Color& sum) const;
   /// shadow() for a scene with no transmissive material: whether an object blocks the segment

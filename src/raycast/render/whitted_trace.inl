@@ -175,16 +175,11 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const Color term = mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
-    if constexpr (M != kPlain) {
-      LightSample sample{light_index,   l,     nl, mul(e, m.diffuse * nl * c),
-                         highlight * e, false, {}, {}};
-      if (!(max_component(term) > 0)) {
-        if constexpr (M == kRecord) state.recorder->light(sample);
-        return;
-      }
+    if constexpr (M != kPlain) {  // the render's shadow query below, counted and told
       const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
-      light_recorded<M>(sample, origin_towards(from, l), target, at_infinity, lists, term, state,
-                        sum);
+      light_recorded<M>(
+          {light_index, l, nl, mul(e, m.diffuse * nl * c), highlight * e, false, {}, {}},
+          origin_towards(from, l), target, at_infinity, lists, term, state, sum);
       return;
     }
     if (!(max_component(term) > 0)) return;
@@ -270,9 +265,13 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
 }
 
 template <Integrator::TraceMode M>
-void Integrator::light_recorded(LightSample& sample, const Vec3& o, const Vec3& target,
+void Integrator::light_recorded(LightSample sample, const Vec3& o, const Vec3& target,
                                 bool at_infinity, const DirectionLists* lists, const Color& term,
                                 SampleState& state, Color& sum) const {
+  if (!(max_component(term) > 0)) {  // no shadow ray (as below: visibility cannot matter)
+    if constexpr (M == kRecord) state.recorder->light(sample);
+    return;
+  }
   ++state.recorder->counts.shadow;
   // The render's queries (shadow() is blocked() or filters() with their answer as a colour: the
   // filter product, which has a channel above 0 when the light is not blocked).
