@@ -15,6 +15,7 @@ import time
 import numpy as np
 
 import raycast
+from raycast import _raycast
 
 
 def uv_sphere(n_theta, n_phi):
@@ -61,7 +62,7 @@ def main():
     for dtype in () if "--distance" in sys.argv else (np.float64, np.float32):
         r = rays.astype(dtype)
         py_s = best(lambda: scene.cast_rays(r))
-        cpp_s = best(lambda: raycast._time_intersect(scene, r))
+        cpp_s = best(lambda: _raycast._time_intersect(scene, r))
         print(f"cast_rays {np.dtype(dtype).name}: python {py_s:.3f} cpu-s, C++ batch {cpp_s:.3f} "
               f"cpu-s, overhead {100 * (py_s - cpp_s) / cpp_s:.1f}%, "
               f"{n / py_s / 1e6:.2f} Mrays per cpu-s")

@@ -1,17 +1,12 @@
 // Scene.explain(x, y): a pixel's ray tree as a dict (docs/explain.md), the same keys and values
 // as `raycast explain --json`.
-#include <pybind11/pybind11.h>
-
 #include <string>
 
-#include "raycast/raycast.h"
-
-namespace py = pybind11;
+#include "bindings.h"
 
 namespace raycast::python {
 
-void bind_explain(py::module_& m) {
-  auto scene = py::reinterpret_borrow<py::class_<Scene>>(m.attr("Scene"));
+void bind_explain(py::class_<Scene>& scene) {
   scene.def(
       "explain",
       [](const Scene& s, int x, int y, int width, int height, int samples, int sample) {

@@ -1,8 +1,9 @@
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 
-#include "arrays.h"
+#include "bindings.h"
 
 namespace raycast::python {
 
@@ -28,8 +29,8 @@ py::array as_array(const py::handle& h, const char* what, const char* expected) 
 RayView ray_view(const py::handle& h, const char* what) {
   const char* expected = "shaped (..., 6) of float32 or float64 ([ox, oy, oz, dx, dy, dz] per ray)";
   py::array a = as_array(h, what, expected);
-  const bool f32 = a.dtype().is(py::dtype::of<float>());
-  const bool f64 = a.dtype().is(py::dtype::of<double>());
+  const bool f32 = py::isinstance<py::array_t<float>>(a);
+  const bool f64 = py::isinstance<py::array_t<double>>(a);
   if ((!f32 && !f64) || a.ndim() < 1 || a.shape(a.ndim() - 1) != 6)
     throw py::value_error(std::string(what) + " must be a numpy array " + expected + ", got " +
                           describe(a));
@@ -64,7 +65,7 @@ namespace raycast::python {
 PointView point_view(const py::handle& h, const char* what) {
   const char* expected = "shaped (..., 3) of float32 or float64 ([x, y, z] per point)";
   py::array a = as_array(h, what, expected);
-  const bool real = a.dtype().is(py::dtype::of<float>()) || a.dtype().is(py::dtype::of<double>());
+  const bool real = py::isinstance<py::array_t<float>>(a) || py::isinstance<py::array_t<double>>(a);
   if (!real || a.ndim() < 1 || a.shape(a.ndim() - 1) != 3)
     throw py::value_error(std::string(what) + " must be a numpy array " + expected + ", got " +
                           describe(a));
@@ -108,6 +109,43 @@ py::array_t<float> create_rays_pinhole(double fov_deg, const Vec3d& center, cons
       }
     }
   return out;
+}
+
+}  // namespace raycast::python
+
+namespace raycast::python {
+
+void bind_rays(py::module_& m) {
+  m.def(
+      "_time_intersect",
+      [](Scene& scene, const py::handle& rays) {
+        // The C++ batch path alone, on the caller's rays and preallocated outputs, for
+        // python/bench_python.py's overhead figure.
+        ensure_committed(scene);
+        RayView v = ray_view(rays);
+        std::vector<double> t(v.rays.count), uv(2 * v.rays.count), n(3 * v.rays.count),
+            p(3 * v.rays.count);
+        std::vector<ObjectId> o(v.rays.count);
+        std::vector<std::int32_t> prim(v.rays.count);
+        py::gil_scoped_release release;
+        const auto start = std::chrono::steady_clock::now();
+        scene.intersect(v.rays,
+                        HitColumns{t.data(), o.data(), prim.data(), p.data(), n.data(), uv.data()});
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      },
+      py::arg("scene"), py::arg("rays"));
+  m.def(
+      "create_rays_pinhole",
+      [](double fov_deg, const py::handle& center, const py::handle& eye, const py::handle& up,
+         int width_px, int height_px) {
+        return create_rays_pinhole(fov_deg, vec3(center, "center"), vec3(eye, "eye"),
+                                   vec3(up, "up"), width_px, height_px);
+      },
+      py::arg("fov_deg"), py::arg("center"), py::arg("eye"), py::arg("up"), py::arg("width_px"),
+      py::arg("height_px"),
+      "Rays (height, width, 6) float32 of a pinhole camera at eye looking at center, the image "
+      "upright (row 0 at the top, up pointing up); fov_deg is horizontal; directions have unit "
+      "depth so t_hit is depth.");
 }
 
 }  // namespace raycast::python

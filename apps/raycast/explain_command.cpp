@@ -8,24 +8,24 @@
 #include <vector>
 
 #include "commands.h"
+#include "load/demo_scene.h"
+#include "load/loader.h"
 #include "render/explain.h"
 #include "render/explain_format.h"
 #include "render/explain_svg.h"
-#include "load/demo_scene.h"
-#include "load/loader.h"
 
 namespace raycast::cli {
 
 namespace {
 
-struct Options {
+struct ExplainArgs {
   std::string scene, svg;
   std::vector<int> pixel;
   int sample = 0, width = 0, height = 0, spp = 0, max_depth = -1;
   bool json = false;
 };
 
-int usage_error(const std::string& message) {
+int explain_usage_error(const std::string& message) {
   std::fprintf(stderr, "raycast explain: %s\n", message.c_str());
   return 2;
 }
@@ -34,7 +34,7 @@ int usage_error(const std::string& message) {
 
 Action add_explain_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("explain", "Explain one pixel: its whole ray tree");
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<ExplainArgs>();
   cmd->add_option("SCENE", opt->scene,
                   "Scene file (YAML, JSON or POV-Ray); none explains the built-in demo");
   cmd->add_option("--pixel", opt->pixel, "The pixel: X from the left, Y from the top")
@@ -55,10 +55,12 @@ Action add_explain_command(CLI::App& app) {
          {std::pair{"--width", opt->width}, std::pair{"--height", opt->height},
           std::pair{"--spp", opt->spp}})
       if (value < 0 || value > kMaxImageSide)
-        return usage_error(std::string(name) + " must be in [1, " + std::to_string(kMaxImageSide) +
-                           "], got " + std::to_string(value));
+        return explain_usage_error(std::string(name) + " must be in [1, " +
+                                   std::to_string(kMaxImageSide) + "], got " +
+                                   std::to_string(value));
     if (opt->max_depth < -1 || opt->max_depth > 1000)
-      return usage_error("--max-depth must be in [0, 1000], got " + std::to_string(opt->max_depth));
+      return explain_usage_error("--max-depth must be in [0, 1000], got " +
+                                 std::to_string(opt->max_depth));
     Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
     if (opt->max_depth >= 0) scene.render.max_depth = opt->max_depth;
     ExplainOptions options;
@@ -72,7 +74,7 @@ Action add_explain_command(CLI::App& app) {
     try {
       e = explain_pixel(scene, options);
     } catch (const std::invalid_argument& error) {
-      return usage_error(error.what());
+      return explain_usage_error(error.what());
     }
     if (!opt->svg.empty()) {
       const std::string svg = explain_svg(scene, e);

@@ -46,11 +46,6 @@ bool parse_depths(const std::string& text, int& first, int& last) {
   return first >= 0 && last >= first && last <= kMaxSweepDepth;
 }
 
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "raycast render: %s\n", message.c_str());
-  return 2;
-}
-
 /// An output that cannot be written is not bad input (docs/cli.md: exit 1).
 int output_error(const std::string& message) {
   std::fprintf(stderr, "raycast render: %s\n", message.c_str());

@@ -14,11 +14,6 @@ namespace raycast::cli {
 
 namespace {
 
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "raycast render: %s\n", message.c_str());
-  return 2;
-}
-
 bool parse_int(const std::string& s, int& v) {
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   return r.ec == std::errc() && r.ptr == s.data() + s.size() && !s.empty();
@@ -86,6 +81,11 @@ int render_frames(const std::string& scene, const std::string& output, const std
   std::fprintf(stderr, "raycast render: %d of %d frames rendered%s: %s\n", count - failed, count,
                failed ? " (see the failures above)" : "", format_summary(total).c_str());
   return failed ? 2 : 0;
+}
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "raycast render: %s\n", message.c_str());
+  return 2;
 }
 
 }  // namespace raycast::cli

@@ -7,6 +7,9 @@
 
 namespace raycast::cli {
 
+/// Prints "raycast render: MESSAGE" to stderr and returns 2, the exit code of bad usage.
+int usage_error(const std::string& message);
+
 /// Renders frames A..B (inclusive; "A" alone is one frame). A frame whose scene fails to load or
 /// whose image cannot be written is reported on stderr by frame number and file, and the others
 /// still render. Returns 0 when every frame rendered, 2 for bad usage or any failed frame.

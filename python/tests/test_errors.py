@@ -72,11 +72,13 @@ def test_bad_shape_parameters_name_the_call():
         s.add_csg("union", [d, b])
 
 
-def test_query_before_commit_and_build_after(scene):
+def test_query_commits_and_build_after_raises(scene):
     s = raycast.Scene()
     s.add_sphere()
-    with pytest.raises(RuntimeError, match="commit"):
-        s.cast_rays(np.zeros((1, 6)))
+    assert not s.committed
+    assert s.cast_rays(np.array([[0, 0, -5, 0, 0, 1.0]]))["t_hit"][0] == 4.0
+    assert s.committed
+    s.commit()  # idempotent
     with pytest.raises(RuntimeError, match="committed"):
         scene.add_sphere()
 

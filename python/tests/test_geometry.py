@@ -106,29 +106,37 @@ def test_ellipsoid_closest_points_satisfy_the_lagrange_condition(rng):
     assert np.all(ans["distances"] <= brute + 1e-12)
 
 
+def point_triangle_distances(p, a, b, c):
+    """Exact distances (points x triangles): to the plane when the projection falls inside the
+    triangle, else to the nearest of the three edges."""
+    p = p[:, None]
+    n = np.cross(b - a, c - a)
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    height = np.sum((p - a) * n, axis=2)
+    q = p - height[..., None] * n
+    inside = np.ones(height.shape, bool)
+    for u, v in ((a, b), (b, c), (c, a)):
+        inside &= np.sum(np.cross(v - u, q - u) * n, axis=2) >= 0
+    best = np.where(inside, np.abs(height), np.inf)
+    for u, v in ((a, b), (b, c), (c, a)):
+        e = v - u
+        t = np.clip(np.sum((p - u) * e, axis=2) / np.sum(e * e, axis=1), 0, 1)
+        best = np.minimum(best, np.linalg.norm(p - (u + t[..., None] * e), axis=2))
+    return best
+
+
 def test_mesh_distance_equals_brute_force(rng):
     v, f = icosphere(2)
     s = mesh_scene(v, f)
     p = rng.uniform(-2, 2, size=(300, 3))
     ans = s.compute_closest_points(p)
     vf = v.astype(np.float32).astype(np.float64)
-
-    def tri_dist(p, a, b, c):  # dense barycentric sampling bound
-        return None
-
-    # Brute force: the distance to every triangle's plane-projected point, clamped by sampling.
-    uu, vv = np.meshgrid(np.linspace(0, 1, 41), np.linspace(0, 1, 41))
-    keep = uu + vv <= 1
-    uu, vv = uu[keep], vv[keep]
-    a, b, c = vf[f[:, 0]], vf[f[:, 1]], vf[f[:, 2]]
-    samples = (a[:, None] + uu[None, :, None] * (b - a)[:, None] + vv[None, :, None] * (c - a)[:, None])
-    samples = samples.reshape(-1, 3)
-    brute = np.min(np.linalg.norm(p[:, None] - samples[None], axis=2), axis=1)
-    assert np.all(ans["distances"] <= brute + 1e-12)
-    assert np.all(ans["distances"] >= brute - 0.02)  # the sampling's spacing
+    brute = point_triangle_distances(p, vf[f[:, 0]], vf[f[:, 1]], vf[f[:, 2]])
+    np.testing.assert_allclose(ans["distances"], brute.min(axis=1), rtol=1e-9, atol=1e-12)
     np.testing.assert_allclose(np.linalg.norm(ans["points"] - p, axis=1), ans["distances"])
     assert np.all(ans["geometry_ids"] == 0)
-    assert np.all(ans["primitive_ids"] < len(f))
+    np.testing.assert_allclose(brute[np.arange(len(p)), ans["primitive_ids"]], ans["distances"],
+                               rtol=1e-9, atol=1e-12)
 
 
 def test_signed_distance_sign_is_occupancy(rng):

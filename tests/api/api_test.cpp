@@ -223,6 +223,37 @@ TEST(PublicScene, Render_FillsTheImage) {
   EXPECT_EQ(img.rgb[3 * (5 * 20 + 10) + 1], 0.f);
 }
 
+TEST(PublicScene, RenderRegion_EqualsThatPartOfTheWholeImage) {
+  raycast::Scene s;
+  s.add_sphere({0, 0, 0}, 1);
+  raycast::Light light;
+  light.position = {0, 2, -5};
+  s.add_light(light);
+  s.commit();
+  raycast::Camera cam;
+  cam.position = {0, 0, -5};
+  raycast::RenderOptions o;
+  o.width = 20;
+  o.height = 10;
+  o.samples = 2;
+  const raycast::Image whole = s.render(&cam, o);
+  o.region = std::array<int, 4>{3, 2, 17, 9};
+  const raycast::Image part = s.render(&cam, o);
+  ASSERT_EQ(part.width, 14);
+  ASSERT_EQ(part.height, 7);
+  for (int y = 0; y < 7; ++y)
+    for (int x = 0; x < 14; ++x)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(part.rgb[3 * (y * 14 + x) + c], whole.rgb[3 * ((y + 2) * 20 + x + 3) + c])
+            << x << ", " << y;
+  EXPECT_EQ(s.image_size()[0], 640);  // the scene's default, used for width 0
+  for (const auto& bad : {std::array<int, 4>{0, 0, 21, 10}, std::array<int, 4>{5, 0, 5, 10},
+                          std::array<int, 4>{-1, 0, 4, 4}}) {
+    o.region = bad;
+    EXPECT_THROW(s.render(&cam, o), std::invalid_argument);
+  }
+}
+
 }  // namespace
 
 namespace {

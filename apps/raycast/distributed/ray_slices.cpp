@@ -17,7 +17,7 @@ namespace raycast::cli::distributed {
 
 namespace {
 
-const char* const kCommand = "raycast cast";
+const char* const kCastCommand = "raycast cast";
 constexpr long long kRecordIn = 64;      // 8 float64 per ray
 constexpr long long kChunk = 1 << 20;    // rays read, answered and written at a time (64 MiB)
 constexpr long long kPiece = 1LL << 30;  // MPI counts are int: at most this per call
@@ -61,13 +61,13 @@ std::string open(const std::string& path, int mode, MPI_File& file, const char* 
 
 int cast(const std::string& scene_path, const std::string& rays, const std::string& output,
          const CastOptions& options) {
-  return run_distributed(kCommand, [&](MpiSession& session) {
+  return run_distributed(kCastCommand, [&](MpiSession& session) {
     if (!options.binary || rays.empty() || output.empty()) {
       if (session.rank() == 0)
         std::fprintf(stderr,
                      "%s: under mpirun, cast needs --binary, --rays FILE and -o FILE (each rank "
                      "reads its slice of the rays and writes its answers in place)\n",
-                     kCommand);
+                     kCastCommand);
       return 2;
     }
     std::optional<Scene> scene;
@@ -77,13 +77,13 @@ int cast(const std::string& scene_path, const std::string& rays, const std::stri
     } catch (const std::exception& e) {
       error = e.what();
     }
-    if (!session.agree(error, kCommand)) return 2;
+    if (!session.agree(error, kCastCommand)) return 2;
 
     MPI_File in = MPI_FILE_NULL, out = MPI_FILE_NULL;
     error = open(rays, MPI_MODE_RDONLY, in, "ray file");
     const std::string out_error = open(output, MPI_MODE_CREATE | MPI_MODE_WRONLY, out, "output");
     if (error.empty()) error = out_error;
-    if (!session.agree(error, kCommand)) {
+    if (!session.agree(error, kCastCommand)) {
       if (in != MPI_FILE_NULL) MPI_File_close(&in);
       if (out != MPI_FILE_NULL) MPI_File_close(&out);
       return 2;
@@ -144,10 +144,10 @@ int cast(const std::string& scene_path, const std::string& rays, const std::stri
     MPI_File_set_size(out, total);  // collective: cuts what an older, longer file had beyond
     MPI_File_close(&in);
     MPI_File_close(&out);
-    if (!session.agree(error, kCommand)) return 2;
+    if (!session.agree(error, kCastCommand)) return 2;
     if (rank == 0)
-      std::fprintf(stderr, "%s: %lld rays answered on %d ranks -> %s\n", kCommand, records, ranks,
-                   output.c_str());
+      std::fprintf(stderr, "%s: %lld rays answered on %d ranks -> %s\n", kCastCommand, records,
+                   ranks, output.c_str());
     return 0;
   });
 }

@@ -36,7 +36,7 @@ int tile_side(int width, int height, int ranks) {
   return side;
 }
 
-const char* const kCommand = "raycast render";
+const char* const kRenderCommand = "raycast render";
 
 /// Loads the scene on this rank with its image textures decoded once (not once per tile).
 Scene load(const std::string& path, const RenderOptions& options) {
@@ -117,8 +117,8 @@ bool render_pass(const MpiSession& session, const Scene& scene, RenderOptions op
   };
   queue.failed = [&](int item, int rank, const std::string& error) {
     const PixelRect r = rect(item);
-    std::fprintf(stderr, "%s: rank %d: tile %d (pixels %d,%d to %d,%d) failed: %s\n", kCommand,
-                 rank, item, r.x0, r.y0, r.x1 - 1, r.y1 - 1, error.c_str());
+    std::fprintf(stderr, "%s: rank %d: tile %d (pixels %d,%d to %d,%d) failed: %s\n",
+                 kRenderCommand, rank, item, r.x0, r.y0, r.x1 - 1, r.y1 - 1, error.c_str());
     return false;  // the image cannot be completed: hand out no more tiles
   };
   total.width = width;
@@ -131,7 +131,7 @@ bool render_pass(const MpiSession& session, const Scene& scene, RenderOptions op
 int render_image(const std::string& scene_path, const std::string& output,
                  const RenderOptions& options,
                  const std::vector<std::pair<std::string, RenderMode>>& aovs) {
-  return run_distributed(kCommand, [&](MpiSession& session) {
+  return run_distributed(kRenderCommand, [&](MpiSession& session) {
     std::optional<Scene> scene;
     std::string error;
     try {
@@ -139,7 +139,7 @@ int render_image(const std::string& scene_path, const std::string& output,
     } catch (const std::exception& e) {
       error = e.what();
     }
-    if (!session.agree(error, kCommand)) return 2;
+    if (!session.agree(error, kRenderCommand)) return 2;
 
     const auto start = std::chrono::steady_clock::now();
     RenderStats total;
@@ -163,7 +163,7 @@ int render_image(const std::string& scene_path, const std::string& output,
           save_error = e.what();
         }
       }
-      if (!session.agree(save_error, kCommand)) return 2;
+      if (!session.agree(save_error, kRenderCommand)) return 2;
     }
     if (session.rank() == 0) {
       total.seconds =
@@ -171,7 +171,7 @@ int render_image(const std::string& scene_path, const std::string& output,
       std::string shares;
       for (std::size_t r = 0; r < tiles_per_rank.size(); ++r)
         shares += (r ? " + " : "") + std::to_string(tiles_per_rank[r]);
-      std::fprintf(stderr, "%s: %s -> %s: %s; %d ranks, tiles per rank %s\n", kCommand,
+      std::fprintf(stderr, "%s: %s -> %s: %s; %d ranks, tiles per rank %s\n", kRenderCommand,
                    scene_path.empty() ? "<demo>" : scene_path.c_str(), output.c_str(),
                    format_summary(total).c_str(), session.size(), shares.c_str());
     }

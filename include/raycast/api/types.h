@@ -158,6 +158,9 @@ struct RenderOptions {
   int samples = 0;         // samples per pixel; 0: the scene's
   std::string integrator;  // whitted, raycast, depth, normal or id; empty: the scene's
   int threads = 0;         // > 0 caps the worker threads
+  /// Only the pixels [x0, x1) x [y0, y1) of the full image, as {x0, y0, x1, y1}: the image is
+  /// the rectangle's size and each of its pixels equals the whole render's. Unset: all.
+  std::optional<std::array<int, 4>> region;
 };
 
 /// A linear-light RGB image, row-major, top row first: rgb[3 * (y * width + x) + c].

@@ -15,7 +15,7 @@ namespace raycast::api {
 
 namespace {
 
-constexpr std::size_t kGrain = 64;
+constexpr std::size_t kPointGrain = 64;
 // Points nearer to a surface than this times the scene's magnitude never share a sign: it is far
 // above every on-surface tolerance of api/distance_index.cpp (16 float ulps for meshes).
 constexpr double kSignReuseFloor = 1e-4;
@@ -83,7 +83,7 @@ template <class State, class F>
 void for_each_point_with(std::span<const double> points, F&& f) {
   const std::size_t n = points.size() / 3;
   if (n < 256 || n > 0xffffffffu) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kPointGrain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         State state;
                         for (std::size_t i = r.begin(); i != r.end(); ++i) f(i, state);
@@ -91,7 +91,7 @@ void for_each_point_with(std::span<const double> points, F&& f) {
     return;
   }
   const std::vector<std::uint32_t> order = spatial_order(points);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kPointGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       State state;
                       for (std::size_t i = r.begin(); i != r.end(); ++i) f(order[i], state);

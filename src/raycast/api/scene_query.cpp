@@ -14,7 +14,7 @@ namespace raycast::api {
 
 namespace {
 
-constexpr std::size_t kGrain = 256;  // rays per task: enough to hide the scheduling cost
+constexpr std::size_t kRayGrain = 256;  // rays per task: enough to hide the scheduling cost
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Ray i of a strided array, in the engine's form.
@@ -37,7 +37,7 @@ void for_each_ray(const RayArray& rays, F&& f) {
   if (rays.count > 0 && rays.data == nullptr) throw std::invalid_argument("RayArray: data is null");
   auto run = [&](auto tag) {
     using T = decltype(tag);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.count, kGrain),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.count, kRayGrain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i != r.end(); ++i) f(i, ray_at<T>(rays, i));
                       });
@@ -94,7 +94,7 @@ void for_each_ray_nearest(const raycast::Scene& scene, const RayArray& rays, F&&
   if (rays.count > 0 && rays.data == nullptr) throw std::invalid_argument("RayArray: data is null");
   auto run = [&](auto tag) {
     using T = decltype(tag);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.count, kGrain),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.count, kRayGrain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         nearest_hits(
                             scene, r.begin(), r.end(),
@@ -163,7 +163,7 @@ void Scene::intersect(std::span<const Ray> rays, std::span<SurfaceInfo> out) con
   if (out.size() != rays.size())
     throw std::invalid_argument("raycast::Scene::intersect: out must have one entry per ray");
   tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, rays.size(), kGrain),
+      tbb::blocked_range<std::size_t>(0, rays.size(), kRayGrain),
       [&](const tbb::blocked_range<std::size_t>& r) {
         nearest_hits(
             scene, r.begin(), r.end(), [&](std::size_t i) { return to_engine(rays[i]); },
@@ -205,7 +205,7 @@ void Scene::occluded(std::span<const Ray> rays, std::span<std::uint8_t> out) con
   const raycast::Scene& scene = ready().scene;
   if (out.size() != rays.size())
     throw std::invalid_argument("raycast::Scene::occluded: out must have one entry per ray");
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kGrain),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kRayGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i)
                         out[i] = scene.occluded(to_engine(rays[i])) ? 1 : 0;
@@ -245,7 +245,7 @@ void Scene::intersect_all(const RayArray& rays, std::vector<std::int64_t>& offse
   for (std::size_t i = 0; i < rays.count; ++i)
     offsets[i + 1] = offsets[i] + static_cast<std::int64_t>(per_ray[i].size());
   out.resize(static_cast<std::size_t>(offsets.back()));
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.count, kGrain),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.count, kRayGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i)
                         std::copy(per_ray[i].begin(), per_ray[i].end(), out.begin() + offsets[i]);

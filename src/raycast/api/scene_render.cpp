@@ -1,5 +1,6 @@
 // Rendering a raycast::api::Scene into an image buffer.
 #include <stdexcept>
+#include <string>
 
 #include "api/impl.h"
 #include "io/scene_error.h"
@@ -36,6 +37,13 @@ Image Scene::render(const Camera* camera, const RenderOptions& options) const {
     throw std::invalid_argument(
         "render: the image is larger than raycast renders (see "
         "docs/robustness.md)");
+  if (options.region) {
+    const auto [x0, y0, x1, y1] = *options.region;
+    if (x0 < 0 || y0 < 0 || x1 > w || y1 > h || x0 >= x1 || y0 >= y1)
+      throw std::invalid_argument("render: region must be {x0, y0, x1, y1} with 0 <= x0 < x1 <= " +
+                                  std::to_string(w) + " and 0 <= y0 < y1 <= " + std::to_string(h));
+    o.region = raycast::PixelRect{x0, y0, x1, y1};
+  }
   raycast::Image image;
   try {
     if (camera) {
@@ -53,6 +61,11 @@ Image Scene::render(const Camera* camera, const RenderOptions& options) const {
     rethrow_scene_error(e);
   }
   return {image.width, image.height, std::move(image.rgb)};
+}
+
+std::array<int, 2> Scene::image_size() const {
+  const raycast::Scene& scene = ready().scene;
+  return {scene.image.width, scene.image.height};
 }
 
 }  // namespace raycast::api

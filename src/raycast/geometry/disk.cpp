@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "geometry/angles.h"
 #include "geometry/shape_error.h"
 #include "math/float_error.h"
 
@@ -12,21 +13,12 @@ namespace raycast {
 
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
-
 void check_radii(double radius, double inner_radius) {
   if (!(radius > 0) || !std::isfinite(radius))
     throw std::invalid_argument("radius must be > 0 and finite");
   if (!(inner_radius >= 0) || !(inner_radius < radius))
     throw ShapeParameterError("inner_radius",
                               "must be in [0, radius), got " + format_parameter(inner_radius));
-}
-
-// The angle of the in-plane offset (x, y) in [0, 2 pi).
-double phi_of(double x, double y) {
-  double phi = std::atan2(y, x);
-  if (phi < 0) phi += kTwoPi;
-  return phi;
 }
 
 // The crossing of the line with the disk's plane and its in-plane coordinates; false when the

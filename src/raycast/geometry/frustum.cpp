@@ -5,19 +5,12 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "geometry/angles.h"
 #include "geometry/quadric_line.h"
 
 namespace raycast {
 
 namespace {
-
-constexpr double kTwoPi = 2 * std::numbers::pi;
-
-double phi_of(double x, double y) {
-  double phi = std::atan2(y, x);
-  if (phi < 0) phi += kTwoPi;
-  return phi;
-}
 
 Vec3 to_local(const Frustum& f, const Vec3& v) {
   return {dot(v, f.ex), dot(v, f.ey), dot(v, f.ez)};

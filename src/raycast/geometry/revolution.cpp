@@ -6,13 +6,13 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "geometry/angles.h"
 #include "math/polynomial_solver.h"
 
 namespace raycast {
 
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
 // Below this |z1| / |d| the ray counts as horizontal: the eliminated form's roots in s come in
 // pairs closer than its rounding can separate (their separation scales with z1).
 constexpr double kHorizontal = 1e-5;

@@ -7,14 +7,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/angles.h"
 #include "geometry/shape_error.h"
 #include "math/float_error.h"
 
 namespace raycast {
 
 namespace {
-
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 double phi_of(const Vec3& p) {
   double phi = std::atan2(p.y, p.x);

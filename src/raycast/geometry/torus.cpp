@@ -5,13 +5,12 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "geometry/angles.h"
 #include "math/polynomial_solver.h"
 
 namespace raycast {
 
 namespace {
-
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // Slack on the bounding sphere so that rounding in the chord never drops a root at its end.
 constexpr double kChordSlack = 1e-9;

@@ -33,7 +33,7 @@ auto with_formula(Fields& f, const std::string& key, Make&& make) {
   }
 }
 
-Aabb read_bounds(Fields& f) {
+Aabb read_required_bounds(Fields& f) {
   Fields b(f.ctx(), f.required("bounds"), f.name("bounds"));
   Aabb box{b.vec3("min"), b.vec3("max")};
   b.finish();
@@ -51,7 +51,7 @@ ShapeVariant parse_shape(std::type_identity<Torus>, Fields& f) {
 }
 
 ShapeVariant parse_shape(std::type_identity<Algebraic>, Fields& f) {
-  const Aabb box = read_bounds(f);
+  const Aabb box = read_required_bounds(f);
   const bool open = f.boolean("open", false);
   return with_formula(f, "equation", [&](const std::string& text) -> ShapeVariant {
     return make_algebraic(text, box, open);
@@ -59,7 +59,7 @@ ShapeVariant parse_shape(std::type_identity<Algebraic>, Fields& f) {
 }
 
 ShapeVariant parse_shape(std::type_identity<Implicit>, Fields& f) {
-  const Aabb box = read_bounds(f);
+  const Aabb box = read_required_bounds(f);
   const bool open = f.boolean("open", false);
   return with_formula(f, "function", [&](const std::string& text) -> ShapeVariant {
     return make_implicit(text, box, open);

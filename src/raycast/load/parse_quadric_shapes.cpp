@@ -39,7 +39,7 @@ std::vector<double> numbers_n(Fields& f, const YAML::Node& node, const std::stri
 }
 
 // `bounds: {min, max}` with min < max on every axis.
-std::optional<Aabb> read_bounds(Fields& f) {
+std::optional<Aabb> read_optional_bounds(Fields& f) {
   const YAML::Node node = f.optional("bounds");
   if (!node.IsDefined()) return std::nullopt;
   Fields b(f.ctx(), node, f.name("bounds"));
@@ -114,7 +114,7 @@ ShapeVariant parse_shape(std::type_identity<Ellipsoid>, Fields& f) {
 ShapeVariant parse_shape(std::type_identity<Quadric>, Fields& f) {
   std::string key;
   const QuadricCoefficients c = read_quadric_coefficients(f, key);
-  const std::optional<Aabb> box = read_bounds(f);
+  const std::optional<Aabb> box = read_optional_bounds(f);
   const bool open = f.boolean("open", false);
   return positioned(f, key, [&] { return make_quadric(c, box, open); });
 }

@@ -30,13 +30,12 @@ using Pair = double __attribute__((vector_size(16)));
 
 namespace {
 
-// The kernels below for degree N (math/fixed_degree.h; kDynamic: the form's own degree).
-constexpr int kDynamic = kDynamicDegree;
+// The kernels below for degree N (math/fixed_degree.h; kDynamicDegree: the form's own degree).
 
 template <int N>
 BernsteinForm bernstein_form_n(const Polynomial& p, double a, double w) {
   BernsteinForm f;
-  const int n = N == kDynamic ? p.degree : N;
+  const int n = N == kDynamicDegree ? p.degree : N;
   f.degree = n;
   // .. [0] the coefficients, then the Bernstein coefficients, in place; [1] the same computation
   // on |p|, |a|: every term's magnitude summed.
@@ -68,7 +67,7 @@ BernsteinForm bernstein_form_n(const Polynomial& p, double a, double w) {
 
 template <int N>
 void bernstein_halves_n(const BernsteinForm& f, BernsteinForm& left, BernsteinForm& right) {
-  const int n = N == kDynamic ? f.degree : N;
+  const int n = N == kDynamicDegree ? f.degree : N;
   left.degree = right.degree = n;
   // (right may be f itself: copies first; element by element, as a memcpy call costs more.)
   double b[kMaxPolynomialDegree + 1], e[kMaxPolynomialDegree + 1];
@@ -116,7 +115,7 @@ namespace {
 
 template <int N>
 int max_sign_changes_n(const BernsteinForm& f) {
-  const int n = N == kDynamic ? f.degree : N;
+  const int n = N == kDynamicDegree ? f.degree : N;
   // Certain signs: count the changes.
   int changes = 0, last = 0, i = 0;
 #pragma GCC unroll 8

@@ -9,12 +9,11 @@ namespace raycast {
 
 namespace {
 
-// Horner's rule for degree N (math/fixed_degree.h; kDynamic: p.degree).
-constexpr int kDynamic = kDynamicDegree;
+// Horner's rule for degree N (math/fixed_degree.h; kDynamicDegree: p.degree).
 
 template <int N>
 double horner(const Polynomial& p, double t) {
-  const int n = N == kDynamic ? p.degree : N;
+  const int n = N == kDynamicDegree ? p.degree : N;
   double y = p.c[n];
   for (int i = n - 1; i >= 0; --i) y = y * t + p.c[i];
   return y;
@@ -22,7 +21,7 @@ double horner(const Polynomial& p, double t) {
 
 template <int N>
 double horner_error(const Polynomial& p, double t, double& error) {
-  const int n = N == kDynamic ? p.degree : N;
+  const int n = N == kDynamicDegree ? p.degree : N;
   double y = p.c[n];
   double mu = 0.5 * std::abs(y);
   const double at = std::abs(t);
@@ -37,7 +36,7 @@ double horner_error(const Polynomial& p, double t, double& error) {
 
 template <int N>
 double horner_derivative_error(const Polynomial& p, double t, double& derivative, double& error) {
-  const int n = N == kDynamic ? p.degree : N;
+  const int n = N == kDynamicDegree ? p.degree : N;
   double y = p.c[n];
   double dy = 0;
   double mu = 0.5 * std::abs(y);

@@ -37,7 +37,7 @@ struct Obb {
   double volume = kInfinity;
 };
 
-float round_up(double x) {
+float round_up_to_float(double x) {
   const float f = static_cast<float>(x);
   return static_cast<double>(f) >= x ? f
                                      : std::nextafter(f, std::numeric_limits<float>::infinity());
@@ -82,7 +82,7 @@ Obb fit(const Vec3 (&axes)[3], Each&& each) {
   const double widest = std::max({h[0], h[1], h[2]});
   out.volume = 1;
   for (int k = 0; k < 3; ++k) {
-    out.h[k] = round_up(h[k] + kAxisSlack * sum + kRoundSlack * scale);
+    out.h[k] = round_up_to_float(h[k] + kAxisSlack * sum + kRoundSlack * scale);
     out.volume *= h[k] + 1e-3 * widest;
   }
   bool finite = std::isfinite(scale) && std::isfinite(out.volume);

@@ -19,13 +19,13 @@ namespace raycast {
 namespace {
 
 /// CPU seconds used so far by the whole process (every thread).
-double process_cpu_seconds() {
+double recorded_cpu_seconds() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-constexpr std::array<const char*, 9> kNames = {"ambient",    "diffuse",    "specular",
+constexpr std::array<const char*, 9> kOutputNames = {"ambient",    "diffuse",    "specular",
                                                "reflection", "refraction", "shadowed",
                                                "cost.rays",  "cost.depth", "cost.time"};
 
@@ -117,12 +117,12 @@ bool is_term(RecordedOutput k) { return k <= RecordedOutput::kRefraction; }
 }  // namespace
 
 std::optional<RecordedOutput> recorded_output_named(std::string_view name) {
-  for (std::size_t k = 0; k < kNames.size(); ++k)
-    if (name == kNames[k]) return RecordedOutput(k);
+  for (std::size_t k = 0; k < kOutputNames.size(); ++k)
+    if (name == kOutputNames[k]) return RecordedOutput(k);
   return std::nullopt;
 }
 
-const char* recorded_output_name(RecordedOutput output) { return kNames[std::size_t(output)]; }
+const char* recorded_output_name(RecordedOutput output) { return kOutputNames[std::size_t(output)]; }
 
 RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
                                const std::vector<RecordedOutput>& outputs, RenderStats* stats) {
@@ -146,7 +146,7 @@ RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
   const bool terms = std::any_of(outputs.begin(), outputs.end(),
                                  [](RecordedOutput k) { return k <= RecordedOutput::kShadowed; });
   const auto start = std::chrono::steady_clock::now();
-  const double cpu_start = process_cpu_seconds();
+  const double cpu_start = recorded_cpu_seconds();
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     SampleRecorder recorder;
     recorder.events = terms;
@@ -218,7 +218,7 @@ RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
     stats->threads =
         int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
     stats->seconds = seconds;
-    stats->cpu_seconds = process_cpu_seconds() - cpu_start;
+    stats->cpu_seconds = recorded_cpu_seconds() - cpu_start;
     stats->samples = std::uint64_t(width) * height * spp;
     stats->rays = result.counts.total();
   }
