@@ -24,7 +24,7 @@ class CMakeBuild(build_ext):
             generator = ["-G", "Ninja"] if shutil.which("ninja") else []
             subprocess.check_call(["cmake", "-S", ROOT, "-B", tree, *generator,
                                    "-DCMAKE_BUILD_TYPE=Release", "-DRAYCAST_TESTS=OFF",
-                                   "-DRAYCAST_BENCH=OFF", "-DRAYCAST_PYTHON=ON",
+                                   "-DRAYCAST_BENCH=OFF", "-DRAYCAST_PYTHON=ON", "-DRAYCAST_UNITY_BUILD=ON",
                                    f"-DPYTHON_EXECUTABLE={sys.executable}"])
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
         subprocess.check_call(["cmake", "--build", tree, "--target", "raycast_python",
