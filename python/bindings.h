@@ -37,5 +37,7 @@ void bind_appearance(py::class_<Scene>& scene);
 void bind_queries(py::class_<Scene>& scene);
 /// Scene.render into a raycast.Image.
 void bind_render(py::class_<Scene>& scene);
+/// Scene.explain: a pixel's ray tree as a dict (explain_binding.cpp).
+void bind_explain(py::class_<Scene>& scene);
 
 }  // namespace raycast::python

@@ -22,6 +22,7 @@ PYBIND11_MODULE(_raycast, m) {
   bind_appearance(scene);
   bind_queries(scene);
   bind_render(scene);
+  bind_explain(scene);
 }
 
 }  // namespace raycast::python

@@ -14,7 +14,9 @@ Action add_info_command(CLI::App& app);
 Action add_render_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
 Action add_validate_command(CLI::App& app);
-Action add_convert_command(CLI::App& app);  // POV-Ray scenes to YAML (docs/pov-import.md)
+Action add_convert_command(CLI::App& app);
+Action add_explain_command(CLI::App& app);  // one pixel's ray tree (docs/explain.md)  // POV-Ray
+                                            // scenes to YAML (docs/pov-import.md)
 Action add_serve_command(CLI::App& app);    // built with cpp-httplib (RAYCAST_HAVE_SERVE)
 
 }  // namespace raycast::cli

@@ -1,5 +1,6 @@
 // `raycast render [SCENE] [-o out.png] ...` (docs/cli.md): renders a scene, or the
 // built-in demo, to an image whose format follows the extension; AOVs go beside it.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,15 +21,31 @@
 #include "render/renderer.h"
 #include "render_frames.h"
 #include "render_output.h"
+#include "render_recorded.h"
 
 namespace raycast::cli {
 
 namespace {
 
 struct Options {
-  std::string scene, output = "out.png", integrator, aovs, antialias, frames;
+  std::string scene, output = "out.png", integrator, aovs, antialias, frames, max_depth;
   int width = 0, height = 0, spp = 0, threads = 0;
+  bool stats = false, heatmap = false;
 };
+
+/// `--max-depth N` or `A-B` (a sweep), or nothing: false for anything else or numbers outside
+/// [0, 64].
+bool parse_depths(const std::string& text, int& first, int& last) {
+  constexpr int kMaxSweepDepth = 64;
+  if (text.empty()) return true;  // not given: first and last stay -1
+  char dash = 0, extra = 0;
+  const int n = std::sscanf(text.c_str(), "%d%c%d%c", &first, &dash, &last, &extra);
+  if (n == 1)
+    last = first;
+  else if (n != 3 || dash != '-')
+    return false;
+  return first >= 0 && last >= first && last <= kMaxSweepDepth;
+}
 
 /// An output that cannot be written is not bad input (docs/cli.md: exit 1).
 int output_error(const std::string& message) {
@@ -75,6 +92,53 @@ bool parse_antialias(const std::string& text, AntialiasSettings& aa, std::string
   return true;
 }
 
+/// --heatmap, --stats and --max-depth (docs/rendering.md "Term outputs" to "Depth sweep").
+void add_recording_flags(CLI::App& cmd, Options& opt) {
+  cmd.add_flag("--heatmap", opt.heatmap,
+               "Also write the shadowed and cost outputs as false-colour OUT.<name>.png with a "
+               "colour bar");
+  cmd.add_flag("--stats", opt.stats,
+               "Print a statistics report: rays by kind, time by phase, the BVHs' shape");
+  cmd.add_option("--max-depth", opt.max_depth,
+                 "Secondary ray depth (overrides the scene); A-B renders each depth and writes "
+                 "them side by side as one contact sheet");
+}
+
+/// The scene at `path` (the demo for an empty path), and the seconds its loading took.
+Scene load_timed(const std::string& path, double& seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  Scene scene = path.empty() ? load_demo_scene() : load_scene_file(path);
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return scene;
+}
+
+/// Renders the image and the depth, normal, id and albedo outputs, writes them and prints the
+/// summary line. Returns the exit code.
+int render_and_save(const Scene& scene, const RenderOptions& options, const std::string& source,
+                    const std::string& output,
+                    const std::vector<std::pair<std::string, RenderMode>>& aovs) {
+  RenderStats stats;
+  const Image image = render(scene, options, &stats);
+  const bool depth = render_mode(scene, options) == RenderMode::kDepth;
+  try {
+    save_render(image, output, depth);
+    for (const auto& [name, aov] : aovs) {
+      RenderOptions aov_options = options;
+      aov_options.aov = aov;
+      aov_options.progress = false;
+      RenderStats aov_stats;
+      save_image(render(scene, aov_options, &aov_stats), aov_path(output, name));
+      stats.rays += aov_stats.rays;
+      stats.seconds += aov_stats.seconds;
+    }
+  } catch (const ImageError& e) {
+    return output_error(e.what());
+  }
+  std::fprintf(stderr, "raycast render: %s -> %s: %s\n", source.empty() ? "<demo>" : source.c_str(),
+               is_stdout(output) ? "<stdout>" : output.c_str(), format_summary(stats).c_str());
+  return 0;
+}
+
 }  // namespace
 
 Action add_render_command(CLI::App& app) {
@@ -104,7 +168,9 @@ Action add_render_command(CLI::App& app) {
                   "whitted, raycast, depth, normal or id (overrides the scene)");
   cmd->add_option("--aov", opt->aovs,
                   "Comma-separated extra outputs written beside the image as OUT.<name>.pfm: "
-                  "depth, normal, id, albedo");
+                  "depth, normal, id, albedo; the Whitted terms ambient, diffuse, specular, "
+                  "reflection, refraction, shadowed; the costs cost.rays, cost.depth, cost.time");
+  add_recording_flags(*cmd, *opt);
   cmd->add_option("--frames", opt->frames,
                   "Render frames A-B: {frame} / {frame:04d} in the scene's data paths and in -o");
   return [opt, width, height, spp, threads, antialias] {
@@ -139,9 +205,21 @@ Action add_render_command(CLI::App& app) {
                            opt->integrator + "'");
     }
     std::vector<std::pair<std::string, RenderMode>> aovs;
-    if (std::string bad; !parse_aov_list(opt->aovs, aovs, bad))
-      return usage_error(std::string("--aov takes a comma-separated list of ") + kAovNames +
-                         "; got '" + bad + "'");
+    RecordedRequest recorded{{}, opt->heatmap, opt->stats, 0};
+    const std::string plain_aovs = take_recorded_outputs(opt->aovs, recorded.outputs);
+    if (std::string bad; !parse_aov_list(plain_aovs, aovs, bad))
+      return usage_error(std::string("--aov takes a comma-separated list of ") + kAovNames + ", " +
+                         kRecordedOutputNames + "; got '" + bad + "'");
+    int depth_first = -1, depth_last = -1;
+    if (!parse_depths(opt->max_depth, depth_first, depth_last))
+      return usage_error("--max-depth must be N or A-B, 0 <= A <= B <= 64: " + opt->max_depth);
+    const bool records = recorded.stats || !recorded.outputs.empty();
+    if (const std::string problem = recording_problem(
+            recorded, antialias->count() > 0 || !opt->frames.empty() || !aovs.empty(),
+            depth_last > depth_first, options.integrator.value_or(RenderMode::kWhitted),
+            is_stdout(opt->output));
+        !problem.empty())
+      return usage_error(problem);
     if (is_stdout(opt->output)) {
       if (!aovs.empty()) return usage_error("--aov writes files beside -o: it needs a file, not -");
       if (!opt->frames.empty()) return usage_error("--frames writes one file per frame, not -");
@@ -162,9 +240,12 @@ Action add_render_command(CLI::App& app) {
     if (!opt->frames.empty()) return render_frames(opt->scene, opt->output, opt->frames, options);
     if (const std::string problem = output_problem(opt->output); !problem.empty())
       return output_error(problem);
+    if (distributed::active() && (records || !opt->max_depth.empty()))
+      return usage_error("--stats, the outputs it records and --max-depth need one process");
     if (distributed::active())  // under mpirun: tiles over the ranks (docs/distributed.md)
       return distributed::render_image(opt->scene, opt->output, options, aovs);
-    const Scene scene = opt->scene.empty() ? load_demo_scene() : load_scene_file(opt->scene);
+    Scene scene = load_timed(opt->scene, recorded.load_seconds);
+    if (depth_first >= 0) scene.render.max_depth = depth_first;
     if (const std::string warning = no_lights_warning(scene, render_mode(scene, options));
         !warning.empty())
       std::fprintf(stderr, "raycast render: warning: %s\n", warning.c_str());
@@ -174,28 +255,10 @@ Action add_render_command(CLI::App& app) {
     if (pixels > kMaxImagePixels)
       return usage_error("the image must be at most " + std::to_string(kMaxImagePixels) +
                          " pixels, got " + std::to_string(pixels));
-    RenderStats stats;
-    const Image image = render(scene, options, &stats);
-    const bool depth = render_mode(scene, options) == RenderMode::kDepth;
-    try {
-      save_render(image, opt->output, depth);
-      for (const auto& [name, aov] : aovs) {
-        RenderOptions aov_options = options;
-        aov_options.aov = aov;
-        aov_options.progress = false;
-        RenderStats aov_stats;
-        save_image(render(scene, aov_options, &aov_stats), aov_path(opt->output, name));
-        stats.rays += aov_stats.rays;
-        stats.seconds += aov_stats.seconds;
-      }
-    } catch (const ImageError& e) {
-      return output_error(e.what());
-    }
-    std::fprintf(stderr, "raycast render: %s -> %s: %s\n",
-                 opt->scene.empty() ? "<demo>" : opt->scene.c_str(),
-                 is_stdout(opt->output) ? "<stdout>" : opt->output.c_str(),
-                 format_summary(stats).c_str());
-    return 0;
+    if (depth_last > depth_first)
+      return render_depth_sweep(scene, options, opt->output, depth_first, depth_last);
+    if (records) return render_and_record(scene, options, opt->output, recorded);
+    return render_and_save(scene, options, opt->scene, opt->output, aovs);
   };
 }
 

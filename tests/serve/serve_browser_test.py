@@ -6,6 +6,7 @@ channel within 1 of 255 (colour management or canvas round trips could move a co
 expect and report 0). The page also checks its camera gestures' geometry (orbit, pan, zoom) in
 the browser and reports "ok" in the DOM. Skipped (exit 77) when Chromium is not installed."""
 import base64
+import json
 import os
 import re
 import shutil
@@ -65,6 +66,16 @@ def main():
             result.stderr[-2000:]
         self_test = re.search(r'<pre id="self-test">([^<]*)</pre>', result.stdout)
         assert self_test and self_test.group(1) == "ok", self_test and self_test.group(1)
+        # The explain panel on the centre pixel: a collapsible tree with the colour of
+        # `raycast explain --json`, and its rays drawn over the picture.
+        panel = re.search(r'<pre id="explain-test"[^>]*>([^<]*)</pre>', result.stdout)
+        assert panel and panel.group(1).startswith("{"), panel and panel.group(1)
+        panel = json.loads(panel.group(1))
+        cli = json.loads(subprocess.run(
+            [os.environ["RAYCAST_BINARY"], "explain", scene, "--pixel", "80", "60", "--spp", "1",
+             "--json"], capture_output=True, text=True, check=True).stdout)
+        assert panel["color"] == cli["color"], (panel, cli["color"])
+        assert panel["details"] >= 2 and panel["segments"] >= 1, panel
         state = server.get_json("/state")
         assert state["final"] and int(match.group(1)) == state["frame"], (match.group(1), state)
         canvas = base64.b64decode(match.group(2))

@@ -2,10 +2,12 @@
 `raycast render`, reloads on edits of the scene and of a file it names, errors with their position
 while the last image stays, the page's requests, and hostile requests that must get a 4xx while the
 server stays up. Run by ctest (serve_http); stdlib only."""
+import json
 import os
 import re
 import shutil
 import struct
+import subprocess
 import sys
 import tempfile
 import threading
@@ -190,6 +192,15 @@ def main():
         status, pick = server.post("/pick", {"x": 1, "y": 1})
         assert status == 200 and not pick["hit"], pick
 
+        # Explain: the centre pixel's ray tree, its root colour `raycast explain --json`'s.
+        status, tree = server.post("/explain", {"x": 40, "y": 30})
+        assert status == 200 and tree["pixel"] == [40, 30], tree
+        assert tree["ray"]["kind"] == "camera" and tree["ray"]["hit"]["shape"] == "sphere", tree
+        cli = json.loads(subprocess.run(
+            [os.environ["RAYCAST_BINARY"], "explain", scene, "--pixel", "40", "30", "--spp", "1",
+             "--json"], capture_output=True, text=True, check=True).stdout)
+        assert tree["color"] == cli["color"], (tree["color"], cli["color"])
+
         # The integrator switch gives `raycast render --integrator normal`.
         status, reply = server.post("/integrator", {"integrator": "normal"})
         assert status == 200 and reply["integrator"] == "normal", reply
@@ -236,6 +247,8 @@ def main():
             ("/pick", b'{"x": -1, "y": 0}', 400),
             ("/pick", b'{"x": 80, "y": 0}', 400),
             ("/pick", b'{"x": "a", "y": 0}', 400),
+            ("/explain", b'{"x": 80, "y": 0}', 400),
+            ("/explain", b'{"x": 1}', 400),
             ("/integrator", b'{"integrator": "path"}', 400),
             ("/integrator", b'{}', 400),
         ]

@@ -11,6 +11,8 @@
 
 #include "io/scene_error.h"
 #include "load/yaml_reader.h"
+#include "render/explain.h"
+#include "render/explain_format.h"
 #include "serve/camera_request.h"
 #include "serve/camera_writeback.h"
 #include "serve/json_text.h"
@@ -56,6 +58,31 @@ void guarded(httplib::Response& res, F&& body) {
   } catch (const std::exception& e) {
     send_error(res, 500, e.what());
   }
+}
+
+/// POST /explain: one pixel's ray tree at the view shown (docs/explain.md), one sample at the
+/// pixel's centre.
+void answer_explain(PreviewLoop& loop, std::size_t max_body, const httplib::Request& req,
+                    httplib::Response& res) {
+  const YAML::Node root = parse_request_object(req.body, max_body);
+  const SourceContext ctx{"request", "."};
+  Fields f(ctx, root, "explain");
+  const double x = f.number("x"), y = f.number("y");
+  f.finish();
+  CameraDesc camera;
+  const std::shared_ptr<const Scene> scene = loop.scene(&camera);
+  if (!scene) return send_error(res, 409, "the scene has not loaded yet");
+  const int w = scene->image.width, h = scene->image.height;
+  if (!(x >= 0 && x < w && y >= 0 && y < h))
+    return send_error(
+        res, 400,
+        "x and y must lie inside the " + std::to_string(w) + "x" + std::to_string(h) + " image");
+  ExplainOptions o;
+  o.x = int(x);
+  o.y = int(y);
+  o.spp = 1;
+  o.camera = camera;
+  send_json(res, 200, explain_json(*scene, explain_pixel(*scene, o)));
 }
 
 }  // namespace
@@ -223,6 +250,10 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
                               std::to_string(h) + " image");
       send_json(res, 200, pick_json(*scene, camera, w, h, x, y));
     });
+  });
+
+  server.Post("/explain", [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
+    guarded(res, [&] { answer_explain(loop, max_body, req, res); });
   });
 }
 

@@ -135,6 +135,11 @@ class Scene {
   Image render(const Camera* camera, const RenderOptions& options) const;
   /// The width and height render() uses for RenderOptions' zero width and height.
   std::array<int, 2> image_size() const;
+  /// Pixel (x, y)'s ray tree (docs/explain.md) as the JSON text of `raycast explain --json`:
+  /// sample `sample` of the pixel at the scene's camera, `options`' width, height and samples
+  /// overriding the scene's (0: the scene's; the integrator option is not used). Throws
+  /// std::invalid_argument for a pixel or sample outside the image.
+  std::string explain_json(int x, int y, const RenderOptions& options, int sample = 0) const;
 
   struct Impl;  // the engine behind the wall (opaque to users)
 

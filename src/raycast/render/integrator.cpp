@@ -13,6 +13,9 @@
 #include "render/optics.h"
 #include "render/terminator.h"
 
+// trace, whitted_hit and direct: their render mode is instantiated here.
+#include "render/whitted_trace.inl"
+
 namespace raycast {
 
 namespace {
@@ -20,18 +23,6 @@ namespace {
 /// A shadow segment crossing more surfaces of transmissive objects than this is treated as
 /// blocked: a bound on the work per shadow ray, far beyond what a Whitted scene needs.
 constexpr int kMaxShadowCrossings = 64;
-
-constexpr double kDegrees = std::numbers::pi / 180;
-
-/// The spot light's cone: 1 inside angle - falloff, 0 outside angle, a smoothstep between.
-double spot_factor(const Light& light, const Vec3& from_light) {
-  const double cos_theta = std::clamp(dot(light.direction, from_light), -1.0, 1.0);
-  const double theta = std::acos(cos_theta) / kDegrees;
-  if (theta >= light.angle) return 0;
-  if (theta <= light.angle - light.falloff) return 1;
-  const double x = (light.angle - theta) / light.falloff;
-  return x * x * (3 - 2 * x);
-}
 
 /// The Phong exponent as an integer when it is one in [1, 4096] (the common case), else 0.
 unsigned integer_exponent(double shininess) {
@@ -147,199 +138,33 @@ Color Integrator::diagnostic_hit(const Ray& ray, bool found, const SceneHit& hit
   return {0, 0, 0};
 }
 
+// The recording modes are compiled in integrator_record.cpp: with them in this file GCC stopped
+// inlining offset_ray_origin into the render's mode (3 % more instructions on
+// bench/scenes/glass.yaml under bench/render_instructions.sh).
+extern template Color Integrator::trace<Integrator::kCount>(const Ray& ray, int depth,
+                                                            SampleState& state,
+                                                            double weight) const;
+extern template Color Integrator::trace<Integrator::kRecord>(const Ray& ray, int depth,
+                                                             SampleState& state,
+                                                             double weight) const;
+
 Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double weight) const {
+  if (state.recorder) [[unlikely]]
+    return state.recorder->events ? trace<kRecord>(ray, depth, state, weight)
+                                  : trace<kCount>(ray, depth, state, weight);
+  // trace<false>'s body, here rather than called: a call per camera ray cost 0.5 % more
+  // instructions on bench/scenes/whitted.yaml.
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) return scene_.render.background;
-  return whitted_hit(ray, hit, depth, state, weight);
-}
-
-inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
-                                     SampleState& state, double weight) const {
-  // The material is resolved once per hit (CSG and instances search their parts for it).
-  const std::size_t mi = material_index(hit);
-  const Object& object = scene_.objects[hit.object];
-  const bool imaged = needs(mi) == SurfaceNeeds::kAll;
-  const SurfaceInfo si = raycast::surface(object, ray, hit.local,
-                                          imaged ? SurfaceNeeds::kAll : SurfaceNeeds::kGeometry);
-  const Material& m = scene_.materials[mi];
-  // A plain colour needs no look-up (albedo() would return it).
-  const Color c = m.has_checker || imaged ? albedo(scene_, textures_, ray, hit, si, mi) : m.color;
-  const Vec3 wi = normalize(ray.d);
-  const bool outside = dot(wi, si.n) < 0;
-  const Vec3 n = outside ? si.shading_n : -si.shading_n;  // faces the viewer
-  const Vec3 v = -wi;
-  // Shadow rays leaving on the shading normal's side of a smooth mesh start from Hanika's point
-  // (a temporary at its own call: a std::optional here had GCC zero 120 bytes per hit).
-  const unsigned exponent = exponents_[mi];
-  Color result = m.ambient * mul(scene_.render.ambient, c);
-  if (objects_[std::size_t(hit.object)].terminator)
-    direct(si, terminator_origin(object, hit.local, si), n, v, m, exponent, c, state, result);
-  else
-    direct(si, si, n, v, m, exponent, c, state, result);
-  if (depth >= scene_.render.max_depth) return result;
-
-  // Split between the mirror and the refracted ray (fixed weights, or exact Fresnel).
-  double w_reflect = m.reflection, w_refract = m.transmission;
-  Vec3 t_dir;
-  if (w_refract > 0) {
-    const double eta_i = outside ? 1 : m.ior, eta_t = outside ? m.ior : 1;
-    const bool refracted = refract(wi, n, eta_i / eta_t, t_dir);
-    if (m.fresnel) {
-      const double f = fresnel_dielectric(dot(v, n), eta_i, eta_t);
-      w_reflect += w_refract * f;
-      w_refract *= 1 - f;
-    }
-    if (!refracted) {  // total internal reflection: the refracted weight goes to the mirror ray
-      w_reflect += w_refract;
-      w_refract = 0;
-    }
-  }
-  // Like POV-Ray's adc_bailout: a ray whose contribution to the pixel (the product of the
-  // weights along its path) is below the cut-off is not traced (w > 0 keeps bailout 0 exact).
-  const double cutoff = scene_.render.bailout;
-  if (w_reflect > 0 && weight * w_reflect >= cutoff) {
-    const Vec3 m_dir = reflect(wi, n);
-    result += w_reflect *
-              whitted({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
-  }
-  if (w_refract > 0 && weight * w_refract >= cutoff)
-    result += w_refract *
-              whitted({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
-  return result;
+  return whitted_hit<kPlain>(ray, hit, depth, state, weight);
 }
 
 Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
                          SampleState& state) const {
   ++state.rays;
   if (mode_ != RenderMode::kWhitted) return diagnostic_hit(ray, found, hit);
-  return found ? whitted_hit(ray, hit, 0, state, 1) : scene_.render.background;
-}
-
-void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
-                        const Material& m, unsigned exponent, const Color& c, SampleState& state,
-                        Color& result) const {
-  Color sum{0, 0, 0};
-  if (m.diffuse <= 0 && m.specular <= 0) {
-    result += sum;
-    return;
-  }
-  // offset_ray_origin depends on the direction only through the side of the surface it points
-  // to: every shadow ray that leaves the same point to the same side starts at one origin,
-  // computed once (the side test is offset_ray_origin's own, NaN included).
-  const SurfaceInfo* origin_from = nullptr;
-  bool origin_inward = false;
-  Vec3 origin;
-  auto origin_towards = [&](const SurfaceInfo& from, const Vec3& l) -> const Vec3& {
-    const bool inward = dot(l, from.n) < 0;
-    if (origin_from != &from || origin_inward != inward) {
-      origin = offset_ray_origin(from, l);
-      origin_from = &from;
-      origin_inward = inward;
-    }
-    return origin;
-  };
-  // The direction lists around the light of the loop below (nullptr for lights without: only
-  // point and spot lights have them, and add's shadow rays to such a light end at it).
-  const DirectionLists* lists = nullptr;
-  // One light direction l towards `target` (a point, or a direction when at infinity).
-  auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e)
-      __attribute__((always_inline)) {
-    const double nl = dot(n, l);
-    // A light with no positive channel (e <= 0) gives a term <= 0: the test of the term below
-    // drops it, without a test of e here for every light.
-    if (!(nl > 0)) return;
-    // Diffuse and Phong highlight: e * (kd nl C + ks max(0, r.v)^shininess), r = l mirrored
-    // about n. pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
-    const Vec3 r = 2 * nl * n - l;
-    const double rv = dot(r, v);
-    const double highlight =
-        m.specular > 0 && (rv > 0 || !(m.shininess > 0))
-            ? m.specular * (exponent > 0 ? integer_power(std::max(0.0, rv), exponent)
-                                         : std::pow(std::max(0.0, rv), m.shininess))
-            : 0;
-    const Color term = mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
-    // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
-    // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
-    if (!(max_component(term) > 0)) return;
-    // (lit is si itself except on smooth meshes: then no side test.)
-    const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
-    if (!any_transmissive_) {
-      // Visibility is 0 or 1: no colour to return and multiply (1 * term is term, bit for bit).
-      const Vec3& o = origin_towards(from, l);
-      if (!(lists ? blocked_to(o, *lists, state) : blocked(o, target, at_infinity, state)))
-        sum += term;
-      return;
-    }
-    // Unblocked, the filter product has a channel above 0 (passes() stops the walk otherwise).
-    Color through{1, 1, 1};
-    const Vec3& o = origin_towards(from, l);
-    if (lists ? filters_to(o, *lists, state, through)
-              : filters(o, target, at_infinity, state, through))
-      sum += mul(through, term);
-  };
-  // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
-  const Light* const lights = scene_.lights.data();
-  const Color* const emitted_by = emitted_.data();
-  const std::size_t light_count = scene_.lights.size();
-  for (std::size_t li = 0; li < light_count; ++li) {
-    const Light& light = lights[li];
-    const Color& emitted = emitted_by[li];
-    lists = light_lists_[li];
-    const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
-    switch (light.type) {
-      case LightType::kDirectional:
-        add(-light.direction, -light.direction, true, emitted);
-        break;
-      case LightType::kPoint:
-      case LightType::kSpot: {
-        const Vec3 to = light.position - si.p;
-        const double dist2 = length_squared(to);
-        if (!(dist2 > 0)) break;
-        const Vec3 l = to / std::sqrt(dist2);
-        Color e = inverse_square ? emitted / dist2 : emitted;
-        if (light.type == LightType::kSpot) {
-          const double cone = spot_factor(light, -l);
-          if (!(cone > 0)) break;  // outside the cone: no term
-          e *= cone;
-        }
-        add(l, light.position, false, e);
-        break;
-      }
-      case LightType::kSphere: {
-        // Directions uniform in the cone the sphere subtends (pbrt-v4 6.2.4), each sample
-        // carrying 1/samples of the light; inside the sphere it acts as a point at its centre.
-        const Vec3 to = light.position - si.p;
-        const double dist2 = length_squared(to);
-        const double r2 = light.radius * light.radius;
-        if (dist2 <= r2) {
-          add(normalize(to), light.position, false, emitted);
-          break;
-        }
-        const double dist = std::sqrt(dist2);
-        const Vec3 w = to / dist;
-        Vec3 s, t;
-        make_frame(w, s, t);
-        const double cos_max = std::sqrt(std::max(0.0, 1 - r2 / dist2));
-        const Color share = emitted / double(light.samples);
-        for (int k = 0; k < light.samples; ++k) {
-          const double cos_theta = 1 - state.rng.uniform() * (1 - cos_max);
-          const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
-          const double phi = 2 * std::numbers::pi * state.rng.uniform();
-          const Vec3 l =
-              sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * w;
-          // The nearer crossing of the light's sphere along l (cancellation-free form).
-          const double b = dot(l, to);
-          const double disc = std::max(0.0, b * b - (dist2 - r2));
-          const double q = b + std::sqrt(disc);
-          const double along = q > 0 ? (dist2 - r2) / q : dist;
-          add(l, si.p + along * l, false, inverse_square ? share / (along * along) : share);
-        }
-        break;
-      }
-    }
-  }
-  result += sum;
+  return found ? whitted_hit<kPlain>(ray, hit, 0, state, 1) : scene_.render.background;
 }
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,

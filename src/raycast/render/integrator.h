@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "render/ray_recorder.h"
 #include "render/rng.h"
 #include "render/texture.h"
 #include "scene/scene.h"
@@ -12,10 +13,13 @@
 namespace raycast {
 
 /// The mutable state of one sample: its random numbers and its ray count (every intersect or
-/// occluded query on the scene counts one ray: primary, secondary and shadow rays alike).
+/// occluded query on the scene counts one ray: primary, secondary and shadow rays alike), and
+/// the observer of the Whitted integrator's work (render/ray_recorder.h; null: none, the render's
+/// case).
 struct SampleState {
   Rng rng;
   std::uint64_t rays = 0;
+  RayRecorder* recorder = nullptr;
 };
 
 /// A stable colour for a top-level object entry (the `id` integrator): a hash of the index,
@@ -40,6 +44,11 @@ class Integrator {
   /// (camera-ray packets, render/camera_packets.h).
   Color li_hit(const Ray& ray, bool found, const SceneHit& hit, SampleState& state) const;
 
+  /// How the Whitted recursion runs: kPlain without a recorder (a render: no trace of the
+  /// recorder in its code), kCount keeping only state.recorder->counts (RayRecorder::events
+  /// false), kRecord also calling the recorder's hooks.
+  enum TraceMode { kPlain, kCount, kRecord };
+
   /// Whitted radiance along a ray `depth` secondary bounces deep (primary rays: 0) whose
   /// radiance reaches the pixel multiplied by `weight` (primary rays: 1); its reflected and
   /// refracted rays are traced only when their weight is at least render.bailout.
@@ -52,6 +61,9 @@ class Integrator {
   Color shadow(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
 
  private:
+  /// whitted() in one mode for the whole recursion (TraceMode).
+  template <TraceMode M>
+  Color trace(const Ray& ray, int depth, SampleState& state, double weight) const;
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
   /// li_diagnostic() after its query (found, hit: scene.intersect's answer); counts no ray.
@@ -59,6 +71,7 @@ class Integrator {
   /// whitted() after its query, for a ray that hit (hit: scene.intersect's answer); counts no
   /// ray for it (its shadow and secondary rays are counted). Inlined into whitted() and li_hit()
   /// (as a call it cost whitted 1% more instructions).
+  template <TraceMode M>
   [[gnu::always_inline]] Color whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
                                            SampleState& state, double weight) const;
   /// The shadow segment's passage through object `index`: false when an opaque part of it
@@ -79,9 +92,18 @@ class Integrator {
   /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
   /// (render/terminator.h), the others from si. `exponent`: m.shininess as an integer (0: not
   /// one, std::pow). Adds the lights' sum to `result` in one addition (`result += sum`).
+  template <TraceMode M>
   void direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
               const Material& m, unsigned exponent, const Color& c, SampleState& state,
               Color& result) const;
+  /// direct()'s light term (sample: its light, l, N.L, diffuse and specular parts) in the
+  /// counting and recording modes: when `term` is above 0, the render's shadow query for it from
+  /// `o`, counted, and the term added to `sum` when visible; the sample (with its shadow ray) told
+  /// to the recorder (kRecord).
+  template <TraceMode M>
+  void light_recorded(LightSample sample, const Vec3& o, const Vec3& target, bool at_infinity,
+                      const DirectionLists* lists, const Color& term, SampleState& state,
+                      Color& sum) const;
   /// shadow() for a scene with no transmissive material: whether an object blocks the segment
   /// (visibility 0) or not (1).
   bool blocked(const Vec3& from, const Vec3& to, bool to_infinity, SampleState& state) const;
