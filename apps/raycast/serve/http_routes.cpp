@@ -85,15 +85,10 @@ void answer_explain(PreviewLoop& loop, std::size_t max_body, const httplib::Requ
   send_json(res, 200, explain_json(*scene, explain_pixel(*scene, o)));
 }
 
-}  // namespace
-
-void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<std::string>& hosts,
-                const RouteLimits& limits) {
-  server.set_payload_max_length(limits.max_body_bytes);
-
-  // Before any route: the Host must be ours (DNS rebinding), and a POST must be JSON from our own
-  // origin (a plain cross-site form or fetch cannot send application/json without a preflight,
-  // which this server never approves).
+// Before any route: the Host must be ours (DNS rebinding), and a POST must be JSON from our own
+// origin (a plain cross-site form or fetch cannot send application/json without a preflight,
+// which this server never approves); errors and exceptions answer JSON.
+void add_guards(httplib::Server& server, const std::vector<std::string>& hosts) {
   server.set_pre_routing_handler([hosts](const httplib::Request& req, httplib::Response& res) {
     const std::string host = req.get_header_value("Host");
     if (!hosts.empty() && std::find(hosts.begin(), hosts.end(), host) == hosts.end()) {
@@ -130,7 +125,10 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
   });
   server.set_exception_handler([](const httplib::Request&, httplib::Response& res,
                                   std::exception_ptr) { send_error(res, 500, "internal error"); });
+}
 
+// The page, the state and the latest image.
+void add_page_routes(httplib::Server& server, PreviewLoop& loop) {
   server.Get("/", [](const httplib::Request&, httplib::Response& res) {
     const std::string_view page = page_html();
     res.set_header("Cache-Control", "no-store");
@@ -158,11 +156,12 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
     }
     res.set_content(*s.png, "image/png");
   });
+}
 
-  // Server-sent events: one "state" event per change. Every stream reads the one shared state, so
-  // many pages cost no more rendering; the number of streams is bounded (each holds a thread).
+// Server-sent events: one "state" event per change. Every stream reads the one shared state, so
+// many pages cost no more rendering; the number of streams is bounded (each holds a thread).
+void add_event_route(httplib::Server& server, PreviewLoop& loop, int max_streams) {
   auto streams = std::make_shared<std::atomic<int>>(0);
-  const int max_streams = limits.max_event_streams;
   server.Get("/events",
              [&loop, streams, max_streams](const httplib::Request&, httplib::Response& res) {
                if (streams->fetch_add(1) >= max_streams) {
@@ -188,8 +187,10 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
                    },
                    [streams](bool) { streams->fetch_sub(1); });
              });
+}
 
-  const std::size_t max_body = limits.max_body_bytes;
+// The requests that change the view or ask about a pixel: camera, integrator, pick, explain.
+void add_request_routes(httplib::Server& server, PreviewLoop& loop, std::size_t max_body) {
   server.Post("/camera", [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
     guarded(res, [&] {
       CameraDesc current;
@@ -255,6 +256,17 @@ void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<st
   server.Post("/explain", [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
     guarded(res, [&] { answer_explain(loop, max_body, req, res); });
   });
+}
+
+}  // namespace
+
+void add_routes(httplib::Server& server, PreviewLoop& loop, const std::vector<std::string>& hosts,
+                const RouteLimits& limits) {
+  server.set_payload_max_length(limits.max_body_bytes);
+  add_guards(server, hosts);
+  add_page_routes(server, loop);
+  add_event_route(server, loop, limits.max_event_streams);
+  add_request_routes(server, loop, limits.max_body_bytes);
 }
 
 }  // namespace raycast::serve
