@@ -87,9 +87,19 @@ void sample_offset(int k, int n, double jitter_x, double jitter_y, double& x, do
   y = ((k / sx) + jitter_y) / sy;
 }
 
-Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+namespace {
+
+// The image's size, samples and the region to render, from the scene and the options; throws
+// std::invalid_argument on values out of range.
+struct RenderFrame {
+  int width = 0, height = 0, spp = 0;
+  PixelRect rect;
+};
+
+RenderFrame resolve_frame(const Scene& scene, const RenderOptions& options) {
   if (options.width < 0 || options.height < 0 || options.spp < 0 || options.threads < 0)
     throw std::invalid_argument("render: width, height, spp and threads must not be negative");
+  RenderFrame f;
   const int width = options.width > 0 ? options.width : scene.image.width;
   const int height = options.height > 0 ? options.height : scene.image.height;
   const int spp = options.spp > 0 ? options.spp : scene.image.samples;
@@ -103,84 +113,107 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
   if (rect.x0 < 0 || rect.y0 < 0 || rect.x1 > width || rect.y1 > height || rect.x0 >= rect.x1 ||
       rect.y0 >= rect.y1)
     throw std::invalid_argument("render: the region must be a non-empty part of the image");
+  f.width = width, f.height = height, f.spp = spp, f.rect = rect;
+  return f;
+}
+
+// What both pixel loops share.
+struct RenderJob {
+  const RenderOptions& options;
+  const Camera& camera;
+  const Integrator& integrator;
+  const ScenePackets& packets;
+  bool use_packets;
+  unsigned seed;
+  RenderFrame frame;
+
+  bool cancelled() const {
+    return options.cancel && options.cancel->load(std::memory_order_relaxed);
+  }
+};
+
+// Adaptive antialiasing: render_adaptive's passes, their batches traced as camera-ray packets
+// where the scene takes them.
+Image render_antialiased(const RenderJob& job, const AntialiasSettings& aa, RenderStats* stats) {
+  const RenderOptions& options = job.options;
+  const Camera& camera = job.camera;
+  const Integrator& integrator = job.integrator;
+  const ScenePackets& packets = job.packets;
+  const bool use_packets = job.use_packets;
+  const PixelRect rect = job.frame.rect;
+  const int width = job.frame.width, height = job.frame.height;
   const int region_width = rect.x1 - rect.x0, region_height = rect.y1 - rect.y0;
+  const auto cancelled = [&] { return job.cancelled(); };
+  Image image(region_width, region_height);
+  Progress rows(options.progress && isatty(STDERR_FILENO), 2 * std::size_t(region_height));
+  const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = process_cpu_seconds();
+  AdaptiveStats adaptive;
+  const RasterSampler sample = [&](double x, double y, SampleState& state) {
+    if (cancelled()) return Color{};
+    return integrator.li(camera.ray(x, y), state);
+  };
+  // The passes' batches: packets of packets.width() rays, or one ray at a time.
+  const RasterBatchSampler batch = [&](const RasterSample* at, int count, Color* values) {
+    if (cancelled()) {
+      for (int i = 0; i < count; ++i) values[i] = Color{};
+      return;
+    }
+    if (!use_packets) {
+      const Camera cam = camera;  // a copy kept in registers, as in the 1-spp loop below
+      for (int i = 0; i < count; ++i)
+        values[i] = integrator.li(cam.ray(at[i].x, at[i].y), *at[i].state);
+      return;
+    }
+    LaneArray<Ray, kMaxRasterBatch> ray;
+    LaneArray<SceneHit, kMaxRasterBatch> hit;
+    for (int b = 0; b < count; b += packets.width()) {
+      const int lanes = std::min(packets.width(), count - b);
+      for (int l = 0; l < lanes; ++l) ray[l] = camera.ray(at[b + l].x, at[b + l].y);
+      const int found = packets.intersect(ray.data(), (1 << lanes) - 1, hit.data());
+      for (int l = 0; l < lanes; ++l)
+        values[b + l] = integrator.li_hit(ray[l], found >> l & 1, hit[l], *at[b + l].state);
+    }
+  };
+  render_adaptive(
+      aa, job.seed, sample, image, adaptive, [&] { rows.advance(); },
+      RasterWindow{rect.x0, rect.y0, width, height}, batch);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu_seconds = process_cpu_seconds() - cpu_start;
+  rows.finish();
+  if (stats) {
+    stats->width = region_width;
+    stats->height = region_height;
+    stats->spp = 0;
+    stats->antialias = aa.method;
+    stats->samples = adaptive.samples;
+    stats->threads =
+        int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    stats->seconds = seconds;
+    stats->cpu_seconds = cpu_seconds;
+    stats->rays = adaptive.rays;
+  }
+  return image;
+}
 
-  std::optional<tbb::global_control> limit;
-  if (options.threads > 0)
-    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
-  start_threads();  // first, so that the workers start while the image is allocated
-
-  const Camera camera(camera_or_default(scene), width, height);
-  const Integrator integrator(scene, render_mode(scene, options));
-  const unsigned seed = scene.render.seed;
+// The fixed-sample loop over tiles: each pixel's samples stratified and jittered (the centre at
+// one sample), or each tile traced as camera-ray packets where the scene takes them.
+Image render_fixed(const RenderJob& job, RenderStats* stats) {
+  const Camera& camera = job.camera;
+  const Integrator& integrator = job.integrator;
+  const ScenePackets& packets = job.packets;
+  const bool use_packets = job.use_packets;
+  const unsigned seed = job.seed;
+  const int spp = job.frame.spp;
+  const PixelRect rect = job.frame.rect;
+  const int region_width = rect.x1 - rect.x0, region_height = rect.y1 - rect.y0;
+  const auto cancelled = [&] { return job.cancelled(); };
   Image image(region_width, region_height);
   tbb::enumerable_thread_specific<std::uint64_t> rays(0);
   const int tiles_x = (region_width + kTileSize - 1) / kTileSize;
   const int tiles_y = (region_height + kTileSize - 1) / kTileSize;
-  Progress progress(options.progress && isatty(STDERR_FILENO), std::size_t(tiles_x) * tiles_y);
-
-  const AntialiasSettings aa = options.antialias ? *options.antialias
-                               : options.spp > 0 ? AntialiasSettings{}
-                                                 : scene.render.antialias;
-  // Camera-ray packets where the scene has meshes that ScenePackets can trace as packets.
-  const ScenePackets packets(scene);
-  const bool use_packets = options.camera_packets && packets.usable();
-  const auto cancelled = [&] {
-    return options.cancel && options.cancel->load(std::memory_order_relaxed);
-  };
-  if (aa.method != AntialiasMethod::kNone) {
-    Progress rows(options.progress && isatty(STDERR_FILENO), 2 * std::size_t(region_height));
-    const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = process_cpu_seconds();
-    AdaptiveStats adaptive;
-    const RasterSampler sample = [&](double x, double y, SampleState& state) {
-      if (cancelled()) return Color{};
-      return integrator.li(camera.ray(x, y), state);
-    };
-    // The passes' batches: packets of packets.width() rays, or one ray at a time.
-    const RasterBatchSampler batch = [&](const RasterSample* at, int count, Color* values) {
-      if (cancelled()) {
-        for (int i = 0; i < count; ++i) values[i] = Color{};
-        return;
-      }
-      if (!use_packets) {
-        const Camera cam = camera;  // a copy kept in registers, as in the 1-spp loop below
-        for (int i = 0; i < count; ++i)
-          values[i] = integrator.li(cam.ray(at[i].x, at[i].y), *at[i].state);
-        return;
-      }
-      LaneArray<Ray, kMaxRasterBatch> ray;
-      LaneArray<SceneHit, kMaxRasterBatch> hit;
-      for (int b = 0; b < count; b += packets.width()) {
-        const int lanes = std::min(packets.width(), count - b);
-        for (int l = 0; l < lanes; ++l) ray[l] = camera.ray(at[b + l].x, at[b + l].y);
-        const int found = packets.intersect(ray.data(), (1 << lanes) - 1, hit.data());
-        for (int l = 0; l < lanes; ++l)
-          values[b + l] = integrator.li_hit(ray[l], found >> l & 1, hit[l], *at[b + l].state);
-      }
-    };
-    render_adaptive(
-        aa, seed, sample, image, adaptive, [&] { rows.advance(); },
-        RasterWindow{rect.x0, rect.y0, width, height}, batch);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double cpu_seconds = process_cpu_seconds() - cpu_start;
-    rows.finish();
-    if (stats) {
-      stats->width = region_width;
-      stats->height = region_height;
-      stats->spp = 0;
-      stats->antialias = aa.method;
-      stats->samples = adaptive.samples;
-      stats->threads =
-          int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-      stats->seconds = seconds;
-      stats->cpu_seconds = cpu_seconds;
-      stats->rays = adaptive.rays;
-    }
-    return image;
-  }
-
+  Progress progress(job.options.progress && isatty(STDERR_FILENO), std::size_t(tiles_x) * tiles_y);
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = process_cpu_seconds();
   tbb::parallel_for(
@@ -248,6 +281,29 @@ Image render(const Scene& scene, const RenderOptions& options, RenderStats* stat
     stats->rays = rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
   }
   return image;
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  const RenderFrame frame = resolve_frame(scene, options);
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+  start_threads();  // first, so that the workers start while the image is allocated
+
+  const Camera camera(camera_or_default(scene), frame.width, frame.height);
+  const Integrator integrator(scene, render_mode(scene, options));
+  const AntialiasSettings aa = options.antialias ? *options.antialias
+                               : options.spp > 0 ? AntialiasSettings{}
+                                                 : scene.render.antialias;
+  // Camera-ray packets where the scene has meshes that ScenePackets can trace as packets.
+  const ScenePackets packets(scene);
+  const RenderJob job{
+      options,           camera, integrator, packets, options.camera_packets && packets.usable(),
+      scene.render.seed, frame};
+  if (aa.method != AntialiasMethod::kNone) return render_antialiased(job, aa, stats);
+  return render_fixed(job, stats);
 }
 
 std::string format_summary(const RenderStats& s) {
