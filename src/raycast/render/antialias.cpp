@@ -212,6 +212,39 @@ Color subdivide(double x0, double y0, double size, const Color c[4], int level,
                  subdivide(x0 + h, y0 + h, h, q3, level + 1, aa, limit, sample, state, samples));
 }
 
+// The variance sampler's pixel (x, y): rounds of four samples (2 x 2 strata, jittered) until the
+// standard error of the mean of the clamped values is at most `target` in every channel (after
+// at least two rounds) or `most` samples are taken. Returns the mean; counts into c.
+Color refine_by_variance(int x, int y, unsigned seed, int most, double target,
+                         const RasterSampler& sample, Counters& c) {
+  SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
+  Color sum{0, 0, 0}, sum1{0, 0, 0}, sum2{0, 0, 0};  // values; clamped; squared
+  int n = 0;
+  while (n < most) {
+    for (int k = 0; k < 4; ++k) {
+      const double jx = state.rng.uniform(), jy = state.rng.uniform();
+      const Color v = sample(x + ((k % 2) + jx) / 2, y + ((k / 2) + jy) / 2, state);
+      sum += v;
+      const Color w{clamp01(v.x), clamp01(v.y), clamp01(v.z)};
+      sum1 += w;
+      sum2 += mul(w, w);
+    }
+    n += 4;
+    if (n < 8) continue;
+    // Unbiased variance of the clamped values per channel; the mean's standard error.
+    double worst = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double mean = sum1[i] / n;
+      const double var = std::max(0.0, (sum2[i] - n * mean * mean) / (n - 1));
+      worst = std::max(worst, var / n);
+    }
+    if (worst <= target * target) break;
+  }
+  c.rays += state.rays;
+  c.samples += std::uint64_t(n);
+  return sum / double(n);
+}
+
 }  // namespace
 
 double colour_distance(const Color& a, const Color& b) {
@@ -309,34 +342,8 @@ void render_adaptive(const AntialiasSettings& aa, unsigned seed, const RasterSam
       for_rows(height, counters, row_done, [&](int row, Counters& c) {
         const int y = y0 + row;
         for (int x = x0; x < x0 + width; ++x) {
-          if (differs(first, x, y, limit)) {
-            SampleState state{Rng::for_pixel(x, y, seed + kRefineSalt), 0};
-            Color sum{0, 0, 0}, sum1{0, 0, 0}, sum2{0, 0, 0};  // values; clamped; squared
-            int n = 0;
-            while (n < most) {
-              for (int k = 0; k < 4; ++k) {
-                const double jx = state.rng.uniform(), jy = state.rng.uniform();
-                const Color v = sample(x + ((k % 2) + jx) / 2, y + ((k / 2) + jy) / 2, state);
-                sum += v;
-                const Color w{clamp01(v.x), clamp01(v.y), clamp01(v.z)};
-                sum1 += w;
-                sum2 += mul(w, w);
-              }
-              n += 4;
-              if (n < 8) continue;
-              // Unbiased variance of the clamped values per channel; the mean's standard error.
-              double worst = 0;
-              for (int i = 0; i < 3; ++i) {
-                const double mean = sum1[i] / n;
-                const double var = std::max(0.0, (sum2[i] - n * mean * mean) / (n - 1));
-                worst = std::max(worst, var / n);
-              }
-              if (worst <= target * target) break;
-            }
-            image.set(x - x0, row, Vec3f(sum / double(n)));
-            c.rays += state.rays;
-            c.samples += std::uint64_t(n);
-          }
+          if (differs(first, x, y, limit))
+            image.set(x - x0, row, Vec3f(refine_by_variance(x, y, seed, most, target, sample, c)));
         }
       });
       break;
