@@ -123,6 +123,41 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   return result;
 }
 
+// The samples of a sphere light seen from p, each passed to add(l, target, at_infinity, e):
+// directions uniform in the cone the sphere subtends (pbrt-v4 6.2.4), each carrying 1/samples
+// of the light (E / r^2 at its own distance under inverse-square attenuation); inside the
+// sphere it acts as a point at its centre.
+template <class Add>
+[[gnu::always_inline]] inline void sphere_light_samples(const Light& light, const Color& emitted,
+                                                        const Vec3& p, Rng& rng, Add& add) {
+  const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
+  const Vec3 to = light.position - p;
+  const double dist2 = length_squared(to);
+  const double r2 = light.radius * light.radius;
+  if (dist2 <= r2) {
+    add(normalize(to), light.position, false, emitted);
+    return;
+  }
+  const double dist = std::sqrt(dist2);
+  const Vec3 w = to / dist;
+  Vec3 s, t;
+  make_frame(w, s, t);
+  const double cos_max = std::sqrt(std::max(0.0, 1 - r2 / dist2));
+  const Color share = emitted / double(light.samples);
+  for (int k = 0; k < light.samples; ++k) {
+    const double cos_theta = 1 - rng.uniform() * (1 - cos_max);
+    const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
+    const double phi = 2 * std::numbers::pi * rng.uniform();
+    const Vec3 l = sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * w;
+    // The nearer crossing of the light's sphere along l (cancellation-free form).
+    const double b = dot(l, to);
+    const double disc = std::max(0.0, b * b - (dist2 - r2));
+    const double q = b + std::sqrt(disc);
+    const double along = q > 0 ? (dist2 - r2) / q : dist;
+    add(l, p + along * l, false, inverse_square ? share / (along * along) : share);
+  }
+}
+
 template <Integrator::TraceMode M>
 void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
                         const Material& m, unsigned exponent, const Color& c, SampleState& state,
@@ -228,37 +263,9 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
         add(l, light.position, false, e);
         break;
       }
-      case LightType::kSphere: {
-        // Directions uniform in the cone the sphere subtends (pbrt-v4 6.2.4), each sample
-        // carrying 1/samples of the light; inside the sphere it acts as a point at its centre.
-        const Vec3 to = light.position - si.p;
-        const double dist2 = length_squared(to);
-        const double r2 = light.radius * light.radius;
-        if (dist2 <= r2) {
-          add(normalize(to), light.position, false, emitted);
-          break;
-        }
-        const double dist = std::sqrt(dist2);
-        const Vec3 w = to / dist;
-        Vec3 s, t;
-        make_frame(w, s, t);
-        const double cos_max = std::sqrt(std::max(0.0, 1 - r2 / dist2));
-        const Color share = emitted / double(light.samples);
-        for (int k = 0; k < light.samples; ++k) {
-          const double cos_theta = 1 - state.rng.uniform() * (1 - cos_max);
-          const double sin_theta = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
-          const double phi = 2 * std::numbers::pi * state.rng.uniform();
-          const Vec3 l =
-              sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * w;
-          // The nearer crossing of the light's sphere along l (cancellation-free form).
-          const double b = dot(l, to);
-          const double disc = std::max(0.0, b * b - (dist2 - r2));
-          const double q = b + std::sqrt(disc);
-          const double along = q > 0 ? (dist2 - r2) / q : dist;
-          add(l, si.p + along * l, false, inverse_square ? share / (along * along) : share);
-        }
+      case LightType::kSphere:
+        sphere_light_samples(light, emitted, si.p, state.rng, add);
         break;
-      }
     }
   }
   result += sum;
