@@ -123,6 +123,23 @@ TEST(PovInterpreter, OptionalParametersAndIfdef) {
             "BnoB");
 }
 
+// Pinned fuzz finding: a size past size_t's range was converted before it was compared.
+TEST(PovInterpreter, HugeArraySize_IsAPositionedError) {
+  const std::string e = error_of("#declare A = array[3e68];");
+  EXPECT_NE(e.find("t.pov:1:20: an array of more than"), std::string::npos) << e;
+  const std::string nan = error_of("#declare A = array[2][1e300];");
+  EXPECT_NE(nan.find("an array of more than"), std::string::npos) << nan;
+}
+
+// Bitwise operations, seed and vstr saturate numbers outside the integers' range.
+TEST(PovInterpreter, NumbersPastTheIntegerRange_Saturate) {
+  EXPECT_EQ(error_of("#declare S = seed(1e300);
+#declare B = bitwise_and(1e300, -1e300);
+                     "
+                     "#declare T = vstr(1e300, <1, 2, 3>, \",\", 0, 1);"),
+            "");
+}
+
 TEST(PovInterpreter, ArraysWithInitialisersAndDimensions) {
   EXPECT_EQ(debug_of(R"(#declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} };
 #declare A[1][2] = 9;

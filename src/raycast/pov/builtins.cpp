@@ -311,7 +311,7 @@ Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
     need(sig.size());
   if (w == "seed") {
     random_streams_.push_back(
-        static_cast<std::uint64_t>(static_cast<std::int64_t>(f(0))) * 0x9E3779B97F4A7C15ULL + 1);
+        static_cast<std::uint64_t>(saturate<std::int64_t>(f(0))) * 0x9E3779B97F4A7C15ULL + 1);
     return Value::number(static_cast<double>(random_streams_.size() - 1));
   }
   if (sig.size() == 1 && sig[0] == Arg::F) return float_builtin(t, f(0), at[0]);
@@ -399,7 +399,7 @@ Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value
   if (w == "mod") return Value::number(std::fmod(f(0), f(1)));
   if (w == "pow") return Value::number(std::pow(f(0), f(1)));
   if (w.rfind("bitwise_", 0) == 0) {
-    const auto p = static_cast<std::int64_t>(f(0)), q = static_cast<std::int64_t>(f(1));
+    const auto p = saturate<std::int64_t>(f(0)), q = saturate<std::int64_t>(f(1));
     return Value::number(static_cast<double>(w == "bitwise_and"  ? (p & q)
                                              : w == "bitwise_or" ? (p | q)
                                                                  : (p ^ q)));
@@ -443,7 +443,7 @@ Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value
     const Value& v = a[1];
     if (v.kind != Value::Vector && v.kind != Value::Float) fail_at(at[1], "vstr needs a vector");
     std::string r;
-    for (int i = 0; i < std::clamp(static_cast<int>(n), 1, 5); ++i) {
+    for (int i = 0; i < std::clamp(saturate<int>(n), 1, 5); ++i) {
       if (i) r += s(2);
       const double c = v.kind == Value::Float ? v.v[0]
                        : i < v.dims           ? v.v[static_cast<std::size_t>(i)]

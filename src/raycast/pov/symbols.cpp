@@ -259,6 +259,10 @@ Value Interpreter::rvalue() {
       expect_symbol("]", "after the array's size");
       if (!(n >= 1) || n != std::floor(n) || v.array->sizes.size() >= 5)
         fail_at(at, "an array has 1 to 5 dimensions, each of a whole size >= 1");
+      // Compared as a double before the conversion, which is undefined for sizes past size_t.
+      if (n > static_cast<double>(options_.limits.array_elements) / static_cast<double>(total))
+        fail_at(at, "an array of more than " + std::to_string(options_.limits.array_elements) +
+                        " elements (raise the bound with --pov-max-array N)");
       total *= static_cast<std::size_t>(n);
       if (total > options_.limits.array_elements)
         fail_at(at, "an array of more than " + std::to_string(options_.limits.array_elements) +

@@ -5,6 +5,7 @@
 // lights, transforms, functions, splines, macros, and blocks raycast carries without building
 // them yet: normals, media, colour maps ...).
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +14,16 @@
 #include "pov/pov_scene.h"
 
 namespace raycast::pov {
+
+/// v converted to the integer type T, saturating at T's range (NaN gives 0): a scene's number
+/// where a plain conversion of a value out of range would be undefined behaviour.
+template <class T>
+T saturate(double v) {
+  if (!(v == v)) return 0;
+  if (v <= static_cast<double>(std::numeric_limits<T>::min())) return std::numeric_limits<T>::min();
+  if (v >= static_cast<double>(std::numeric_limits<T>::max())) return std::numeric_limits<T>::max();
+  return static_cast<T>(v);
+}
 
 struct ArrayValue;
 struct FunctionValue;
