@@ -133,9 +133,7 @@ TEST(PovInterpreter, HugeArraySize_IsAPositionedError) {
 
 // Bitwise operations, seed and vstr saturate numbers outside the integers' range.
 TEST(PovInterpreter, NumbersPastTheIntegerRange_Saturate) {
-  EXPECT_EQ(error_of("#declare S = seed(1e300);
-#declare B = bitwise_and(1e300, -1e300);
-                     "
+  EXPECT_EQ(error_of("#declare S = seed(1e300);\n#declare B = bitwise_and(1e300, -1e300);\n"
                      "#declare T = vstr(1e300, <1, 2, 3>, \",\", 0, 1);"),
             "");
 }
