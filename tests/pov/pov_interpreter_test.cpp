@@ -131,6 +131,18 @@ TEST(PovInterpreter, HugeArraySize_IsAPositionedError) {
   EXPECT_NE(nan.find("an array of more than"), std::string::npos) << nan;
 }
 
+// Pinned fuzz finding: parentheses nested thousands deep overflowed the stack.
+TEST(PovInterpreter, DeeplyNestedParentheses_AreAPositionedError) {
+  const std::string deep =
+      "#declare A = " + std::string(5000, '(') + "1" + std::string(5000, ')') + ";";
+  const std::string e = error_of(deep);
+  EXPECT_NE(e.find("t.pov:1:"), std::string::npos) << e;
+  EXPECT_NE(e.find("nested more than"), std::string::npos) << e;
+  const std::string fine =
+      "#declare A = " + std::string(40, '(') + "1" + std::string(40, ')') + ";";
+  EXPECT_EQ(error_of(fine), "");
+}
+
 // Bitwise operations, seed and vstr saturate numbers outside the integers' range.
 TEST(PovInterpreter, NumbersPastTheIntegerRange_Saturate) {
   EXPECT_EQ(error_of("#declare S = seed(1e300);\n#declare B = bitwise_and(1e300, -1e300);\n"

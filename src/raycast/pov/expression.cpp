@@ -237,12 +237,37 @@ struct Ops {
 bool Interpreter::pending_now() const { return pending_; }
 Pos Interpreter::tok_pos() { return have_ ? cur_.pos : Pos{}; }
 
+namespace {
+
+// One level of expressions nested through parentheses, vectors and calls, undone on every exit:
+// each level costs the evaluator a dozen stack frames, so the levels are bounded
+// (kMaxPovExpressionNesting) well inside the stack.
+class NestingLevel {
+ public:
+  NestingLevel(Interpreter& in, int& depth) : depth_(depth) {
+    if (depth_ >= kMaxPovExpressionNesting)
+      in.fail_here("expressions are nested more than " + std::to_string(kMaxPovExpressionNesting) +
+                   " levels deep");
+    ++depth_;
+  }
+  ~NestingLevel() { --depth_; }
+  NestingLevel(const NestingLevel&) = delete;
+  NestingLevel& operator=(const NestingLevel&) = delete;
+
+ private:
+  int& depth_;
+};
+
+}  // namespace
+
 Value Interpreter::expression() {
+  const NestingLevel level(*this, expression_depth_);
   Ops o{*this};
   return o.ternary();
 }
 
 Value Interpreter::sub_expression(int vector_depth) {
+  const NestingLevel level(*this, expression_depth_);
   Ops o{*this};
   o.vector_depth = vector_depth;
   return o.ternary();

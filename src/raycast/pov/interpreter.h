@@ -221,6 +221,7 @@ class Interpreter {
   bool pending_ = false;  // cur_ is a directive or macro call not yet run (peek_operator)
   long long iterations_ = 0;
   int macro_depth_ = 0;
+  int expression_depth_ = 0;  // expressions nested through parentheses, vectors and calls
   std::size_t weight_ = 0;
   long long reads_ = 0;
   std::set<std::string> warned_;
@@ -235,6 +236,8 @@ PovScene interpret_pov(const std::string& text, const std::string& name, const s
 
 /// Limits on nesting in expressions and blocks (the C++ stack).
 inline constexpr int kMaxPovNesting = 200;
+/// Expressions nested in expressions (parentheses, vectors, calls) at most this deep.
+inline constexpr int kMaxPovExpressionNesting = 64;
 inline constexpr long kMaxPovCount = 100'000'000;  // counts in meshes and point lists
 inline constexpr std::size_t kPovNodeWeight = 64;  // an object's weight against scene_weight
 
