@@ -84,7 +84,6 @@ namespace {
 
 struct Ops {
   Interpreter& in;
-  int depth = 0;
   int vector_depth = 0;  // inside < >, a bare '>' closes the vector
 
   [[noreturn]] void not_numeric(const Pos& at, const Value& v, const char* op) {
@@ -115,7 +114,7 @@ struct Ops {
   }
 
   Value ternary() {
-    if (++depth > kMaxPovNesting) in.fail_here("the expression is nested too deeply");
+    const Interpreter::NestingLevel level(in);
     Value c = logical_or();
     if (op("?")) {
       const Pos at = in.tok().pos;
@@ -125,7 +124,6 @@ struct Ops {
       Value b = ternary();
       c = std::fabs(c.v[0]) > kEpsilon ? a : b;
     }
-    --depth;
     return c;
   }
   static bool truth(const Value& v) { return std::fabs(v.v[0]) > kEpsilon; }
@@ -211,7 +209,7 @@ struct Ops {
     }
   }
   Value unary() {
-    if (++depth > kMaxPovNesting) in.fail_here("the expression is nested too deeply");
+    const Interpreter::NestingLevel level(in);
     Value r;
     const Pos at = in.tok().pos;
     if (in.accept_symbol("-")) {
@@ -227,7 +225,6 @@ struct Ops {
     } else {
       r = in.primary(vector_depth);
     }
-    --depth;
     return r;
   }
 };
@@ -237,37 +234,23 @@ struct Ops {
 bool Interpreter::pending_now() const { return pending_; }
 Pos Interpreter::tok_pos() { return have_ ? cur_.pos : Pos{}; }
 
-namespace {
+Interpreter::NestingLevel::NestingLevel(Interpreter& in) : in_(in) {
+  if (in_.expression_depth_ >= kMaxPovExpressionNesting)
+    in_.fail_here("the expression is nested more than " + std::to_string(kMaxPovExpressionNesting) +
+                  " levels deep");
+  ++in_.expression_depth_;
+}
 
-// One level of expressions nested through parentheses, vectors and calls, undone on every exit:
-// each level costs the evaluator a dozen stack frames, so the levels are bounded
-// (kMaxPovExpressionNesting) well inside the stack.
-class NestingLevel {
- public:
-  NestingLevel(Interpreter& in, int& depth) : depth_(depth) {
-    if (depth_ >= kMaxPovExpressionNesting)
-      in.fail_here("expressions are nested more than " + std::to_string(kMaxPovExpressionNesting) +
-                   " levels deep");
-    ++depth_;
-  }
-  ~NestingLevel() { --depth_; }
-  NestingLevel(const NestingLevel&) = delete;
-  NestingLevel& operator=(const NestingLevel&) = delete;
-
- private:
-  int& depth_;
-};
-
-}  // namespace
+Interpreter::NestingLevel::~NestingLevel() { --in_.expression_depth_; }
 
 Value Interpreter::expression() {
-  const NestingLevel level(*this, expression_depth_);
+  const NestingLevel level(*this);
   Ops o{*this};
   return o.ternary();
 }
 
 Value Interpreter::sub_expression(int vector_depth) {
-  const NestingLevel level(*this, expression_depth_);
+  const NestingLevel level(*this);
   Ops o{*this};
   o.vector_depth = vector_depth;
   return o.ternary();
