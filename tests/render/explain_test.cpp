@@ -6,12 +6,12 @@
 #include <cmath>
 #include <string>
 
+#include "load/demo_scene.h"
+#include "load/loader.h"
 #include "render/explain.h"
 #include "render/explain_format.h"
 #include "render/explain_svg.h"
 #include "render/renderer.h"
-#include "load/demo_scene.h"
-#include "load/loader.h"
 
 namespace raycast {
 namespace {

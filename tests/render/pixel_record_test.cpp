@@ -5,12 +5,12 @@
 
 #include <string>
 
+#include "load/demo_scene.h"
+#include "load/loader.h"
 #include "render/contact_sheet.h"
 #include "render/heatmap.h"
 #include "render/pixel_record.h"
 #include "render/ray_stats.h"
-#include "load/demo_scene.h"
-#include "load/loader.h"
 
 namespace raycast {
 namespace {

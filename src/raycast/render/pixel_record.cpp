@@ -26,8 +26,8 @@ double recorded_cpu_seconds() {
 }
 
 constexpr std::array<const char*, 9> kOutputNames = {"ambient",    "diffuse",    "specular",
-                                               "reflection", "refraction", "shadowed",
-                                               "cost.rays",  "cost.depth", "cost.time"};
+                                                     "reflection", "refraction", "shadowed",
+                                                     "cost.rays",  "cost.depth", "cost.time"};
 
 /// What one sample's recorder gathers: the camera ray's terms (its rays by kind are the
 /// integrator's RayRecorder::counts). Without terms to gather it asks for no events.
@@ -122,7 +122,9 @@ std::optional<RecordedOutput> recorded_output_named(std::string_view name) {
   return std::nullopt;
 }
 
-const char* recorded_output_name(RecordedOutput output) { return kOutputNames[std::size_t(output)]; }
+const char* recorded_output_name(RecordedOutput output) {
+  return kOutputNames[std::size_t(output)];
+}
 
 RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
                                const std::vector<RecordedOutput>& outputs, RenderStats* stats) {
