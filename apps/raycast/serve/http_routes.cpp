@@ -60,29 +60,50 @@ void guarded(httplib::Response& res, F&& body) {
   }
 }
 
+// A request about one pixel of the view shown: its {"x", "y"} and the scene and camera it
+// refers to.
+struct PixelRequest {
+  double x = 0, y = 0;
+  CameraDesc camera;
+  std::shared_ptr<const Scene> scene;
+};
+
+// Reads a pixel request (`what` names it in errors); false, with the error answered, when the
+// body is bad, the scene has not loaded or the pixel lies outside the image.
+bool read_pixel_request(PreviewLoop& loop, std::size_t max_body, const httplib::Request& req,
+                        httplib::Response& res, const char* what, PixelRequest& p) {
+  const YAML::Node root = parse_request_object(req.body, max_body);
+  const SourceContext ctx{"request", "."};
+  Fields f(ctx, root, what);
+  p.x = f.number("x"), p.y = f.number("y");
+  f.finish();
+  p.scene = loop.scene(&p.camera);
+  if (!p.scene) {
+    send_error(res, 409, "the scene has not loaded yet");
+    return false;
+  }
+  const int w = p.scene->image.width, h = p.scene->image.height;
+  if (!(p.x >= 0 && p.x < w && p.y >= 0 && p.y < h)) {
+    send_error(
+        res, 400,
+        "x and y must lie inside the " + std::to_string(w) + "x" + std::to_string(h) + " image");
+    return false;
+  }
+  return true;
+}
+
 /// POST /explain: one pixel's ray tree at the view shown (docs/explain.md), one sample at the
 /// pixel's centre.
 void answer_explain(PreviewLoop& loop, std::size_t max_body, const httplib::Request& req,
                     httplib::Response& res) {
-  const YAML::Node root = parse_request_object(req.body, max_body);
-  const SourceContext ctx{"request", "."};
-  Fields f(ctx, root, "explain");
-  const double x = f.number("x"), y = f.number("y");
-  f.finish();
-  CameraDesc camera;
-  const std::shared_ptr<const Scene> scene = loop.scene(&camera);
-  if (!scene) return send_error(res, 409, "the scene has not loaded yet");
-  const int w = scene->image.width, h = scene->image.height;
-  if (!(x >= 0 && x < w && y >= 0 && y < h))
-    return send_error(
-        res, 400,
-        "x and y must lie inside the " + std::to_string(w) + "x" + std::to_string(h) + " image");
+  PixelRequest p;
+  if (!read_pixel_request(loop, max_body, req, res, "explain", p)) return;
   ExplainOptions o;
-  o.x = int(x);
-  o.y = int(y);
+  o.x = int(p.x);
+  o.y = int(p.y);
   o.spp = 1;
-  o.camera = camera;
-  send_json(res, 200, explain_json(*scene, explain_pixel(*scene, o)));
+  o.camera = p.camera;
+  send_json(res, 200, explain_json(*p.scene, explain_pixel(*p.scene, o)));
 }
 
 // Before any route: the Host must be ours (DNS rebinding), and a POST must be JSON from our own
@@ -236,20 +257,11 @@ void add_request_routes(httplib::Server& server, PreviewLoop& loop, std::size_t 
 
   server.Post("/pick", [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
     guarded(res, [&] {
-      const YAML::Node root = parse_request_object(req.body, max_body);
-      const SourceContext ctx{"request", "."};
-      Fields f(ctx, root, "pick");
-      const double x = f.number("x"), y = f.number("y");
-      f.finish();
-      CameraDesc camera;
-      const std::shared_ptr<const Scene> scene = loop.scene(&camera);
-      if (!scene) return send_error(res, 409, "the scene has not loaded yet");
-      const int w = scene->image.width, h = scene->image.height;
-      if (!(x >= 0 && x < w && y >= 0 && y < h))
-        return send_error(res, 400,
-                          "x and y must lie inside the " + std::to_string(w) + "x" +
-                              std::to_string(h) + " image");
-      send_json(res, 200, pick_json(*scene, camera, w, h, x, y));
+      PixelRequest p;
+      if (!read_pixel_request(loop, max_body, req, res, "pick", p)) return;
+      send_json(
+          res, 200,
+          pick_json(*p.scene, p.camera, p.scene->image.width, p.scene->image.height, p.x, p.y));
     });
   });
 
