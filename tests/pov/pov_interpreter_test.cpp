@@ -143,6 +143,21 @@ TEST(PovInterpreter, DeeplyNestedParentheses_AreAPositionedError) {
   EXPECT_EQ(error_of(fine), "");
 }
 
+// Pinned fuzz finding: a directive inside a directive's value (`#declare A = #declare B = ...`)
+// recursed without a bound; so did objects declared inside objects.
+TEST(PovInterpreter, DirectivesNestedInValues_AreAPositionedError) {
+  std::string chain;
+  for (int i = 0; i < 5000; ++i) chain += "#declare A" + std::to_string(i) + " = ";
+  const std::string e = error_of(chain + "1;");
+  EXPECT_NE(e.find("t.pov:1:"), std::string::npos) << e;
+  EXPECT_NE(e.find("nested more than"), std::string::npos) << e;
+  std::string objects;
+  for (int i = 0; i < 3000; ++i) objects += "union { #declare U" + std::to_string(i) + " = ";
+  const std::string o = error_of(objects);
+  EXPECT_NE(o.find("more than"), std::string::npos) << o;
+  EXPECT_EQ(error_of("#declare A = #declare B = 2; 3;\n#if (A != 3) #error \"A\" #end"), "");
+}
+
 // Bitwise operations, seed and vstr saturate numbers outside the integers' range.
 TEST(PovInterpreter, NumbersPastTheIntegerRange_Saturate) {
   EXPECT_EQ(error_of("#declare S = seed(1e300);\n#declare B = bitwise_and(1e300, -1e300);\n"

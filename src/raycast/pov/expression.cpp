@@ -236,8 +236,8 @@ Pos Interpreter::tok_pos() { return have_ ? cur_.pos : Pos{}; }
 
 Interpreter::NestingLevel::NestingLevel(Interpreter& in) : in_(in) {
   if (in_.expression_depth_ >= kMaxPovExpressionNesting)
-    in_.fail_here("the expression is nested more than " + std::to_string(kMaxPovExpressionNesting) +
-                  " levels deep");
+    in_.fail_here("expressions, directives and objects are nested more than " +
+                  std::to_string(kMaxPovExpressionNesting) + " levels deep");
   ++in_.expression_depth_;
 }
 

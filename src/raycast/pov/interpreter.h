@@ -34,9 +34,10 @@ class Interpreter {
   friend class FunctionParser;  // functions.cpp: reads `function { }` bodies from the tokens
 
  public:
-  /// One level of expression nesting (an expression, a parenthesis, a unary operator), undone
-  /// on every exit, throws included. Each costs the evaluator stack frames, so the levels are
-  /// bounded (kMaxPovExpressionNesting) well inside the stack; past it, a positioned error.
+  /// One level of nesting (an expression, a parenthesis, a unary operator, a directive, an
+  /// object), undone on every exit, throws included. Each costs the evaluator stack frames, so the
+  /// levels are bounded (kMaxPovExpressionNesting) well inside the stack; past it, a positioned
+  /// error.
   class NestingLevel {
    public:
     explicit NestingLevel(Interpreter& in);
@@ -250,7 +251,8 @@ PovScene interpret_pov(const std::string& text, const std::string& name, const s
 
 /// Limits on nesting in expressions and blocks (the C++ stack).
 inline constexpr int kMaxPovNesting = 200;
-/// Levels of expression nesting (expressions, parentheses, unary operators) at most this deep.
+/// Levels of nesting (expressions, parentheses, unary operators, directives, objects) at most this
+/// deep.
 inline constexpr int kMaxPovExpressionNesting = 256;
 inline constexpr long kMaxPovCount = 100'000'000;  // counts in meshes and point lists
 inline constexpr std::size_t kPovNodeWeight = 64;  // an object's weight against scene_weight

@@ -109,6 +109,8 @@ long Interpreter::count(const char* what) {
 std::optional<Node> Interpreter::object(int depth) {
   if (depth > kMaxPovNesting)
     fail_here("objects are nested deeper than " + std::to_string(kMaxPovNesting));
+  // An object's depth restarts in a value declared inside it; the shared level bounds both.
+  const NestingLevel level(*this);
   const Token kw = tok();
   if (kw.text == "light_source") return light_block();
   next();

@@ -559,6 +559,7 @@ std::optional<double> Interpreter::interior_block() {
 
 Texture Interpreter::texture_block(const Texture& base, int depth) {
   if (depth > kMaxPovNesting) fail_here("textures are nested too deeply");
+  const NestingLevel level(*this);  // a texture's depth restarts in a value declared inside it
   expect_symbol("{", "after texture");
   Texture t = base;
   t.name.clear();

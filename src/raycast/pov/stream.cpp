@@ -263,6 +263,9 @@ void Interpreter::close_file() {
 // ---- directives -----------------------------------------------------------------------------
 
 void Interpreter::directive(const Token& d) {
+  // A directive can start inside another's value (`#declare A = #declare B = ...`): each is a
+  // level of the C++ stack, bounded with the expressions'.
+  const NestingLevel level(*this);
   // A directive met inside a block's value reads its own expressions in full.
   const int item = item_value_;
   item_value_ = 0;
