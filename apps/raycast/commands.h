@@ -17,6 +17,7 @@ Action add_validate_command(CLI::App& app);
 Action add_convert_command(CLI::App& app);
 Action add_explain_command(CLI::App& app);  // one pixel's ray tree (docs/explain.md)  // POV-Ray
                                             // scenes to YAML (docs/pov-import.md)
+Action add_compare_command(CLI::App& app);  // image differences (docs/cli.md)
 Action add_serve_command(CLI::App& app);    // built with cpp-httplib (RAYCAST_HAVE_SERVE)
 
 }  // namespace raycast::cli

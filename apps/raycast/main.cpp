@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   for (auto add : {raycast::cli::add_render_command, raycast::cli::add_cast_command,
                    raycast::cli::add_info_command, raycast::cli::add_validate_command,
                    raycast::cli::add_bench_command, raycast::cli::add_convert_command,
-                   raycast::cli::add_explain_command}) {
+                   raycast::cli::add_explain_command, raycast::cli::add_compare_command}) {
     auto action = add(app);
     actions.emplace_back(app.get_subcommands({}).back(), std::move(action));
   }
