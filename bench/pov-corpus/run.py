@@ -100,7 +100,7 @@ def povray_image(scene, examples, cache, timeout):
     return None
 
 
-def raycast_image(raycast, scene, examples, cache, timeout, reference):
+def raycast_image(raycast, scene, examples, cache, timeout, reference, comparer):
     """(status, first warning, block mean or None) of raycast's picture against POV-Ray's."""
     out = os.path.join(os.path.abspath(cache), "raycast-images", os.path.relpath(scene, examples))[:-4] + ".png"
     os.makedirs(os.path.dirname(out), exist_ok=True)
@@ -115,7 +115,7 @@ def raycast_image(raycast, scene, examples, cache, timeout, reference):
     first = shorten(warnings[0]) if warnings else "(no warning)"
     if p.returncode != 0:
         return ("error" if p.returncode == 2 else "crash"), first, None
-    c = subprocess.run([raycast, "compare", reference, out, "--json"], capture_output=True,
+    c = subprocess.run([comparer or raycast, "compare", reference, out, "--json"], capture_output=True,
                        text=True, timeout=timeout)
     if c.returncode != 0:
         return "error", "compare: " + c.stderr.strip()[:100], None
@@ -131,7 +131,7 @@ def compare_corpus(a):
     names = [s for s in all_scenes if refs[s]]
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as ex:
         results = dict(zip(names, ex.map(lambda s: raycast_image(
-            a.raycast, s, a.examples, a.cache, a.timeout, refs[s]), names)))
+            a.raycast, s, a.examples, a.cache, a.timeout, refs[s], a.comparer), names)))
     by_folder = collections.defaultdict(collections.Counter)
     first_warnings = collections.Counter()
     for s, (status, first, diff) in results.items():
@@ -209,6 +209,8 @@ def main():
                     help="seconds for one POV-Ray picture (--compare)")
     ap.add_argument("--compare", action="store_true",
                     help="compare raycast's pictures with POV-Ray's (cached) ones")
+    ap.add_argument("--comparer", help="the raycast that runs `raycast compare` (--compare; "
+                    "default: --raycast), to measure a build without the command")
     ap.add_argument("--json", help="write every scene's result to this file")
     a = ap.parse_args()
     if not os.path.isdir(a.examples):

@@ -24,6 +24,7 @@ CameraDesc parse_camera_request(const std::string& body, const CameraDesc& curre
   const SourceContext ctx{"request", "."};
   Fields f(ctx, root, "camera");
   CameraDesc c = current;
+  c.frame.reset();  // a moved view is position, look_at and up (a POV-Ray frame is left behind)
   const std::string type =
       f.string("type", current.type == CameraType::kOrthographic ? "orthographic" : "perspective");
   c.position = f.vec3("position", c.position);

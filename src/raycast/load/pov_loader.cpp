@@ -87,19 +87,30 @@ class Builder {
     d.position = m(c.location);
     d.look_at = m(c.location + c.direction);
     d.up = m(c.up);
-    if (c.orthographic) {
-      d.type = CameraType::kOrthographic;
+    // POV-Ray's own vectors decide the view (aspect from right's length, skewed frames); the
+    // position, look_at, up and fov beside them are what a viewer that moves the camera uses.
+    d.frame = CameraFrame{m(c.direction), m(c.right), m(c.up)};
+    static const CameraType kTypes[] = {CameraType::kPerspective, CameraType::kOrthographic,
+                                        CameraType::kFisheye,     CameraType::kUltraWideAngle,
+                                        CameraType::kOmnimax,     CameraType::kPanoramic,
+                                        CameraType::kCylinder,    CameraType::kSpherical};
+    d.type = kTypes[c.kind];
+    d.angle = c.angle;
+    d.vertical_angle = c.vertical_angle;
+    d.cylinder = c.cylinder;
+    if (c.kind == pov::Camera::Orthographic) {
       d.height = length(c.up);
     } else {
       // The vertical field of view from up's length against direction's.
       d.fov = 2 * std::atan(0.5 * length(c.up) / length(c.direction)) * 180 / std::numbers::pi;
-      if (!(d.fov > 0 && d.fov < 180))
+      if (c.kind == pov::Camera::Perspective && !(d.fov > 0 && d.fov < 180))
         fail_at(c.pos, "the camera's field of view is not in (0, 180)");
+      d.fov = std::clamp(d.fov, 1e-6, 179.0);
     }
     scene_.camera = d;
     scene_.marks.camera = {c.pos.file == 0 ? c.pos.line : 0, c.pos.column};
-    // POV-Ray's image has right's length over up's as its aspect ratio; raycast's image size
-    // decides it, so a scene asks for that ratio at 480 lines unless the size is given.
+    // POV-Ray's image has right's length over up's as its aspect ratio, so a scene asks for
+    // that ratio at 480 lines unless the size is given.
     const double aspect = length(c.right) / length(c.up);
     if (s_.settings.width == 0 && aspect > 0.1 && aspect < 10) {
       scene_.image.height = 480;

@@ -1,5 +1,8 @@
 #include "load/read_settings.h"
 
+#include <map>
+#include <string>
+
 namespace raycast {
 
 namespace {
@@ -26,6 +29,15 @@ void read_antialias(const SourceContext& ctx, const YAML::Node& node, AntialiasS
   f.finish();
 }
 
+// The lens types of camera.type beside perspective and orthographic.
+const std::map<std::string, CameraType>& camera_lenses() {
+  static const std::map<std::string, CameraType> lenses = {
+      {"fisheye", CameraType::kFisheye},   {"ultra_wide_angle", CameraType::kUltraWideAngle},
+      {"omnimax", CameraType::kOmnimax},   {"panoramic", CameraType::kPanoramic},
+      {"cylinder", CameraType::kCylinder}, {"spherical", CameraType::kSpherical}};
+  return lenses;
+}
+
 }  // namespace
 
 Color read_color(Fields& f, const std::string& key, const Color& fallback) {
@@ -49,8 +61,32 @@ CameraDesc read_camera(const SourceContext& ctx, const YAML::Node& node) {
   } else if (type == "orthographic") {
     c.type = CameraType::kOrthographic;
     c.height = f.positive("height", c.height);
+  } else if (const auto lens = camera_lenses().find(type); lens != camera_lenses().end()) {
+    c.type = lens->second;
+    c.angle = f.number("angle", c.angle);
+    if (!(c.angle > 0 && c.angle <= 360))
+      f.fail("angle", "camera.angle must be in (0, 360] degrees");
+    if (c.type == CameraType::kSpherical) {
+      c.vertical_angle = f.number("vertical_angle", 0.5 * c.angle);
+      if (!(c.vertical_angle > 0 && c.vertical_angle <= 360))
+        f.fail("vertical_angle", "camera.vertical_angle must be in (0, 360] degrees");
+    }
+    if (c.type == CameraType::kCylinder) c.cylinder = f.integer("cylinder", c.cylinder, 1, 4);
   } else {
-    f.fail("type", "camera.type must be perspective or orthographic, got " + type);
+    f.fail("type",
+           "camera.type must be perspective, orthographic, fisheye, ultra_wide_angle, omnimax, "
+           "panoramic, cylinder or spherical, got " +
+               type);
+  }
+  if (f.has("direction") || f.has("right")) {
+    // POV-Ray's own vectors: both or neither.
+    CameraFrame frame;
+    frame.direction = f.direction("direction");
+    frame.right = f.direction("right");
+    frame.up = c.up;
+    if (length_squared(cross(frame.right, frame.up)) == 0)
+      f.fail("right", "camera.right must not be parallel to camera.up");
+    c.frame = frame;
   }
   f.finish();
   if (length_squared(c.look_at - c.position) == 0)

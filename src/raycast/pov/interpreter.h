@@ -132,6 +132,8 @@ class Interpreter {
   std::vector<XformOp> transform_block();
   bool transform_item(std::vector<XformOp>& ops);
   Camera camera_block(const Camera& base);
+  void camera_angle(Camera& c, const Pos& at);
+  void camera_finish(Camera& c, double look_distance, bool angle_given, bool frame_given);
   Node light_block();
   void global_settings_block();
   bool is_object_keyword();

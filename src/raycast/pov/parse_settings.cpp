@@ -1,7 +1,9 @@
 // The camera, light sources, global_settings, background and the scene's top level.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <string>
 
 #include "pov/interpreter.h"
 
@@ -35,7 +37,74 @@ Vec3 apply(const XformOp& o, const Vec3& p, bool is_point) {
   }
   return p;
 }
+
+// POV-Ray's look_at: turn direction towards the target, right = sky x direction, keeping every
+// vector's length and the frame's handedness.
+void turn_towards(Camera& c, const Vec3& target) {
+  const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
+  const double handed = dot(cross(c.up, c.direction), c.right);
+  const Vec3 d = target - c.location;
+  Vec3 r = cross(c.sky, d);
+  // Looking straight along the sky: right stays as it was, made perpendicular to d.
+  if (length(r) == 0) r = c.right - d * (dot(c.right, d) / dot(d, d));
+  if (length(r) == 0) r = cross(Vec3{0, 0, 1}, d);
+  if (length(r) == 0) r = cross(Vec3{1, 0, 0}, d);
+  c.direction = d / length(d) * dl;
+  c.right = r / length(r) * (handed > 0 ? rl : -rl);
+  c.up = cross(d / length(d), r / length(r)) * ul;
+}
+
+// The projection keywords; cylinder's kind (1 to 4) is read by the caller.
+const std::map<std::string, Camera::Kind>& camera_kinds() {
+  static const std::map<std::string, Camera::Kind> kinds = {
+      {"perspective", Camera::Perspective}, {"orthographic", Camera::Orthographic},
+      {"fisheye", Camera::Fisheye},         {"ultra_wide_angle", Camera::UltraWideAngle},
+      {"omnimax", Camera::Omnimax},         {"panoramic", Camera::Panoramic},
+      {"cylinder", Camera::Cylinder},       {"spherical", Camera::Spherical}};
+  return kinds;
+}
 }  // namespace
+
+void Interpreter::camera_angle(Camera& c, const Pos& at) {
+  c.angle = number("angle");
+  const bool lens = c.kind != Camera::Perspective && c.kind != Camera::Orthographic;
+  if (!(c.angle > 0 && c.angle <= 360)) fail_at(at, "angle must be in (0, 360] degrees");
+  if (!lens && c.angle >= 179) {
+    unsupported_warning(at, "camera angles of 179 degrees or more", "179 is used");
+    c.angle = 179;
+  }
+  accept_symbol(",");
+  if (numeric_ahead()) {
+    c.vertical_angle = number("the vertical angle");
+    if (!(c.vertical_angle > 0 && c.vertical_angle <= 360))
+      fail_at(at, "the vertical angle must be in (0, 360] degrees");
+  }
+}
+
+// After the camera's items: `angle` sets the perspective direction's length from right's (the
+// orthographic camera's right and up: the perspective view's size at the look_at distance).
+void Interpreter::camera_finish(Camera& c, double look_distance, bool angle_given,
+                                bool frame_given) {
+  for (const Vec3& v : {c.direction, c.up, c.right})
+    if (!(length(v) > 0)) fail_at(c.pos, "the camera's direction, up and right must be non-zero");
+  if (!(length(cross(c.right, c.up)) > 0)) fail_at(c.pos, "the camera's right and up are parallel");
+  const double half = std::tan(c.angle / kDegrees / 2);
+  if (angle_given && c.kind == Camera::Perspective)
+    c.direction = c.direction / length(c.direction) * (0.5 * length(c.right) / half);
+  // An orthographic camera without its own up and right, or with an angle, sees what the
+  // perspective camera of that angle sees at the look_at distance.
+  if (c.kind == Camera::Orthographic && (angle_given || !frame_given)) {
+    const double k = angle_given ? 2 * look_distance * half / length(c.right)
+                                 : look_distance / length(c.direction);
+    c.right = c.right * k;
+    c.up = c.up * k;
+  }
+  // The lenses' angle when none is given: 90 degrees (spherical: 360 by 180).
+  if (c.angle == 0 && c.kind != Camera::Perspective && c.kind != Camera::Orthographic)
+    c.angle = c.kind == Camera::Spherical ? 360 : 90;
+  if (c.kind == Camera::Omnimax)
+    unsupported_warning(c.pos, "the omnimax camera", "a fisheye of 180 degrees is used");
+}
 
 Camera Interpreter::camera_block(const Camera& base) {
   Camera c = base;
@@ -49,56 +118,39 @@ Camera Interpreter::camera_block(const Camera& base) {
       next();
     }
   }
-  double angle = 0;
+  bool angle_given = false, frame_given = false;
+  double look_distance = length(c.direction);
   while (!accept_symbol("}")) {
     const Token t = tok();
     const std::string& w = t.text;
-    if (w == "perspective")
-      next(), c.orthographic = false;
-    else if (w == "orthographic")
-      next(), c.orthographic = true;
-    else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" || w == "panoramic" ||
-             w == "spherical" || w == "cylinder") {
+    const auto kind = camera_kinds().find(w);
+    if (kind != camera_kinds().end()) {
       next();
-      if (w == "cylinder") number("the cylinder camera's type");
-      unsupported_warning(t.pos, "the " + w + " camera", "a perspective camera is used");
+      c.kind = kind->second;
+      if (w == "cylinder") {
+        const double n = number("the cylinder camera's type");
+        if (!(n == 1 || n == 2 || n == 3 || n == 4))
+          fail_at(t.pos, "the cylinder camera's type must be 1, 2, 3 or 4");
+        c.cylinder = static_cast<int>(n);
+      }
     } else if (w == "location")
       next(), c.location = vector("location");
     else if (w == "direction")
       next(), c.direction = vector("direction");
     else if (w == "up")
-      next(), c.up = vector("up");
+      next(), c.up = vector("up"), frame_given = true;
     else if (w == "right")
-      next(), c.right = vector("right");
+      next(), c.right = vector("right"), frame_given = true;
     else if (w == "sky")
       next(), c.sky = vector("sky");
-    else if (w == "angle") {
-      next();
-      angle = number("angle");
-      if (!(angle > 0 && angle <= 360)) fail_at(t.pos, "angle must be in (0, 360] degrees");
-      if (angle >= 179) {
-        unsupported_warning(t.pos, "camera angles of 179 degrees or more", "179 is used");
-        angle = 179;
-      }
-      accept_symbol(",");
-      if (numeric_ahead()) number("the vertical angle");
-    } else if (w == "look_at") {
+    else if (w == "angle")
+      next(), camera_angle(c, t.pos), angle_given = true;
+    else if (w == "look_at") {
       next();
       const Vec3 target = vector("look_at");
-      // POV-Ray's look_at: turn direction towards the target, right = sky x direction, keeping
-      // every vector's length and the frame's handedness.
-      const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
-      const double handed = dot(cross(c.up, c.direction), c.right);
-      const Vec3 d = target - c.location;
-      Vec3 r = cross(c.sky, d);
-      if (length(d) == 0) fail_at(t.pos, "look_at is the camera's location");
-      // Looking straight along the sky: right stays as it was, made perpendicular to d.
-      if (length(r) == 0) r = c.right - d * (dot(c.right, d) / dot(d, d));
-      if (length(r) == 0) r = cross(Vec3{0, 0, 1}, d);
-      if (length(r) == 0) r = cross(Vec3{1, 0, 0}, d);
-      c.direction = d / length(d) * dl;
-      c.right = r / length(r) * (handed > 0 ? rl : -rl);
-      c.up = cross(d / length(d), r / length(r)) * ul;
+      if (length(target - c.location) == 0) fail_at(t.pos, "look_at is the camera's location");
+      turn_towards(c, target);
+      look_distance = length(target - c.location);
     } else if (w == "focal_point" || w == "aperture" || w == "blur_samples" || w == "confidence" ||
                w == "variance") {
       next();
@@ -121,12 +173,7 @@ Camera Interpreter::camera_block(const Camera& base) {
       }
     }
   }
-  for (const Vec3& v : {c.direction, c.up, c.right})
-    if (!(length(v) > 0)) fail_at(c.pos, "the camera's direction, up and right must be non-zero");
-  if (angle > 0 && !c.orthographic)
-    c.direction = c.direction / length(c.direction) *
-                  (0.5 * length(c.right) / std::tan(angle / kDegrees / 2));
-  c.angle = angle;
+  camera_finish(c, look_distance, angle_given, frame_given);
   return c;
 }
 

@@ -118,9 +118,20 @@ struct Node {
 };
 
 struct Camera {
-  bool orthographic = false;
+  enum Kind {
+    Perspective,
+    Orthographic,
+    Fisheye,
+    UltraWideAngle,
+    Omnimax,
+    Panoramic,
+    Cylinder,
+    Spherical
+  } kind = Perspective;
+  int cylinder = 1;  // cylinder 1 to 4
   Vec3 location{0, 0, 0}, direction{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
-  double angle = 0;  // horizontal degrees; 0: not given
+  double angle = 0;           // horizontal degrees; 0: not given
+  double vertical_angle = 0;  // spherical's second angle; 0: not given
   Pos pos;
   bool given = false;
 };

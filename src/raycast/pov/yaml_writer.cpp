@@ -88,20 +88,28 @@ class Writer {
   void camera() {
     const Camera& c = s_.camera;
     const Vec3 look = c.location + c.direction;
+    static const char* const kTypes[] = {"perspective",      "orthographic", "fisheye",
+                                         "ultra_wide_angle", "omnimax",      "panoramic",
+                                         "cylinder",         "spherical"};
     std::ostringstream o;
-    if (c.orthographic) {
-      o << "camera: {type: orthographic, position: " << vec(m(c.location))
-        << ", look_at: " << vec(m(look)) << ", up: " << vec(m(c.up))
-        << ", height: " << num(length(c.up)) << "}";
-    } else {
+    o << "camera: {type: " << kTypes[c.kind] << ", position: " << vec(m(c.location))
+      << ", look_at: " << vec(m(look)) << ", up: " << vec(m(c.up));
+    if (c.kind == Camera::Orthographic) {
+      o << ", height: " << num(length(c.up));
+    } else if (c.kind == Camera::Perspective) {
       // The vertical field of view from up's length against direction's (POV-Ray's `angle` has
-      // already set direction's length from right's); the image's aspect ratio gives the rest.
+      // already set direction's length from right's), for a viewer that moves the camera.
       const double fov =
           2 * std::atan(0.5 * length(c.up) / length(c.direction)) * 180 / std::numbers::pi;
-      o << "camera: {type: perspective, position: " << vec(m(c.location))
-        << ", look_at: " << vec(m(look)) << ", up: " << vec(m(c.up)) << ", fov: " << num(fov)
-        << "}";
+      o << ", fov: " << num(fov);
+    } else {
+      o << ", angle: " << num(c.angle);
+      if (c.kind == Camera::Spherical)
+        o << ", vertical_angle: " << num(c.vertical_angle > 0 ? c.vertical_angle : 0.5 * c.angle);
+      if (c.kind == Camera::Cylinder) o << ", cylinder: " << c.cylinder;
     }
+    // POV-Ray's vectors as they are: they decide the view and its aspect.
+    o << ", direction: " << vec(m(c.direction)) << ", right: " << vec(m(c.right)) << "}";
     line(c.pos, o.str());
   }
 

@@ -162,6 +162,7 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
 
 Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
                          SampleState& state) const {
+  if (!(ray.tmin <= ray.tmax)) return {0, 0, 0};  // a lens's pixel that sees nothing
   ++state.rays;
   if (mode_ != RenderMode::kWhitted) return diagnostic_hit(ray, found, hit);
   return found ? whitted_hit<kPlain>(ray, hit, 0, state, 1) : scene_.render.background;

@@ -34,6 +34,7 @@ class Integrator {
 
   /// The value seen along a primary ray (unit direction for `depth` to be a distance).
   Color li(const Ray& ray, SampleState& state) const {
+    if (!(ray.tmin <= ray.tmax)) return {0, 0, 0};  // a lens's pixel that sees nothing
     // Inline: the Whitted case without the frame of the diagnostic modes.
     if (mode_ == RenderMode::kWhitted) return whitted(ray, 0, state);
     return li_diagnostic(ray, state);

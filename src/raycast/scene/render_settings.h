@@ -1,10 +1,32 @@
 #pragma once
+#include <optional>
+
 #include "math/vec3.h"
 #include "scene/render_mode.h"
 
 namespace raycast {
 
-enum class CameraType { kPerspective, kOrthographic };
+/// The projections of docs/scene-format.md "Cameras": the pinhole and parallel ones, and
+/// POV-Ray's fisheye, ultra-wide-angle, omnimax, panoramic, cylindrical and spherical lenses.
+enum class CameraType {
+  kPerspective,
+  kOrthographic,
+  kFisheye,
+  kUltraWideAngle,
+  kOmnimax,
+  kPanoramic,
+  kCylinder,
+  kSpherical
+};
+
+/// A camera's own vectors as POV-Ray states them: the image's centre is `direction` away from
+/// the camera, `right` and `up` span the whole image (their lengths are its size, their ratio
+/// its aspect; they need not be perpendicular nor unit length).
+struct CameraFrame {
+  Vec3 direction{0, 0, -1};
+  Vec3 right{4.0 / 3.0, 0, 0};
+  Vec3 up{0, 1, 0};
+};
 
 struct CameraDesc {
   CameraType type = CameraType::kPerspective;
@@ -13,7 +35,22 @@ struct CameraDesc {
   Vec3 up{0, 1, 0};
   double fov = 40;    // perspective: vertical field of view, degrees, in (0, 180)
   double height = 2;  // orthographic: full view height in scene units
+  // The lenses: the horizontal field in degrees (fisheye: the circle's diameter), in (0, 360];
+  // spherical also a vertical one (0: half the horizontal), cylinder its kind 1 to 4.
+  double angle = 180;
+  double vertical_angle = 0;
+  int cylinder = 1;
+  /// When set, the frame replaces look_at, up, fov and height (POV-Ray scenes): its vectors, as
+  /// given, decide the view and the image's aspect, whatever the image's size.
+  std::optional<CameraFrame> frame;
 };
+
+/// Whether every primary ray starts at the camera's position (all but the orthographic camera
+/// and the cylinders whose viewpoint moves along the axis).
+inline bool rays_share_origin(const CameraDesc& c) {
+  return c.type != CameraType::kOrthographic &&
+         !(c.type == CameraType::kCylinder && (c.cylinder == 3 || c.cylinder == 4));
+}
 
 struct ImageSettings {
   int width = 640;

@@ -30,7 +30,7 @@ void Scene::build(bool direction_lists) {
   // lists when it has them; docs/rendering.md "Direction lists").
   if (direction_lists) {
     const CameraDesc view = camera_or_default(*this);
-    if (view.type == CameraType::kPerspective) set_.set_view(objects, view.position);
+    if (rays_share_origin(view)) set_.set_view(objects, view.position);
     std::vector<std::optional<Vec3>> light_points(lights.size());
     for (std::size_t k = 0; k < lights.size(); ++k)
       if (lights[k].type == LightType::kPoint || lights[k].type == LightType::kSpot)
