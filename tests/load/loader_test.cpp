@@ -256,5 +256,38 @@ TEST(Loader, EveryBasicShape_ParsedWithItsParameters) {
   EXPECT_EQ(s.entries, 6);
 }
 
+TEST(Loader, CameraLenses_TheirAnglesAndErrors) {
+  const Scene s = load_scene_text(
+      "camera: {type: spherical, position: [0, 0, 0], look_at: [0, 0, -1], angle: 300}\n"
+      "objects:\n  - sphere: {radius: 1}\n",
+      "s.yaml");
+  ASSERT_TRUE(s.camera);
+  EXPECT_EQ(s.camera->type, CameraType::kSpherical);
+  EXPECT_EQ(s.camera->angle, 300);
+  EXPECT_EQ(s.camera->vertical_angle, 150);
+  const Scene c = load_scene_text(
+      "camera: {type: cylinder, cylinder: 2, angle: 120}\nobjects:\n  - sphere: {radius: 1}\n",
+      "s.yaml");
+  EXPECT_EQ(c.camera->cylinder, 2);
+  expect_error("camera: {type: fisheye, angle: 0}\nobjects: []\n", 1, 32,
+               "camera.angle must be in (0, 360] degrees");
+  expect_error("camera: {type: cylinder, cylinder: 5}\nobjects: []\n", 1, 36,
+               "camera.cylinder must be a whole number in [1, 4], got 5");
+  expect_error("camera: {type: fish}\nobjects: []\n", 1, 16,
+               "camera.type must be perspective, orthographic, fisheye, ultra_wide_angle, "
+               "omnimax, panoramic, cylinder or spherical, got fish");
+}
+
+TEST(Loader, CameraFrame_DirectionAndRightTogether) {
+  const Scene s = load_scene_text(
+      "camera: {direction: [0, 0, -2], right: [3, 0, 0], up: [0, 1, 0]}\n"
+      "objects:\n  - sphere: {radius: 1}\n",
+      "s.yaml");
+  ASSERT_TRUE(s.camera && s.camera->frame);
+  EXPECT_EQ(s.camera->frame->right, (Vec3{3, 0, 0}));
+  EXPECT_EQ(s.camera->frame->direction, (Vec3{0, 0, -2}));
+  expect_error("camera: {direction: [0, 0, -1]}\nobjects: []\n", 1, 9, "camera.right is required");
+}
+
 }  // namespace
 }  // namespace raycast

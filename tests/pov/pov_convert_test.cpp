@@ -165,7 +165,8 @@ TEST_P(PovConvertRoundTrip, ConvertedYamlRendersIdentically) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovConvertRoundTrip,
-                         ::testing::Values("basic", "csg", "surfaces", "glass", "transmit"));
+                         ::testing::Values("basic", "csg", "surfaces", "glass", "transmit",
+                                           "lens"));
 
 TEST(PovImport, DegenerateShapesAreLeftOutWithTheirPosition) {
   // POV-Ray draws nothing for a sphere of negative radius; raycast says so and goes on.
