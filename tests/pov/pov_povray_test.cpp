@@ -62,7 +62,8 @@ TEST_P(PovRayRoundTrip, MeanAbsoluteDifferenceIsSmall) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovRayRoundTrip,
-                         ::testing::Values("basic", "csg", "surfaces", "glass", "transmit"));
+                         ::testing::Values("basic", "csg", "surfaces", "glass", "transmit",
+                                           "lens"));
 
 }  // namespace
 }  // namespace raycast
