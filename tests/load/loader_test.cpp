@@ -289,5 +289,37 @@ TEST(Loader, CameraFrame_DirectionAndRightTogether) {
   expect_error("camera: {direction: [0, 0, -1]}\nobjects: []\n", 1, 9, "camera.right is required");
 }
 
+TEST(Loader, LightKinds_AreaCylinderFadeShadows) {
+  const Scene s = load_scene_text(
+      "lights:\n"
+      "  - {type: area, position: [0, 5, 0], axis1: [1, 0, 0], axis2: [0, 0, 1], size1: 3, "
+      "jitter: true, direction: [0, -1, 0], angle: 40, edge: cosine}\n"
+      "  - {type: cylinder, position: [0, 5, 0], direction: [0, -1, 0], radius: 2, falloff: 1}\n"
+      "  - {type: point, position: [0, 5, 0], attenuation: fade, fade_distance: 3, shadows: "
+      "false}\n"
+      "  - {type: directional, direction: [0, -1, 0], position: [0, 9, 0]}\n"
+      "objects:\n  - sphere: {radius: 1}\n",
+      "s.yaml");
+  ASSERT_EQ(s.lights.size(), 4u);
+  EXPECT_EQ(s.lights[0].type, LightType::kArea);
+  EXPECT_EQ(s.lights[0].size1, 3);
+  EXPECT_EQ(s.lights[0].size2, 2);
+  EXPECT_TRUE(s.lights[0].jitter && s.lights[0].spot);
+  EXPECT_EQ(s.lights[0].edge, SpotEdge::kCosine);
+  EXPECT_EQ(s.lights[1].type, LightType::kCylinder);
+  EXPECT_EQ(s.lights[1].angle, 2);
+  EXPECT_EQ(s.lights[2].attenuation, Attenuation::kFade);
+  EXPECT_EQ(s.lights[2].fade_distance, 3);
+  EXPECT_EQ(s.lights[2].fade_power, 2);
+  EXPECT_FALSE(s.lights[2].shadows);
+  EXPECT_TRUE(s.lights[3].bounded);
+  expect_error("lights:\n  - {type: laser}\nobjects: []\n", 2, 12,
+               "light.type must be point, directional, spot, sphere, cylinder or area, got laser");
+  expect_error(
+      "lights:\n  - {type: cylinder, position: [0, 0, 0], direction: [0, -1, 0], radius: 1, "
+      "falloff: 2}\nobjects: []\n",
+      2, 86, "light.falloff must be at most radius");
+}
+
 }  // namespace
 }  // namespace raycast

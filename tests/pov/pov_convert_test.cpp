@@ -245,9 +245,8 @@ TEST(PovImport, LightsMap) {
   EXPECT_EQ(s.lights[0].position.z, -3);  // the default camera is left-handed: z is negated
   EXPECT_EQ(s.lights[0].color.y, 0.5);
   EXPECT_EQ(s.lights[1].type, LightType::kSpot);
-  EXPECT_EQ(s.lights[2].type, LightType::kSphere);
-  EXPECT_EQ(s.lights[2].radius, 1);
-  EXPECT_EQ(s.lights[2].samples, 12);
+  EXPECT_EQ(s.lights[2].type, LightType::kArea);  // POV-Ray's grid of 3 x 4 points
+  EXPECT_EQ(s.lights[2].size1 * s.lights[2].size2, 12);
 }
 
 TEST(PovImport, CliConvertAndRender) {

@@ -121,19 +121,43 @@ class Builder {
   void light(const pov::Light& l, const std::optional<Transform>& xf) {
     Light out;
     auto place = [&](const Vec3& p) { return xf ? xf->point(m(p)) : m(p); };
+    auto turn = [&](const Vec3& v) { return xf ? xf->vector(m(v)) : m(v); };
     out.color = rgb(l.colour);
     out.position = place(l.position);
-    if (l.area) {
-      out.type = LightType::kSphere;
-      out.radius = std::max(0.5 * std::max(length(l.axis1), length(l.axis2)), 1e-6);
-      out.samples = std::clamp(l.size1 * l.size2, 1, 256);
+    out.shadows = !l.shadowless;
+    if (l.fade_distance > 0 && l.fade_power > 0) {
+      out.attenuation = Attenuation::kFade;
+      out.fade_distance = l.fade_distance;
+      out.fade_power = l.fade_power;
+    }
+    const Vec3 axis = place(l.point_at) - out.position;
+    if (l.kind != pov::Light::Point || l.parallel) {
+      if (!(length(axis) > 0)) fail_at(l.pos, "the light's point_at is its position");
+      out.direction = axis / length(axis);
+    }
+    // POV-Ray's cones: spotlight angles with a smooth edge over the cosine, times
+    // cos^tightness; a cylinder light's radius and falloff are distances from its axis.
+    out.angle = l.falloff;
+    out.falloff = l.falloff - l.radius;
+    out.tightness = l.tightness;
+    out.edge = SpotEdge::kCosine;
+    if (l.parallel) {
+      out.type = LightType::kDirectional;
+      out.bounded = true;
+    } else if (l.area) {
+      out.type = LightType::kArea;
+      out.axis1 = turn(l.axis1);
+      out.axis2 = turn(l.axis2);
+      out.size1 = l.size1;
+      out.size2 = l.size2;
+      out.jitter = l.jitter;
+      out.circular = l.circular;
+      out.orient = l.orient;
+      out.spot = l.kind == pov::Light::Spot;
     } else if (l.kind == pov::Light::Spot) {
       out.type = LightType::kSpot;
-      const Vec3 d = place(l.point_at) - out.position;
-      if (!(length(d) > 0)) fail_at(l.pos, "the spotlight's point_at is its position");
-      out.direction = d / length(d);
-      out.angle = l.falloff;
-      out.falloff = l.falloff - l.radius;
+    } else if (l.kind == pov::Light::Cylinder) {
+      out.type = LightType::kCylinder;
     }
     scene_.lights.push_back(out);
     scene_.marks.lights.push_back({l.pos.file == 0 ? l.pos.line : 0, l.pos.column});

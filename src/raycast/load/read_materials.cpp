@@ -15,11 +15,45 @@ double unit_fraction(Fields& f, const std::string& key, double fallback) {
   return v;
 }
 
-Attenuation read_attenuation(Fields& f) {
+Attenuation read_attenuation(Fields& f, Light& light) {
   const std::string a = f.string("attenuation", "none");
   if (a == "none") return Attenuation::kNone;
   if (a == "inverse_square") return Attenuation::kInverseSquare;
-  f.fail("attenuation", "light.attenuation must be none or inverse_square, got " + a);
+  if (a == "fade") {
+    light.fade_distance = f.positive("fade_distance", light.fade_distance);
+    light.fade_power = f.non_negative("fade_power", light.fade_power);
+    return Attenuation::kFade;
+  }
+  f.fail("attenuation", "light.attenuation must be none, inverse_square or fade, got " + a);
+}
+
+// A spot cone's keys (spot lights, area lights with a direction).
+void read_spot_cone(Fields& f, Light& light) {
+  light.direction = normalize(f.direction("direction"));
+  light.angle = f.number("angle", light.angle);
+  if (!(light.angle > 0 && light.angle < 180)) f.fail("angle", "light.angle must be in (0, 180)");
+  light.falloff = f.non_negative("falloff", light.falloff);
+  light.tightness = f.non_negative("tightness", light.tightness);
+  const std::string edge = f.string("edge", "angle");
+  if (edge == "cosine")
+    light.edge = SpotEdge::kCosine;
+  else if (edge != "angle")
+    f.fail("edge", "light.edge must be angle or cosine, got " + edge);
+}
+
+// An area light's grid (docs/scene-format.md "Lights").
+void read_area(Fields& f, Light& light) {
+  light.position = f.vec3("position");
+  light.axis1 = f.vec3("axis1");
+  light.axis2 = f.vec3("axis2");
+  light.size1 = f.integer("size1", light.size1, 1, 64);
+  light.size2 = f.integer("size2", light.size2, 1, 64);
+  light.jitter = f.boolean("jitter", light.jitter);
+  light.circular = f.boolean("circular", light.circular);
+  light.orient = f.boolean("orient", light.orient);
+  light.attenuation = read_attenuation(f, light);
+  light.spot = f.has("direction");
+  if (light.spot) read_spot_cone(f, light);
 }
 
 // A data file's path as written, relative to the scene file's folder unless absolute.
@@ -82,28 +116,38 @@ Light read_light(const SourceContext& ctx, const YAML::Node& node) {
   const std::string type = f.string("type");
   light.color = read_color(f, "color", light.color);
   light.intensity = f.non_negative("intensity", light.intensity);
+  light.shadows = f.boolean("shadows", light.shadows);
   if (type == "point" || type == "spot") {
     light.type = type == "point" ? LightType::kPoint : LightType::kSpot;
     light.position = f.vec3("position");
-    light.attenuation = read_attenuation(f);
-    if (type == "spot") {
-      light.direction = normalize(f.direction("direction"));
-      light.angle = f.number("angle", light.angle);
-      if (!(light.angle > 0 && light.angle < 180))
-        f.fail("angle", "light.angle must be in (0, 180)");
-      light.falloff = f.non_negative("falloff", light.falloff);
-    }
+    light.attenuation = read_attenuation(f, light);
+    if (type == "spot") read_spot_cone(f, light);
   } else if (type == "directional") {
     light.type = LightType::kDirectional;
     light.direction = normalize(f.direction("direction"));
+    light.bounded = f.has("position");
+    light.position = f.vec3("position", light.position);
+    if (light.bounded) light.attenuation = read_attenuation(f, light);
   } else if (type == "sphere") {
     light.type = LightType::kSphere;
     light.position = f.vec3("center");
     light.radius = f.positive("radius");
     light.samples = f.integer("samples", light.samples, 1, 4096);
-    light.attenuation = read_attenuation(f);
+    light.attenuation = read_attenuation(f, light);
+  } else if (type == "cylinder") {
+    light.type = LightType::kCylinder;
+    light.position = f.vec3("position");
+    light.direction = normalize(f.direction("direction"));
+    light.angle = f.positive("radius");
+    light.falloff = f.non_negative("falloff", 0);
+    if (light.falloff > light.angle) f.fail("falloff", "light.falloff must be at most radius");
+    light.attenuation = read_attenuation(f, light);
+  } else if (type == "area") {
+    light.type = LightType::kArea;
+    read_area(f, light);
   } else {
-    f.fail("type", "light.type must be point, directional, spot or sphere, got " + type);
+    f.fail("type",
+           "light.type must be point, directional, spot, sphere, cylinder or area, got " + type);
   }
   f.finish();
   return light;

@@ -177,6 +177,47 @@ Camera Interpreter::camera_block(const Camera& base) {
   return c;
 }
 
+namespace {
+// One transformation of a light: its points and its area's axes.
+void transform_light(Light& l, const std::vector<XformOp>& ops) {
+  for (const XformOp& o : ops) {
+    l.position = apply(o, l.position, true);
+    l.point_at = apply(o, l.point_at, true);
+    l.axis1 = apply(o, l.axis1, false);
+    l.axis2 = apply(o, l.axis2, false);
+  }
+}
+}  // namespace
+
+// A light_source item that is a number after its keyword; false when `w` is not one.
+bool Interpreter::light_number(Light& l, const std::string& w) {
+  double* target = w == "radius"          ? &l.radius
+                   : w == "falloff"       ? &l.falloff
+                   : w == "tightness"     ? &l.tightness
+                   : w == "fade_distance" ? &l.fade_distance
+                   : w == "fade_power"    ? &l.fade_power
+                                          : nullptr;
+  if (!target && w != "adaptive") return false;
+  next();
+  const double v = number(w.c_str());
+  if (target) *target = v;  // adaptive: the full grid is always sampled
+  return true;
+}
+
+void Interpreter::area_light_item(Light& l) {
+  next();
+  l.area = true;
+  l.axis1 = vector("area_light");
+  skip_comma();
+  l.axis2 = vector("area_light");
+  skip_comma();
+  const double n1 = number("area_light");
+  skip_comma();
+  const double n2 = number("area_light");
+  l.size1 = static_cast<int>(std::clamp(n1, 1.0, 64.0));
+  l.size2 = static_cast<int>(std::clamp(n2, 1.0, 64.0));
+}
+
 Node Interpreter::light_block() {
   Light l;
   l.pos = tok().pos;
@@ -199,42 +240,30 @@ Node Interpreter::light_block() {
   while (!accept_symbol("}")) {
     const Token t = tok();
     const std::string& w = t.text;
-    if (w == "spotlight")
+    if (w == "spotlight") {
       next(), l.kind = Light::Spot;
-    else if (w == "point_at")
+    } else if (w == "cylinder") {
+      next(), l.kind = Light::Cylinder;
+      l.radius = 0.75, l.falloff = 1;
+    } else if (w == "point_at") {
       next(), l.point_at = vector("point_at");
-    else if (w == "radius")
-      next(), l.radius = number("radius");
-    else if (w == "falloff")
-      next(), l.falloff = number("falloff");
-    else if (w == "color" || w == "colour" || w == "rgb")
+    } else if (w == "color" || w == "colour" || w == "rgb") {
       l.colour = colour("the light");
-    else if (w == "tightness") {
-      next();
-      if (number("tightness") != 0) unsupported_warning(t.pos, "spotlight tightness");
+    } else if (light_number(l, w)) {
     } else if (w == "area_light") {
-      next();
-      l.area = true;
-      l.axis1 = vector("area_light");
-      skip_comma();
-      l.axis2 = vector("area_light");
-      skip_comma();
-      const double n1 = number("area_light");
-      skip_comma();
-      const double n2 = number("area_light");
-      l.size1 = static_cast<int>(std::clamp(n1, 1.0, 64.0));
-      l.size2 = static_cast<int>(std::clamp(n2, 1.0, 64.0));
-    } else if (w == "adaptive" || w == "fade_distance" || w == "fade_power") {
-      next();
-      number(w.c_str());
-      if (w != "adaptive") unsupported_warning(t.pos, "light " + w);
+      area_light_item(l);
     } else if (w == "jitter" || w == "circular" || w == "orient" || w == "shadowless" ||
-               w == "media_interaction" || w == "media_attenuation" || w == "parallel" ||
-               w == "cylinder") {
+               w == "parallel") {
       next();
-      if (w == "media_interaction" || w == "media_attenuation") boolean_option();
-      if (w == "shadowless" || w == "parallel" || w == "cylinder")
-        unsupported_warning(t.pos, "the " + w + " light", "a point light is used");
+      bool& flag = w == "jitter"       ? l.jitter
+                   : w == "circular"   ? l.circular
+                   : w == "orient"     ? l.orient
+                   : w == "shadowless" ? l.shadowless
+                                       : l.parallel;
+      flag = true;
+    } else if (w == "media_interaction" || w == "media_attenuation" || w == "area_illumination") {
+      next();
+      boolean_option();
     } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
       next();
       unsupported_warning(t.pos, "light " + w);
@@ -242,16 +271,19 @@ Node Interpreter::light_block() {
     } else {
       std::vector<XformOp> ops;
       if (!transform_item(ops)) unexpected("a light_source item");
-      for (const XformOp& o : ops) {
-        l.position = apply(o, l.position, true);
-        l.point_at = apply(o, l.point_at, true);
-      }
+      transform_light(l, ops);
     }
   }
   if (l.kind == Light::Spot) {
     l.falloff = std::clamp(l.falloff, 1e-3, 179.0);
     l.radius = std::clamp(l.radius, 0.0, l.falloff);
+  } else if (l.kind == Light::Cylinder) {
+    l.falloff = std::max(l.falloff, 1e-9);
+    l.radius = std::clamp(l.radius, 0.0, l.falloff);
   }
+  if (l.parallel && l.kind != Light::Point)
+    unsupported_warning(l.pos, "parallel spotlights and cylinder lights",
+                        "a parallel light without the cone is used");
   Node n;
   n.kind = Node::LightSource;
   n.pos = l.pos;

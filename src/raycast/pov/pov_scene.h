@@ -62,13 +62,17 @@ struct XformOp {
 };
 
 struct Light {
-  enum Kind { Point, Spot } kind = Point;
+  enum Kind { Point, Spot, Cylinder } kind = Point;
   Vec3 position, point_at{0, 0, 1};
   Colour colour{1, 1, 1, 0, 0};
-  double radius = 30, falloff = 45;  // spotlight degrees
+  double radius = 30, falloff = 45;  // spotlight degrees (cylinder: units, 0.75 and 1)
+  double tightness = 0;
+  double fade_distance = 0, fade_power = 0;  // 0: no fading
+  bool parallel = false, shadowless = false;
   bool area = false;
   Vec3 axis1, axis2;
   int size1 = 1, size2 = 1;
+  bool jitter = false, circular = false, orient = false;
   Pos pos;
 };
 

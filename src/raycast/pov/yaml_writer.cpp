@@ -115,21 +115,34 @@ class Writer {
 
   void light(const Light& l) {
     std::ostringstream o;
-    const std::string colour = rgb(l.colour);
-    if (l.area) {
-      if (l.kind == Light::Spot) fail_at(l.pos, unsupported("an area spotlight"));
-      // An area light becomes a sphere light of the rectangle's size (docs/pov-import.md).
-      const double r = 0.5 * std::max(length(l.axis1), length(l.axis2));
-      if (!(r > 0)) fail_at(l.pos, "area_light axes must not both be zero");
-      o << "  - {type: sphere, center: " << vec(m(l.position)) << ", radius: " << num(r)
-        << ", samples: " << l.size1 * l.size2 << ", color: " << colour << "}";
+    const Vec3 axis = m(l.point_at - l.position);
+    const std::string cone = ", angle: " + num(l.falloff) +
+                             ", falloff: " + num(l.falloff - l.radius) +
+                             ", tightness: " + num(l.tightness) + ", edge: cosine";
+    if (l.parallel) {
+      o << "  - {type: directional, direction: " << vec(axis)
+        << ", position: " << vec(m(l.position));
+    } else if (l.area) {
+      o << "  - {type: area, position: " << vec(m(l.position)) << ", axis1: " << vec(m(l.axis1))
+        << ", axis2: " << vec(m(l.axis2)) << ", size1: " << l.size1 << ", size2: " << l.size2
+        << ", jitter: " << (l.jitter ? "true" : "false")
+        << ", circular: " << (l.circular ? "true" : "false")
+        << ", orient: " << (l.orient ? "true" : "false");
+      if (l.kind == Light::Spot) o << ", direction: " << vec(axis) << cone;
     } else if (l.kind == Light::Spot) {
-      o << "  - {type: spot, position: " << vec(m(l.position))
-        << ", direction: " << vec(m(l.point_at - l.position)) << ", angle: " << num(l.falloff)
-        << ", falloff: " << num(l.falloff - l.radius) << ", color: " << colour << "}";
+      o << "  - {type: spot, position: " << vec(m(l.position)) << ", direction: " << vec(axis)
+        << cone;
+    } else if (l.kind == Light::Cylinder) {
+      o << "  - {type: cylinder, position: " << vec(m(l.position)) << ", direction: " << vec(axis)
+        << ", radius: " << num(l.falloff) << ", falloff: " << num(l.falloff - l.radius);
     } else {
-      o << "  - {type: point, position: " << vec(m(l.position)) << ", color: " << colour << "}";
+      o << "  - {type: point, position: " << vec(m(l.position));
     }
+    if (l.fade_distance > 0 && l.fade_power > 0)
+      o << ", attenuation: fade, fade_distance: " << num(l.fade_distance)
+        << ", fade_power: " << num(l.fade_power);
+    if (l.shadowless) o << ", shadows: false";
+    o << ", color: " << rgb(l.colour) << "}";
     line(l.pos, o.str());
   }
 

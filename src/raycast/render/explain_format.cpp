@@ -64,6 +64,10 @@ const char* light_type_name(LightType type) {
       return "spot";
     case LightType::kSphere:
       return "sphere";
+    case LightType::kCylinder:
+      return "cylinder";
+    case LightType::kArea:
+      return "area";
   }
   return "point";
 }

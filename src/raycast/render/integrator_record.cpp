@@ -6,6 +6,7 @@
 
 #include "geometry/spawn.h"
 #include "render/integrator.h"
+#include "render/light_falloff.h"
 #include "render/optics.h"
 #include "render/terminator.h"
 #include "render/whitted_trace.inl"

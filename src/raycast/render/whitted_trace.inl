@@ -2,23 +2,17 @@
 // integrator.cpp (kPlain, the render's) and integrator_record.cpp (kCount and kRecord, for
 // `raycast explain` and the recorded outputs), so that the render's translation unit is compiled
 // and inlined as if there were one mode only.
-// Needs, before it: render/integrator.h, geometry/spawn.h, render/optics.h, render/terminator.h,
+// Needs, before it: render/integrator.h, geometry/spawn.h, render/light_falloff.h, render/optics.h,
+// render/terminator.h,
 // <algorithm>, <cmath>, <numbers>.
 
 namespace raycast {
 
 namespace {
 
-constexpr double kDegrees = std::numbers::pi / 180;
-
-/// The spot light's cone: 1 inside angle - falloff, 0 outside angle, a smoothstep between.
+/// The spot light's cone (render/light_falloff.h).
 double spot_factor(const Light& light, const Vec3& from_light) {
-  const double cos_theta = std::clamp(dot(light.direction, from_light), -1.0, 1.0);
-  const double theta = std::acos(cos_theta) / kDegrees;
-  if (theta >= light.angle) return 0;
-  if (theta <= light.angle - light.falloff) return 1;
-  const double x = (light.angle - theta) / light.falloff;
-  return x * x * (3 - 2 * x);
+  return spot_cone(light, from_light);
 }
 
 }  // namespace
@@ -158,6 +152,47 @@ template <class Add>
   }
 }
 
+// A parallel light (POV-Ray's): light along `direction` everywhere, shadows only from what lies
+// between the point and the plane through the light's position; points beyond that plane are lit
+// unshadowed. Attenuation is by the distance to the position, as a point light's.
+template <class Add>
+[[gnu::always_inline]] inline void parallel_light(const Light& light, const Color& emitted,
+                                                  const Vec3& p, bool& unshadowed, Add& add) {
+  const Vec3 l = -light.direction;
+  const Color e = emitted * attenuation_factor(light, length_squared(light.position - p));
+  const double to_plane = dot(light.position - p, l);
+  if (!(to_plane > 0)) unshadowed = true;
+  add(l, p + to_plane * l, false, e);
+}
+
+// Cylinder and area lights: the cone (spot, cylinder) and attenuation of the light's centre,
+// then one shadow ray per grid point of an area light (each with its share of the light and the
+// centre's direction, as POV-Ray lights its area lights) or one along the cylinder's axis.
+template <class Add>
+[[gnu::always_inline]] inline void extended_light(const Light& light, const Color& emitted,
+                                                  const Vec3& p, Rng& rng, Add& add) {
+  const Vec3 to = light.position - p;
+  const double dist2 = length_squared(to);
+  if (!(dist2 > 0)) return;
+  Color e = emitted * attenuation_factor(light, dist2);
+  if (light.type == LightType::kCylinder) {
+    // The light travels along the axis: lit as from a parallel light, shadowed up to the axis.
+    const double cone = cylinder_cone(light, p);
+    if (!(cone > 0)) return;
+    const Vec3 l = -light.direction;
+    add(l, p + dot(to, l) * l, false, e * cone);
+    return;
+  }
+  const Vec3 l = to / std::sqrt(dist2);
+  if (light.spot) {
+    const double cone = spot_cone(light, -l);
+    if (!(cone > 0)) return;
+    e *= cone;
+  }
+  const Color share = e / double(light.size1 * light.size2);
+  area_light_points(light, p, rng, [&](const Vec3& target) { add(l, target, false, share); });
+}
+
 template <Integrator::TraceMode M>
 void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
                         const Material& m, unsigned exponent, const Color& c, SampleState& state,
@@ -185,6 +220,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
   // The direction lists around the light of the loop below (nullptr for lights without: only
   // point and spot lights have them, and add's shadow rays to such a light end at it).
   const DirectionLists* lists = nullptr;
+  bool unshadowed = false;  // add() tests no shadow ray (set per light below)
   // One light direction l towards `target` (a point, or a direction when at infinity).
   // The light of the loop below, for a recorder.
   std::size_t light_index = 0;
@@ -218,6 +254,10 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
       return;
     }
     if (!(max_component(term) > 0)) return;
+    if (unshadowed) {  // a shadowless light, or a point above a parallel light's plane
+      sum += term;
+      return;
+    }
     // (lit is si itself except on smooth meshes: then no side test.)
     const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
     if (!any_transmissive_) {
@@ -243,10 +283,19 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const Color& emitted = emitted_by[li];
     lists = light_lists_[li];
     light_index = li;
+    unshadowed = !light.shadows;
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:
+        if (light.bounded) {
+          parallel_light(light, emitted, si.p, unshadowed, add);
+          break;
+        }
         add(-light.direction, -light.direction, true, emitted);
+        break;
+      case LightType::kCylinder:
+      case LightType::kArea:
+        extended_light(light, emitted, si.p, state.rng, add);
         break;
       case LightType::kPoint:
       case LightType::kSpot: {
@@ -254,7 +303,10 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
         const double dist2 = length_squared(to);
         if (!(dist2 > 0)) break;
         const Vec3 l = to / std::sqrt(dist2);
-        Color e = inverse_square ? emitted / dist2 : emitted;
+        Color e = inverse_square ? emitted / dist2
+                  : light.attenuation == Attenuation::kFade
+                      ? emitted * attenuation_factor(light, dist2)
+                      : emitted;
         if (light.type == LightType::kSpot) {
           const double cone = spot_factor(light, -l);
           if (!(cone > 0)) break;  // outside the cone: no term

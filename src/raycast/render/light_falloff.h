@@ -1,0 +1,107 @@
+#pragma once
+// How much of a light reaches a point: spot and cylinder cones, distance attenuation, and the
+// grid of points of an area light (docs/scene-format.md "Lights"). Used by the Whitted
+// recursion (render/whitted_trace.inl).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/rng.h"
+#include "scene/light.h"
+
+namespace raycast {
+
+/// A smoothstep between 0 at `outer` and 1 at `inner` (outer < inner); the value x itself.
+inline double smooth_edge(double x, double outer, double inner) {
+  if (x >= inner) return 1;
+  if (x <= outer) return 0;
+  const double t = (x - outer) / (inner - outer);
+  return t * t * (3 - 2 * t);
+}
+
+/// The spot cone's factor for light leaving in the unit direction `from_light`: 1 inside
+/// angle - falloff, 0 outside angle, a smoothstep between (over the angle or its cosine), times
+/// cos^tightness of the angle off the axis.
+inline double spot_cone(const Light& light, const Vec3& from_light) {
+  constexpr double kDegrees = std::numbers::pi / 180;
+  const double cos_theta = std::clamp(dot(light.direction, from_light), -1.0, 1.0);
+  double f;
+  if (light.edge == SpotEdge::kCosine) {
+    const double inner = std::max(0.0, light.angle - light.falloff);
+    f = smooth_edge(cos_theta, std::cos(light.angle * kDegrees), std::cos(inner * kDegrees));
+  } else {
+    const double theta = std::acos(cos_theta) / kDegrees;
+    if (theta >= light.angle) return 0;
+    if (theta <= light.angle - light.falloff) {
+      f = 1;
+    } else {
+      const double x = (light.angle - theta) / light.falloff;
+      f = x * x * (3 - 2 * x);
+    }
+  }
+  if (light.tightness > 0 && f > 0) f *= std::pow(std::max(0.0, cos_theta), light.tightness);
+  return f;
+}
+
+/// The cylinder light's factor at `p`: 0 behind the light or farther than `angle` from its
+/// axis, 1 within angle - falloff, a smoothstep between.
+inline double cylinder_cone(const Light& light, const Vec3& p) {
+  const Vec3 to = p - light.position;
+  const double along = dot(to, light.direction);
+  if (!(along > 0)) return 0;
+  const double off_axis = length(to - along * light.direction);
+  return smooth_edge(-off_axis, -light.angle, -(light.angle - light.falloff));
+}
+
+/// The distance attenuation at squared distance dist2 from the light.
+inline double attenuation_factor(const Light& light, double dist2) {
+  switch (light.attenuation) {
+    case Attenuation::kNone:
+      return 1;
+    case Attenuation::kInverseSquare:
+      return 1 / dist2;
+    case Attenuation::kFade:
+      return 2 / (1 + std::pow(std::sqrt(dist2) / light.fade_distance, light.fade_power));
+  }
+  return 1;
+}
+
+/// The area light's grid points seen from p, each passed to add(target): POV-Ray's array of
+/// size1 x size2 point lights spanning axis1 and axis2 (corners included; one row or column is
+/// the centre line), jittered within their cells, squeezed into an ellipse (circular), turned
+/// to face p (orient).
+template <class Add>
+void area_light_points(const Light& light, const Vec3& p, Rng& rng, Add&& add) {
+  Vec3 a1 = light.axis1, a2 = light.axis2;
+  if (light.orient) {
+    // The grid's plane turned perpendicular to the light-to-point line, its axes' lengths kept.
+    const Vec3 w = p - light.position;
+    if (length_squared(w) > 0) {
+      Vec3 s, t;
+      make_frame(normalize(w), s, t);
+      a1 = length(light.axis1) * s;
+      a2 = length(light.axis2) * t;
+    }
+  }
+  const int n1 = light.size1, n2 = light.size2;
+  for (int i = 0; i < n1; ++i) {
+    for (int j = 0; j < n2; ++j) {
+      double u = n1 > 1 ? double(i) / (n1 - 1) - 0.5 : 0;
+      double v = n2 > 1 ? double(j) / (n2 - 1) - 0.5 : 0;
+      if (light.jitter) {
+        if (n1 > 1) u += (rng.uniform() - 0.5) / (n1 - 1);
+        if (n2 > 1) v += (rng.uniform() - 0.5) / (n2 - 1);
+      }
+      if (light.circular) {
+        // The square [-0.5, 0.5]^2 onto the disc of radius 0.5 (each axis shrunk by the other).
+        const double su = u * std::sqrt(std::max(0.0, 1 - 2 * v * v));
+        const double sv = v * std::sqrt(std::max(0.0, 1 - 2 * u * u));
+        u = su;
+        v = sv;
+      }
+      add(light.position + u * a1 + v * a2);
+    }
+  }
+}
+
+}  // namespace raycast
