@@ -93,11 +93,17 @@ void area_light_points(const Light& light, const Vec3& p, Rng& rng, Add&& add) {
         if (n2 > 1) v += (rng.uniform() - 0.5) / (n2 - 1);
       }
       if (light.circular) {
-        // The square [-0.5, 0.5]^2 onto the disc of radius 0.5 (each axis shrunk by the other).
-        const double su = u * std::sqrt(std::max(0.0, 1 - 2 * v * v));
-        const double sv = v * std::sqrt(std::max(0.0, 1 - 2 * u * u));
-        u = su;
-        v = sv;
+        // The square [-0.5, 0.5]^2 onto the disc of radius 0.5, square rings onto circles
+        // (Shirley and Chiu's concentric map).
+        const double a = 2 * u, b = 2 * v;
+        if (a != 0 || b != 0) {
+          const bool wide = std::abs(a) > std::abs(b);
+          const double r = wide ? a : b;
+          const double phi = wide ? std::numbers::pi / 4 * (b / a)
+                                  : std::numbers::pi / 2 - std::numbers::pi / 4 * (a / b);
+          u = 0.5 * r * std::cos(phi);
+          v = 0.5 * r * std::sin(phi);
+        }
       }
       add(light.position + u * a1 + v * a2);
     }

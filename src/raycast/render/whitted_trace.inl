@@ -152,13 +152,14 @@ template <class Add>
   }
 }
 
-// A parallel light (POV-Ray's): light along `direction` everywhere, shadows only from what lies
-// between the point and the plane through the light's position; points beyond that plane are lit
-// unshadowed. Attenuation is by the distance to the position, as a point light's.
+// A directional light; a bounded one is POV-Ray's parallel light: shadows only from what lies
+// between the point and the plane through the light's position, points beyond that plane lit
+// unshadowed, attenuation by the distance to the position as a point light's.
 template <class Add>
-[[gnu::always_inline]] inline void parallel_light(const Light& light, const Color& emitted,
-                                                  const Vec3& p, bool& unshadowed, Add& add) {
+[[gnu::always_inline]] inline void directional_light(const Light& light, const Color& emitted,
+                                                     const Vec3& p, bool& unshadowed, Add& add) {
   const Vec3 l = -light.direction;
+  if (!light.bounded) return add(l, l, true, emitted);
   const Color e = emitted * attenuation_factor(light, length_squared(light.position - p));
   const double to_plane = dot(light.position - p, l);
   if (!(to_plane > 0)) unshadowed = true;
@@ -220,7 +221,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
   // The direction lists around the light of the loop below (nullptr for lights without: only
   // point and spot lights have them, and add's shadow rays to such a light end at it).
   const DirectionLists* lists = nullptr;
-  bool unshadowed = false;  // add() tests no shadow ray (set per light below)
+  bool unshadowed = false;  // a shadowless light, or a point beyond a parallel light's plane
   // One light direction l towards `target` (a point, or a direction when at infinity).
   // The light of the loop below, for a recorder.
   std::size_t light_index = 0;
@@ -254,24 +255,21 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
       return;
     }
     if (!(max_component(term) > 0)) return;
-    if (unshadowed) {  // a shadowless light, or a point above a parallel light's plane
-      sum += term;
-      return;
-    }
     // (lit is si itself except on smooth meshes: then no side test.)
     const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
     if (!any_transmissive_) {
       // Visibility is 0 or 1: no colour to return and multiply (1 * term is term, bit for bit).
       const Vec3& o = origin_towards(from, l);
-      if (!(lists ? blocked_to(o, *lists, state) : blocked(o, target, at_infinity, state)))
+      if (unshadowed ||
+          !(lists ? blocked_to(o, *lists, state) : blocked(o, target, at_infinity, state)))
         sum += term;
       return;
     }
     // Unblocked, the filter product has a channel above 0 (passes() stops the walk otherwise).
     Color through{1, 1, 1};
     const Vec3& o = origin_towards(from, l);
-    if (lists ? filters_to(o, *lists, state, through)
-              : filters(o, target, at_infinity, state, through))
+    if (unshadowed || (lists ? filters_to(o, *lists, state, through)
+                             : filters(o, target, at_infinity, state, through)))
       sum += mul(through, term);
   };
   // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
@@ -287,11 +285,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:
-        if (light.bounded) {
-          parallel_light(light, emitted, si.p, unshadowed, add);
-          break;
-        }
-        add(-light.direction, -light.direction, true, emitted);
+        directional_light(light, emitted, si.p, unshadowed, add);
         break;
       case LightType::kCylinder:
       case LightType::kArea:
@@ -303,10 +297,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
         const double dist2 = length_squared(to);
         if (!(dist2 > 0)) break;
         const Vec3 l = to / std::sqrt(dist2);
-        Color e = inverse_square ? emitted / dist2
-                  : light.attenuation == Attenuation::kFade
-                      ? emitted * attenuation_factor(light, dist2)
-                      : emitted;
+        Color e = inverse_square ? emitted / dist2 : emitted * attenuation_factor(light, dist2);
         if (light.type == LightType::kSpot) {
           const double cone = spot_factor(light, -l);
           if (!(cone > 0)) break;  // outside the cone: no term
