@@ -339,6 +339,14 @@ class Builder {
         for (const Vec3& p : n.points) profile.push_back({p.x, p.y});
         return make_revolution(profile, ProfileCurve::kLinear, n.kind == Node::Sor && !n.open);
       }
+      case Node::Triangle: {
+        // Mirroring reverses the winding: swap two corners to keep the face's side.
+        const std::size_t b = mirror_ ? 2 : 1, c = mirror_ ? 1 : 2;
+        if (n.normals.empty())
+          return make_triangle(pt(n.points[0]), pt(n.points[b]), pt(n.points[c]));
+        return make_triangle(pt(n.points[0]), pt(n.points[b]), pt(n.points[c]), m(n.normals[0]),
+                             m(n.normals[b]), m(n.normals[c]));
+      }
       case Node::Mesh: {
         std::vector<Vec3f> pos, nor;
         for (const Vec3& v : n.vertices) {

@@ -152,6 +152,7 @@ class Interpreter {
   Value spline_block(const Pos& at);
   void isosurface_body(Node& n, int depth);
   void spline_points(Node& n, int min_count);
+  void triangle_body(Node& n, bool smooth);
   void mesh_body(Node& n, int depth);
   void mesh2_body(Node& n, int depth);
   long count(const char* what);
