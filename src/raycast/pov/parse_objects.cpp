@@ -30,6 +30,8 @@ const std::map<std::string, Node::Kind>& object_kinds() {
                                                           {"sor", Node::Sor},
                                                           {"mesh", Node::Mesh},
                                                           {"mesh2", Node::Mesh},
+                                                          {"triangle", Node::Triangle},
+                                                          {"smooth_triangle", Node::Triangle},
                                                           {"union", Node::Union},
                                                           {"intersection", Node::Intersection},
                                                           {"difference", Node::Difference},
@@ -40,9 +42,8 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 
 bool is_unbuilt_shape(const std::string& w) {
   static const char* const shapes[] = {
-      "blob",     "height_field",    "prism",         "sphere_sweep", "superellipsoid",
-      "text",     "julia_fractal",   "bicubic_patch", "parametric",   "polygon",
-      "triangle", "smooth_triangle", "lemon",         "ovus"};
+      "blob",          "height_field",  "prism",      "sphere_sweep", "superellipsoid", "text",
+      "julia_fractal", "bicubic_patch", "parametric", "polygon",      "lemon",          "ovus"};
   for (const char* s : shapes)
     if (w == s) return true;
   return false;
@@ -165,7 +166,10 @@ std::optional<Node> Interpreter::object(int depth) {
     }
   } else {
     n.kind = object_kinds().at(kw.text);
-    object_body(n, depth);
+    if (n.kind == Node::Triangle)
+      triangle_body(n, kw.text == "smooth_triangle");
+    else
+      object_body(n, depth);
     if (kw.text == "cubic" || kw.text == "quartic") {
       poly_coefficients(n, kw.text == "cubic" ? 3 : 4);
     } else if (kw.text == "poly") {
@@ -485,6 +489,22 @@ void Interpreter::spline_points(Node& n, int min_count) {
       fail_at(n.pos, "profile radii must be >= 0 (raycast revolves r >= 0 about the axis)");
   n.points = out;
   n.spline = spline;
+}
+
+// triangle { P0, P1, P2 } or smooth_triangle { P0, N0, P1, N1, P2, N2 }: the corners in
+// points, the normals in normals.
+void Interpreter::triangle_body(Node& n, bool smooth) {
+  std::array<Vec3, 3> p, nn;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (i) skip_comma();
+    p[i] = vector("a triangle's corner");
+    if (smooth) {
+      skip_comma();
+      nn[i] = vector("a triangle's corner normal");
+    }
+  }
+  n.points.assign(p.begin(), p.end());
+  if (smooth) n.normals.assign(nn.begin(), nn.end());
 }
 
 void Interpreter::mesh_body(Node& n, int) {
