@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "load/pov_loader.h"
+#include "render/integrator.h"
 
 namespace raycast {
 namespace {
@@ -67,6 +68,29 @@ TEST(PovLightImport, AreaLight_GridAxesTurnedWithTheLight) {
   EXPECT_EQ(spot.type, LightType::kArea);
   EXPECT_TRUE(spot.spot);
   EXPECT_EQ(spot.angle, 45);  // POV-Ray's default falloff
+}
+
+// The light reaching the floor's origin under a light at <0, 5, 0>, past `blocker` (which stands
+// over the origin), seen from the side.
+double floor_light(const std::string& blocker) {
+  const Scene s =
+      load_pov_scene_text("plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n" +
+                              blocker + "\nlight_source { <0, 5, 0> rgb 1 }",
+                          "t.pov", ".");
+  const Integrator integrator(s, RenderMode::kWhitted);
+  SampleState state{Rng(1), 0};
+  return integrator.li({{8, 8, 0}, normalize(Vec3{-1, -1, 0}), 0, kInfinity}, state).x;
+}
+
+TEST(PovLightImport, NoShadow_ObjectsAndTheirUnionsCastNone) {
+  EXPECT_EQ(floor_light("sphere { <0, 2, 0>, 1 }"), 0);
+  EXPECT_NEAR(floor_light("sphere { <0, 2, 0>, 1 no_shadow }"), 1, 1e-12);
+  EXPECT_NEAR(floor_light("union { sphere { <0, 2, 0>, 1 } box { -0.5, 0.5 translate 3 * y } "
+                          "no_shadow }"),
+              1, 1e-12);
+  EXPECT_EQ(
+      floor_light("union { sphere { <0, 2, 0>, 1 no_shadow } box { -0.5, 0.5 translate 3 * y } }"),
+      0);
 }
 
 }  // namespace

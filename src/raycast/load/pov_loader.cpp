@@ -453,9 +453,18 @@ class Builder {
     return o;
   }
 
-  // A top-level node (or a child of a union outside CSG): groups flatten into `out`.
+  // A top-level node (or a child of a union outside CSG): groups flatten into `out`; with
+  // no_shadow, every object it gives casts no shadow.
   void add(const Node& n, const pov::Texture* inherited, const std::optional<Transform>& parent,
            int entry, std::vector<Object>& out) {
+    const std::size_t first = out.size();
+    add_node(n, inherited, parent, entry, out);
+    if (n.no_shadow)
+      for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+  }
+
+  void add_node(const Node& n, const pov::Texture* inherited,
+                const std::optional<Transform>& parent, int entry, std::vector<Object>& out) {
     const pov::Texture* tex = n.texture ? &*n.texture : inherited;
     if (n.kind == Node::LightSource) {
       light(*n.light, parent);

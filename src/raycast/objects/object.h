@@ -40,6 +40,7 @@ struct Object {
   std::optional<Transform> xf;  // object -> world; absent means the identity
   int material = -1;            // index into Scene::materials
   int entry = -1;               // index of the top-level `objects` entry it came from
+  bool casts_shadow = true;     // false: shadow rays pass through it (POV-Ray's no_shadow)
 };
 
 // World-space versions of the shape functions (geometry/shape.h): the ray goes to object space

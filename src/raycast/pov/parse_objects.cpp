@@ -716,8 +716,12 @@ bool Interpreter::modifier(Node& n, int depth) {
              w == "split_union" || w == "cutaway_textures" || w == "uv_mapping" ||
              w == "all_intersections") {
     next();
-    if (w != "cutaway_textures" && w != "uv_mapping" && w != "all_intersections") boolean_option();
-    if (w == "no_shadow" || w == "no_image" || w == "no_reflection" || w == "double_illuminate")
+    bool on = true;
+    if (w != "cutaway_textures" && w != "uv_mapping" && w != "all_intersections")
+      on = boolean_option();
+    if (w == "no_shadow")
+      n.no_shadow = on;
+    else if (w == "no_image" || w == "no_reflection" || w == "double_illuminate")
       unsupported_warning(t.pos, w);
   } else if (w == "inverse") {
     next();

@@ -118,6 +118,7 @@ struct Node {
   std::shared_ptr<const Node> ref;  // Reference: shared, never copied
   std::size_t weight = 0;           // this object's count against Limits::scene_weight
   bool inverse = false;             // `inverse`: the solid's complement
+  bool no_shadow = false;           // `no_shadow`: casts no shadow (its parts neither)
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
 };

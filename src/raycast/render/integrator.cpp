@@ -88,6 +88,8 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
                  : textured            ? ObjectFacts::kWalk
                                        : ObjectFacts::kFilter;
     }
+    if (!o.casts_shadow) f.shadow = ObjectFacts::kPass;  // shadow rays walk past it (passes())
+    any_transmissive_ |= !o.casts_shadow;
     objects_.push_back(f);
   }
 }
@@ -239,6 +241,7 @@ inline bool Integrator::passes(std::uint32_t index, const Ray& segment, Color& t
   // An opaque object blocks wherever it crosses; an untextured transmissive one filters by its
   // material's transmission * color once.
   if (facts.shadow == ObjectFacts::kOpaque) return !crosses(index, segment);
+  if (facts.shadow == ObjectFacts::kPass) return true;
   if (facts.shadow == ObjectFacts::kFilter) {
     if (!crosses(index, segment)) return true;
     through = mul(through, filters_[std::size_t(facts.material)]);

@@ -128,7 +128,8 @@ class Integrator {
     // all resolve to one material; -1 where it depends on the part hit.
     std::int32_t hit_material = 0;
     bool terminator = false;  // has_terminator_origin: shadow rays may start from terminator_origin
-    enum Shadow : std::uint8_t { kOpaque, kFilter, kWalk } shadow = kOpaque;  // passes()'s case
+    // passes()'s case; kPass: the object casts no shadow
+    enum Shadow : std::uint8_t { kOpaque, kFilter, kWalk, kPass } shadow = kOpaque;
     // The shape when it is an untransformed plane or sphere (crosses() calls it directly).
     const Plane* plane = nullptr;
     const Sphere* sphere = nullptr;
