@@ -36,7 +36,7 @@ TEST(Loader, UnknownKey_NamedAtItsPosition) {
                "unknown key 'radus' in sphere (did you mean 'radius'?)");
   expect_error("objects:\n  - cube: {radius: 1}\n", 2, 5,
                "unknown key 'cube' in object (expected a shape, group, union, intersection, "
-               "difference, use or name, material, transform)");
+               "difference, use or name, material, transform, shadows)");
   expect_error("objects: []\ncamra: {}\n", 2, 1,
                "unknown key 'camra' in scene (did you mean 'camera'?)");
   expect_error("objects: []\nzzzzzz: {}\n", 2, 1, "unknown key 'zzzzzz' in scene");
@@ -319,6 +319,27 @@ TEST(Loader, LightKinds_AreaCylinderFadeShadows) {
       "lights:\n  - {type: cylinder, position: [0, 0, 0], direction: [0, -1, 0], radius: 1, "
       "falloff: 2}\nobjects: []\n",
       2, 86, "light.falloff must be at most radius");
+}
+
+TEST(Loader, ObjectShadowsFalse_AppliesToEveryPart) {
+  const Scene s = load_scene_text(
+      "objects:\n"
+      "  - sphere: {radius: 1}\n"
+      "  - group:\n      - sphere: {radius: 1}\n      - box: {min: [0, 0, 0], max: [1, 1, 1]}\n"
+      "    shadows: false\n"
+      "  - {sphere: {radius: 1}, shadows: true}\n",
+      "s.yaml");
+  ASSERT_EQ(s.objects.size(), 4u);
+  EXPECT_TRUE(s.objects[0].casts_shadow);
+  EXPECT_FALSE(s.objects[1].casts_shadow);
+  EXPECT_FALSE(s.objects[2].casts_shadow);
+  EXPECT_TRUE(s.objects[3].casts_shadow);
+  expect_error("objects:\n  - {sphere: {radius: 1}, shadows: maybe}\n", 2, 36,
+               "shadows must be true or false, got maybe");
+  expect_error(
+      "objects:\n  - union:\n      - {sphere: {radius: 1}, shadows: false}\n"
+      "      - sphere: {radius: 2}\n",
+      3, 40, "shadows applies to whole objects, not to CSG operands");
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ namespace raycast {
 
 namespace {
 
-constexpr const char* kObjectKeys = "name, material, transform";
+constexpr const char* kObjectKeys = "name, material, transform, shadows";
 // A `use` inside a library entry or a CSG operation is copied in place; a scene whose copies make
 // more shapes than this (summed over all copies) is refused rather than exhausting memory.
 constexpr std::size_t kMaxExpandedObjects = std::size_t{1} << 16;
@@ -129,7 +129,7 @@ class Loader {
     YAML::Node key_node;
     for (const auto& kv : node) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "";
-      if (key == "name" || key == "material" || key == "transform") continue;
+      if (key == "name" || key == "material" || key == "transform" || key == "shadows") continue;
       if (!shape_parsers().count(key) && !is_compound_key(key))
         fail_at(ctx_, kv.first,
                 "unknown key '" + describe(kv.first) + "' in object (expected a shape, " +
@@ -207,9 +207,25 @@ class Loader {
   }
 
   // Reads one entry of `objects` (or a child of a group, or a library entry) and appends what it
-  // makes to `out`: groups are flattened, each child keeping `entry`.
+  // makes to `out`: groups are flattened, each child keeping `entry`. `shadows: false` makes every
+  // object it gives cast no shadow.
   void read_object(const YAML::Node& node, int depth, int entry, const Placement& parent,
                    std::vector<Object>& out) {
+    const std::size_t first = out.size();
+    read_object_parts(node, depth, entry, parent, out);
+    if (const YAML::Node s = node["shadows"]; s && !casts_shadows(s))
+      for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+  }
+
+  // An object's `shadows`: true or false.
+  bool casts_shadows(const YAML::Node& s) const {
+    const std::string v = s.IsScalar() ? s.Scalar() : "";
+    if (v == "true" || v == "false") return v == "true";
+    fail_at(ctx_, s, "shadows must be true or false, got " + describe(s));
+  }
+
+  void read_object_parts(const YAML::Node& node, int depth, int entry, const Placement& parent,
+                         std::vector<Object>& out) {
     const auto [key, key_node] = object_key(node, depth);
     const Placement here = place(node, parent);
     const YAML::Node body = node[key];
@@ -267,6 +283,8 @@ class Loader {
   std::int32_t read_csg_operand(const YAML::Node& node, int depth, CsgTree& tree,
                                 const Placement& parent) {
     const auto [key, key_node] = object_key(node, depth);
+    if (node["shadows"])
+      fail_at(ctx_, node["shadows"], "shadows applies to whole objects, not to CSG operands");
     const Placement here = place(node, parent);
     if (is_csg_key(key) || key == "group")
       return read_csg_operation(node[key], key, depth, tree, here);
