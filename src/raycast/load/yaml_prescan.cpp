@@ -3,13 +3,13 @@
 #include <vector>
 
 #include "io/scene_error.h"
+#include "load/yaml_tree_builder.h"
 
 namespace raycast {
 namespace {
 
-// yaml-cpp 0.7 parses nested collections recursively (its DepthGuard stops only at 2000 levels,
-// after 2000 deep frames, and later readers recurse too), so text nested deeper than max_nesting
-// is rejected before parsing, at the position of the first level too deep. Flow collections
+// The readers of the nodes recurse per level, so text nested deeper than max_nesting is rejected
+// before parsing, at the position of the first level too deep. Flow collections
 // ([, {) count one level each; block collections one level per indentation step and per inline
 // `- ` item. Quoted scalars, block scalars (| and >) and comments are skipped.
 struct FlowOpen {
@@ -100,19 +100,19 @@ FlowOpen check_nesting(const std::string& text, const std::string& name, int max
 
 }  // namespace
 
-YAML::Node parse_yaml(const std::string& text, const std::string& name, int max_nesting) {
+YamlDocument parse_yaml(const std::string& text, const std::string& name, int max_nesting) {
   const FlowOpen unclosed = check_nesting(text, name, max_nesting);
   try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    // yaml-cpp notices a missing `}` or `]` only where the next token does not fit, often lines
+    return build_yaml_document(text, name);
+  } catch (const SceneError& e) {
+    // The parser notices a missing `}` or `]` only where the next token does not fit, often lines
     // later; the place the user must fix is where the collection opened.
     if (unclosed.bracket != 0)
       throw SceneError(name, unclosed.line, unclosed.column,
-                       std::string("this '") + unclosed.bracket + "' is never closed (" + e.msg +
-                           " at " + std::to_string(e.mark.line + 1) + ":" +
-                           std::to_string(e.mark.column + 1) + ")");
-    throw SceneError(name, e.mark.line + 1, e.mark.column + 1, e.msg);
+                       std::string("this '") + unclosed.bracket + "' is never closed (" +
+                           e.message() + " at " + std::to_string(e.line()) + ":" +
+                           std::to_string(e.column()) + ")");
+    throw;
   }
 }
 
