@@ -66,8 +66,7 @@ class Loader {
   void read_materials(const YamlNode& node) {
     if (!node.IsMap()) fail_at(ctx_, node, "materials must be a mapping of names to materials");
     for (const YamlPair& kv : pairs_of(node)) {
-      if (!kv.key().IsScalar()) fail_at(ctx_, kv.key(), "bad conversion");
-      const std::string name(kv.key().Scalar());
+      const std::string name = key_text(ctx_, kv.key());
       if (named_materials_.count(name))
         fail_at(ctx_, kv.key(), "material '" + name + "' is defined twice");
       named_materials_[name] = static_cast<int>(scene_.materials.size());

@@ -129,7 +129,7 @@ class YamlDocument {
   YamlNode root() const { return YamlNode(root_); }
 
  private:
-  friend class YamlTreeBuilder;
+  friend YamlDocument build_yaml_document(std::string text, const std::string& name);
   std::unique_ptr<std::string> text_;
   std::unique_ptr<std::pmr::monotonic_buffer_resource> arena_;
   const YamlNodeData* root_ = nullptr;

@@ -22,6 +22,12 @@ void fail_at(const SourceContext& ctx, const YamlNode& node, const std::string& 
   fail_at(ctx, node.Mark(), message);
 }
 
+std::string key_text(const SourceContext& ctx, const YamlNode& key) {
+  if (key.IsNull()) return "null";
+  if (!key.IsScalar()) fail_at(ctx, key, "bad conversion");
+  return std::string(key.Scalar());
+}
+
 std::string describe(const YamlNode& node) {
   switch (node.Type()) {
     case YamlType::kNull:
@@ -276,8 +282,7 @@ Transform read_transform_step(const SourceContext& ctx, const YamlNode& step) {
     fail_at(ctx, step, "a transform step must be one of translate, scale, rotate, matrix");
   const YamlNode key = step.pairs_begin()->key();
   const YamlNode v = step.pairs_begin()->value();
-  if (!key.IsScalar()) fail_at(ctx, key, "bad conversion");
-  const std::string kind(key.Scalar());
+  const std::string kind = key_text(ctx, key);
   if (kind == "translate") return Transform::translate(read_vec3(ctx, v, "translate"));
   if (kind == "scale") {
     Vec3 s;

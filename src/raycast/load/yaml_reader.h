@@ -26,6 +26,10 @@ struct SourceContext {
 [[noreturn]] void fail_at(const SourceContext& ctx, const YamlMark& mark,
                           const std::string& message);
 
+/// A mapping key read as text: a scalar's own, "null" for a null key (yaml-cpp's reading, which
+/// scenes were first written against); a collection is an error at it.
+std::string key_text(const SourceContext& ctx, const YamlNode& key);
+
 /// A short rendering of a node's value for messages ("-1", "[1, 2]", "a mapping").
 std::string describe(const YamlNode& node);
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <new>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -48,20 +49,101 @@ bool is_null_spelling(const char* text, std::size_t size) {
   return s.empty() || s == "~" || s == "null" || s == "Null" || s == "NULL";
 }
 
-// The 0-based line and column of byte `offset` (libyaml's reader errors give only an offset).
-YamlMark mark_at_offset(const std::string& text, std::size_t offset) {
-  offset = std::min(offset, text.size());
-  YamlMark m{0, 0};
-  for (std::size_t i = 0; i < offset; ++i) {
-    if (text[i] == '\n') {
-      ++m.line;
-      m.column = 0;
+// The length of the UTF-8 sequence at text[i] when it is valid and a character libyaml accepts
+// (YAML's printable set: tab, line breaks, no other control characters, no U+FEFF, U+FFFE or
+// U+FFFF), else 0.
+std::size_t accepted_sequence(const std::string& text, std::size_t i) {
+  const auto byte = [&](std::size_t k) {
+    return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u;
+  };
+  const unsigned c = byte(i);
+  if (c < 0x80) return c == '\t' || c == '\n' || c == '\r' || (c >= 0x20 && c != 0x7f) ? 1 : 0;
+  const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3
+                                                : c >= 0xf0 && c <= 0xf4 ? 4
+                                                                         : 0;
+  if (n == 0) return 0;
+  unsigned code = c & (0x7f >> n);
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((byte(i + k) & 0xc0) != 0x80) return 0;
+    code = (code << 6) | (byte(i + k) & 0x3f);
+  }
+  const bool shortest = code >= (n == 2 ? 0x80u : n == 3 ? 0x800u : 0x10000u);
+  const bool printable = code == 0x85 || (code >= 0xa0 && code <= 0xd7ff) ||
+                         (code >= 0xe000 && code <= 0xfffd && code != 0xfeff) ||
+                         (code >= 0x10000 && code <= 0x10ffff);
+  const bool leading_bom = code == 0xfeff && i == 0;
+  return shortest && (printable || leading_bom) ? n : 0;
+}
+
+// libyaml refuses text that is not UTF-8 or holds control characters; yaml-cpp, which scenes were
+// first read with, took each such byte as U+FFFD (the replacement character), and so does this.
+std::string with_replacement_characters(std::string text) {
+  std::size_t i = 0;
+  while (i < text.size()) {  // most texts are accepted whole, without a copy
+    const std::size_t n = accepted_sequence(text, i);
+    if (n == 0) break;
+    i += n;
+  }
+  if (i == text.size()) return text;
+  std::string out = text.substr(0, i);
+  while (i < text.size()) {
+    const std::size_t n = accepted_sequence(text, i);
+    if (n == 0) {
+      out += "\xEF\xBF\xBD";
+      ++i;
     } else {
-      ++m.column;
+      out.append(text, i, n);
+      i += n;
     }
   }
-  return m;
+  return out;
 }
+
+// Turns libyaml's positions (lines, and columns counted in characters) into byte offsets in the
+// text, walking forward from the last one asked for: events come in text order, so one pass
+// answers them all. Columns are reported in bytes, as yaml-cpp reported them.
+class ByteCursor {
+ public:
+  explicit ByteCursor(const std::string& text) : text_(text) {
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) line_start_ = at_ = 3;  // libyaml skips a BOM
+  }
+
+  // The byte offset of (line, column in characters); npos when the text's lines disagree with
+  // libyaml's (a lone carriage return or a Unicode line separator also breaks lines there).
+  std::size_t offset(std::size_t line, std::size_t column) {
+    if (lost_ || line < line_) return std::string::npos;  // never, for events in text order
+    if (line == line_ && column < column_) {
+      at_ = line_start_;
+      column_ = 0;
+    }
+    while (line_ < line) {
+      const std::size_t nl = text_.find('\n', at_);
+      if (nl == std::string::npos) {
+        lost_ = true;  // for good: searching again would make the walk quadratic
+        return std::string::npos;
+      }
+      line_start_ = at_ = nl + 1;
+      ++line_;
+      column_ = 0;
+    }
+    while (column_ < column) {
+      if (at_ >= text_.size() || text_[at_] == '\n') return std::string::npos;
+      at_ += sequence_length(static_cast<unsigned char>(text_[at_]));
+      ++column_;
+    }
+    return at_;
+  }
+  std::size_t line_start() const { return line_start_; }
+
+ private:
+  static std::size_t sequence_length(unsigned char lead) {
+    return lead < 0x80 ? 1 : lead >= 0xf0 ? 4 : lead >= 0xe0 ? 3 : 2;
+  }
+  const std::string& text_;
+  std::size_t line_ = 0, column_ = 0;     // where at_ is, in libyaml's terms
+  std::size_t at_ = 0, line_start_ = 0;  // bytes
+  bool lost_ = false;                    // lines disagree: columns stay libyaml's
+};
 
 // libyaml's message for a syntax error, worded for the scene author: a collection's missing
 // closing bracket and a stray one get yaml-cpp's wording, which the loader's messages (and the
@@ -78,22 +160,18 @@ std::string syntax_message(const yaml_parser_t& p, const std::string& text) {
   return context.empty() ? problem : problem + " (" + context + ")";
 }
 
-}  // namespace
-
 // Turns the event stream into nodes: a stack of open collections, whose children wait in one
 // shared list until the collection ends and they are copied into the arena.
 class YamlTreeBuilder {
  public:
-  YamlTreeBuilder(std::string text, const std::string& name) : name_(name) {
-    doc_.text_ = std::make_unique<std::string>(std::move(text));
-    // Sized to the text: a scene needs about five times its text in nodes.
-    doc_.arena_ = std::make_unique<std::pmr::monotonic_buffer_resource>(
-        std::max<std::size_t>(4096, doc_.text_->size()));
-  }
+  YamlTreeBuilder(const std::string& text, std::pmr::monotonic_buffer_resource& arena,
+                  const std::string& name)
+      : text_(text), arena_(arena), name_(name), cursor_(text) {}
 
-  YamlDocument build() {
+  // The root node (a null node for a text without any).
+  const YamlNodeData* build() {
     Parser p;
-    const std::string& text = *doc_.text_;
+    const std::string& text = text_;
     yaml_parser_set_input_string(&p.parser, reinterpret_cast<const unsigned char*>(text.data()),
                                  text.size());
     Event event;
@@ -106,11 +184,10 @@ class YamlTreeBuilder {
       on_event(*event);
     }
     if (!root_) {  // no document at all: a null root, as yaml-cpp answers
-      void* at = doc_.arena_->allocate(sizeof(YamlNodeData), alignof(YamlNodeData));
+      void* at = arena_.allocate(sizeof(YamlNodeData), alignof(YamlNodeData));
       root_ = new (at) YamlNodeData;
     }
-    doc_.root_ = root_;
-    return std::move(doc_);
+    return root_;
   }
 
  private:
@@ -119,12 +196,12 @@ class YamlTreeBuilder {
   }
 
   [[noreturn]] void fail_syntax(const yaml_parser_t& p) const {
-    const std::string& text = *doc_.text_;
-    if (p.error == YAML_READER_ERROR)  // bad encoding: libyaml gives a byte offset only
-      fail(mark_at_offset(text, p.problem_offset), p.problem ? p.problem : "unreadable text");
+    const std::string& text = text_;
     if (p.error == YAML_MEMORY_ERROR) throw std::bad_alloc();
-    fail({static_cast<int>(p.problem_mark.line), static_cast<int>(p.problem_mark.column)},
-         syntax_message(p, text));
+    if (p.error == YAML_READER_ERROR)  // the text was made valid UTF-8: not expected
+      throw SceneError(name_, 0, 0, p.problem ? p.problem : "unreadable text");
+    ByteCursor cursor(text);
+    fail(byte_mark(cursor, p.problem_mark), syntax_message(p, text));
   }
 
   void on_event(const yaml_event_t& e) {
@@ -145,12 +222,20 @@ class YamlTreeBuilder {
     }
   }
 
+  // The 0-based line and byte column of a libyaml mark.
+  static YamlMark byte_mark(ByteCursor& cursor, const yaml_mark_t& m) {
+    const std::size_t at = cursor.offset(m.line, m.column);
+    const std::size_t column = at == std::string::npos ? m.column : at - cursor.line_start();
+    return {static_cast<int>(m.line), static_cast<int>(column)};
+  }
+
   YamlNodeData* new_node(const yaml_event_t& e, YamlType type) {
-    void* at = doc_.arena_->allocate(sizeof(YamlNodeData), alignof(YamlNodeData));
+    void* at = arena_.allocate(sizeof(YamlNodeData), alignof(YamlNodeData));
     auto* node = new (at) YamlNodeData;
     node->type = type;
-    node->line = static_cast<std::int32_t>(e.start_mark.line);
-    node->column = static_cast<std::int32_t>(e.start_mark.column);
+    const YamlMark m = byte_mark(cursor_, e.start_mark);
+    node->line = m.line;
+    node->column = m.column;
     return node;
   }
 
@@ -164,13 +249,13 @@ class YamlTreeBuilder {
     node->quoted = !plain;
     node->size = static_cast<std::uint32_t>(s.length);
     // A plain scalar on one line is its own text: viewed, not copied.
-    const std::string& text = *doc_.text_;
-    const std::size_t at = e.start_mark.index;
+    const std::string& text = text_;
+    const std::size_t at = cursor_.line_start() + static_cast<std::size_t>(node->column);
     if (plain && at <= text.size() && s.length <= text.size() - at &&
         std::memcmp(text.data() + at, value, s.length) == 0) {
       node->text = text.data() + at;
     } else {
-      char* copy = static_cast<char*>(doc_.arena_->allocate(s.length + 1, 1));
+      char* copy = static_cast<char*>(arena_.allocate(s.length + 1, 1));
       std::memcpy(copy, value, s.length);
       copy[s.length] = '\0';
       node->text = copy;
@@ -181,8 +266,7 @@ class YamlTreeBuilder {
   const YamlNodeData* alias(const yaml_event_t& e) {
     const auto it = anchors_.find(reinterpret_cast<const char*>(e.data.alias.anchor));
     if (it == anchors_.end())
-      fail({static_cast<int>(e.start_mark.line), static_cast<int>(e.start_mark.column)},
-           "the referenced anchor is not defined");
+      fail(byte_mark(cursor_, e.start_mark), "the referenced anchor is not defined");
     return it->second;
   }
 
@@ -199,14 +283,14 @@ class YamlTreeBuilder {
     const std::size_t count = pending_.size() - c.first;
     const YamlNodeData* const* children = pending_.data() + c.first;
     if (c.node->type == YamlType::kSequence) {
-      void* at = doc_.arena_->allocate(count * sizeof(YamlNodeData*), alignof(YamlNodeData*));
+      void* at = arena_.allocate(count * sizeof(YamlNodeData*), alignof(YamlNodeData*));
       auto* entries = static_cast<const YamlNodeData**>(at);
       std::copy(children, children + count, entries);
       c.node->entries = entries;
       c.node->size = static_cast<std::uint32_t>(count);
     } else {
       const std::size_t pairs = count / 2;
-      void* at = doc_.arena_->allocate(pairs * sizeof(YamlPair), alignof(YamlPair));
+      void* at = arena_.allocate(pairs * sizeof(YamlPair), alignof(YamlPair));
       auto* out = static_cast<YamlPair*>(at);
       for (std::size_t i = 0; i < pairs; ++i)
         new (out + i) YamlPair{children[2 * i], children[2 * i + 1]};
@@ -233,16 +317,26 @@ class YamlTreeBuilder {
     std::string anchor;  // "" when it has none
   };
 
+  const std::string& text_;
+  std::pmr::monotonic_buffer_resource& arena_;
   const std::string& name_;
-  YamlDocument doc_;
+  ByteCursor cursor_;
   const YamlNodeData* root_ = nullptr;
   std::vector<OpenCollection> open_;
   std::vector<const YamlNodeData*> pending_;
   std::unordered_map<std::string, const YamlNodeData*> anchors_;
 };
 
+}  // namespace
+
 YamlDocument build_yaml_document(std::string text, const std::string& name) {
-  return YamlTreeBuilder(std::move(text), name).build();
+  YamlDocument doc;
+  doc.text_ = std::make_unique<std::string>(with_replacement_characters(std::move(text)));
+  // Sized to the text: a scene needs about five times its text in nodes.
+  doc.arena_ = std::make_unique<std::pmr::monotonic_buffer_resource>(
+      std::max<std::size_t>(4096, doc.text_->size()));
+  doc.root_ = YamlTreeBuilder(*doc.text_, *doc.arena_, name).build();
+  return doc;
 }
 
 }  // namespace raycast
