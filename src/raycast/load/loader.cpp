@@ -51,6 +51,9 @@ class Loader {
     top.finish();
     if (!objects.IsSequence())
       fail_at(ctx_, objects, "objects must be a list, got " + describe(objects));
+    // One object per entry in most scenes: the vector grows once, not by copies of its objects.
+    scene_.objects.reserve(scene_.objects.size() + objects.size());
+    scene_.marks.entries.reserve(objects.size());
     for (const YamlNode& entry : objects) {
       scene_.marks.entries.push_back(mark_of(entry));
       read_object(entry, 0, scene_.entries, Placement{}, scene_.objects);
@@ -324,8 +327,11 @@ Scene load_scene_text(const std::string& text, const std::string& name, const st
   Scene scene;
   scene.source = name;
   SourceContext ctx{name, dir, frame};
-  const YamlDocument doc = parse_yaml(text, name, kMaxNesting);
-  Loader(ctx, scene).load(doc.root());
+  {
+    // The nodes are freed before the acceleration structure is built: they are the larger.
+    const YamlDocument doc = parse_yaml(text, name, kMaxNesting);
+    Loader(ctx, scene).load(doc.root());
+  }
   scene.build();
   return scene;
 }

@@ -1,5 +1,6 @@
 #include "load/yaml_reader.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -109,22 +110,33 @@ double read_number(const SourceContext& ctx, const YamlNode& node, const std::st
   return v;
 }
 
+namespace {
+
+// Entry i of a list of numbers; its name, `what[i]`, is spelled only for a failure's message.
+double read_entry(const SourceContext& ctx, const YamlNode& node, const std::string& what,
+                  std::size_t i) {
+  double v;
+  if (node.IsScalar() && parse_double(node.Scalar(), v) && std::isfinite(v)) return v;
+  return read_number(ctx, node, what + "[" + std::to_string(i) + "]");  // throws
+}
+
+}  // namespace
+
 std::vector<double> read_numbers(const SourceContext& ctx, const YamlNode& node,
                                  const std::string& what) {
   if (!node.IsSequence())
     fail_at(ctx, node, what + " must be a list of numbers, got " + describe(node));
   std::vector<double> v;
   v.reserve(node.size());
-  for (std::size_t i = 0; i < node.size(); ++i)
-    v.push_back(read_number(ctx, node[i], what + "[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < node.size(); ++i) v.push_back(read_entry(ctx, node[i], what, i));
   return v;
 }
 
 Vec3 read_vec3(const SourceContext& ctx, const YamlNode& node, const std::string& what) {
   if (!node.IsSequence() || node.size() != 3)
     fail_at(ctx, node, what + " must be a list of 3 numbers, got " + describe(node));
-  const auto v = read_numbers(ctx, node, what);
-  return {v[0], v[1], v[2]};
+  return {read_entry(ctx, node[0], what, 0), read_entry(ctx, node[1], what, 1),
+          read_entry(ctx, node[2], what, 2)};
 }
 
 std::vector<Vec3> read_points(const SourceContext& ctx, const YamlNode& node,
@@ -140,6 +152,7 @@ std::vector<Vec3> read_points(const SourceContext& ctx, const YamlNode& node,
 
 Fields::Fields(const SourceContext& ctx, const YamlNode& map, std::string what)
     : ctx_(ctx), map_(map), what_(std::move(what)) {
+  asked_.reserve(64);
   if (map.IsNull()) return;  // an empty mapping: every lookup is absent
   if (!map.IsMap()) fail_at(ctx, map, what_ + " must be a mapping, got " + describe(map));
   // Lookups answer the first of a repeated key, so the user's second value would be lost
@@ -151,10 +164,43 @@ Fields::Fields(const SourceContext& ctx, const YamlNode& map, std::string what)
                 " (first at " + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1) +
                 ")");
   }
+  read_.assign(map_.size(), false);
+}
+
+void Fields::ask(const std::string& key) const {
+  if (was_asked(key)) return;
+  asked_ += key;
+  asked_ += '\0';
+}
+
+bool Fields::was_asked(std::string_view key) const {
+  for (std::size_t at = 0; at < asked_.size();) {
+    const std::size_t end = asked_.find('\0', at);
+    if (std::string_view(asked_).substr(at, end - at) == key) return true;
+    at = end + 1;
+  }
+  return false;
+}
+
+bool Fields::was_read(std::string_view key) const {
+  for (const YamlPair& kv : pairs_of(map_))
+    if (kv.key().IsScalar() && kv.key().Scalar() == key)
+      return read_[static_cast<std::size_t>(&kv - map_.pairs_begin())];
+  return false;
+}
+
+YamlNode Fields::take(const std::string& key) {
+  for (const YamlPair& kv : pairs_of(map_)) {
+    if (kv.key().IsScalar() && kv.key().Scalar() == key) {
+      read_[static_cast<std::size_t>(&kv - map_.pairs_begin())] = true;
+      return kv.value();
+    }
+  }
+  return YamlNode();
 }
 
 bool Fields::has(const std::string& key) const {
-  asked_.insert(key);
+  ask(key);
   return map_[key].IsDefined();
 }
 
@@ -164,14 +210,14 @@ void Fields::fail(const std::string& key, const std::string& message) const {
 }
 
 YamlNode Fields::required(const std::string& key) {
-  asked_.insert(key);
-  const YamlNode n = map_[key];
+  ask(key);
+  const YamlNode n = take(key);
   if (!n.IsDefined()) {
     // A misspelling of the missing key is the likelier mistake: name it.
     for (const YamlPair& kv : pairs_of(map_)) {
       if (!kv.key().IsScalar()) continue;
       const std::string other(kv.key().Scalar());
-      if (read_.count(other) || asked_.count(other)) continue;
+      if (was_read(other) || was_asked(other)) continue;
       if (nearest_name(other, {key}) == key)
         fail_at(ctx_, kv.key(),
                 "unknown key '" + other + "' in " + what_ + " (did you mean '" + key + "'?); " +
@@ -179,15 +225,12 @@ YamlNode Fields::required(const std::string& key) {
     }
     fail_at(ctx_, map_, name(key) + " is required");
   }
-  read_.insert(key);
   return n;
 }
 
 YamlNode Fields::optional(const std::string& key) {
-  asked_.insert(key);
-  const YamlNode n = map_[key];
-  if (n.IsDefined()) read_.insert(key);
-  return n;
+  ask(key);
+  return take(key);
 }
 
 double Fields::number(const std::string& key) {
@@ -265,10 +308,14 @@ Vec3 Fields::direction(const std::string& key, const Vec3& fallback) {
 void Fields::finish() const {
   for (const YamlPair& kv : pairs_of(map_)) {
     const YamlNode k = kv.key();
-    const std::string key(k.Scalar());
-    if (!k.IsScalar() || !read_.count(key)) {
-      const std::vector<std::string> valid(asked_.begin(), asked_.end());
-      fail_at(ctx_, k, "unknown key '" + describe(k) + "' in " + what_ + did_you_mean(key, valid));
+    if (!k.IsScalar() || !read_[static_cast<std::size_t>(&kv - map_.pairs_begin())]) {
+      std::vector<std::string> valid;  // sorted: the nearest name's ties go to the first
+      for (std::size_t at = 0; at < asked_.size(); at = asked_.find('\0', at) + 1)
+        valid.emplace_back(asked_.c_str() + at);
+      std::sort(valid.begin(), valid.end());
+      fail_at(ctx_, k,
+              "unknown key '" + describe(k) + "' in " + what_ +
+                  did_you_mean(std::string(k.Scalar()), valid));
     }
   }
 }

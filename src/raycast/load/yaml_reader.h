@@ -1,7 +1,7 @@
 #pragma once
 // Typed, positioned reading of YAML nodes: every failure is a SceneError at the node's position.
 #include <functional>
-#include <set>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -71,8 +71,15 @@ class Fields {
   const SourceContext& ctx_;
   YamlNode map_;
   std::string what_;
-  std::set<std::string> read_;
-  mutable std::set<std::string> asked_;  // every key looked up, present or not: the valid keys
+  void ask(const std::string& key) const;
+  bool was_asked(std::string_view key) const;
+  bool was_read(std::string_view key) const;
+  YamlNode take(const std::string& key);  // the key's value, marked read when present
+
+  std::vector<bool> read_;  // by pair (keys are unique: the constructor checks)
+  // Every key looked up, present or not (the valid keys), each followed by '\0': one string
+  // rather than a set, since a shape's mapping asks for a handful of keys.
+  mutable std::string asked_;
 };
 
 /// A finite number; `what` names it in the error.

@@ -80,6 +80,11 @@ std::size_t accepted_sequence(const std::string& text, std::size_t i) {
 std::string with_replacement_characters(std::string text) {
   std::size_t i = 0;
   while (i < text.size()) {  // most texts are accepted whole, without a copy
+    const auto c = static_cast<unsigned char>(text[i]);
+    if ((c >= 0x20 && c < 0x7f) || c == '\n') {  // the usual characters, at once
+      ++i;
+      continue;
+    }
     const std::size_t n = accepted_sequence(text, i);
     if (n == 0) break;
     i += n;
@@ -253,12 +258,12 @@ class YamlTreeBuilder {
     const std::size_t at = cursor_.line_start() + static_cast<std::size_t>(node->column);
     if (plain && at <= text.size() && s.length <= text.size() - at &&
         std::memcmp(text.data() + at, value, s.length) == 0) {
-      node->text = text.data() + at;
+      node->items = text.data() + at;
     } else {
       char* copy = static_cast<char*>(arena_.allocate(s.length + 1, 1));
       std::memcpy(copy, value, s.length);
       copy[s.length] = '\0';
-      node->text = copy;
+      node->items = copy;
     }
     return node;
   }
@@ -286,7 +291,7 @@ class YamlTreeBuilder {
       void* at = arena_.allocate(count * sizeof(YamlNodeData*), alignof(YamlNodeData*));
       auto* entries = static_cast<const YamlNodeData**>(at);
       std::copy(children, children + count, entries);
-      c.node->entries = entries;
+      c.node->items = entries;
       c.node->size = static_cast<std::uint32_t>(count);
     } else {
       const std::size_t pairs = count / 2;
@@ -294,7 +299,7 @@ class YamlTreeBuilder {
       auto* out = static_cast<YamlPair*>(at);
       for (std::size_t i = 0; i < pairs; ++i)
         new (out + i) YamlPair{children[2 * i], children[2 * i + 1]};
-      c.node->pairs = out;
+      c.node->items = out;
       c.node->size = static_cast<std::uint32_t>(pairs);
     }
     pending_.resize(c.first);
