@@ -320,20 +320,27 @@ class Loader {
   std::size_t expanded_ = 0;            // shapes read while copying
 };
 
-}  // namespace
-
-Scene load_scene_text(const std::string& text, const std::string& name, const std::string& dir,
+// load_scene_text with the text handed over: the parsed document keeps it (its scalars are views
+// of it), without a copy of a large file.
+Scene load_owned_text(std::string text, const std::string& name, const std::string& dir,
                       int frame) {
   Scene scene;
   scene.source = name;
   SourceContext ctx{name, dir, frame};
   {
     // The nodes are freed before the acceleration structure is built: they are the larger.
-    const YamlDocument doc = parse_yaml(text, name, kMaxNesting);
+    const YamlDocument doc = parse_yaml(std::move(text), name, kMaxNesting);
     Loader(ctx, scene).load(doc.root());
   }
   scene.build();
   return scene;
+}
+
+}  // namespace
+
+Scene load_scene_text(const std::string& text, const std::string& name, const std::string& dir,
+                      int frame) {
+  return load_owned_text(text, name, dir, frame);
 }
 
 Scene load_scene_file(const std::string& path, int frame) {
@@ -341,12 +348,12 @@ Scene load_scene_file(const std::string& path, int frame) {
     std::stringstream ss;
     ss << std::cin.rdbuf();
     if (std::cin.bad()) throw SceneError("<stdin>", 0, 0, "cannot read the scene");
-    return load_scene_text(ss.str(), "<stdin>", ".", frame);
+    return load_owned_text(std::move(ss).str(), "<stdin>", ".", frame);
   }
   if (is_pov_path(path))
     return load_pov_scene_file(path, frame, default_pov_options());  // docs/pov-import.md
-  const SceneFileText file = read_scene_file(path);
-  return load_scene_text(file.text, path, file.dir, frame);
+  SceneFileText file = read_scene_file(path);
+  return load_owned_text(std::move(file.text), path, file.dir, frame);
 }
 
 }  // namespace raycast

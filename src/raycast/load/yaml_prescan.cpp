@@ -100,10 +100,10 @@ FlowOpen check_nesting(const std::string& text, const std::string& name, int max
 
 }  // namespace
 
-YamlDocument parse_yaml(const std::string& text, const std::string& name, int max_nesting) {
+YamlDocument parse_yaml(std::string text, const std::string& name, int max_nesting) {
   const FlowOpen unclosed = check_nesting(text, name, max_nesting);
   try {
-    return build_yaml_document(text, name);
+    return build_yaml_document(std::move(text), name);
   } catch (const SceneError& e) {
     // The parser notices a missing `}` or `]` only where the next token does not fit, often lines
     // later; the place the user must fix is where the collection opened.

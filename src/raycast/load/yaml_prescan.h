@@ -10,6 +10,6 @@ namespace raycast {
 /// deeper than `max_nesting` collections, before any node is made (the readers of the nodes
 /// recurse per level), and for syntax errors; an error caused by an unclosed `[` or `{` is
 /// reported where it opened.
-YamlDocument parse_yaml(const std::string& text, const std::string& name, int max_nesting);
+YamlDocument parse_yaml(std::string text, const std::string& name, int max_nesting);
 
 }  // namespace raycast

@@ -164,7 +164,18 @@ Fields::Fields(const SourceContext& ctx, const YamlNode& map, std::string what)
                 " (first at " + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1) +
                 ")");
   }
-  read_.assign(map_.size(), false);
+  if (map_.size() > 64) read_more_.assign(map_.size() - 64, false);
+}
+
+bool Fields::pair_read(std::size_t pair) const {
+  return pair < 64 ? (read_first_ >> pair) & 1 : read_more_[pair - 64];
+}
+
+void Fields::mark_read(std::size_t pair) {
+  if (pair < 64)
+    read_first_ |= std::uint64_t{1} << pair;
+  else
+    read_more_[pair - 64] = true;
 }
 
 void Fields::ask(const std::string& key) const {
@@ -185,14 +196,14 @@ bool Fields::was_asked(std::string_view key) const {
 bool Fields::was_read(std::string_view key) const {
   for (const YamlPair& kv : pairs_of(map_))
     if (kv.key().IsScalar() && kv.key().Scalar() == key)
-      return read_[static_cast<std::size_t>(&kv - map_.pairs_begin())];
+      return pair_read(static_cast<std::size_t>(&kv - map_.pairs_begin()));
   return false;
 }
 
 YamlNode Fields::take(const std::string& key) {
   for (const YamlPair& kv : pairs_of(map_)) {
     if (kv.key().IsScalar() && kv.key().Scalar() == key) {
-      read_[static_cast<std::size_t>(&kv - map_.pairs_begin())] = true;
+      mark_read(static_cast<std::size_t>(&kv - map_.pairs_begin()));
       return kv.value();
     }
   }
@@ -308,7 +319,7 @@ Vec3 Fields::direction(const std::string& key, const Vec3& fallback) {
 void Fields::finish() const {
   for (const YamlPair& kv : pairs_of(map_)) {
     const YamlNode k = kv.key();
-    if (!k.IsScalar() || !read_[static_cast<std::size_t>(&kv - map_.pairs_begin())]) {
+    if (!k.IsScalar() || !pair_read(static_cast<std::size_t>(&kv - map_.pairs_begin()))) {
       std::vector<std::string> valid;  // sorted: the nearest name's ties go to the first
       for (std::size_t at = 0; at < asked_.size(); at = asked_.find('\0', at) + 1)
         valid.emplace_back(asked_.c_str() + at);

@@ -1,5 +1,6 @@
 #pragma once
 // Typed, positioned reading of YAML nodes: every failure is a SceneError at the node's position.
+#include <cstdint>
 #include <functional>
 #include <string_view>
 #include <string>
@@ -76,7 +77,13 @@ class Fields {
   bool was_read(std::string_view key) const;
   YamlNode take(const std::string& key);  // the key's value, marked read when present
 
-  std::vector<bool> read_;  // by pair (keys are unique: the constructor checks)
+  bool pair_read(std::size_t pair) const;
+  void mark_read(std::size_t pair);
+
+  // Which pairs were read (keys are unique: the constructor checks): the first 64 by bit, so
+  // that a shape's mapping needs no allocation, the rest in read_more_.
+  std::uint64_t read_first_ = 0;
+  std::vector<bool> read_more_;
   // Every key looked up, present or not (the valid keys), each followed by '\0': one string
   // rather than a set, since a shape's mapping asks for a handful of keys.
   mutable std::string asked_;

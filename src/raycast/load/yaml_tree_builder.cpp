@@ -110,29 +110,28 @@ std::string with_replacement_characters(std::string text) {
 class ByteCursor {
  public:
   explicit ByteCursor(const std::string& text) : text_(text) {
-    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) line_start_ = at_ = 3;  // libyaml skips a BOM
+    enter_line(text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0);  // libyaml skips a BOM
   }
 
   // The byte offset of (line, column in characters); npos when the text's lines disagree with
   // libyaml's (a lone carriage return or a Unicode line separator also breaks lines there).
   std::size_t offset(std::size_t line, std::size_t column) {
     if (lost_ || line < line_) return std::string::npos;  // never, for events in text order
-    if (line == line_ && column < column_) {
-      at_ = line_start_;
-      column_ = 0;
-    }
     while (line_ < line) {
-      const std::size_t nl = text_.find('\n', at_);
-      if (nl == std::string::npos) {
+      if (line_end_ == text_.size()) {
         lost_ = true;  // for good: searching again would make the walk quadratic
         return std::string::npos;
       }
-      line_start_ = at_ = nl + 1;
       ++line_;
+      enter_line(line_end_ + 1);
+    }
+    if (ascii_) return column <= line_end_ - line_start_ ? line_start_ + column : std::string::npos;
+    if (column < column_) {
+      at_ = line_start_;
       column_ = 0;
     }
     while (column_ < column) {
-      if (at_ >= text_.size() || text_[at_] == '\n') return std::string::npos;
+      if (at_ >= line_end_) return std::string::npos;
       at_ += sequence_length(static_cast<unsigned char>(text_[at_]));
       ++column_;
     }
@@ -141,22 +140,33 @@ class ByteCursor {
   std::size_t line_start() const { return line_start_; }
 
  private:
+  // Lines of ASCII text, most of them, have a byte per character: no walk.
+  void enter_line(std::size_t start) {
+    line_start_ = at_ = start;
+    column_ = 0;
+    const std::size_t nl = text_.find('\n', start);
+    line_end_ = nl == std::string::npos ? text_.size() : nl;
+    ascii_ = std::all_of(text_.begin() + static_cast<std::ptrdiff_t>(start),
+                         text_.begin() + static_cast<std::ptrdiff_t>(line_end_),
+                         [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+  }
   static std::size_t sequence_length(unsigned char lead) {
     return lead < 0x80 ? 1 : lead >= 0xf0 ? 4 : lead >= 0xe0 ? 3 : 2;
   }
   const std::string& text_;
-  std::size_t line_ = 0, column_ = 0;     // where at_ is, in libyaml's terms
-  std::size_t at_ = 0, line_start_ = 0;  // bytes
-  bool lost_ = false;                    // lines disagree: columns stay libyaml's
+  std::size_t line_ = 0, column_ = 0;  // where at_ is, in libyaml's terms
+  std::size_t at_ = 0, line_start_ = 0, line_end_ = 0;  // bytes; line_end_ at its '\n'
+  bool ascii_ = true;
+  bool lost_ = false;  // lines disagree: columns stay libyaml's
 };
 
 // libyaml's message for a syntax error, worded for the scene author: a collection's missing
 // closing bracket and a stray one get yaml-cpp's wording, which the loader's messages (and the
 // scene format documentation) use.
-std::string syntax_message(const yaml_parser_t& p, const std::string& text) {
+// `at` is the byte offset of the problem (npos when unknown).
+std::string syntax_message(const yaml_parser_t& p, const std::string& text, std::size_t at) {
   const std::string problem = p.problem ? p.problem : "syntax error";
   const std::string context = p.context ? p.context : "";
-  const std::size_t at = p.problem_mark.index;
   const char c = at < text.size() ? text[at] : '\0';
   const bool in_flow = context.find("flow") != std::string::npos;
   if ((c == '}' || c == ']') && !in_flow) return "illegal flow end";
@@ -206,7 +216,8 @@ class YamlTreeBuilder {
     if (p.error == YAML_READER_ERROR)  // the text was made valid UTF-8: not expected
       throw SceneError(name_, 0, 0, p.problem ? p.problem : "unreadable text");
     ByteCursor cursor(text);
-    fail(byte_mark(cursor, p.problem_mark), syntax_message(p, text));
+    const YamlMark m = byte_mark(cursor, p.problem_mark);
+    fail(m, syntax_message(p, text, cursor.offset(p.problem_mark.line, p.problem_mark.column)));
   }
 
   void on_event(const yaml_event_t& e) {
@@ -253,11 +264,14 @@ class YamlTreeBuilder {
                                                                          : YamlType::kScalar);
     node->quoted = !plain;
     node->size = static_cast<std::uint32_t>(s.length);
-    // A plain scalar on one line is its own text: viewed, not copied.
     const std::string& text = text_;
-    const std::size_t at = cursor_.line_start() + static_cast<std::size_t>(node->column);
-    if (plain && at <= text.size() && s.length <= text.size() - at &&
-        std::memcmp(text.data() + at, value, s.length) == 0) {
+    const std::size_t at = cursor_.offset(e.start_mark.line, e.start_mark.column);
+    // A plain scalar on one line is its own text: viewed, not copied. When as many characters
+    // separate its ends as it has bytes, it is one line of ASCII: no comparison needed.
+    const bool one_ascii_line = e.end_mark.line == e.start_mark.line &&
+                                e.end_mark.column - e.start_mark.column == s.length;
+    if (plain && at != std::string::npos && s.length <= text.size() - at &&
+        (one_ascii_line || std::memcmp(text.data() + at, value, s.length) == 0)) {
       node->items = text.data() + at;
     } else {
       char* copy = static_cast<char*>(arena_.allocate(s.length + 1, 1));
