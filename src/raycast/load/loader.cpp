@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/shape_error.h"
+#include "io/huge_pages.h"
 #include "io/scene_file.h"
 #include "load/pov_loader.h"
 #include "load/read_materials.h"
@@ -53,6 +54,7 @@ class Loader {
       fail_at(ctx_, objects, "objects must be a list, got " + describe(objects));
     // One object per entry in most scenes: the vector grows once, not by copies of its objects.
     scene_.objects.reserve(scene_.objects.size() + objects.size());
+    advise_huge_pages(scene_.objects.data(), scene_.objects.capacity() * sizeof(Object));
     scene_.marks.entries.reserve(objects.size());
     for (const YamlNode& entry : objects) {
       scene_.marks.entries.push_back(mark_of(entry));

@@ -32,7 +32,9 @@ YamlNode::SequenceIterator YamlNode::end() const {
 const YamlPair* YamlNode::pairs_begin() const {
   return IsMap() ? static_cast<const YamlPair*>(data_->items) : nullptr;
 }
-const YamlPair* YamlNode::pairs_end() const { return IsMap() ? pairs_begin() + data_->size : nullptr; }
+const YamlPair* YamlNode::pairs_end() const {
+  return IsMap() ? pairs_begin() + data_->size : nullptr;
+}
 
 const YamlNodeData* const* YamlNode::entries() const {
   return static_cast<const YamlNodeData* const*>(data_->items);

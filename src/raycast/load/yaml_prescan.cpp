@@ -17,6 +17,13 @@ struct FlowOpen {
   char bracket;
 };
 
+// Characters that never start or end anything the scan follows (quotes, brackets, comments,
+// block indicators, `- ` items and `:`): letters, digits, '.' and '_'.
+bool is_word_character(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+         c == '_';
+}
+
 // Returns the first `[` or `{` left open at the end of the text (bracket 0 when all closed).
 FlowOpen check_nesting(const std::string& text, const std::string& name, int max_nesting) {
   const std::string too_deep =
@@ -64,6 +71,15 @@ FlowOpen check_nesting(const std::string& text, const std::string& name, int max
     bool after_blank = true;
     for (; i < n && text[i] != '\n'; ++i) {
       const char c = text[i];
+      if (!quote && is_word_character(c)) {
+        // A run of letters and digits opens and closes nothing: only its last character counts
+        // (as `prev`), and its first as a token's start.
+        if (after_blank) last_token = c;
+        after_blank = false;
+        while (i + 1 < n && is_word_character(text[i + 1])) ++i;
+        prev = text[i];
+        continue;
+      }
       if (quote) {
         if (c == '\\' && quote == '"')
           ++i;

@@ -2,8 +2,8 @@
 // Typed, positioned reading of YAML nodes: every failure is a SceneError at the node's position.
 #include <cstdint>
 #include <functional>
-#include <string_view>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/scene_error.h"

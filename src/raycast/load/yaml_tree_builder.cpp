@@ -3,12 +3,14 @@
 #include <yaml.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <new>
 #include <optional>
 #include <unordered_map>
 #include <vector>
 
+#include "io/huge_pages.h"
 #include "io/scene_error.h"
 
 namespace raycast {
@@ -58,9 +60,10 @@ std::size_t accepted_sequence(const std::string& text, std::size_t i) {
   };
   const unsigned c = byte(i);
   if (c < 0x80) return c == '\t' || c == '\n' || c == '\r' || (c >= 0x20 && c != 0x7f) ? 1 : 0;
-  const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3
-                                                : c >= 0xf0 && c <= 0xf4 ? 4
-                                                                         : 0;
+  const std::size_t n = c >= 0xc2 && c <= 0xdf   ? 2
+                        : c >= 0xe0 && c <= 0xef ? 3
+                        : c >= 0xf0 && c <= 0xf4 ? 4
+                                                 : 0;
   if (n == 0) return 0;
   unsigned code = c & (0x7f >> n);
   for (std::size_t k = 1; k < n; ++k) {
@@ -77,9 +80,23 @@ std::size_t accepted_sequence(const std::string& text, std::size_t i) {
 
 // libyaml refuses text that is not UTF-8 or holds control characters; yaml-cpp, which scenes were
 // first read with, took each such byte as U+FFFD (the replacement character), and so does this.
+// Whether the 8 bytes at `p` are all printable ASCII (0x20 to 0x7e), tested at once.
+bool printable_ascii_word(const char* p) {
+  std::uint64_t w;
+  std::memcpy(&w, p, sizeof w);
+  constexpr std::uint64_t kOnes = 0x0101010101010101, kHigh = 0x8080808080808080;
+  const std::uint64_t below_space = (w - 0x20 * kOnes) & ~w;  // high bit where a byte < 0x20
+  const std::uint64_t del = ((w ^ (0x7f * kOnes)) - kOnes) & ~(w ^ (0x7f * kOnes));  // == 0x7f
+  return ((w | below_space | del) & kHigh) == 0;
+}
+
 std::string with_replacement_characters(std::string text) {
   std::size_t i = 0;
   while (i < text.size()) {  // most texts are accepted whole, without a copy
+    if (i + 8 <= text.size() && printable_ascii_word(text.data() + i)) {
+      i += 8;
+      continue;
+    }
     const auto c = static_cast<unsigned char>(text[i]);
     if ((c >= 0x20 && c < 0x7f) || c == '\n') {  // the usual characters, at once
       ++i;
@@ -146,15 +163,15 @@ class ByteCursor {
     column_ = 0;
     const std::size_t nl = text_.find('\n', start);
     line_end_ = nl == std::string::npos ? text_.size() : nl;
-    ascii_ = std::all_of(text_.begin() + static_cast<std::ptrdiff_t>(start),
-                         text_.begin() + static_cast<std::ptrdiff_t>(line_end_),
-                         [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+    unsigned char bits = 0;  // no early exit: the loop vectorises
+    for (std::size_t k = start; k < line_end_; ++k) bits |= static_cast<unsigned char>(text_[k]);
+    ascii_ = bits < 0x80;
   }
   static std::size_t sequence_length(unsigned char lead) {
     return lead < 0x80 ? 1 : lead >= 0xf0 ? 4 : lead >= 0xe0 ? 3 : 2;
   }
   const std::string& text_;
-  std::size_t line_ = 0, column_ = 0;  // where at_ is, in libyaml's terms
+  std::size_t line_ = 0, column_ = 0;                   // where at_ is, in libyaml's terms
   std::size_t at_ = 0, line_start_ = 0, line_end_ = 0;  // bytes; line_end_ at its '\n'
   bool ascii_ = true;
   bool lost_ = false;  // lines disagree: columns stay libyaml's
@@ -268,8 +285,8 @@ class YamlTreeBuilder {
     const std::size_t at = cursor_.offset(e.start_mark.line, e.start_mark.column);
     // A plain scalar on one line is its own text: viewed, not copied. When as many characters
     // separate its ends as it has bytes, it is one line of ASCII: no comparison needed.
-    const bool one_ascii_line = e.end_mark.line == e.start_mark.line &&
-                                e.end_mark.column - e.start_mark.column == s.length;
+    const bool one_ascii_line =
+        e.end_mark.line == e.start_mark.line && e.end_mark.column - e.start_mark.column == s.length;
     if (plain && at != std::string::npos && s.length <= text.size() - at &&
         (one_ascii_line || std::memcmp(text.data() + at, value, s.length) == 0)) {
       node->items = text.data() + at;
@@ -346,6 +363,39 @@ class YamlTreeBuilder {
   std::unordered_map<std::string, const YamlNodeData*> anchors_;
 };
 
+// The arena's memory: large blocks aligned to huge pages and advised to use them
+// (io/huge_pages.h), small ones from the heap.
+class HugePageBlocks : public std::pmr::memory_resource {
+  static bool large(std::size_t bytes, std::size_t alignment) {
+    return bytes >= 2 * kHugePageBytes && alignment <= kHugePageBytes;
+  }
+  static std::size_t rounded(std::size_t bytes) {
+    return (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
+  }
+
+  void* do_allocate(std::size_t bytes, std::size_t alignment) override {
+    if (!large(bytes, alignment))
+      return std::pmr::new_delete_resource()->allocate(bytes, alignment);
+    void* p = std::aligned_alloc(kHugePageBytes, rounded(bytes));
+    if (!p) throw std::bad_alloc();
+    advise_huge_pages(p, rounded(bytes));
+    return p;
+  }
+  void do_deallocate(void* p, std::size_t bytes, std::size_t alignment) override {
+    if (!large(bytes, alignment))
+      return std::pmr::new_delete_resource()->deallocate(p, bytes, alignment);
+    std::free(p);
+  }
+  bool do_is_equal(const std::pmr::memory_resource& other) const noexcept override {
+    return this == &other;
+  }
+};
+
+std::pmr::memory_resource* huge_page_blocks() {
+  static HugePageBlocks blocks;
+  return &blocks;
+}
+
 }  // namespace
 
 YamlDocument build_yaml_document(std::string text, const std::string& name) {
@@ -353,7 +403,7 @@ YamlDocument build_yaml_document(std::string text, const std::string& name) {
   doc.text_ = std::make_unique<std::string>(with_replacement_characters(std::move(text)));
   // Sized to the text: a scene needs about five times its text in nodes.
   doc.arena_ = std::make_unique<std::pmr::monotonic_buffer_resource>(
-      std::max<std::size_t>(4096, doc.text_->size()));
+      std::max<std::size_t>(4096, doc.text_->size()), huge_page_blocks());
   doc.root_ = YamlTreeBuilder(*doc.text_, *doc.arena_, name).build();
   return doc;
 }
