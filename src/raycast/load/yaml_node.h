@@ -1,6 +1,6 @@
 #pragma once
-// A parsed YAML document as a compact tree of positioned nodes (docs/architecture.md "Scene
-// loading"). Nodes live in one arena owned by their YamlDocument; scalars are views of the scene
+// A parsed YAML document as a compact tree of positioned nodes (docs/performance.md "Loading large
+// scenes"). Nodes live in one arena owned by their YamlDocument; scalars are views of the scene
 // text where it spells them literally, else of a copy in the arena. A YamlNode is a pointer-sized
 // handle, valid while its document lives.
 //
