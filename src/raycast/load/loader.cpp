@@ -52,10 +52,12 @@ class Loader {
     top.finish();
     if (!objects.IsSequence())
       fail_at(ctx_, objects, "objects must be a list, got " + describe(objects));
-    // One object per entry in most scenes: the vector grows once, not by copies of its objects.
-    scene_.objects.reserve(scene_.objects.size() + objects.size());
+    // One object per entry in most scenes: the vector grows once, not by copies of its objects
+    // (up to a bound, so that a long list of anything but objects reserves no gigabytes).
+    constexpr std::size_t kMaxReserved = std::size_t{1} << 20;
+    scene_.objects.reserve(scene_.objects.size() + std::min(objects.size(), kMaxReserved));
     advise_huge_pages(scene_.objects.data(), scene_.objects.capacity() * sizeof(Object));
-    scene_.marks.entries.reserve(objects.size());
+    scene_.marks.entries.reserve(std::min(objects.size(), kMaxReserved));
     for (const YamlNode& entry : objects) {
       scene_.marks.entries.push_back(mark_of(entry));
       read_object(entry, 0, scene_.entries, Placement{}, scene_.objects);
