@@ -59,9 +59,13 @@ class Interpreter {
   const Token& tok();
   /// Consumes the current token (the next one is read when asked for).
   void next() { have_ = false; }
-  bool is_word(const char* w) { return tok().kind == Token::Word && tok().text == w; }
-  bool is_symbol(const char* s) { return pov::is_symbol(tok(), s); }
-  bool accept_symbol(const char* s);
+  // Words and symbols are compared as string views: a literal's length is known where it is
+  // written, and most comparisons fail on it without reading a character.
+  bool is_word(std::string_view w) {
+    return tok().kind == Token::Word && std::string_view(tok().text) == w;
+  }
+  bool is_symbol(std::string_view s) { return pov::is_symbol(tok(), s); }
+  bool accept_symbol(std::string_view s);
   void expect_symbol(const char* s, const char* where);
   void skip_comma() { accept_symbol(","); }
   /// The current token when it continues an expression: a directive or macro call that ends

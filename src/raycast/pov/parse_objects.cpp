@@ -39,12 +39,12 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 }
 
 bool is_unbuilt_shape(const std::string& w) {
-  static const char* const shapes[] = {
+  static constexpr std::string_view shapes[] = {
       "blob",     "height_field",    "prism",         "sphere_sweep", "superellipsoid",
       "text",     "julia_fractal",   "bicubic_patch", "parametric",   "polygon",
       "triangle", "smooth_triangle", "lemon",         "ovus"};
-  for (const char* s : shapes)
-    if (w == s) return true;
+  for (const std::string_view s : shapes)
+    if (s == w) return true;
   return false;
 }
 
