@@ -177,6 +177,7 @@ class Interpreter {
 
   // stream.cpp
   Token raw();
+  bool rereading() const;
   void fetch();
   void directive(const Token& d);
   void directive_body(const Token& d);
@@ -225,6 +226,15 @@ class Interpreter {
   void unread();
   /// The next token without running it as a macro call (a name being declared or tested).
   Token raw_name();
+  // Tokens read inside a #while, #for or macro, by file and offset, with the cursor after each:
+  // a loop reads its text again at every iteration, and a token depends on nothing but the
+  // text and where it starts (texts_ never change). Emptied when it reaches kTokenCacheSize.
+  struct CachedToken {
+    Token token;
+    Cursor after;
+  };
+  static constexpr std::size_t kTokenCacheSize = std::size_t{1} << 16;
+  std::unordered_map<std::uint64_t, CachedToken> token_cache_;
   Token cur_;
   std::size_t cur_input_ = 0;  // the input cur_ was read from, and the cursor before it
   Cursor cur_before_;

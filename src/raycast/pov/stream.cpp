@@ -39,11 +39,29 @@ void Interpreter::open_file(const std::string& text, const std::string& name,
   inputs_.push_back({index, {}});
 }
 
+bool Interpreter::rereading() const {
+  for (auto f = frames_.rbegin(); f != frames_.rend(); ++f)
+    if (f->kind == FrameKind::While || f->kind == FrameKind::For || f->kind == FrameKind::Macro)
+      return true;
+  return false;
+}
+
 Token Interpreter::raw() {
   Input& in = inputs_.back();
   cur_input_ = inputs_.size() - 1;
   cur_before_ = in.cursor;
-  return read_token(*texts_[static_cast<std::size_t>(in.file)], in.file, scene_.sources, in.cursor);
+  const std::string& text = *texts_[static_cast<std::size_t>(in.file)];
+  if (!rereading() || in.cursor.offset >= (std::uint64_t{1} << 40))
+    return read_token(text, in.file, scene_.sources, in.cursor);
+  const std::uint64_t key = (static_cast<std::uint64_t>(in.file) << 40) | in.cursor.offset;
+  if (const auto it = token_cache_.find(key); it != token_cache_.end()) {
+    in.cursor = it->second.after;
+    return it->second.token;
+  }
+  Token t = read_token(text, in.file, scene_.sources, in.cursor);
+  if (token_cache_.size() >= kTokenCacheSize) token_cache_.clear();
+  token_cache_.emplace(key, CachedToken{t, in.cursor});
+  return t;
 }
 
 Token Interpreter::raw_name() {
