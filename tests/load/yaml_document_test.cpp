@@ -162,9 +162,9 @@ TEST(YamlDocument, LargeScenesLoadWithTheirPositions) {
 
 TEST(YamlDocument, NullKeysReadAsNullInMaterialNames) {
   // yaml-cpp's reading, which scenes were first written against.
-  const Scene s =
-      load_scene_text("materials:\n  ~: {diffuse: 0.5}\nobjects:\n  - {sphere: {radius: 1}, "
-                      "material: 'null'}\n");
+  const Scene s = load_scene_text(
+      "materials:\n  ~: {diffuse: 0.5}\nobjects:\n  - {sphere: {radius: 1}, "
+      "material: 'null'}\n");
   ASSERT_EQ(s.materials.size(), 2u);
   EXPECT_EQ(s.materials[1].name, "null");
   EXPECT_EQ(s.objects[0].material, 1);
