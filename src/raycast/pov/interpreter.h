@@ -153,6 +153,7 @@ class Interpreter {
   void isosurface_body(Node& n, int depth);
   void spline_points(Node& n, int min_count);
   void triangle_body(Node& n, bool smooth);
+  void polynomial_terms(Node& n);
   void mesh_body(Node& n, int depth);
   void mesh2_body(Node& n, int depth);
   long count(const char* what);
