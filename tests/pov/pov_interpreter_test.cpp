@@ -157,6 +157,14 @@ TEST(PovInterpreter, DeeplyNestedParentheses_AreAPositionedError) {
   EXPECT_EQ(error_of(fine), "");
 }
 
+// A macro whose body holds the value's `;` (`#if (C) Q; #else ... #end`): the #local that
+// called it still names the caller's scope (POV-Ray's tracevines.pov).
+TEST(PovInterpreter, LocalFromAMacroHoldingTheSemicolon_IsTheCallersLocal) {
+  EXPECT_EQ(debug_of("#macro Find(C) #local Q = 7; #if (C) Q; #else 0; #end #end\n"
+                     "#macro Outer() #local N = Find(1) #debug str(N, 0, 0) #end\nOuter()"),
+            "7");
+}
+
 // Pinned fuzz finding: a directive inside a directive's value (`#declare A = #declare B = ...`)
 // recursed without a bound; so did objects declared inside objects.
 TEST(PovInterpreter, DirectivesNestedInValues_AreAPositionedError) {

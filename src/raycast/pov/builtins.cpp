@@ -219,13 +219,14 @@ Value Interpreter::builtin(const Token& t) {
   // The arguments, read whole.
   std::vector<Value> a;
   std::vector<Pos> at;
+  std::optional<Token> normal_name;  // trace's fourth argument: receives the normal
   if (!is_symbol(")")) {
     for (;;) {
       at.push_back(tok().pos);
-      if (word == "trace" && a.size() == 3) {  // the normal's output variable, maybe undeclared
-        const Token nt = raw_name();
-        if (nt.kind != Token::Word) fail_at(nt.pos, "trace's fourth argument is a name");
-        assign(nt.text, Value::vector({0, 0, 0}), false, nt.pos);
+      if (w == "trace" && a.size() == 3) {  // the normal's output variable, maybe undeclared
+        normal_name = raw_name();
+        if (normal_name->kind != Token::Word)
+          fail_at(normal_name->pos, "trace's fourth argument is a name");
         a.push_back(Value::number(0));
       } else {
         a.push_back(rvalue());
@@ -235,6 +236,8 @@ Value Interpreter::builtin(const Token& t) {
   }
   if (!is_symbol(")")) unexpected("')' to close " + w + "(");
   next();
+  if (w == "trace" || w == "inside" || w == "min_extent" || w == "max_extent")
+    return object_query(t, a, at, normal_name);
   return call_builtin(t, a, at);
 }
 
@@ -294,15 +297,6 @@ Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
     std::uint64_t& st = random_streams_[static_cast<std::size_t>(id)];
     st = st * 6364136223846793005ULL + 1442695040888963407ULL;
     return Value::number(static_cast<double>(st >> 11) * 0x1.0p-53);
-  }
-  if (word == "trace" && a.size() == 4) {
-    // The fourth argument is a name that receives the normal (declared if new).
-    unsupported_warning(t.pos, "the trace function", "its answer is <0, 0, 0>");
-    return Value::vector({0, 0, 0});
-  }
-  if (word == "inside" || word == "trace" || word == "min_extent" || word == "max_extent") {
-    unsupported_warning(t.pos, "the " + w + " function", "its answer is 0");
-    return word == "inside" ? Value::number(0) : Value::vector({0, 0, 0});
   }
   const auto& sig = functions().at(w);
   if (word == "str" || word == "vstr" || word == "substr" || word == "vturbulence" ||

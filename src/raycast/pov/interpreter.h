@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -99,6 +100,10 @@ class Interpreter {
   Value builtin(const Token& name);
   // builtin()'s parts: the functions by their argument types.
   Value call_builtin(const Token& t, const std::vector<Value>& a, const std::vector<Pos>& at);
+  // trace, inside, min_extent, max_extent (object_functions.cpp): answered by
+  // options_.object_queries; `normal_name` is trace's fourth argument.
+  Value object_query(const Token& t, const std::vector<Value>& a, const std::vector<Pos>& at,
+                     const std::optional<Token>& normal_name);
   Value float_builtin(const Token& t, double x, const Pos& at0);
   Value vector_string_builtin(const Token& t, const std::vector<Value>& a,
                               const std::vector<Pos>& at);
@@ -123,7 +128,9 @@ class Interpreter {
   const Value* lookup(const std::string& name);
   /// Reads a value of any kind: an expression, a string, or a block (object, texture ...).
   Value rvalue();
-  void assign(const std::string& name, Value v, bool local, const Pos& at);
+  // `local_scope`: the index in scopes_ a #local writes to (default: the innermost).
+  void assign(const std::string& name, Value v, bool local, const Pos& at,
+              std::size_t local_scope = static_cast<std::size_t>(-1));
 
   // ---- statements ----
   Texture texture_block(const Texture& base, int depth);
@@ -149,6 +156,8 @@ class Interpreter {
   Value spline_block(const Pos& at);
   void isosurface_body(Node& n, int depth);
   void spline_points(Node& n, int min_count);
+  void triangle_body(Node& n, bool smooth);
+  void polynomial_terms(Node& n);
   void mesh_body(Node& n, int depth);
   void mesh2_body(Node& n, int depth);
   long count(const char* what);

@@ -64,12 +64,13 @@ const Value* Interpreter::lookup(const std::string& name) {
   return s ? &s->value : nullptr;
 }
 
-void Interpreter::assign(const std::string& name, Value v, bool local, const Pos& at) {
+void Interpreter::assign(const std::string& name, Value v, bool local, const Pos& at,
+                         std::size_t local_scope) {
   if (v.kind == Value::String && v.text.size() > options_.limits.string_bytes)
     fail_at(at, "a string longer than " + std::to_string(options_.limits.string_bytes) + " bytes");
   Symbol* target = nullptr;
   if (local) {
-    auto& scope = scopes_.back();
+    auto& scope = scopes_[std::min(local_scope, scopes_.size() - 1)];
     const auto it = scope.find(name);
     if (it != scope.end()) {
       target = &it->second;
@@ -120,11 +121,13 @@ void Interpreter::declare(const Token& d, bool local) {
     keep->elements[index] = std::move(v);
   } else {
     expect_symbol("=", ("after #declare " + name).c_str());
+    // #local names the scope where the directive starts: a macro whose body is the value may
+    // end after it (`Add(1, 2);`) or its body may hold the `;` (`#if (C) Q; #else ... #end`).
+    const std::size_t scope = scopes_.size() - 1;
     Value v = rvalue();
-    // The token after the value first: a macro whose body is the value ends there, and #local
-    // must then name the caller's scope, not the finished macro's.
+    // The token after the value first: a macro whose body is the value ends there.
     const bool semicolon = pov::is_symbol(peek_operator(), ";");
-    assign(name, std::move(v), local, at);
+    assign(name, std::move(v), local, at, scope);
     if (semicolon) next();
     return;
   }
