@@ -127,6 +127,7 @@ std::optional<Node> Interpreter::object(int depth) {
   bool skipped = false;  // an object raycast does not build: its modifiers are still read
   if (kw.text == "object") {
     const Value* v = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+    const std::string declared_name = v ? tok().text : std::string();
     Value element;
     bool name_read = false;
     if (v && v->kind == Value::Array) {  // object { Objects[I] }
@@ -162,7 +163,10 @@ std::optional<Node> Interpreter::object(int depth) {
       } else {
         skipped = true;
       }
-      if (!name_read) next();
+      if (!name_read) {
+        n.name = declared_name;
+        next();
+      }
     }
   } else {
     n.kind = object_kinds().at(kw.text);
