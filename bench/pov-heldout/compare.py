@@ -26,7 +26,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 CLOSE = 6.0
 BLOCK = 4
-WARNING = re.compile(r"warning: (.*)")
+# A warning line: where it points (file:line:column, or the command), then its message.
+WARNING = re.compile(r"^(.*?)warning: (.*)$", re.M)
+# Warnings that point into POV-Ray's own include files come from declarations the scene may
+# never use (colors.inc, textures.inc ...), so they are counted apart.
+STANDARD_INCLUDES = "/usr/share/povray"
 
 
 def block_means(path):
@@ -45,6 +49,12 @@ def closeness(png_a, png_b):
     if a.shape != b.shape:
         return None
     return float(np.abs(a - b).mean())
+
+
+def is_flat(png):
+    """Whether the picture is one colour (a scene file holding only objects, with no camera or
+    light, renders black): such scenes test the reader but not the picture."""
+    return float(np.asarray(Image.open(png).convert("RGB"), dtype=np.float64).std()) < 1.0
 
 
 def povray_render(scene, png, timeout):
@@ -74,7 +84,7 @@ def raycast_render(raycast, scene, png, timeout):
                            timeout=timeout, stdin=subprocess.DEVNULL)
     except subprocess.TimeoutExpired:
         return "timeout", "", []
-    warnings = [m.group(1) for m in WARNING.finditer(p.stderr)]
+    warnings = [[m.group(1), m.group(2)] for m in WARNING.finditer(p.stderr)]
     if p.returncode == 0:
         return "ok", "", warnings
     if p.returncode == 2:
@@ -101,12 +111,13 @@ def run_scene(a, entry):
     pov_png = os.path.join(a.out, "povray", png)
     ray_png = os.path.join(a.out, "raycast", png)
     r = {"scene": rel, "povray": "missing", "raycast": "", "error": "", "warnings": [],
-         "difference": None}
+         "difference": None, "flat": None}
     if not os.path.exists(scene):
         return r
     r["povray"] = povray_render(scene, pov_png, a.pov_timeout)
     if r["povray"] != "ok":
         return r
+    r["flat"] = is_flat(pov_png)
     r["raycast"], r["error"], r["warnings"] = raycast_render(a.raycast, scene, ray_png, a.timeout)
     if r["raycast"] == "ok" and os.path.exists(ray_png):
         r["difference"] = closeness(pov_png, ray_png)
@@ -119,6 +130,8 @@ def report(results):
     status = collections.Counter(r["raycast"] for r in rendered)
     diffs = [r["difference"] for r in rendered if r["difference"] is not None]
     close = sum(1 for d in diffs if d <= CLOSE)
+    pictures = [r["difference"] for r in rendered
+                if r["difference"] is not None and not r["flat"]]
     print("scenes %d from %d repositories; POV-Ray renders %d (missing %d, error %d, timeout %d)"
           % (len(results), len({r["scene"].split(os.sep)[0] for r in results}), len(rendered),
              sum(r["povray"] == "missing" for r in results),
@@ -128,24 +141,35 @@ def report(results):
           "median difference %.1f" % (status["ok"], status["error"], status["crash"],
                                        status["timeout"], CLOSE, close, len(diffs),
                                        float(np.median(diffs)) if diffs else float("nan")))
-    errors, examples, warnings = collections.Counter(), {}, collections.Counter()
+    print("  without the %d whose POV-Ray picture is one flat colour: close %d of %d, median %.1f"
+          % (len(diffs) - len(pictures), sum(1 for d in pictures if d <= CLOSE), len(pictures),
+             float(np.median(pictures)) if pictures else float("nan")))
+    errors, examples = collections.Counter(), {}
+    own, standard = collections.Counter(), collections.Counter()
     for r in rendered:
         if r["raycast"] == "error":
             kind = shorten(r["error"])
             errors[kind] += 1
             examples.setdefault(kind, r["scene"])
-        for w in set(shorten(x) for x in r["warnings"]):
-            warnings[w] += 1
+        for w in set(shorten(m) for f, m in r["warnings"] if not f.startswith(STANDARD_INCLUDES)):
+            own[w] += 1
+        for w in set(shorten(m) for f, m in r["warnings"] if f.startswith(STANDARD_INCLUDES)):
+            standard[w] += 1
     print("\nmost common first errors (count, message, one scene):")
     for e, n in errors.most_common(15):
         print("  %4d  %s\n        %s" % (n, e, examples[e]))
-    print("\nmost common warnings (scenes):")
-    for w, n in warnings.most_common(15):
+    print("\nmost common warnings from the scenes' own files (scenes):")
+    for w, n in own.most_common(15):
+        print("  %4d  %s" % (n, w))
+    print("\nmost common warnings from POV-Ray's include files (scenes):")
+    for w, n in standard.most_common(8):
         print("  %4d  %s" % (n, w))
     print("\ncrashes and timeouts:")
     for r in rendered:
         if r["raycast"] in ("crash", "timeout"):
-            print("  %s  %s  %s" % (r["raycast"], r["scene"], r["error"]))
+            print("  %s  %s  %s\n    (cd %s && raycast render %s -o out.png --width 160 --height 120)"
+                  % (r["raycast"], r["scene"], r["error"], os.path.dirname(r["scene"]) or ".",
+                     os.path.basename(r["scene"])))
 
 
 def main():
