@@ -41,11 +41,11 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 }
 
 bool is_unbuilt_shape(const std::string& w) {
-  static const char* const shapes[] = {
+  static constexpr std::string_view shapes[] = {
       "blob",          "height_field",  "prism",      "sphere_sweep", "superellipsoid", "text",
       "julia_fractal", "bicubic_patch", "parametric", "polygon",      "lemon",          "ovus"};
-  for (const char* s : shapes)
-    if (w == s) return true;
+  for (const std::string_view s : shapes)
+    if (s == w) return true;
   return false;
 }
 
@@ -127,6 +127,7 @@ std::optional<Node> Interpreter::object(int depth) {
   bool skipped = false;  // an object raycast does not build: its modifiers are still read
   if (kw.text == "object") {
     const Value* v = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+    const std::string declared_name = v ? tok().text : std::string();
     Value element;
     bool name_read = false;
     if (v && v->kind == Value::Array) {  // object { Objects[I] }
@@ -162,7 +163,10 @@ std::optional<Node> Interpreter::object(int depth) {
       } else {
         skipped = true;
       }
-      if (!name_read) next();
+      if (!name_read) {
+        n.name = declared_name;
+        next();
+      }
     }
   } else {
     n.kind = object_kinds().at(kw.text);
@@ -180,29 +184,7 @@ std::optional<Node> Interpreter::object(int depth) {
       skip_comma();
       poly_coefficients(n, static_cast<int>(order));
     } else if (kw.text == "polynomial") {
-      const Pos at = tok().pos;
-      const double order = number("polynomial's order");
-      if (!(order >= 1 && order <= 16) || order != std::floor(order))
-        fail_at(at, "polynomial's order must be a whole number in [1, 16]");
-      skip_comma();
-      while (is_word("xyz")) {
-        const Pos t = tok().pos;
-        next();
-        expect_symbol("(", "after xyz");
-        std::array<int, 3> e{};
-        for (int i = 0; i < 3; ++i) {
-          const double v = number("an exponent");
-          if (!(v >= 0 && v <= order) || v != std::floor(v))
-            fail_at(t, "xyz exponents must be whole numbers in [0, order]");
-          e[static_cast<std::size_t>(i)] = static_cast<int>(v);
-          if (i < 2) expect_symbol(",", "between xyz exponents");
-        }
-        expect_symbol(")", "to close xyz(");
-        expect_symbol(":", "after xyz(...)");
-        if (e[0] + e[1] + e[2] > order) fail_at(t, "the term's degree is above the order");
-        n.terms[e] += number("a coefficient");
-        skip_comma();
-      }
+      polynomial_terms(n);
     } else if (kw.text == "mesh") {
       mesh_body(n, depth);
     } else if (kw.text == "mesh2") {
@@ -230,6 +212,33 @@ std::optional<Node> Interpreter::object(int depth) {
   if (n.kind == Node::Poly && n.terms.empty()) fail_at(n.pos, "the polynomial has no terms");
   if (is_csg(n.kind) && n.children.empty()) return std::nullopt;  // every part left out
   return n;
+}
+
+// polynomial { ORDER, xyz(i, j, k): COEFFICIENT, ... }: the terms by their exponents.
+void Interpreter::polynomial_terms(Node& n) {
+  const Pos at = tok().pos;
+  const double order = number("polynomial's order");
+  if (!(order >= 1 && order <= 16) || order != std::floor(order))
+    fail_at(at, "polynomial's order must be a whole number in [1, 16]");
+  skip_comma();
+  while (is_word("xyz")) {
+    const Pos t = tok().pos;
+    next();
+    expect_symbol("(", "after xyz");
+    std::array<int, 3> e{};
+    for (int i = 0; i < 3; ++i) {
+      const double v = number("an exponent");
+      if (!(v >= 0 && v <= order) || v != std::floor(v))
+        fail_at(t, "xyz exponents must be whole numbers in [0, order]");
+      e[static_cast<std::size_t>(i)] = static_cast<int>(v);
+      if (i < 2) expect_symbol(",", "between xyz exponents");
+    }
+    expect_symbol(")", "to close xyz(");
+    expect_symbol(":", "after xyz(...)");
+    if (e[0] + e[1] + e[2] > order) fail_at(t, "the term's degree is above the order");
+    n.terms[e] += number("a coefficient");
+    skip_comma();
+  }
 }
 
 void Interpreter::object_body(Node& n, int depth) {

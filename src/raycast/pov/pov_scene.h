@@ -119,6 +119,7 @@ struct Node {
   std::size_t weight = 0;           // this object's count against Limits::scene_weight
   bool inverse = false;             // `inverse`: the solid's complement
   bool no_shadow = false;           // `no_shadow`: casts no shadow (its parts neither)
+  std::string name;                 // object { Name }: the declared name it was placed by
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
 };

@@ -177,14 +177,14 @@ void Interpreter::apply_declares() {
 }
 
 namespace {
-bool is_skipped_block(const std::string& w) {
-  static const char* const kinds[] = {
+bool is_skipped_block(std::string_view w) {
+  static constexpr std::string_view kinds[] = {
       "normal",      "pigment_map",   "normal_map", "texture_map", "slope_map",
       "density_map", "material_map",  "density",    "media",       "fog",
       "rainbow",     "sky_sphere",    "photons",    "radiosity",   "interior_texture",
       "bump_map",    "image_pattern", "image_map"};
-  for (const char* k : kinds)
-    if (w == k) return true;
+  for (const std::string_view k : kinds)
+    if (k == w) return true;
   return false;
 }
 }  // namespace
@@ -194,13 +194,14 @@ Value Interpreter::rvalue() {
   Value v;
   if (t.kind != Token::Word) return expression();
   const std::string& w = t.text;
+  const std::string_view word = w;  // compared with literals inline
   if (is_object_keyword()) {
     v.kind = Value::Object;
     if (std::optional<Node> n = object(0)) v.object = std::make_shared<const Node>(std::move(*n));
-  } else if (w == "light_source") {
+  } else if (word == "light_source") {
     v.kind = Value::Object;
     v.object = std::make_shared<const Node>(light_block());
-  } else if (w == "texture") {
+  } else if (word == "texture") {
     next();
     v.kind = Value::Texture;
     Texture tx = texture_block(default_texture_, 0);
@@ -211,37 +212,37 @@ Value Interpreter::rvalue() {
       unsupported_warning(t.pos, "layered textures", "the first layer is used");
     }
     v.texture = std::make_shared<const Texture>(std::move(tx));
-  } else if (w == "pigment") {
+  } else if (word == "pigment") {
     next();
     v.kind = Value::Pigment;
     v.pigment = std::make_shared<const Pigment>(pigment_block(default_texture_.pigment));
-  } else if (w == "finish") {
+  } else if (word == "finish") {
     next();
     v.kind = Value::Finish;
     v.finish = std::make_shared<const Finish>(finish_block(default_texture_.finish));
-  } else if (w == "interior") {
+  } else if (word == "interior") {
     next();
     v.kind = Value::Interior;
     v.ior = interior_block();
-  } else if (w == "material") {
+  } else if (word == "material") {
     next();
     v.kind = Value::Material;
     v.texture = std::make_shared<const Texture>(material_block(default_texture_, 0));
-  } else if (w == "camera") {
+  } else if (word == "camera") {
     next();
     v.kind = Value::Camera;
     v.camera = std::make_shared<const Camera>(camera_block(Camera{}));
-  } else if (w == "transform") {
+  } else if (word == "transform") {
     next();
     v.kind = Value::Transform;
     v.transform = std::make_shared<const std::vector<XformOp>>(transform_block());
-  } else if (w == "function") {
+  } else if (word == "function") {
     next();
     v = function_block(t.pos);
-  } else if (w == "spline") {
+  } else if (word == "spline") {
     next();
     v = spline_block(t.pos);
-  } else if (w == "color_map" || w == "colour_map") {
+  } else if (word == "color_map" || word == "colour_map") {
     next();
     v.kind = Value::ColourMap;
     v.colour_map = std::make_shared<const std::vector<MapEntry>>(colour_map_block());
@@ -250,7 +251,7 @@ Value Interpreter::rvalue() {
     skip_block(w);
     v.kind = Value::Opaque;
     v.text = w;
-  } else if (w == "array") {
+  } else if (word == "array") {
     next();
     v.kind = Value::Array;
     v.array = std::make_shared<ArrayValue>();
