@@ -570,9 +570,7 @@ void Interpreter::mesh2_body(Node& n, int) {
     for (long i = 0; i < cnt; ++i) {
       skip_comma();
       const Pos at = tok().pos;
-      ++item_value_;
-      const Value v = expression();
-      --item_value_;
+      const Value v = item_expression();
       if (v.dims != dims)
         fail_at(at, std::string(name) + " holds " + std::to_string(dims) + "-vectors");
       each(v, at);
