@@ -90,6 +90,10 @@ const Case kCases[] = {
      "mesh2 { vertex_vectors { 3, <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } "
      "face_indices { 1, <0, 1, 2> } }",
      3},
+    {"mesh2_trailing_commas",
+     "mesh2 { vertex_vectors { 3 <-1, -1, 3>, <1, -1, 3>, <0, 1, 3>, } "
+     "face_indices { 1, <0, 1, 2>, } }",
+     3},
     {"union", "union { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2},
     {"merge", "merge { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2},
     {"intersection", "intersection { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2.5},

@@ -598,6 +598,7 @@ void Interpreter::mesh2_body(Node& n, int) {
           number("a texture index");
         }
     }
+    accept_symbol(",");  // POV-Ray accepts a comma after the last item
     if (!is_symbol("}"))
       fail_here(std::string(name) + " announced " + std::to_string(cnt) + " items, got more");
     next();
