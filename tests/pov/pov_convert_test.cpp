@@ -95,6 +95,11 @@ const Case kCases[] = {
      "face_indices { 1, <0, 1, 2>, } }",
      3},
     {"union", "union { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2},
+    // A declared object's name alone stands for object { Name } (in CSG and as a scene item).
+    {"bare_declared_object",
+     "#declare S = sphere { <0, 0, 3>, 1 }\n#declare B = box { -1, 1 translate 4 * z }\n"
+     "union { S B }\nB",
+     2},
     {"merge", "merge { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2},
     {"intersection", "intersection { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2.5},
     {"difference", "difference { sphere { <0, 0, 3>, 1 } box { <-2, -2, 0>, <2, 2, 2.5> } }", 2.5},

@@ -181,6 +181,14 @@ TEST(PovInterpreter, Rand_IsPovRaysSequence) {
   EXPECT_EQ(debug_of("#declare S = seed(1e10);\n#debug str(rand(S), 0, 12)"), "0.500002874411");
 }
 
+TEST(PovInterpreter, StringsCompareInConditions) {
+  EXPECT_EQ(debug_of("#declare V = \"tree\";\n"
+                     "#if (V = \"tree\") #debug \"a\" #end #if (V != \"bush\") #debug \"b\" #end\n"
+                     "#if (V = \"bush\") #debug \"c\" #end"),
+            "ab");
+  EXPECT_NE(error_of("#declare V = \"tree\";\n#if (V = 1) #end"), "");
+}
+
 // A function held in an array is called like a declared one.
 TEST(PovInterpreter, FunctionFromAnArrayElement_IsCalled) {
   EXPECT_EQ(debug_of("#declare Fns = array[2] { function(a, b) { a + b }, function { x * 2 } }\n"

@@ -143,8 +143,24 @@ struct Ops {
     }
     return a;
   }
+  // Strings compare by their characters (POV-Ray reads `#if (Variant = "tree")`).
+  Value string_comparison(const Value& a) {
+    const Pos at = in.tok_pos();
+    int kind;
+    if (op("="))
+      kind = 0;
+    else if (op("!="))
+      kind = 1;
+    else
+      return a;
+    const Value b = sum();
+    if (b.kind != Value::String)
+      in.fail_at(at, "a string compares with a string, got " + std::string(kind_name(b)));
+    return Value::number((a.text == b.text) == (kind == 0));
+  }
   Value comparison() {
     Value a = sum();
+    if (a.kind == Value::String && in.paren_depth_ > 0) return string_comparison(a);
     // Only a float is compared, and only inside parentheses: outside, '<' opens the next
     // vector (box { <a> <b> }, vertex_vectors { 14 <-1, 0, 0> ... }, #if (C) <1, 0, 0>).
     while (a.kind == Value::Float && in.paren_depth_ > 0) {

@@ -159,6 +159,9 @@ class Interpreter {
   void isosurface_body(Node& n, int depth);
   void spline_points(Node& n, int min_count);
   void triangle_body(Node& n, bool smooth);
+  void place_declared(const std::shared_ptr<const Node>& object, Node& n);
+  bool is_declared_object();
+  std::optional<Node> bare_declared_object();
   void polynomial_terms(Node& n);
   void mesh_body(Node& n, int depth);
   void mesh2_body(Node& n, int depth);

@@ -109,6 +109,44 @@ void Interpreter::add_weight(std::size_t w, const Pos& at) {
                     "other?)");
 }
 
+// A declared object placed by a new node: a composite is shared, not copied (a mesh of millions
+// of triangles, a union of thousands of objects), the node placing it; a shape is copied.
+void Interpreter::place_declared(const std::shared_ptr<const Node>& object, Node& n) {
+  add_weight(object->weight, tok().pos);  // a use counts as a copy
+  const Node::Kind k = object->kind;
+  if (is_csg(k) || k == Node::Union || k == Node::Mesh || k == Node::Reference) {
+    n.kind = Node::Reference;
+    n.ref = object;
+  } else {
+    n = *object;
+  }
+}
+
+bool Interpreter::is_declared_object() {
+  const Token& t = tok();
+  if (t.kind != Token::Word) return false;
+  const Value* v = lookup(t.text);
+  return v && v->kind == Value::Object;
+}
+
+// A declared object's name alone where an object may stand (POV-Ray reads it as
+// object { Name }); nothing for an object raycast does not build.
+std::optional<Node> Interpreter::bare_declared_object() {
+  const Token t = tok();
+  const std::shared_ptr<const Node> object = lookup(t.text)->object;
+  if (!object) {
+    next();
+    return std::nullopt;
+  }
+  Node n;
+  place_declared(object, n);
+  next();
+  n.pos = t.pos;
+  n.name = t.text;
+  n.weight = n.kind == Node::Reference ? n.ref->weight + kPovNodeWeight : weight(n);
+  return n;
+}
+
 bool Interpreter::is_object_keyword() {
   const Token& t = tok();
   return t.kind == Token::Word && (object_kinds().count(t.text) || t.text == "object" ||
@@ -166,20 +204,10 @@ std::optional<Node> Interpreter::object(int depth) {
         unexpected("a declared object's name or an object");
       }
     } else {
-      if (v->object) {
-        add_weight(v->object->weight, tok().pos);  // a use counts as a copy
-        const Node::Kind k = v->object->kind;
-        if (is_csg(k) || k == Node::Union || k == Node::Mesh || k == Node::Reference) {
-          // A composite is shared, not copied (a mesh of millions of triangles, a union of
-          // thousands of objects): this node places it.
-          n.kind = Node::Reference;
-          n.ref = v->object;
-        } else {
-          n = *v->object;
-        }
-      } else {
+      if (v->object)
+        place_declared(v->object, n);
+      else
         skipped = true;
-      }
       if (!name_read) {
         n.name = declared_name;
         next();
@@ -211,6 +239,10 @@ std::optional<Node> Interpreter::object(int depth) {
   while (!accept_symbol("}")) {
     if (is_csg(n.kind) && is_object_keyword()) {
       if (std::optional<Node> c = object(depth + 1)) n.children.push_back(std::move(*c));
+      continue;
+    }
+    if (is_csg(n.kind) && is_declared_object()) {
+      if (std::optional<Node> c = bare_declared_object()) n.children.push_back(std::move(*c));
       continue;
     }
     if (!modifier(n, depth)) unexpected("an object modifier in " + kw.text);
