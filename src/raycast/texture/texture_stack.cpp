@@ -1,0 +1,144 @@
+#include "texture/texture_stack.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace raycast::texture {
+
+namespace {
+
+double average(const Vec3& c) { return (c.x + c.y + c.z) / 3; }
+
+// A value in [0, 1) that changes from point to point with no pattern (crand's grain).
+double grain(const Vec3& p) {
+  auto bits = [](double v) {
+    std::uint64_t u = 0;
+    static_assert(sizeof(u) == sizeof(v));
+    __builtin_memcpy(&u, &v, sizeof(u));
+    return u;
+  };
+  std::uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ULL ^ bits(p.y) * 0xC2B2AE3D27D4EB4FULL ^
+                    bits(p.z) * 0x165667B19E3779F9ULL;
+  h ^= h >> 31;
+  h *= 0xBF58476D1CE4E5B9ULL;
+  h ^= h >> 29;
+  return double(h >> 11) * (1.0 / double(1ULL << 53));
+}
+
+// The highlight and reflection terms of a layer seen through `vis` of the layers above, added
+// to the sums; the layer with the largest highlight gives the sizes.
+void add_finish(const Finish& f, double vis, Finish& sum, double& strongest) {
+  sum.phong += vis * f.phong;
+  sum.specular += vis * f.specular;
+  sum.reflection_min += vis * f.reflection_min;
+  sum.reflection_max += vis * f.reflection_max;
+  sum.crand += vis * f.crand;
+  const double highlight = vis * (f.phong + f.specular + f.reflection_max);
+  if (highlight > strongest || strongest < 0) {
+    strongest = highlight;
+    sum.phong_size = f.phong_size;
+    sum.roughness = f.roughness;
+    sum.metallic = f.metallic;
+    sum.reflection_fresnel = f.reflection_fresnel;
+    sum.reflection_falloff = f.reflection_falloff;
+    sum.reflection_metallic = f.reflection_metallic;
+  }
+}
+
+}  // namespace
+
+void transform_layer(TextureLayer& layer, const Transform& t) {
+  transform_pigment(layer.pigment, t);
+  if (layer.normal) transform_pattern(layer.normal->pattern, t);
+}
+
+bool TextureStack::may_transmit() const {
+  // The stack lets light through only where every layer does.
+  return !layers.empty() && std::all_of(layers.begin(), layers.end(), [](const TextureLayer& l) {
+    return texture::may_transmit(l.pigment);
+  });
+}
+
+bool TextureStack::has_normal() const {
+  return std::any_of(layers.begin(), layers.end(),
+                     [](const TextureLayer& l) { return l.normal.has_value(); });
+}
+
+Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
+  // A step of a thousandth of the pattern's size in texture space along each world axis.
+  double size = 1;
+  for (const PatternStep& s : pattern.steps)
+    if (s.transform) {
+      const Mat4& m = s.transform->matrix();
+      const double det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
+                         m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
+                         m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
+      size *= std::cbrt(std::abs(det));
+    }
+  if (!(size > 0) || !std::isfinite(size)) size = 1;
+  constexpr double kStep = 1e-3;
+  Vec3 g{0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    const Vec3& axis = ctx.axes[a];
+    const double l = length(axis);
+    if (!(l > 0)) continue;
+    const Vec3 d = (kStep * size / l) * axis;
+    g[std::size_t(a)] = (evaluate(pattern, ctx.p + d) - evaluate(pattern, ctx.p - d)) / (2 * kStep);
+  }
+  return g;
+}
+
+SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
+  SurfaceLook look;
+  Finish& f = look.finish;
+  f = Finish{};
+  f.phong = f.specular = f.reflection_min = f.reflection_max = f.crand = 0;
+  double strongest = -1, diffuse_weight = 0, brilliance = 0;
+  Vec3 through{1, 1, 1};
+  Vec3 tilt{0, 0, 0};
+  // From the top layer down: each is seen through the filter and transmit of those above.
+  for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
+    const TextureLayer& layer = *it;
+    const Rgbft c = evaluate(layer.pigment, ctx.p);
+    const double opaque = std::clamp(1 - c.filter - c.transmit, 0.0, 1.0);
+    const Vec3 seen = opaque * mul(through, c.rgb);
+    const double vis = average(through);
+    look.ambient += layer.finish.ambient * seen;
+    look.diffuse += layer.finish.diffuse * seen;
+    look.pigment += seen;
+    const double w = vis * opaque * layer.finish.diffuse;
+    diffuse_weight += w;
+    brilliance += w * layer.finish.brilliance;
+    add_finish(layer.finish, vis, f, strongest);
+    if (layer.normal)
+      tilt += (vis * layer.normal->bump_size) * pattern_gradient(layer.normal->pattern, ctx);
+    through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
+    if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
+  }
+  f.brilliance = diffuse_weight > 0 ? brilliance / diffuse_weight : 1;
+  if (f.crand > 0) look.diffuse *= 1 - std::min(1.0, f.crand) * grain(ctx.p);
+  look.through = through;
+  look.normal = ctx.n;
+  if (tilt.x != 0 || tilt.y != 0 || tilt.z != 0) {
+    // Raised where the pattern is high: the normal leans away from the gradient's tangential
+    // part (the part along n does not tilt it).
+    const Vec3 tangential = tilt - dot(tilt, ctx.n) * ctx.n;
+    const Vec3 n = ctx.n - tangential;
+    const double l = length(n);
+    if (l > 0 && std::isfinite(l)) look.normal = n / l;
+  }
+  return look;
+}
+
+Vec3 transmittance(const TextureStack& texture, const Vec3& p) {
+  Vec3 through{1, 1, 1};
+  for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
+    const Rgbft c = evaluate(it->pigment, p);
+    through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
+    if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
+  }
+  return through;
+}
+
+}  // namespace raycast::texture

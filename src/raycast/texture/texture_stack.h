@@ -1,0 +1,70 @@
+#pragma once
+// Textures (docs/textures.md): layers of pigment, normal perturbation and finish, evaluated at a
+// surface point through one context. A texture of several layers shows each lower layer through
+// the filter and transmit of the layers above it (POV-Ray's layered textures).
+#include <optional>
+#include <vector>
+
+#include "math/vec3.h"
+#include "texture/finish.h"
+#include "texture/pattern.h"
+#include "texture/pigment.h"
+
+namespace raycast::texture {
+
+/// A normal perturbation: the surface normal tilted against the pattern's gradient (measured in
+/// the pattern's own units, so scaling the pattern does not change the tilt), times bump_size.
+struct Normal {
+  Pattern pattern;
+  double bump_size = 0.5;
+};
+
+struct TextureLayer {
+  Pigment pigment;
+  std::optional<Normal> normal;
+  Finish finish;
+};
+
+/// Moves a layer's pigment and normal by t (POV-Ray's transformations of a texture).
+void transform_layer(TextureLayer& layer, const Transform& t);
+
+struct TextureStack {
+  std::vector<TextureLayer> layers;  // the bottom layer first
+  bool may_transmit() const;         // some layer shows what is behind the surface
+  bool has_normal() const;
+};
+
+/// Where a texture is evaluated: the point in texture space, the texture-space images of the
+/// world's unit axes (for the normal's gradient in world space), the unit world normal, (u, v).
+struct TextureContext {
+  Vec3 p;
+  Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  Vec3 n{0, 0, 1};
+  double u = 0, v = 0;
+};
+
+/// What a texture gives a surface point: the colours its ambient and diffuse terms use (already
+/// weighted by each layer's coefficient and visible fraction), the pigment colour (what metallic
+/// highlights and reflections take), the light let through the whole stack (per channel), the
+/// finish of its highlights and reflection (visible layers' sums), and the perturbed unit
+/// normal.
+struct SurfaceLook {
+  Vec3 ambient{0, 0, 0};
+  Vec3 diffuse{0, 0, 0};
+  Vec3 pigment{0, 0, 0};
+  Vec3 through{0, 0, 0};
+  Finish finish;
+  Vec3 normal{0, 0, 1};
+};
+
+SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx);
+
+/// The light a texture lets through at a point (the shadow rays' filter): the product of the
+/// layers' filter * colour + transmit, top layer first.
+Vec3 transmittance(const TextureStack& texture, const Vec3& p);
+
+/// The gradient of the pattern's value at ctx.p along the world axes, per unit of the pattern's
+/// own size (central differences of evaluate()).
+Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx);
+
+}  // namespace raycast::texture
