@@ -131,6 +131,17 @@ SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
   return look;
 }
 
+Vec3 pigment_color(const TextureStack& texture, const Vec3& p) {
+  Vec3 through{1, 1, 1}, sum{0, 0, 0};
+  for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
+    const Rgbft c = evaluate(it->pigment, p);
+    sum += std::clamp(1 - c.filter - c.transmit, 0.0, 1.0) * mul(through, c.rgb);
+    through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
+    if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
+  }
+  return sum;
+}
+
 Vec3 transmittance(const TextureStack& texture, const Vec3& p) {
   Vec3 through{1, 1, 1};
   for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {

@@ -59,6 +59,10 @@ struct SurfaceLook {
 
 SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx);
 
+/// The colour the layers show at p, each seen through the filter and transmit of those above
+/// (the albedo output and the raycast integrator's colour).
+Vec3 pigment_color(const TextureStack& texture, const Vec3& p);
+
 /// The light a texture lets through at a point (the shadow rays' filter): the product of the
 /// layers' filter * colour + transmit, top layer first.
 Vec3 transmittance(const TextureStack& texture, const Vec3& p);
