@@ -21,6 +21,32 @@ double spot_factor(const Light& light, const Vec3& from_light) {
   return x * x * (3 - 2 * x);
 }
 
+// One light's term e * (diffuse + highlight) at the hit. Plain materials: e * (kd nl C +
+// ks max(0, r.v)^shininess), r = l mirrored about n (pow(0, shininess) is 0 for shininess > 0:
+// no pow call when the lobe faces away), with `highlight` the scalar Phong part. Textured ones:
+// finish_terms, with the two parts (times e) in diffuse_part and specular_part.
+template <bool kTextured>
+[[gnu::always_inline]] inline Color light_term(const Material& m, unsigned exponent, const Color& c,
+                                               const texture::SurfaceLook* look, const Vec3& n,
+                                               const Vec3& l, const Vec3& v, double nl,
+                                               const Color& e, double& highlight,
+                                               Color& diffuse_part, Color& specular_part) {
+  const Vec3 r = 2 * nl * n - l;
+  const double rv = dot(r, v);
+  if constexpr (kTextured) {
+    finish_terms(*look, n, l, v, nl, rv, diffuse_part, specular_part);
+    diffuse_part = mul(e, diffuse_part);
+    specular_part = mul(e, specular_part);
+    return diffuse_part + specular_part;
+  } else {
+    highlight = m.specular > 0 && (rv > 0 || !(m.shininess > 0))
+                    ? m.specular * (exponent > 0 ? integer_power(std::max(0.0, rv), exponent)
+                                                 : std::pow(std::max(0.0, rv), m.shininess))
+                    : 0;
+    return mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
+  }
+}
+
 }  // namespace
 
 template <Integrator::TraceMode M>
@@ -266,24 +292,10 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
         state.recorder->light({light_index, l, nl, {}, {}, false, {}, {}});
       return;
     }
-    // Diffuse and Phong highlight: e * (kd nl C + ks max(0, r.v)^shininess), r = l mirrored
-    // about n. pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
-    const Vec3 r = 2 * nl * n - l;
-    const double rv = dot(r, v);
-    Color diffuse_part, specular_part, term;
+    Color diffuse_part, specular_part;
     double highlight = 0;
-    if constexpr (kTextured) {
-      finish_terms(*look, n, l, v, nl, rv, diffuse_part, specular_part);
-      diffuse_part = mul(e, diffuse_part);
-      specular_part = mul(e, specular_part);
-      term = diffuse_part + specular_part;
-    } else {
-      highlight = m.specular > 0 && (rv > 0 || !(m.shininess > 0))
-                      ? m.specular * (exponent > 0 ? integer_power(std::max(0.0, rv), exponent)
-                                                   : std::pow(std::max(0.0, rv), m.shininess))
-                      : 0;
-      term = mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
-    }
+    const Color term = light_term<kTextured>(m, exponent, c, look, n, l, v, nl, e, highlight,
+                                             diffuse_part, specular_part);
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
     if constexpr (M != kPlain) {  // the render's shadow query below, counted and told
