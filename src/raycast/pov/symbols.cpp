@@ -24,6 +24,8 @@ const char* kind_name(const Value& v) {
       return "a pigment";
     case Value::Finish:
       return "a finish";
+    case Value::Normal:
+      return "a normal";
     case Value::Interior:
       return "an interior";
     case Value::Material:
@@ -154,7 +156,7 @@ void Interpreter::default_block() {
       default_texture_.finish = finish_block(default_texture_.finish);
     } else if (is_word("normal")) {
       next();
-      skip_block("normal");
+      default_texture_.normal = normal_block(default_texture_.normal);
     } else {
       unexpected("texture, pigment, finish or normal in #default");
     }
@@ -176,10 +178,11 @@ void Interpreter::apply_declares() {
 namespace {
 bool is_skipped_block(const std::string& w) {
   static const char* const kinds[] = {
-      "normal",      "pigment_map",   "normal_map", "texture_map", "slope_map",
-      "density_map", "material_map",  "density",    "media",       "fog",
-      "rainbow",     "sky_sphere",    "photons",    "radiosity",   "interior_texture",
-      "bump_map",    "image_pattern", "image_map"};
+      "pigment_map", "normal_map",       "texture_map", "slope_map",
+      "density_map", "material_map",     "density",     "media",
+      "fog",         "rainbow",          "sky_sphere",  "photons",
+      "radiosity",   "interior_texture", "bump_map",    "image_pattern",
+      "image_map"};
   for (const char* k : kinds)
     if (w == k) return true;
   return false;
@@ -202,16 +205,19 @@ Value Interpreter::rvalue() {
     v.kind = Value::Texture;
     Texture tx = texture_block(default_texture_, 0);
     while (peek_operator().kind == Token::Word && peek_operator().text == "texture" &&
-           !pending_) {  // layered
+           !pending_) {  // layered: each further texture goes on top
       next();
-      texture_block(default_texture_, 0);
-      unsupported_warning(t.pos, "layered textures", "the first layer is used");
+      tx = layer_on_top(std::move(tx), texture_block(default_texture_, 0));
     }
     v.texture = std::make_shared<const Texture>(std::move(tx));
   } else if (w == "pigment") {
     next();
     v.kind = Value::Pigment;
     v.pigment = std::make_shared<const Pigment>(pigment_block(default_texture_.pigment));
+  } else if (w == "normal") {
+    next();
+    v.kind = Value::Normal;
+    v.normal = std::make_shared<const texture::Normal>(normal_block(std::nullopt));
   } else if (w == "finish") {
     next();
     v.kind = Value::Finish;

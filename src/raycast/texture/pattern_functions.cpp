@@ -173,7 +173,9 @@ double raw_pattern(const Pattern& pt, const Vec3& p) {
     case PatternKind::kGranite: {
       double sum = 0, f = 1;
       for (int i = 0; i < 6; ++i, f *= 2) sum += std::abs(noise(4 * f * p, g) - 0.5) / f;
-      return std::min(1.0, sum);
+      // Doubled: the octaves' deviations from 0.5 average about 0.15, and granite's colour
+      // maps expect values spread over [0, 1].
+      return std::min(1.0, 2 * sum);
     }
     case PatternKind::kHexagon:
       return hexagon(p);
@@ -213,8 +215,9 @@ double raw_pattern(const Pattern& pt, const Vec3& p) {
       return std::sqrt(p.x * p.x + p.y * p.y);
     case PatternKind::kWrinkles: {
       double sum = 0, f = 1;
-      for (int i = 0; i < 10; ++i, f *= 2) sum += std::abs(2 * noise(f * p, g) - 1) / f;
-      return std::min(1.0, 0.5 * sum);
+      // Fractal noise: ten octaves of signed noise, each half as strong and twice as fine.
+      for (int i = 0; i < 10; ++i, f *= 2) sum += (noise(f * p, g) - 0.5) / f;
+      return std::clamp(0.5 + sum, 0.0, 1.0);
     }
   }
   return 0;
