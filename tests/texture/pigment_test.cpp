@@ -149,5 +149,22 @@ TEST(Normal, BumpsChangeTheNormalSomewhere) {
   EXPECT_GT(tilted, 40);
 }
 
+TEST(Normal, WrinklesTiltIsBoundedVectorNoise) {
+  TextureLayer l;
+  l.normal = Normal{make_pattern(PatternKind::kWrinkles), 1};
+  TextureStack t;
+  t.layers = {l};
+  double largest = 0;
+  for (int i = 0; i < 200; ++i) {
+    TextureContext ctx;
+    ctx.p = {0.173 * i, 0.31 * i, -0.07 * i};
+    const Vec3 g = pattern_gradient(l.normal->pattern, ctx);
+    // Each component: 3 * sum of 2^-i over ten octaves of values in [-1, 1].
+    EXPECT_LE(std::abs(g.x), 3 * 2.0);
+    largest = std::max(largest, length(g));
+  }
+  EXPECT_GT(largest, 0.3);
+}
+
 }  // namespace
 }  // namespace raycast::texture

@@ -134,7 +134,7 @@ double apply_wave(WaveForm wave, double v, double exponent) {
   return fraction(v);
 }
 
-double evaluate(const Pattern& pattern, const Vec3& p) {
+Vec3 pattern_point(const Pattern& pattern, const Vec3& p) {
   // The steps as written move the pattern: undo them from the last to the first.
   Vec3 q = p;
   for (auto it = pattern.steps.rbegin(); it != pattern.steps.rend(); ++it) {
@@ -144,10 +144,23 @@ double evaluate(const Pattern& pattern, const Vec3& p) {
       q += turbulence_offset(q, it->warp, pattern.noise_generator);
   }
   const PatternKind k = pattern.kind;
-  // Marble, wood and agate use turbulence themselves (raw_pattern); the others are displaced.
+  // Marble and agate add turbulence to their value (raw_pattern); the others, wood included,
+  // are displaced by it.
   if (pattern.turbulence.any() && k != PatternKind::kMarble && k != PatternKind::kAgate)
     q += turbulence_offset(q, pattern.turbulence, pattern.noise_generator);
-  const double raw = raw_pattern(pattern, q);
+  return q;
+}
+
+Vec3 pattern_vector(const Pattern& pattern, const Vec3& v) {
+  Vec3 out = v;
+  for (const PatternStep& s : pattern.steps)
+    if (s.transform) out = s.transform->vector(out);
+  return out;
+}
+
+double evaluate(const Pattern& pattern, const Vec3& p) {
+  const PatternKind k = pattern.kind;
+  const double raw = raw_pattern(pattern, pattern_point(pattern, p));
   if (!std::isfinite(raw)) return 0;
   const int blocks = block_count(k);
   if (blocks > 0) return raw / double(blocks - 1);

@@ -89,6 +89,12 @@ void transform_pattern(Pattern& p, const Transform& t);
 /// pattern, then frequency, phase and the wave (continuous patterns) or the block index k/(n-1).
 double evaluate(const Pattern& pattern, const Vec3& p);
 
+/// The point of the pattern's own space that p (texture space) is evaluated at: the steps
+/// undone, then the classic turbulence (not for marble and agate, which add it to their value).
+Vec3 pattern_point(const Pattern& pattern, const Vec3& p);
+/// A direction of the pattern's own space in texture space (the steps' transformations).
+Vec3 pattern_vector(const Pattern& pattern, const Vec3& v);
+
 /// The raw pattern function at a point of the pattern's own space (no steps, no wave): what each
 /// pattern defines (gradient: p.v, onion: |p|, ...). Continuous patterns give values whose
 /// fractional part or clamp to [0, 1] the wave takes; block patterns their index.

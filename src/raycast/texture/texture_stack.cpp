@@ -65,7 +65,31 @@ bool TextureStack::has_normal() const {
                      [](const TextureLayer& l) { return l.normal.has_value(); });
 }
 
+namespace {
+
+// POV-Ray's wrinkles normal: vector noise summed over ten octaves, each half as strong and twice
+// as fine (the gradient of the wrinkles value would weigh every octave alike), taken along the
+// world axes.
+Vec3 wrinkles_normal(const Pattern& pattern, const TextureContext& ctx) {
+  const Vec3 q = pattern_point(pattern, ctx.p);
+  Vec3 v{0, 0, 0};
+  double f = 1;
+  for (int i = 0; i < 10; ++i, f *= 2) v += vector_noise(f * q, pattern.noise_generator) / f;
+  // Three times: raycast's vector noise is about a third as strong as POV-Ray's DNoise, whose
+  // wrinkles these are compared with (docs/textures.md "Normals").
+  const Vec3 t = pattern_vector(pattern, 3.0 * v);
+  Vec3 g{0, 0, 0};
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double l = length(ctx.axes[a]);
+    if (l > 0) g[a] = dot(t, ctx.axes[a]) / l;
+  }
+  return g;
+}
+
+}  // namespace
+
 Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
+  if (pattern.kind == PatternKind::kWrinkles) return wrinkles_normal(pattern, ctx);
   // A step of 0.02 of the pattern's size in texture space along each world axis (POV-Ray's
   // default normal `accuracy`): finer steps pick up the noise's smallest octaves as grain.
   double size = 1;
