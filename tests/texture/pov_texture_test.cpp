@@ -124,6 +124,22 @@ TEST(PovTexture, PlainTexturesKeepThePlainPath) {
   EXPECT_TRUE(material_of_object(s, 1).has_checker);
 }
 
+TEST(PovTexture, FormsTheTextureSystemDoesNotModelStillRead) {
+  // `metallic on`, an average map whose entries have no values, a normal made of a pigment
+  // pattern with its bump size after a comma, a warp other than turbulence.
+  std::vector<std::string> warnings;
+  const Scene s = load(
+      "sphere { 0, 1 finish { metallic on } }\n"
+      "sphere { 0, 1 pigment { average pigment_map { [function { x } color_map { [0 rgb 0] "
+      "[1 rgb 1] }] [bozo] } } }\n"
+      "sphere { 0, 1 pigment { rgb 1 } normal { pigment_pattern { brick rgb 1, rgb 0 } , 0.5 } }\n"
+      "sphere { 0, 1 pigment { bozo warp { repeat x } } }",
+      &warnings);
+  EXPECT_EQ(material_of_object(s, 0).texture->layers[0].finish.metallic, 1);
+  EXPECT_EQ(s.objects.size(), 4u);
+  EXPECT_FALSE(warnings.empty());
+}
+
 TEST(PovTexture, StandardIncludeTexturesLoadWithoutTextureWarnings) {
   constexpr const char* kIncludes = "/usr/share/povray-3.7/include";
   if (!std::filesystem::is_directory(kIncludes)) GTEST_SKIP() << kIncludes << " is absent";

@@ -136,6 +136,7 @@ class Interpreter {
   /// Reads a pattern modifier (turbulence, octaves, waves, frequency, warp ...) named w.
   bool pattern_modifier(const std::string& w, texture::Pattern& p);
   void warp_block(texture::Pattern& p);
+  /// Reads to the '}' that closes the block being read (its inner blocks included).
   void skip_warp_rest();
   /// A block pattern's colours or pigments (checker, brick, hexagon ...).
   void block_list(texture::Pattern& pattern, texture::Pigment& model, Pigment& p);

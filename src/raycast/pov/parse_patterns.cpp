@@ -126,7 +126,7 @@ void Interpreter::warp_block(texture::Pattern& p) {
 void Interpreter::skip_warp_rest() {
   int depth = 1;
   for (int guard = 0; depth > 0; ++guard) {
-    if (tok().kind == Token::End || guard > 1000000) fail_here("warp { is never closed");
+    if (tok().kind == Token::End || guard > 1000000) fail_here("a block is never closed");
     if (is_symbol("{")) ++depth;
     if (is_symbol("}")) --depth;
     next();
@@ -182,7 +182,10 @@ std::vector<texture::PigmentMapEntry> Interpreter::pigment_map_block() {
   while (!accept_symbol("}")) {
     if (!is_symbol("[")) unexpected("'[' to open a pigment map entry");
     next();
-    const double at = number("a pigment map value");
+    // The value may be left out (the entries of an `average` map are weights, 1 by default).
+    const double at = numeric_ahead() ? number("a pigment map value")
+                      : map.empty()   ? 0
+                                      : map.back().at + 1;
     skip_comma();
     const Pigment sub = pigment_body(Pigment{}, "]");
     map.push_back({at, sub.model
@@ -207,36 +210,37 @@ texture::Normal Interpreter::normal_block(const std::optional<texture::Normal>& 
     }
   }
   while (!accept_symbol("}")) {
+    if (accept_symbol(",")) continue;  // pattern_name { ... }, BUMP_SIZE
     const Token t = tok();
     const std::string& w = t.text;
-    if (t.kind != Token::Word) unexpected("a pattern or a modifier in normal");
-    if (const std::optional<texture::PatternKind> k = texture::pattern_kind(w)) {
+    const std::optional<texture::PatternKind> k =
+        t.kind == Token::Word ? texture::pattern_kind(w) : std::nullopt;
+    if (k) {
       next();
       start_pattern(*k, n.pattern);
       n.bump_size = numeric_ahead() ? number("the bump size") : 0.5;
       skip_comma();
-    } else if (w == "bump_size") {
+    } else if (t.kind == Token::Word && w == "bump_size") {
       next();
       n.bump_size = number("bump_size");
-    } else if (pattern_modifier(w, n.pattern)) {
-    } else if (w == "scale" || w == "translate" || w == "rotate" || w == "matrix" ||
-               w == "transform") {
+    } else if (t.kind == Token::Word && pattern_modifier(w, n.pattern)) {
+    } else if (t.kind == Token::Word && (w == "scale" || w == "translate" || w == "rotate" ||
+                                         w == "matrix" || w == "transform")) {
       std::vector<XformOp> ops;
       transform_item(ops);
       if (const std::optional<Transform> x = pov_transform(ops))
         texture::transform_pattern(n.pattern, *x);
-    } else if (w == "accuracy" || w == "slope_map" || w == "normal_map" || w == "bump_map" ||
-               w == "uv_mapping" || w == "no_bump_scale" || is_word("average") ||
-               is_pattern_word(w) || is_pattern_modifier_word(w)) {
+    } else if (t.kind == Token::Word && w == "accuracy") {
       next();
-      unsupported_warning(t.pos, "normal " + w, "the normal is left flat");
-      n.bump_size = 0;
-      if (is_symbol("{"))
-        skip_block(w);
-      else if (numeric_ahead())
-        expression();
+      number("accuracy");
     } else {
-      unexpected("a pattern or a modifier in normal");
+      // What the texture system does not model (slope_map, normal_map, bump_map, average,
+      // pigment_pattern, facets ...): the normal is left flat and the rest of the block read.
+      unsupported_warning(t.pos, "normal " + (t.kind == Token::Word ? w : std::string("items")),
+                          "the normal is left flat");
+      n.bump_size = 0;
+      skip_warp_rest();
+      return n;
     }
   }
   return n;

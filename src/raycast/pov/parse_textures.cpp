@@ -579,7 +579,11 @@ Finish Interpreter::finish_block(const Finish& base) {
       next(), f.crand = number("crand");
     } else if (w == "metallic") {
       next();
-      f.metallic = numeric_ahead() ? number("metallic") : 1;
+      if (is_word("on") || is_word("off") || is_word("true") || is_word("false") ||
+          is_word("yes") || is_word("no"))
+        f.metallic = boolean_option() ? 1 : 0;
+      else
+        f.metallic = numeric_ahead() ? number("metallic") : 1;
     } else if (w == "irid" || w == "subsurface" || w == "reflection_exponent") {
       next();
       if (w == "reflection_exponent")

@@ -124,15 +124,18 @@ double triangular(const Vec3& p) {
   return std::clamp(sector, 0.0, 5.0);
 }
 
+// Spirals about the z axis: the value grows by 1 per unit of radius and by `arms` per turn, so
+// a full turn crosses `arms` bands (the same along z).
 double spiral(const Vec3& p, double arms, int sign) {
   const double r = std::sqrt(p.x * p.x + p.y * p.y);
   const double theta = std::atan2(p.y, p.x) / kTwoPi;  // turns, in (-0.5, 0.5]
-  return r + p.z + sign * arms * theta;
+  return r + sign * arms * theta;
 }
 
 double quilted(const Vec3& p, double c0, double c1) {
+  // 1 at a unit cell's centre, 0 on its faces: the pillows of a quilt.
   auto dist = [](double v) { return std::abs(v - std::floor(v) - 0.5) * 2; };
-  const double t = std::max({dist(p.x), dist(p.y), dist(p.z)});
+  const double t = 1 - std::max({dist(p.x), dist(p.y), dist(p.z)});
   // The cubic Bezier from 0 to 1 with the two controls (POV-Ray's control0 and control1).
   const double s = 1 - t;
   return 3 * s * s * t * c0 + 3 * s * t * t * c1 + t * t * t;
