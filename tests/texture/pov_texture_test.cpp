@@ -124,6 +124,31 @@ TEST(PovTexture, PlainTexturesKeepThePlainPath) {
   EXPECT_TRUE(material_of_object(s, 1).has_checker);
 }
 
+TEST(PovTexture, PatternedTexturesPickAndBlendWholeTextures) {
+  std::vector<std::string> warnings;
+  const Scene s = load(
+      "sphere { 0, 1 texture { checker texture { pigment { rgb <1, 0, 0> } } "
+      "texture { pigment { rgb <0, 0, 1> } finish { phong 1 } } } }\n"
+      "sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 0 }] "
+      "[1 pigment { rgb 1 } finish { ambient 0.5 }] } scale 2 } }",
+      &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  const Material& checker = material_of_object(s, 0);
+  ASSERT_TRUE(checker.texture && checker.texture->map_pattern);
+  ASSERT_EQ(checker.texture->map.size(), 2u);
+  texture::TextureContext ctx;
+  ctx.p = checker.texture_transform.point({0.5, 0.5, 0});
+  EXPECT_NEAR(texture::pigment_color(*checker.texture, ctx.p).x, 1, 1e-12);
+  ctx.p = checker.texture_transform.point({1.5, 0.5, 0});
+  EXPECT_NEAR(texture::pigment_color(*checker.texture, ctx.p).z, 1, 1e-12);
+  EXPECT_EQ(texture::evaluate(*checker.texture, ctx).finish.phong, 1);
+  // The map blends: gradient x scaled by 2 is 0.25 at x = 0.5.
+  const Material& map = material_of_object(s, 1);
+  ctx.p = map.texture_transform.point({0.5, 0.3, 0});
+  EXPECT_NEAR(texture::pigment_color(*map.texture, ctx.p).y, 0.25, 1e-12);
+  EXPECT_NEAR(texture::evaluate(*map.texture, ctx).ambient.y, 0.25 * 0.5 + 0.75 * 0, 1e-12);
+}
+
 TEST(PovTexture, FormsTheTextureSystemDoesNotModelStillRead) {
   // `metallic on`, an average map whose entries have no values, a normal made of a pigment
   // pattern with its bump size after a comma, a warp other than turbulence.

@@ -23,8 +23,9 @@ bool needs_texture_system(const pov::Texture& t) {
   // mirror and the refracted ray.
   const bool clear = !t.pigment.model && t.pigment.c0.filter + t.pigment.c0.transmit > 0;
   const bool fresnel_glass = clear && t.finish.fresnel;
-  return (t.pigment.model && !plain_checker(t.pigment)) || (t.normal && t.normal->bump_size != 0) ||
-         !t.under.empty() || (!plain_finish(t.finish) && !fresnel_glass);
+  return t.map || (t.pigment.model && !plain_checker(t.pigment)) ||
+         (t.normal && t.normal->bump_size != 0) || !t.under.empty() ||
+         (!plain_finish(t.finish) && !fresnel_glass);
 }
 
 texture::Rgbft PovTextureBuilder::colour(const texture::Rgbft& c) const {
@@ -74,10 +75,23 @@ texture::TextureLayer PovTextureBuilder::layer(const pov::Texture& t) {
   return l;
 }
 
-std::shared_ptr<const texture::TextureStack> PovTextureBuilder::stack(const pov::Texture& t) {
+std::shared_ptr<const texture::TextureStack> PovTextureBuilder::stack(const pov::Texture& t,
+                                                                      int depth) {
   auto s = std::make_shared<texture::TextureStack>();
-  for (const pov::Texture& u : t.under) s->layers.push_back(layer(u));
-  s->layers.push_back(layer(t));
+  // A patterned texture is the map under the layers when it is the bottom one (or alone); a
+  // patterned layer higher up is drawn as its first texture (the nesting bound of the
+  // interpreter also bounds `depth`; the check keeps a hand-built description safe).
+  auto add = [&](const pov::Texture& u, bool bottom) {
+    if (u.map && bottom && depth < 64) {
+      s->map_pattern = u.map->pattern;
+      for (std::size_t i = 0; i < u.map->textures.size(); ++i)
+        s->map.push_back({u.map->at[i], stack(u.map->textures[i], depth + 1)});
+    } else {
+      s->layers.push_back(layer(u));
+    }
+  };
+  for (std::size_t i = 0; i < t.under.size(); ++i) add(t.under[i], i == 0);
+  add(t, t.under.empty());
   return s;
 }
 

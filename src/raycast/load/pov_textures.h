@@ -10,9 +10,10 @@
 
 namespace raycast {
 
-/// Whether a POV-Ray texture needs the texture system: a pattern (other than a checker of two
-/// colours under uniform scales, which the plain checker draws), a normal, layers, or a finish
-/// term plain materials lack (brilliance, metallic, crand, variable or metallic reflection).
+/// Whether a POV-Ray texture needs the texture system: a patterned texture, a pattern (other than a
+/// checker of two colours under uniform scales, which the plain checker draws), a normal, layers,
+/// or a finish term plain materials lack (brilliance, metallic, crand, variable or metallic
+/// reflection).
 bool needs_texture_system(const pov::Texture& t);
 
 class PovTextureBuilder {
@@ -22,7 +23,7 @@ class PovTextureBuilder {
 
   /// The stack for a texture and its layers; pigments shared between textures are converted
   /// once.
-  std::shared_ptr<const texture::TextureStack> stack(const pov::Texture& t);
+  std::shared_ptr<const texture::TextureStack> stack(const pov::Texture& t, int depth = 0);
 
  private:
   texture::TextureLayer layer(const pov::Texture& t);

@@ -123,6 +123,10 @@ class Interpreter {
 
   // ---- statements ----
   Texture texture_block(const Texture& base, int depth);
+  /// A texture's items up to `close` ("}" for a block, "]" for a texture map entry).
+  Texture texture_body(const Texture& base, int depth, const char* close);
+  /// texture_map { [v TEXTURE_ITEMS] ... } into `map`, sorted by value.
+  void texture_map_block(const Texture& base, int depth, TextureMap& map);
   Pigment pigment_block(const Pigment& base);
   /// A pigment's items up to `close` ("}" for a block, "]" for a pigment map entry).
   Pigment pigment_body(const Pigment& base, const char* close);

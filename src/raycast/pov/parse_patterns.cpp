@@ -249,6 +249,12 @@ texture::Normal Interpreter::normal_block(const std::optional<texture::Normal>& 
 void Interpreter::move_texture(Texture& t, const std::vector<XformOp>& ops) {
   const std::optional<Transform> x = pov_transform(ops);
   if (!x) fail_here("the texture's matrix cannot be inverted");
+  if (t.map) {
+    auto moved = std::make_shared<TextureMap>(*t.map);
+    texture::transform_pattern(moved->pattern, *x);
+    for (Texture& e : moved->textures) move_texture(e, ops);
+    t.map = std::move(moved);
+  }
   move_pigment(t.pigment, ops, *x);
   if (t.normal) texture::transform_pattern(t.normal->pattern, *x);
   for (Texture& u : t.under) move_texture(u, ops);

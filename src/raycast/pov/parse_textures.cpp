@@ -638,6 +638,10 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
   if (depth > kMaxPovNesting) fail_here("textures are nested too deeply");
   const NestingLevel level(*this);  // a texture's depth restarts in a value declared inside it
   expect_symbol("{", "after texture");
+  return texture_body(base, depth, "}");
+}
+
+Texture Interpreter::texture_body(const Texture& base, int depth, const char* close) {
   Texture t = base;
   t.name.clear();
   if (const std::optional<Value> v = declared(Value::Texture)) {
@@ -645,15 +649,17 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
     t = *v->texture;
     if (!t.ior) t.ior = ior;
   }
-  bool patterned = false, first_layer = true;
-  while (!accept_symbol("}")) {
+  std::optional<TextureMap> map;  // a patterned texture being read
+  while (!accept_symbol(close)) {
     const Token k = tok();
-    if (is_word("texture") && patterned) {  // the textures of a pattern: the first one shows
+    if (is_word("texture") && map) {  // the textures of a block pattern, in order
       next();
-      const Texture layer = texture_block(base, depth + 1);
-      if (first_layer) t = layer;
-      first_layer = false;
+      map->at.push_back(double(map->textures.size()));
+      map->textures.push_back(texture_block(base, depth + 1));
       skip_comma();
+    } else if (is_word("texture")) {  // a texture written whole inside a map entry
+      next();
+      t = texture_block(t, depth + 1);
     } else if (is_word("pigment")) {
       next();
       t.pigment = pigment_block(t.pigment);
@@ -665,36 +671,22 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
       t.normal = normal_block(t.normal);
     } else if (is_word("texture_map") || is_word("material_map")) {
       next();
-      unsupported_warning(k.pos, k.text, "the first texture is used");
-      expect_symbol("{", ("after " + k.text).c_str());
-      bool first = true;
-      int depth = 0;  // braces of an entry's own items: [0.2 pigment { Jade } finish { ... }]
-      while (depth > 0 || !accept_symbol("}")) {
-        if (is_symbol("{")) ++depth;
-        if (is_symbol("}")) --depth;
-        if (is_word("texture")) {
-          next();
-          const Texture layer = texture_block(base, depth + 1);
-          if (first) t = layer;
-          first = false;
-        } else {
-          if (tok().kind == Token::End) fail_here(k.text + " { is never closed");
-          if (tok().kind == Token::Word) {
-            if (const std::optional<Value> v = declared(Value::Texture)) {
-              if (first) t = *v->texture;
-              first = false;
-              continue;
-            }
-          }
-          next();
-        }
+      if (!map || k.text == "material_map") {
+        unsupported_warning(k.pos, k.text + " without a pattern", "the first texture is used");
+        map.emplace();
       }
-    } else if (k.kind == Token::Word && in(kPatterns, std::size(kPatterns), k.text)) {
+      texture_map_block(base, depth, *map);
+    } else if (k.kind == Token::Word && texture::pattern_kind(k.text)) {
       // a patterned texture (texture { gradient x texture_map { ... } })
       next();
-      unsupported_warning(k.pos, "patterned textures", "the first texture is used");
-      patterned = true;
+      if (!map) map.emplace();
+      start_pattern(*texture::pattern_kind(k.text), map->pattern);
+    } else if (k.kind == Token::Word && in(kPatterns, std::size(kPatterns), k.text)) {
+      next();
+      unsupported_warning(k.pos, "textures patterned by " + k.text, "the first texture is used");
+      if (!map) map.emplace();
       pattern_arguments(k, false);
+    } else if (k.kind == Token::Word && map && pattern_modifier(k.text, map->pattern)) {
     } else if (k.kind == Token::Word &&
                in(kPatternModifiers, std::size(kPatternModifiers), k.text)) {
       next();
@@ -709,12 +701,46 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
                 k.text == "matrix" || k.text == "transform")) {
       std::vector<XformOp> ops;
       transform_item(ops);
-      move_texture(t, ops);
+      if (map) {
+        if (const std::optional<Transform> x = pov_transform(ops))
+          texture::transform_pattern(map->pattern, *x);
+        for (Texture& e : map->textures) move_texture(e, ops);
+      } else {
+        move_texture(t, ops);
+      }
     } else {
       unexpected("pigment, finish, normal or a transformation in texture");
     }
   }
+  if (map && !map->textures.empty()) {
+    const std::optional<double> ior = t.ior;
+    t = Texture{};
+    t.ior = ior;
+    t.pigment = map->textures.front().pigment;  // what the YAML conversion shows
+    t.finish = map->textures.front().finish;
+    t.map = std::make_shared<const TextureMap>(std::move(*map));
+  }
   return t;
+}
+
+void Interpreter::texture_map_block(const Texture& base, int depth, TextureMap& map) {
+  expect_symbol("{", "after texture_map");
+  while (!accept_symbol("}")) {
+    if (!is_symbol("[")) unexpected("'[' to open a texture map entry");
+    next();
+    const double at = numeric_ahead()  ? number("a texture map value")
+                      : map.at.empty() ? 0
+                                       : map.at.back() + 1;
+    skip_comma();
+    if (depth + 1 > kMaxPovNesting) fail_here("textures are nested too deeply");
+    Texture entry = texture_body(base, depth + 1, "]");
+    // Entries are kept sorted by value (a stable insertion: equal values keep their order).
+    std::size_t i = map.at.size();
+    while (i > 0 && map.at[i - 1] > at) --i;
+    map.at.insert(map.at.begin() + std::ptrdiff_t(i), at);
+    map.textures.insert(map.textures.begin() + std::ptrdiff_t(i), std::move(entry));
+    if (map.at.size() > texture::kMaxMapEntries) fail_here("a texture map has at most 256 entries");
+  }
 }
 
 Texture Interpreter::material_block(const Texture& base, int depth) {

@@ -54,7 +54,17 @@ struct Finish {
   bool reflection_metallic = false;
 };
 
+struct Texture;
+/// A patterned texture: the pattern's value picks (block patterns) or blends (texture_map) the
+/// entries' textures, in POV-Ray's coordinates.
+struct TextureMap {
+  texture::Pattern pattern;
+  std::vector<double> at;
+  std::vector<Texture> textures;
+};
+
 struct Texture {
+  std::shared_ptr<const TextureMap> map;  // set: a patterned texture (pigment, normal unused)
   Pigment pigment;
   Finish finish;
   std::optional<double> ior;  // interior { ior }, carried with the texture (raycast's material)

@@ -54,15 +54,79 @@ void transform_layer(TextureLayer& layer, const Transform& t) {
 }
 
 bool TextureStack::may_transmit() const {
-  // The stack lets light through only where every layer does.
-  return !layers.empty() && std::all_of(layers.begin(), layers.end(), [](const TextureLayer& l) {
+  // The stack lets light through only where every layer does (and the map under them).
+  const bool layers_do = std::all_of(layers.begin(), layers.end(), [](const TextureLayer& l) {
     return texture::may_transmit(l.pigment);
   });
+  if (map_pattern)
+    return layers_do && std::any_of(map.begin(), map.end(), [](const TextureMapEntry& e) {
+             return e.texture && e.texture->may_transmit();
+           });
+  return !layers.empty() && layers_do;
 }
 
 bool TextureStack::has_normal() const {
   return std::any_of(layers.begin(), layers.end(),
-                     [](const TextureLayer& l) { return l.normal.has_value(); });
+                     [](const TextureLayer& l) { return l.normal.has_value(); }) ||
+         std::any_of(map.begin(), map.end(),
+                     [](const TextureMapEntry& e) { return e.texture && e.texture->has_normal(); });
+}
+
+namespace {
+
+// The map's entries around the pattern's value at p: a block pattern's entry k alone, else the
+// two neighbours and the weight of the second (a colour map's rule). Null entries when none.
+struct MapPick {
+  const TextureStack* a = nullptr;
+  const TextureStack* b = nullptr;
+  double t = 0;
+};
+MapPick pick(const TextureStack& texture, const Vec3& p) {
+  const std::vector<TextureMapEntry>& map = texture.map;
+  if (map.empty()) return {};
+  const double v = evaluate(*texture.map_pattern, p);
+  const int blocks = block_count(texture.map_pattern->kind);
+  if (blocks > 0) {
+    const auto k =
+        std::size_t(std::clamp(std::lround(v * double(blocks - 1)), 0L, long(map.size()) - 1));
+    return {map[k].texture.get(), nullptr, 0};
+  }
+  if (!(v > map.front().at)) return {map.front().texture.get(), nullptr, 0};
+  if (v >= map.back().at) return {map.back().texture.get(), nullptr, 0};
+  std::size_t i = 1;
+  while (map[i].at <= v) ++i;
+  const double span = map[i].at - map[i - 1].at;
+  if (!(span > 0)) return {map[i].texture.get(), nullptr, 0};
+  return {map[i - 1].texture.get(), map[i].texture.get(), (v - map[i - 1].at) / span};
+}
+
+Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + t * (b - a); }
+
+SurfaceLook blend(const SurfaceLook& a, const SurfaceLook& b, double t) {
+  SurfaceLook out = t < 0.5 ? a : b;  // sizes, flags: the nearer entry's
+  out.ambient = lerp(a.ambient, b.ambient, t);
+  out.diffuse = lerp(a.diffuse, b.diffuse, t);
+  out.pigment = lerp(a.pigment, b.pigment, t);
+  out.through = lerp(a.through, b.through, t);
+  auto mix_value = [t](double x, double y) { return x + t * (y - x); };
+  out.finish.phong = mix_value(a.finish.phong, b.finish.phong);
+  out.finish.specular = mix_value(a.finish.specular, b.finish.specular);
+  out.finish.brilliance = mix_value(a.finish.brilliance, b.finish.brilliance);
+  out.finish.reflection_min = mix_value(a.finish.reflection_min, b.finish.reflection_min);
+  out.finish.reflection_max = mix_value(a.finish.reflection_max, b.finish.reflection_max);
+  const Vec3 n = lerp(a.normal, b.normal, t);
+  const double l = length(n);
+  if (l > 0) out.normal = n / l;
+  return out;
+}
+
+}  // namespace
+
+SurfaceLook mapped_look(const TextureStack& texture, const TextureContext& ctx) {
+  const MapPick m = pick(texture, ctx.p);
+  if (!m.a) return {};
+  const SurfaceLook a = evaluate(*m.a, ctx);
+  return m.b ? blend(a, evaluate(*m.b, ctx), m.t) : a;
 }
 
 namespace {
@@ -151,6 +215,19 @@ SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
     if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
   }
+  if (texture.map_pattern && (through.x > 0 || through.y > 0 || through.z > 0)) {
+    // The patterned texture under the layers, seen through them.
+    const SurfaceLook base = mapped_look(texture, ctx);
+    const double vis = average(through);
+    look.ambient += mul(through, base.ambient);
+    look.diffuse += mul(through, base.diffuse);
+    look.pigment += mul(through, base.pigment);
+    diffuse_weight += vis;
+    brilliance += vis * base.finish.brilliance;
+    add_finish(base.finish, vis, f, strongest);
+    tilt += vis * (ctx.n - base.normal);
+    through = mul(through, base.through);
+  }
   f.brilliance = diffuse_weight > 0 ? brilliance / diffuse_weight : 1;
   if (f.crand > 0) look.diffuse *= 1 - std::min(1.0, f.crand) * grain(ctx.p);
   look.through = through;
@@ -172,7 +249,11 @@ Vec3 pigment_color(const TextureStack& texture, const Vec3& p) {
     const Rgbft c = evaluate(it->pigment, p);
     sum += std::clamp(1 - c.filter - c.transmit, 0.0, 1.0) * mul(through, c.rgb);
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
-    if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
+    if (!(through.x > 0 || through.y > 0 || through.z > 0)) return sum;
+  }
+  if (const MapPick m = texture.map_pattern ? pick(texture, p) : MapPick{}; m.a) {
+    const Vec3 a = pigment_color(*m.a, p);
+    sum += mul(through, m.b ? lerp(a, pigment_color(*m.b, p), m.t) : a);
   }
   return sum;
 }
@@ -182,7 +263,11 @@ Vec3 transmittance(const TextureStack& texture, const Vec3& p) {
   for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
     const Rgbft c = evaluate(it->pigment, p);
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
-    if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
+    if (!(through.x > 0 || through.y > 0 || through.z > 0)) return through;
+  }
+  if (const MapPick m = texture.map_pattern ? pick(texture, p) : MapPick{}; m.a) {
+    const Vec3 a = transmittance(*m.a, p);
+    through = mul(through, m.b ? lerp(a, transmittance(*m.b, p), m.t) : a);
   }
   return through;
 }

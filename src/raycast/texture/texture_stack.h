@@ -2,6 +2,7 @@
 // Textures (docs/textures.md): layers of pigment, normal perturbation and finish, evaluated at a
 // surface point through one context. A texture of several layers shows each lower layer through
 // the filter and transmit of the layers above it (POV-Ray's layered textures).
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -28,9 +29,19 @@ struct TextureLayer {
 /// Moves a layer's pigment and normal by t (POV-Ray's transformations of a texture).
 void transform_layer(TextureLayer& layer, const Transform& t);
 
+struct TextureStack;
+struct TextureMapEntry {
+  double at = 0;
+  std::shared_ptr<const TextureStack> texture;
+};
+
 struct TextureStack {
-  std::vector<TextureLayer> layers;  // the bottom layer first
-  bool may_transmit() const;         // some layer shows what is behind the surface
+  std::vector<TextureLayer> layers;  // the bottom layer first (over the map, when there is one)
+  // A patterned texture under the layers: the pattern's value picks (block patterns) or blends
+  // (sorted entries, as a colour map) whole textures.
+  std::optional<Pattern> map_pattern;
+  std::vector<TextureMapEntry> map;
+  bool may_transmit() const;  // some point shows what is behind the surface
   bool has_normal() const;
 };
 
@@ -58,6 +69,8 @@ struct SurfaceLook {
 };
 
 SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx);
+/// The look of a stack's map alone (its entries picked or blended at ctx.p); empty without one.
+SurfaceLook mapped_look(const TextureStack& texture, const TextureContext& ctx);
 
 /// The colour the layers show at p, each seen through the filter and transmit of those above
 /// (the albedo output and the raycast integrator's colour).
