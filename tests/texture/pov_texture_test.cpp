@@ -158,10 +158,11 @@ TEST(PovTexture, FormsTheTextureSystemDoesNotModelStillRead) {
       "sphere { 0, 1 pigment { average pigment_map { [function { x } color_map { [0 rgb 0] "
       "[1 rgb 1] }] [bozo] } } }\n"
       "sphere { 0, 1 pigment { rgb 1 } normal { pigment_pattern { brick rgb 1, rgb 0 } , 0.5 } }\n"
-      "sphere { 0, 1 pigment { bozo warp { repeat x } } }",
+      "sphere { 0, 1 pigment { bozo warp { repeat x } } }\n"
+      "sphere { 0, 1 texture { material_map { png \"m.png\" texture { pigment { rgb 1 } } } } }",
       &warnings);
   EXPECT_EQ(material_of_object(s, 0).texture->layers[0].finish.metallic, 1);
-  EXPECT_EQ(s.objects.size(), 4u);
+  EXPECT_EQ(s.objects.size(), 5u);
   EXPECT_FALSE(warnings.empty());
 }
 

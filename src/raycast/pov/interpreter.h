@@ -127,6 +127,9 @@ class Interpreter {
   Texture texture_body(const Texture& base, int depth, const char* close);
   /// texture_map { [v TEXTURE_ITEMS] ... } into `map`, sorted by value.
   void texture_map_block(const Texture& base, int depth, TextureMap& map);
+  /// The first texture of a block holding textures among other items (material_map).
+  std::optional<Texture> first_texture_in_block(const Texture& base, int depth,
+                                                const std::string& what);
   Pigment pigment_block(const Pigment& base);
   /// A pigment's items up to `close` ("}" for a block, "]" for a pigment map entry).
   Pigment pigment_body(const Pigment& base, const char* close);

@@ -669,10 +669,14 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
     } else if (is_word("normal")) {
       next();
       t.normal = normal_block(t.normal);
-    } else if (is_word("texture_map") || is_word("material_map")) {
+    } else if (is_word("material_map")) {
       next();
-      if (!map || k.text == "material_map") {
-        unsupported_warning(k.pos, k.text + " without a pattern", "the first texture is used");
+      unsupported_warning(k.pos, k.text, "the first texture is used");
+      if (std::optional<Texture> first = first_texture_in_block(base, depth, k.text)) t = *first;
+    } else if (is_word("texture_map")) {
+      next();
+      if (!map) {
+        unsupported_warning(k.pos, "texture_map without a pattern", "the first texture is used");
         map.emplace();
       }
       texture_map_block(base, depth, *map);
@@ -721,6 +725,32 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
     t.map = std::make_shared<const TextureMap>(std::move(*map));
   }
   return t;
+}
+
+std::optional<Texture> Interpreter::first_texture_in_block(const Texture& base, int depth,
+                                                           const std::string& what) {
+  expect_symbol("{", ("after " + what).c_str());
+  std::optional<Texture> first;
+  int braces = 0;  // of the items between the textures (an image's file, its options)
+  while (braces > 0 || !accept_symbol("}")) {
+    if (is_symbol("{")) ++braces;
+    if (is_symbol("}")) --braces;
+    if (is_word("texture")) {
+      next();
+      Texture layer = texture_block(base, depth + 1);
+      if (!first) first = std::move(layer);
+      continue;
+    }
+    if (tok().kind == Token::End) fail_here(what + " { is never closed");
+    if (tok().kind == Token::Word) {
+      if (const std::optional<Value> v = declared(Value::Texture)) {
+        if (!first) first = *v->texture;
+        continue;
+      }
+    }
+    next();
+  }
+  return first;
 }
 
 void Interpreter::texture_map_block(const Texture& base, int depth, TextureMap& map) {
