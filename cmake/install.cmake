@@ -43,7 +43,8 @@ set(raycast_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/raycast)
 install(EXPORT raycastTargets NAMESPACE raycast:: DESTINATION ${raycast_cmake_dir})
 
 # The config finds what the static libraries link against.
-set(raycast_deps "find_dependency(yaml-cpp)\nfind_dependency(TBB)\nfind_dependency(PNG)\n")
+set(raycast_deps "list(APPEND CMAKE_MODULE_PATH \${CMAKE_CURRENT_LIST_DIR})
+find_dependency(yaml-cpp)\nfind_dependency(LibYAML)\nfind_dependency(TBB)\nfind_dependency(PNG)\n")
 # OpenVDB, assimp and OpenEXR are used through plugins (lib/raycast/libraycast_*.so), loaded at
 # run time: users link nothing of them.
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/raycastConfig.cmake.in
@@ -51,9 +52,10 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/raycastConfig.cmake.in
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/raycastConfig.cmake
-  ${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake DESTINATION ${raycast_cmake_dir})
+  ${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake ${PROJECT_SOURCE_DIR}/cmake/FindLibYAML.cmake
+  DESTINATION ${raycast_cmake_dir})
 
-set(raycast_pc_requires "yaml-cpp tbb libpng")
+set(raycast_pc_requires "yaml-cpp yaml-0.1 tbb libpng")
 set(raycast_pc_extra "")
 foreach(lib ${CMAKE_DL_LIBS})  # the plugin loader (io/plugin_library.cpp)
   string(APPEND raycast_pc_extra " -l${lib}")

@@ -96,6 +96,20 @@ TEST(PovInterpreter, LongLoopDoesNotGrowTheStack) {
             "200000");
 }
 
+TEST(PovInterpreter, LoopTokensReadAgain_KeepTheirValuesAndPositions) {
+  // The third iteration reads its tokens from the cache of the first two; its error must be the
+  // one the same text gives when it fails on a first reading.
+  const std::string body =
+      "#while (I < 5)\n  #debug str(A[I], 0, 0)\n  #declare I = I + 1;\n#end\n";
+  const std::string head = "#declare A = array[2] {7, 8}\n";
+  const std::string again = error_of(head + "#declare I = 0;\n" + body);
+  const std::string first = error_of(head + "#declare I = 2;\n" + body);
+  EXPECT_FALSE(first.empty());
+  EXPECT_EQ(again, first);
+  EXPECT_EQ(first, "t.pov:4:16: array index 2 out of range [0, 1]");
+  EXPECT_EQ(debug_of("#macro M(X) str(X * 2, 0, 0) #end\n#for (K, 1, 3) #debug M(K) #end"), "246");
+}
+
 TEST(PovInterpreter, EndlessLoopStopsAtItsLine) {
   Options o;
   o.limits.loop_iterations = 1000;
@@ -141,6 +155,14 @@ TEST(PovInterpreter, DeeplyNestedParentheses_AreAPositionedError) {
   const std::string fine =
       "#declare A = " + std::string(40, '(') + "1" + std::string(40, ')') + ";";
   EXPECT_EQ(error_of(fine), "");
+}
+
+// A macro whose body holds the value's `;` (`#if (C) Q; #else ... #end`): the #local that
+// called it still names the caller's scope (POV-Ray's tracevines.pov).
+TEST(PovInterpreter, LocalFromAMacroHoldingTheSemicolon_IsTheCallersLocal) {
+  EXPECT_EQ(debug_of("#macro Find(C) #local Q = 7; #if (C) Q; #else 0; #end #end\n"
+                     "#macro Outer() #local N = Find(1) #debug str(N, 0, 0) #end\nOuter()"),
+            "7");
 }
 
 // Pinned fuzz finding: a directive inside a directive's value (`#declare A = #declare B = ...`)

@@ -20,9 +20,9 @@ void check_bounded(Fields& f, const char* key, const Vec3& v) {
 }  // namespace
 
 CameraDesc parse_camera_request(const std::string& body, const CameraDesc& current) {
-  const YAML::Node root = parse_request_object(body, 4096);
+  const YamlDocument request = parse_request_object(body, 4096);
   const SourceContext ctx{"request", "."};
-  Fields f(ctx, root, "camera");
+  Fields f(ctx, request.root(), "camera");
   CameraDesc c = current;
   const std::string type =
       f.string("type", current.type == CameraType::kOrthographic ? "orthographic" : "perspective");

@@ -72,9 +72,9 @@ struct PixelRequest {
 // body is bad, the scene has not loaded or the pixel lies outside the image.
 bool read_pixel_request(PreviewLoop& loop, std::size_t max_body, const httplib::Request& req,
                         httplib::Response& res, const char* what, PixelRequest& p) {
-  const YAML::Node root = parse_request_object(req.body, max_body);
+  const YamlDocument request = parse_request_object(req.body, max_body);
   const SourceContext ctx{"request", "."};
-  Fields f(ctx, root, what);
+  Fields f(ctx, request.root(), what);
   p.x = f.number("x"), p.y = f.number("y");
   f.finish();
   p.scene = loop.scene(&p.camera);
@@ -242,9 +242,9 @@ void add_request_routes(httplib::Server& server, PreviewLoop& loop, std::size_t 
   server.Post("/integrator",
               [&loop, max_body](const httplib::Request& req, httplib::Response& res) {
                 guarded(res, [&] {
-                  const YAML::Node root = parse_request_object(req.body, max_body);
+                  const YamlDocument request = parse_request_object(req.body, max_body);
                   const SourceContext ctx{"request", "."};
-                  Fields f(ctx, root, "request");
+                  Fields f(ctx, request.root(), "request");
                   const std::string name = f.string("integrator");
                   f.finish();
                   if (const std::optional<RenderMode> mode = integrator_named(name)) {

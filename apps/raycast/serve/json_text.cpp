@@ -41,13 +41,13 @@ std::string json_vec3(const Vec3& v) {
   return out.str();
 }
 
-YAML::Node parse_request_object(const std::string& body, std::size_t max_bytes) {
+YamlDocument parse_request_object(const std::string& body, std::size_t max_bytes) {
   if (body.size() > max_bytes)
     throw SceneError("request", 0, 0,
                      "the body is larger than " + std::to_string(max_bytes) + " bytes");
-  const YAML::Node node = parse_yaml(body, "request", 3);
-  if (!node.IsMap()) throw SceneError("request", 1, 1, "the body must be a JSON object");
-  return node;
+  YamlDocument doc = parse_yaml(body, "request", 3);
+  if (!doc.root().IsMap()) throw SceneError("request", 1, 1, "the body must be a JSON object");
+  return doc;
 }
 
 }  // namespace raycast::serve

@@ -1,9 +1,8 @@
 #pragma once
 // The little JSON the server writes (state, pick answers) and reads (request bodies).
-#include <yaml-cpp/yaml.h>
-
 #include <string>
 
+#include "load/yaml_node.h"
 #include "math/vec3.h"
 
 namespace raycast::serve {
@@ -17,6 +16,6 @@ std::string json_vec3(const Vec3& v);
 
 /// Parses a request body that must be a JSON (or YAML flow) mapping, at most `max_bytes` long and
 /// nested at most 3 deep. Throws SceneError (file "request") with the position of the problem.
-YAML::Node parse_request_object(const std::string& body, std::size_t max_bytes);
+YamlDocument parse_request_object(const std::string& body, std::size_t max_bytes);
 
 }  // namespace raycast::serve

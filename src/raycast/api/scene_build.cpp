@@ -9,6 +9,7 @@
 #include "io/mesh_file.h"
 #include "load/loader.h"
 #include "load/shape_parsers.h"
+#include "load/yaml_prescan.h"
 #include "objects/csg_tree.h"
 #include "volume/isosurface.h"
 #include "volume/splat.h"
@@ -156,12 +157,9 @@ ObjectId Scene::add_shape(std::string_view key, std::string_view fields) {
   if (it == parsers.end()) bad("add_shape", "unknown shape '" + k + "'");
   try {
     const raycast::SourceContext ctx{call, "."};
-    YAML::Node node;
-    try {
-      node = YAML::Load(std::string(fields));
-    } catch (const YAML::Exception& e) {
-      throw raycast::SceneError(call, e.mark.line + 1, e.mark.column + 1, e.msg);
-    }
+    const raycast::YamlDocument doc =
+        raycast::parse_yaml(std::string(fields), call, raycast::kMaxNesting);
+    const raycast::YamlNode node = doc.root();
     if (!node.IsMap()) raycast::fail_at(ctx, node, k + " needs a mapping of its fields");
     raycast::Fields f(ctx, node, k);
     raycast::ShapeVariant shape;

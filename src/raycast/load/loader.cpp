@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/shape_error.h"
+#include "io/huge_pages.h"
 #include "io/scene_file.h"
 #include "load/pov_loader.h"
 #include "load/read_materials.h"
@@ -32,7 +33,7 @@ class Loader {
     ctx_.files = &scene_.marks.files;
   }
 
-  void load(const YAML::Node& root) {
+  void load(const YamlNode& root) {
     if (root.IsNull())
       throw SceneError(ctx_.file, 0, 0, "the scene is empty (expected a mapping with `objects`)");
     Fields top(ctx_, root, "scene");
@@ -47,11 +48,17 @@ class Loader {
     if (top.has("materials")) read_materials(top.required("materials"));
     if (top.has("lights")) read_lights(top.required("lights"));
     if (top.has("library")) read_library(top.required("library"));
-    const YAML::Node objects = top.required("objects");
+    const YamlNode objects = top.required("objects");
     top.finish();
     if (!objects.IsSequence())
       fail_at(ctx_, objects, "objects must be a list, got " + describe(objects));
-    for (const YAML::Node& entry : objects) {
+    // One object per entry in most scenes: the vector grows once, not by copies of its objects
+    // (up to a bound, so that a long list of anything but objects reserves no gigabytes).
+    constexpr std::size_t kMaxReserved = std::size_t{1} << 20;
+    scene_.objects.reserve(scene_.objects.size() + std::min(objects.size(), kMaxReserved));
+    advise_huge_pages(scene_.objects.data(), scene_.objects.capacity() * sizeof(Object));
+    scene_.marks.entries.reserve(std::min(objects.size(), kMaxReserved));
+    for (const YamlNode& entry : objects) {
       scene_.marks.entries.push_back(mark_of(entry));
       read_object(entry, 0, scene_.entries, Placement{}, scene_.objects);
       ++scene_.entries;
@@ -59,34 +66,34 @@ class Loader {
   }
 
  private:
-  static SourceMark mark_of(const YAML::Node& node) {
+  static SourceMark mark_of(const YamlNode& node) {
     return {node.Mark().line + 1, node.Mark().column + 1};
   }
 
-  void read_materials(const YAML::Node& node) {
+  void read_materials(const YamlNode& node) {
     if (!node.IsMap()) fail_at(ctx_, node, "materials must be a mapping of names to materials");
-    for (const auto& kv : node) {
-      const std::string name = kv.first.as<std::string>();
+    for (const YamlPair& kv : pairs_of(node)) {
+      const std::string name = key_text(ctx_, kv.key());
       if (named_materials_.count(name))
-        fail_at(ctx_, kv.first, "material '" + name + "' is defined twice");
+        fail_at(ctx_, kv.key(), "material '" + name + "' is defined twice");
       named_materials_[name] = static_cast<int>(scene_.materials.size());
-      scene_.materials.push_back(read_material(ctx_, kv.second, name));
+      scene_.materials.push_back(read_material(ctx_, kv.value(), name));
     }
   }
 
-  void read_lights(const YAML::Node& node) {
+  void read_lights(const YamlNode& node) {
     if (!node.IsSequence()) fail_at(ctx_, node, "lights must be a list");
-    for (const YAML::Node& l : node) {
+    for (const YamlNode& l : node) {
       scene_.lights.push_back(read_light(ctx_, l));
       scene_.marks.lights.push_back(mark_of(l));
     }
   }
 
-  int read_material_ref(const YAML::Node& node) {
+  int read_material_ref(const YamlNode& node) {
     if (node.IsScalar()) {
       const auto it = named_materials_.find(node.Scalar());
       if (it == named_materials_.end())
-        fail_at(ctx_, node, "unknown material '" + node.Scalar() + "'");
+        fail_at(ctx_, node, "unknown material '" + std::string(node.Scalar()) + "'");
       return it->second;
     }
     scene_.materials.push_back(read_material(ctx_, node, ""));
@@ -100,7 +107,7 @@ class Loader {
     int material = 0;
   };
 
-  Placement place(const YAML::Node& node, const Placement& parent) {
+  Placement place(const YamlNode& node, const Placement& parent) {
     Placement p;
     p.material = node["material"] ? read_material_ref(node["material"]) : parent.material;
     p.xf = parent.xf;
@@ -120,32 +127,32 @@ class Loader {
   }
 
   // The one shape or compound key of an object mapping, and its node (for positions).
-  std::pair<std::string, YAML::Node> object_key(const YAML::Node& node, int depth) {
+  std::pair<std::string, YamlNode> object_key(const YamlNode& node, int depth) {
     if (depth > kMaxNesting)
       fail_at(ctx_, node, "objects are nested deeper than " + std::to_string(kMaxNesting));
     if (!node.IsMap())
       fail_at(ctx_, node, "an object must be a mapping with one shape key, got " + describe(node));
     std::string shape_key;
-    YAML::Node key_node;
-    for (const auto& kv : node) {
-      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "";
+    YamlNode key_node;
+    for (const YamlPair& kv : pairs_of(node)) {
+      const std::string key(kv.key().Scalar());
       if (key == "name" || key == "material" || key == "transform") continue;
       if (!shape_parsers().count(key) && !is_compound_key(key))
-        fail_at(ctx_, kv.first,
-                "unknown key '" + describe(kv.first) + "' in object (expected a shape, " +
+        fail_at(ctx_, kv.key(),
+                "unknown key '" + describe(kv.key()) + "' in object (expected a shape, " +
                     kCompoundKeys + " or " + kObjectKeys + ")");
       if (!shape_key.empty())
-        fail_at(ctx_, kv.first,
+        fail_at(ctx_, kv.key(),
                 "an object has exactly one shape key; found " + shape_key + " and " + key);
       shape_key = key;
-      key_node = kv.first;
+      key_node = kv.key();
     }
     if (shape_key.empty()) fail_at(ctx_, node, "object has no shape key");
     return {shape_key, key_node};
   }
 
   // One primitive shape, placed.
-  Object read_shape(const YAML::Node& node, const std::string& key, const Placement& here,
+  Object read_shape(const YamlNode& node, const std::string& key, const Placement& here,
                     int entry) {
     // Library entries using each other twice at every level would grow exponentially: bound it.
     if (copying_ > 0 && ++expanded_ > kMaxExpandedObjects)
@@ -192,31 +199,31 @@ class Loader {
     bool counts_;
   };
 
-  const YAML::Node& library_entry(const YAML::Node& use) {
+  const YamlNode& library_entry(const YamlNode& use) {
     if (!use.IsScalar()) fail_at(ctx_, use, "use must name a library entry, got " + describe(use));
     const auto it = library_.find(use.Scalar());
-    if (it == library_.end()) fail_at(ctx_, use, "unknown library entry '" + use.Scalar() + "'");
-    const auto cycle = std::find(expanding_.begin(), expanding_.end(), use.Scalar());
+    const std::string name(use.Scalar());
+    if (it == library_.end()) fail_at(ctx_, use, "unknown library entry '" + name + "'");
+    const auto cycle = std::find(expanding_.begin(), expanding_.end(), name);
     if (cycle != expanding_.end()) {
       std::string path;
       for (auto k = cycle; k != expanding_.end(); ++k) path += *k + " -> ";
-      fail_at(ctx_, use,
-              "library entry '" + use.Scalar() + "' uses itself (" + path + use.Scalar() + ")");
+      fail_at(ctx_, use, "library entry '" + name + "' uses itself (" + path + name + ")");
     }
     return it->second;
   }
 
   // Reads one entry of `objects` (or a child of a group, or a library entry) and appends what it
   // makes to `out`: groups are flattened, each child keeping `entry`.
-  void read_object(const YAML::Node& node, int depth, int entry, const Placement& parent,
+  void read_object(const YamlNode& node, int depth, int entry, const Placement& parent,
                    std::vector<Object>& out) {
     const auto [key, key_node] = object_key(node, depth);
     const Placement here = place(node, parent);
-    const YAML::Node body = node[key];
+    const YamlNode body = node[key];
     if (key == "group") {
       if (!body.IsSequence())
         fail_at(ctx_, body, "group must be a list of objects, got " + describe(body));
-      for (const YAML::Node& child : body) read_object(child, depth + 1, entry, here, out);
+      for (const YamlNode& child : body) read_object(child, depth + 1, entry, here, out);
     } else if (is_csg_key(key)) {
       CsgTree tree;
       read_csg_operation(body, key, depth, tree, Placement{std::nullopt, -1});
@@ -227,15 +234,15 @@ class Loader {
       obj.entry = entry;
       out.push_back(std::move(obj));
     } else if (key == "use") {
-      const YAML::Node& def = library_entry(body);
+      const YamlNode& def = library_entry(body);
       if (!expanding_.empty()) {
         // Inside a library entry: expanded in place, so that prototypes never hold instances.
-        const Expansion guard(*this, body.Scalar(), true);
+        const Expansion guard(*this, std::string(body.Scalar()), true);
         read_object(def, depth + 1, entry, here, out);
         return;
       }
       Object obj;
-      obj.shape = InstanceShape{prototypes_.at(body.Scalar())};
+      obj.shape = InstanceShape{prototypes_.find(body.Scalar())->second};
       obj.xf = here.xf;
       obj.material = here.material;
       obj.entry = entry;
@@ -246,7 +253,7 @@ class Loader {
   }
 
   // Adds the operation `key` over the list `body` to the tree and returns its node code.
-  std::int32_t read_csg_operation(const YAML::Node& body, const std::string& key, int depth,
+  std::int32_t read_csg_operation(const YamlNode& body, const std::string& key, int depth,
                                   CsgTree& tree, const Placement& here) {
     if (!body.IsSequence() || body.size() == 0)
       fail_at(ctx_, body, key + " must be a non-empty list of solids, got " + describe(body));
@@ -255,7 +262,7 @@ class Loader {
     tree.nodes[index].op = key == "intersection" ? CsgOp::kIntersection
                            : key == "difference" ? CsgOp::kDifference
                                                  : CsgOp::kUnion;  // union, or a group inside CSG
-    for (const YAML::Node& child : body) {
+    for (const YamlNode& child : body) {
       const std::int32_t code = read_csg_operand(child, depth + 1, tree, here);
       tree.nodes[index].operands.push_back(code);
     }
@@ -264,15 +271,15 @@ class Loader {
 
   // One operand of a CSG operation: a closed solid, a nested operation, a group (its union) or a
   // `use` (expanded in place). Transforms are relative to the CSG object.
-  std::int32_t read_csg_operand(const YAML::Node& node, int depth, CsgTree& tree,
+  std::int32_t read_csg_operand(const YamlNode& node, int depth, CsgTree& tree,
                                 const Placement& parent) {
     const auto [key, key_node] = object_key(node, depth);
     const Placement here = place(node, parent);
     if (is_csg_key(key) || key == "group")
       return read_csg_operation(node[key], key, depth, tree, here);
     if (key == "use") {
-      const YAML::Node& def = library_entry(node[key]);
-      const Expansion guard(*this, node[key].Scalar(), true);
+      const YamlNode& def = library_entry(node[key]);
+      const Expansion guard(*this, std::string(node[key].Scalar()), true);
       return read_csg_operand(def, depth + 1, tree, here);
     }
     Object leaf = read_shape(node, key, here, -1);
@@ -284,20 +291,20 @@ class Loader {
 
   // The top-level `library:` map: every entry is read (so its errors show even when unused) and
   // built once into a shared prototype.
-  void read_library(const YAML::Node& node) {
+  void read_library(const YamlNode& node) {
     if (!node.IsMap())
       fail_at(ctx_, node, "library must be a mapping of names to objects, got " + describe(node));
     std::vector<std::string> order;  // file order, so that the first mistake is reported first
-    for (const auto& kv : node) {
-      if (!kv.first.IsScalar()) fail_at(ctx_, kv.first, "a library name must be text");
-      const std::string name = kv.first.Scalar();
+    for (const YamlPair& kv : pairs_of(node)) {
+      if (!kv.key().IsScalar()) fail_at(ctx_, kv.key(), "a library name must be text");
+      const std::string name(kv.key().Scalar());
       if (library_.count(name))
-        fail_at(ctx_, kv.first, "library entry '" + name + "' is defined twice");
-      library_[name] = kv.second;
+        fail_at(ctx_, kv.key(), "library entry '" + name + "' is defined twice");
+      library_[name] = kv.value();
       order.push_back(name);
     }
     for (const std::string& name : order) {
-      const YAML::Node def = library_.at(name);
+      const YamlNode def = library_.at(name);
       std::vector<Object> objects;
       {
         const Expansion guard(*this, name, false);
@@ -309,30 +316,35 @@ class Loader {
 
   SourceContext ctx_;
   Scene& scene_;
-  std::map<std::string, int> named_materials_;
-  std::map<std::string, YAML::Node> library_;
-  std::map<std::string, std::shared_ptr<const Prototype>> prototypes_;
+  std::map<std::string, int, std::less<>> named_materials_;
+  std::map<std::string, YamlNode, std::less<>> library_;
+  std::map<std::string, std::shared_ptr<const Prototype>, std::less<>> prototypes_;
   std::vector<std::string> expanding_;  // library entries being read, innermost last
   int copying_ = 0;                     // > 0 while a `use` is being copied in place
   std::size_t expanded_ = 0;            // shapes read while copying
 };
 
-}  // namespace
-
-Scene load_scene_text(const std::string& text, const std::string& name, const std::string& dir,
+// load_scene_text with the text handed over: the parsed document keeps it (its scalars are views
+// of it), without a copy of a large file.
+Scene load_owned_text(std::string text, const std::string& name, const std::string& dir,
                       int frame) {
   Scene scene;
   scene.source = name;
   SourceContext ctx{name, dir, frame};
-  const YAML::Node root = parse_yaml(text, name, kMaxNesting);
-  try {
-    Loader(ctx, scene).load(root);
-  } catch (const YAML::Exception& e) {
-    // A conversion the typed readers did not anticipate: still report it with its position.
-    throw SceneError(name, e.mark.line + 1, e.mark.column + 1, e.msg);
+  {
+    // The nodes are freed before the acceleration structure is built: they are the larger.
+    const YamlDocument doc = parse_yaml(std::move(text), name, kMaxNesting);
+    Loader(ctx, scene).load(doc.root());
   }
   scene.build();
   return scene;
+}
+
+}  // namespace
+
+Scene load_scene_text(const std::string& text, const std::string& name, const std::string& dir,
+                      int frame) {
+  return load_owned_text(text, name, dir, frame);
 }
 
 Scene load_scene_file(const std::string& path, int frame) {
@@ -340,12 +352,12 @@ Scene load_scene_file(const std::string& path, int frame) {
     std::stringstream ss;
     ss << std::cin.rdbuf();
     if (std::cin.bad()) throw SceneError("<stdin>", 0, 0, "cannot read the scene");
-    return load_scene_text(ss.str(), "<stdin>", ".", frame);
+    return load_owned_text(std::move(ss).str(), "<stdin>", ".", frame);
   }
   if (is_pov_path(path))
     return load_pov_scene_file(path, frame, default_pov_options());  // docs/pov-import.md
-  const SceneFileText file = read_scene_file(path);
-  return load_scene_text(file.text, path, file.dir, frame);
+  SceneFileText file = read_scene_file(path);
+  return load_owned_text(std::move(file.text), path, file.dir, frame);
 }
 
 }  // namespace raycast

@@ -10,13 +10,12 @@ namespace raycast {
 namespace {
 
 // The YAML position of character `offset` of a single-line scalar: plain scalars start at their
-// mark, quoted ones one character later (yaml-cpp tags quoted scalars "!" and plain ones "?").
+// mark, quoted ones one character later.
 // Escape sequences before the offset in a double-quoted scalar are not accounted for.
-YAML::Mark mark_in_scalar(const YAML::Node& node, std::size_t offset) {
-  YAML::Mark m = node.Mark();
+YamlMark mark_in_scalar(const YamlNode& node, std::size_t offset) {
+  YamlMark m = node.Mark();
   if (m.column < 0) return m;
-  const bool quoted = node.Tag() == "!";
-  m.column += static_cast<int>(offset) + (quoted ? 1 : 0);
+  m.column += static_cast<int>(offset) + (node.IsQuoted() ? 1 : 0);
   return m;
 }
 
@@ -25,7 +24,7 @@ YAML::Mark mark_in_scalar(const YAML::Node& node, std::size_t offset) {
 template <class Make>
 auto with_formula(Fields& f, const std::string& key, Make&& make) {
   const std::string text = f.string(key);
-  const YAML::Node node = f.optional(key);
+  const YamlNode node = f.optional(key);
   try {
     return make(text);
   } catch (const ExpressionError& e) {
@@ -67,7 +66,7 @@ ShapeVariant parse_shape(std::type_identity<Implicit>, Fields& f) {
 }
 
 ShapeVariant parse_shape(std::type_identity<Revolution>, Fields& f) {
-  const YAML::Node list = f.required("profile");
+  const YamlNode list = f.required("profile");
   if (!list.IsSequence())
     fail_at(f.ctx(), list,
             f.name("profile") + " must be a list of [r, z] points, got " + describe(list));

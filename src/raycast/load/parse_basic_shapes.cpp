@@ -13,7 +13,7 @@ namespace {
 
 // A list of exactly `count` points, each [x, y, z] of finite numbers.
 std::vector<Vec3> points(Fields& f, const std::string& key, std::size_t count) {
-  const YAML::Node n = f.required(key);
+  const YamlNode n = f.required(key);
   if (!n.IsSequence() || n.size() != count)
     fail_at(f.ctx(), n,
             f.name(key) + " must be a list of " + std::to_string(count) +
@@ -48,7 +48,7 @@ ShapeVariant parse_shape(std::type_identity<Triangle>, Fields& f) {
   const std::vector<Vec3> p = points(f, "vertices", 3);
   if (!f.has("normals")) return make_triangle(p[0], p[1], p[2]);
   const std::vector<Vec3> n = points(f, "normals", 3);
-  const YAML::Node nn = f.optional("normals");
+  const YamlNode nn = f.optional("normals");
   for (std::size_t i = 0; i < 3; ++i)
     if (length_squared(n[i]) == 0 || !std::isfinite(length_squared(n[i])))
       fail_at(f.ctx(), nn[i],

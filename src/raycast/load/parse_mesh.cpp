@@ -10,13 +10,13 @@ namespace raycast {
 namespace {
 
 std::vector<std::array<std::uint32_t, 3>> read_triangles(const SourceContext& ctx,
-                                                         const YAML::Node& node) {
+                                                         const YamlNode& node) {
   if (!node.IsSequence())
     fail_at(ctx, node, "mesh.triangles must be a list of [i, j, k], got " + describe(node));
   std::vector<std::array<std::uint32_t, 3>> out;
   out.reserve(node.size());
   for (std::size_t i = 0; i < node.size(); ++i) {
-    const YAML::Node t = node[i];
+    const YamlNode t = node[i];
     if (!t.IsSequence() || t.size() != 3)
       fail_at(ctx, t,
               "mesh.triangles[" + std::to_string(i) + "] must be [i, j, k], got " + describe(t));
@@ -34,7 +34,7 @@ std::vector<std::array<std::uint32_t, 3>> read_triangles(const SourceContext& ct
   return out;
 }
 
-std::vector<Vec3f> to_float(const SourceContext& ctx, const YAML::Node& node,
+std::vector<Vec3f> to_float(const SourceContext& ctx, const YamlNode& node,
                             const std::vector<Vec3>& points, const std::string& what) {
   std::vector<Vec3f> out;
   out.reserve(points.size());
@@ -80,14 +80,14 @@ ShapeVariant parse_shape(std::type_identity<MeshShape>, Fields& f) {
       f.fail("file", "mesh.file '" + name + "': " + e.what());
     }
   }
-  const YAML::Node vnode = f.required("vertices");
+  const YamlNode vnode = f.required("vertices");
   std::vector<Vec3f> positions =
       to_float(ctx, vnode, read_points(ctx, vnode, "mesh.vertices"), "mesh.vertices");
   std::vector<std::array<std::uint32_t, 3>> triangles =
       read_triangles(ctx, f.required("triangles"));
   std::vector<Vec3f> normals;
   if (f.has("normals")) {
-    const YAML::Node nnode = f.required("normals");
+    const YamlNode nnode = f.required("normals");
     normals = to_float(ctx, nnode, read_points(ctx, nnode, "mesh.normals"), "mesh.normals");
   }
   try {

@@ -20,7 +20,7 @@ auto positioned(Fields& f, const std::string& key, Make make) -> decltype(make()
     return make();
   } catch (const std::invalid_argument& e) {
     const std::string msg = e.what();
-    const YAML::Node node = f.node()[key];
+    const YamlNode node = f.node()[key];
     if (node.IsDefined() && node.IsSequence() && msg.rfind(key + "[", 0) == 0) {
       const std::size_t i = std::strtoul(msg.c_str() + key.size() + 1, nullptr, 10);
       if (i < node.size()) fail_at(f.ctx(), node[i], f.name(msg));
@@ -30,7 +30,7 @@ auto positioned(Fields& f, const std::string& key, Make make) -> decltype(make()
 }
 
 // A list of exactly n numbers.
-std::vector<double> numbers_n(Fields& f, const YAML::Node& node, const std::string& what,
+std::vector<double> numbers_n(Fields& f, const YamlNode& node, const std::string& what,
                               std::size_t n) {
   if (!node.IsSequence() || node.size() != n)
     fail_at(f.ctx(), node,
@@ -40,7 +40,7 @@ std::vector<double> numbers_n(Fields& f, const YAML::Node& node, const std::stri
 
 // `bounds: {min, max}` with min < max on every axis.
 std::optional<Aabb> read_optional_bounds(Fields& f) {
-  const YAML::Node node = f.optional("bounds");
+  const YamlNode node = f.optional("bounds");
   if (!node.IsDefined()) return std::nullopt;
   Fields b(f.ctx(), node, f.name("bounds"));
   const Aabb box{b.vec3("min"), b.vec3("max")};
@@ -64,7 +64,7 @@ QuadricCoefficients read_quadric_coefficients(Fields& f, std::string& key) {
   }
   if (f.has("matrix")) {
     key = "matrix";
-    const YAML::Node node = f.required(key);
+    const YamlNode node = f.required(key);
     if (!node.IsSequence() || node.size() != 4)
       fail_at(f.ctx(), node, f.name(key) + " must be 4 rows of 4 numbers, got " + describe(node));
     Mat4 m;
@@ -161,7 +161,7 @@ ShapeVariant parse_shape(std::type_identity<Slab>, Fields& f) {
 }
 
 ShapeVariant parse_shape(std::type_identity<Polyhedron>, Fields& f) {
-  const YAML::Node node = f.required("planes");
+  const YamlNode node = f.required("planes");
   if (!node.IsSequence())
     fail_at(f.ctx(), node, f.name("planes") + " must be a list of [nx, ny, nz, d]");
   std::vector<std::array<double, 4>> planes;

@@ -36,7 +36,7 @@ SceneError as_scene_error(const VolumeFileError& e) {
 }
 
 std::array<int, 3> read_resolution(Fields& f) {
-  const YAML::Node node = f.required("resolution");
+  const YamlNode node = f.required("resolution");
   const std::vector<double> v = read_numbers(f.ctx(), node, f.name("resolution"));
   if (v.size() != 3) f.fail("resolution", f.name("resolution") + " must be [nx, ny, nz]");
   std::array<int, 3> r{};

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -31,10 +32,12 @@ using pov::XformOp;
 // shows the same picture in raycast's right-handed frame.
 class Builder {
  public:
-  Builder(const pov::PovScene& s, Scene& scene, bool strict)
+  // `in_pov_frame` builds objects in the scene's own (left-handed) coordinates, unmirrored:
+  // for the answers of trace and the other functions of objects.
+  Builder(const pov::PovScene& s, Scene& scene, bool strict, bool in_pov_frame = false)
       : s_(s), scene_(scene), strict_(strict) {
     const pov::Camera& c = s.camera;
-    mirror_ = dot(cross(c.up, c.direction), c.right) > 0;
+    mirror_ = !in_pov_frame && dot(cross(c.up, c.direction), c.right) > 0;
     const double g = s.settings.assumed_gamma;
     gamma_ = s.settings.gamma_given && g != 1 ? (g == 0 ? -1 : g) : 1;
   }
@@ -64,6 +67,15 @@ class Builder {
       scene_.marks.entries.push_back({n.pos.file == 0 ? n.pos.line : 0, n.pos.column});
       for (Object& o : out) scene_.objects.push_back(std::move(o));
     }
+  }
+
+  /// The engine objects of one described object (lights dropped), for the functions of
+  /// objects a scene calls while it is read.
+  std::vector<Object> objects_of(const Node& n) {
+    scene_.materials.assign(1, Material{});
+    std::vector<Object> out;
+    add(n, nullptr, Transform(), std::nullopt, 0, out);
+    return out;
   }
 
  private:
@@ -366,6 +378,14 @@ class Builder {
         for (const Vec3& p : n.points) profile.push_back({p.x, p.y});
         return make_revolution(profile, ProfileCurve::kLinear, n.kind == Node::Sor && !n.open);
       }
+      case Node::Triangle: {
+        // Mirroring reverses the winding: swap two corners to keep the face's side.
+        const std::size_t b = mirror_ ? 2 : 1, c = mirror_ ? 1 : 2;
+        if (n.normals.empty())
+          return make_triangle(pt(n.points[0]), pt(n.points[b]), pt(n.points[c]));
+        return make_triangle(pt(n.points[0]), pt(n.points[b]), pt(n.points[c]), m(n.normals[0]),
+                             m(n.normals[b]), m(n.normals[c]));
+      }
       case Node::Mesh: {
         std::vector<Vec3f> pos, nor;
         for (const Vec3& v : n.vertices) {
@@ -592,6 +612,80 @@ pov::Options with_frame(pov::Options o, int frame) {
   return o;
 }
 
+// trace, inside, min_extent and max_extent: each object asked about is built once (in POV-Ray's
+// own frame) and kept while the scene is read, since scenes ask thousands of times about one
+// object (placing things on a height field).
+class BuiltObjectQueries : public pov::ObjectQueries {
+ public:
+  std::optional<Trace> trace(const pov::PovScene& ps, const std::shared_ptr<const Node>& object,
+                             const Vec3& origin, const Vec3& direction) override {
+    const double len = length(direction);
+    if (!(len > 0) || !std::isfinite(len)) return std::nullopt;
+    const Ray ray{origin, direction / len, 1e-6, std::numeric_limits<double>::infinity()};
+    std::optional<Trace> best;
+    double best_t = ray.tmax;
+    for (const Object& o : objects_of(ps, object)) {
+      Ray r = ray;
+      r.tmax = best_t;
+      LocalHit h;
+      if (!intersect(o, r, h) || !(h.t < best_t)) continue;
+      best_t = h.t;
+      const SurfaceInfo si = surface(o, r, h, SurfaceNeeds::kGeometry);
+      best = Trace{si.p, si.n};
+    }
+    return best;
+  }
+
+  bool inside(const pov::PovScene& ps, const std::shared_ptr<const Node>& object,
+              const Vec3& point) override {
+    for (const Object& o : objects_of(ps, object))
+      if (contains(o, point)) return true;
+    return false;
+  }
+
+  std::pair<Vec3, Vec3> extent(const pov::PovScene& ps,
+                               const std::shared_ptr<const Node>& object) override {
+    const std::vector<Object>& objects = objects_of(ps, object);
+    if (objects.empty()) return {Vec3{0, 0, 0}, Vec3{0, 0, 0}};
+    Aabb box = bounds(objects[0]);
+    for (std::size_t i = 1; i < objects.size(); ++i) box = merge(box, bounds(objects[i]));
+    static constexpr double kHuge = 2e10;  // POV-Ray's bound of an unbounded side
+    auto clamp = [](const Vec3& v) {
+      return Vec3{std::clamp(v.x, -kHuge, kHuge), std::clamp(v.y, -kHuge, kHuge),
+                  std::clamp(v.z, -kHuge, kHuge)};
+    };
+    return {clamp(box.lo), clamp(box.hi)};
+  }
+
+ private:
+  static constexpr std::size_t kMaxKept = 256;  // objects kept built at once
+
+  const std::vector<Object>& objects_of(const pov::PovScene& ps,
+                                        const std::shared_ptr<const Node>& object) {
+    auto it = built_.find(object.get());
+    if (it != built_.end()) return it->second.objects;
+    if (built_.size() >= kMaxKept) built_.clear();
+    Scene scratch;
+    Builder b(ps, scratch, false, true);
+    Built& kept = built_[object.get()];
+    kept.node = object;
+    kept.objects = b.objects_of(*object);
+    return kept.objects;
+  }
+
+  struct Built {
+    std::shared_ptr<const Node> node;  // keeps the key's node alive
+    std::vector<Object> objects;
+  };
+  std::map<const Node*, Built> built_;
+};
+
+// The options with the functions of objects answered, unless the caller answers them.
+pov::Options with_object_queries(pov::Options o) {
+  if (!o.object_queries) o.object_queries = std::make_shared<BuiltObjectQueries>();
+  return o;
+}
+
 }  // namespace
 
 pov::Options& default_pov_options() {
@@ -610,13 +704,13 @@ bool is_pov_path(const std::string& path) {
 Scene load_pov_scene_text(const std::string& text, const std::string& name, const std::string& dir,
                           int frame, const pov::Options& options,
                           std::vector<std::string>* warnings) {
-  return build(pov::interpret_pov(text, name, dir, with_frame(options, frame)), name, warnings,
-               options.strict);
+  return build(pov::interpret_pov(text, name, dir, with_object_queries(with_frame(options, frame))),
+               name, warnings, options.strict);
 }
 
 Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options& options,
                           std::vector<std::string>* warnings) {
-  pov::Options o = with_frame(options, frame);
+  pov::Options o = with_object_queries(with_frame(options, frame));
   std::string scene_path = path;
   if (path.size() >= 4 &&
       (path.substr(path.size() - 4) == ".ini" || path.substr(path.size() - 4) == ".INI"))
@@ -627,7 +721,7 @@ Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options
 }
 
 std::string convert_pov_file(const std::string& path, const pov::Options& options) {
-  pov::Options o = options;
+  pov::Options o = with_object_queries(options);
   std::string scene_path = path;
   if (path.size() >= 4 && path.substr(path.size() - 4) == ".ini")
     scene_path = pov::read_ini_file(path, o);

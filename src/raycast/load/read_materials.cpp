@@ -31,7 +31,7 @@ std::string resolve(const SourceContext& ctx, const std::string& path) {
 
 }  // namespace
 
-Material read_material(const SourceContext& ctx, const YAML::Node& node, const std::string& name) {
+Material read_material(const SourceContext& ctx, const YamlNode& node, const std::string& name) {
   Fields f(ctx, node, "material");
   Material m;
   m.name = name;
@@ -42,7 +42,7 @@ Material read_material(const SourceContext& ctx, const YAML::Node& node, const s
     Fields t(ctx, f.required("texture"), "texture");
     if (t.has("checker")) {
       Fields c(ctx, t.required("checker"), "checker");
-      const YAML::Node colors = c.required("colors");
+      const YamlNode colors = c.required("colors");
       if (!colors.IsSequence() || colors.size() != 2)
         fail_at(ctx, colors, "checker.colors must be a list of 2 colours");
       m.has_checker = true;
@@ -79,7 +79,7 @@ Material read_material(const SourceContext& ctx, const YAML::Node& node, const s
   return m;
 }
 
-Light read_light(const SourceContext& ctx, const YAML::Node& node) {
+Light read_light(const SourceContext& ctx, const YamlNode& node) {
   Fields f(ctx, node, "light");
   Light light;
   const std::string type = f.string("type");

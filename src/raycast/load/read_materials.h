@@ -10,9 +10,9 @@
 namespace raycast {
 
 /// One material mapping; `name` is empty for an inline material. Image textures are loaded here.
-Material read_material(const SourceContext& ctx, const YAML::Node& node, const std::string& name);
+Material read_material(const SourceContext& ctx, const YamlNode& node, const std::string& name);
 
 /// One entry of `lights`.
-Light read_light(const SourceContext& ctx, const YAML::Node& node);
+Light read_light(const SourceContext& ctx, const YamlNode& node);
 
 }  // namespace raycast

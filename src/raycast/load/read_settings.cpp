@@ -5,7 +5,7 @@ namespace raycast {
 namespace {
 
 // render.antialias: {method, threshold, depth} (docs/scene-format.md).
-void read_antialias(const SourceContext& ctx, const YAML::Node& node, AntialiasSettings& aa) {
+void read_antialias(const SourceContext& ctx, const YamlNode& node, AntialiasSettings& aa) {
   Fields f(ctx, node, "render.antialias");
   const std::string method = f.string("method");
   if (method == "none")
@@ -35,7 +35,7 @@ Color read_color(Fields& f, const std::string& key, const Color& fallback) {
   return c;
 }
 
-CameraDesc read_camera(const SourceContext& ctx, const YAML::Node& node) {
+CameraDesc read_camera(const SourceContext& ctx, const YamlNode& node) {
   Fields f(ctx, node, "camera");
   CameraDesc c;
   const std::string type = f.string("type", "perspective");
@@ -60,7 +60,7 @@ CameraDesc read_camera(const SourceContext& ctx, const YAML::Node& node) {
   return c;
 }
 
-ImageSettings read_image(const SourceContext& ctx, const YAML::Node& node) {
+ImageSettings read_image(const SourceContext& ctx, const YamlNode& node) {
   Fields f(ctx, node, "image");
   ImageSettings image;
   image.width = f.integer("width", image.width, 1, kMaxImageSide);
@@ -75,7 +75,7 @@ ImageSettings read_image(const SourceContext& ctx, const YAML::Node& node) {
   return image;
 }
 
-RenderSettings read_render(const SourceContext& ctx, const YAML::Node& node) {
+RenderSettings read_render(const SourceContext& ctx, const YamlNode& node) {
   Fields f(ctx, node, "render");
   RenderSettings r;
   const std::string integrator = f.string("integrator", "whitted");

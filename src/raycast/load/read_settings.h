@@ -9,11 +9,11 @@
 
 namespace raycast {
 
-CameraDesc read_camera(const SourceContext& ctx, const YAML::Node& node);
+CameraDesc read_camera(const SourceContext& ctx, const YamlNode& node);
 /// `image`: the size and samples; refuses an image over kMaxImagePixels before anything is made.
-ImageSettings read_image(const SourceContext& ctx, const YAML::Node& node);
+ImageSettings read_image(const SourceContext& ctx, const YamlNode& node);
 /// `render`: integrator, max_depth, background, ambient, seed, antialias.
-RenderSettings read_render(const SourceContext& ctx, const YAML::Node& node);
+RenderSettings read_render(const SourceContext& ctx, const YamlNode& node);
 
 /// A colour field, every channel >= 0; `fallback` when the field is absent.
 Color read_color(Fields& f, const std::string& key, const Color& fallback);

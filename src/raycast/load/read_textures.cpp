@@ -21,7 +21,7 @@ texture::WaveForm read_wave(Fields& f) {
 }
 
 Vec3 number_or_vec3(Fields& f, const std::string& key, const Vec3& fallback) {
-  const YAML::Node n = f.optional(key);
+  const YamlNode n = f.optional(key);
   if (!n) return fallback;
   if (n.IsScalar()) {
     const double v = read_number(f.ctx(), n, f.name(key));
@@ -68,8 +68,7 @@ texture::Pattern read_pattern(Fields& f) {
   return p;
 }
 
-texture::Rgbft read_rgbft(const SourceContext& ctx, const YAML::Node& node,
-                          const std::string& what) {
+texture::Rgbft read_rgbft(const SourceContext& ctx, const YamlNode& node, const std::string& what) {
   const std::vector<double> v = read_numbers(ctx, node, what);
   if (v.size() < 3 || v.size() > 5)
     fail_at(ctx, node,
@@ -79,14 +78,14 @@ texture::Rgbft read_rgbft(const SourceContext& ctx, const YAML::Node& node,
 
 // A map's entries [value, X] sorted by value; at most 256.
 template <class Entry, class Read>
-std::vector<Entry> read_map(const SourceContext& ctx, const YAML::Node& node,
-                            const std::string& what, Read read) {
+std::vector<Entry> read_map(const SourceContext& ctx, const YamlNode& node, const std::string& what,
+                            Read read) {
   if (!node.IsSequence() || node.size() == 0)
     fail_at(ctx, node, what + " must be a non-empty list of [value, entry]");
   if (node.size() > texture::kMaxMapEntries)
     fail_at(ctx, node, what + " has more than 256 entries");
   std::vector<Entry> out;
-  for (const YAML::Node& e : node) {
+  for (const YamlNode& e : node) {
     if (!e.IsSequence() || e.size() != 2) fail_at(ctx, e, what + ": each entry is [value, entry]");
     out.push_back(Entry{read_number(ctx, e[0], what), read(e[1])});
   }
@@ -97,7 +96,7 @@ std::vector<Entry> read_map(const SourceContext& ctx, const YAML::Node& node,
 
 }  // namespace
 
-texture::Pigment read_pigment(const SourceContext& ctx, const YAML::Node& node, int depth) {
+texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, int depth) {
   if (depth > kMaxPigmentDepth) fail_at(ctx, node, "pigments are nested more than 16 deep");
   Fields f(ctx, node, "texture");
   texture::Pigment p;
@@ -111,11 +110,11 @@ texture::Pigment read_pigment(const SourceContext& ctx, const YAML::Node& node, 
     p.kind = texture::Pigment::Kind::kColorMap;
     p.color_map = read_map<texture::ColorMapEntry>(
         ctx, f.required("colors"), f.name("colors"),
-        [&](const YAML::Node& c) { return read_rgbft(ctx, c, f.name("colors")); });
+        [&](const YamlNode& c) { return read_rgbft(ctx, c, f.name("colors")); });
   } else if (f.has("pigments")) {
     p.kind = texture::Pigment::Kind::kPigmentMap;
     p.pigment_map = read_map<texture::PigmentMapEntry>(
-        ctx, f.required("pigments"), f.name("pigments"), [&](const YAML::Node& c) {
+        ctx, f.required("pigments"), f.name("pigments"), [&](const YamlNode& c) {
           return std::make_shared<const texture::Pigment>(read_pigment(ctx, c, depth + 1));
         });
   } else {
@@ -127,7 +126,7 @@ texture::Pigment read_pigment(const SourceContext& ctx, const YAML::Node& node, 
   return p;
 }
 
-texture::Normal read_normal(const SourceContext& ctx, const YAML::Node& node) {
+texture::Normal read_normal(const SourceContext& ctx, const YamlNode& node) {
   Fields f(ctx, node, "normal");
   texture::Normal n;
   n.bump_size = f.number("bump_size", n.bump_size);
@@ -136,9 +135,9 @@ texture::Normal read_normal(const SourceContext& ctx, const YAML::Node& node) {
   return n;
 }
 
-bool wants_texture(const YAML::Node& material) {
+bool wants_texture(const YamlNode& material) {
   if (!material.IsMap()) return false;
-  const YAML::Node t = material["texture"];
+  const YamlNode t = material["texture"];
   if (t && t.IsMap() && t["pattern"]) return true;
   for (const char* key : {"normal", "layers", "brilliance", "metallic", "crand", "roughness",
                           "reflection_max", "reflection_falloff", "reflection_metallic"})
@@ -171,7 +170,7 @@ texture::Finish read_finish(Fields& f, texture::Finish base) {
   return base;
 }
 
-texture::TextureLayer read_layer(const SourceContext& ctx, const YAML::Node& node) {
+texture::TextureLayer read_layer(const SourceContext& ctx, const YamlNode& node) {
   Fields f(ctx, node, "layer");
   texture::TextureLayer layer;
   layer.pigment = read_pigment(ctx, f.required("texture"));
@@ -202,10 +201,10 @@ void read_texture_keys(Fields& f, Material& m) {
   base.finish = read_finish(f, finish);
   stack->layers.push_back(std::move(base));
   if (f.has("layers")) {
-    const YAML::Node layers = f.required("layers");
+    const YamlNode layers = f.required("layers");
     if (!layers.IsSequence() || layers.size() == 0 || layers.size() > 64)
       fail_at(f.ctx(), layers, "material.layers must be a list of 1 to 64 layers");
-    for (const YAML::Node& l : layers) stack->layers.push_back(read_layer(f.ctx(), l));
+    for (const YamlNode& l : layers) stack->layers.push_back(read_layer(f.ctx(), l));
   }
   m.texture = std::move(stack);
 }

@@ -3,19 +3,26 @@
 #include <vector>
 
 #include "io/scene_error.h"
+#include "load/yaml_tree_builder.h"
 
 namespace raycast {
 namespace {
 
-// yaml-cpp 0.7 parses nested collections recursively (its DepthGuard stops only at 2000 levels,
-// after 2000 deep frames, and later readers recurse too), so text nested deeper than max_nesting
-// is rejected before parsing, at the position of the first level too deep. Flow collections
+// The readers of the nodes recurse per level, so text nested deeper than max_nesting is rejected
+// before parsing, at the position of the first level too deep. Flow collections
 // ([, {) count one level each; block collections one level per indentation step and per inline
 // `- ` item. Quoted scalars, block scalars (| and >) and comments are skipped.
 struct FlowOpen {
   int line, column;
   char bracket;
 };
+
+// Characters that never start or end anything the scan follows (quotes, brackets, comments,
+// block indicators, `- ` items and `:`): letters, digits, '.' and '_'.
+bool is_word_character(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+         c == '_';
+}
 
 // Returns the first `[` or `{` left open at the end of the text (bracket 0 when all closed).
 FlowOpen check_nesting(const std::string& text, const std::string& name, int max_nesting) {
@@ -64,6 +71,15 @@ FlowOpen check_nesting(const std::string& text, const std::string& name, int max
     bool after_blank = true;
     for (; i < n && text[i] != '\n'; ++i) {
       const char c = text[i];
+      if (!quote && is_word_character(c)) {
+        // A run of letters and digits opens and closes nothing: only its last character counts
+        // (as `prev`), and its first as a token's start.
+        if (after_blank) last_token = c;
+        after_blank = false;
+        while (i + 1 < n && is_word_character(text[i + 1])) ++i;
+        prev = text[i];
+        continue;
+      }
       if (quote) {
         if (c == '\\' && quote == '"')
           ++i;
@@ -100,19 +116,19 @@ FlowOpen check_nesting(const std::string& text, const std::string& name, int max
 
 }  // namespace
 
-YAML::Node parse_yaml(const std::string& text, const std::string& name, int max_nesting) {
+YamlDocument parse_yaml(std::string text, const std::string& name, int max_nesting) {
   const FlowOpen unclosed = check_nesting(text, name, max_nesting);
   try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    // yaml-cpp notices a missing `}` or `]` only where the next token does not fit, often lines
+    return build_yaml_document(std::move(text), name);
+  } catch (const SceneError& e) {
+    // The parser notices a missing `}` or `]` only where the next token does not fit, often lines
     // later; the place the user must fix is where the collection opened.
     if (unclosed.bracket != 0)
       throw SceneError(name, unclosed.line, unclosed.column,
-                       std::string("this '") + unclosed.bracket + "' is never closed (" + e.msg +
-                           " at " + std::to_string(e.mark.line + 1) + ":" +
-                           std::to_string(e.mark.column + 1) + ")");
-    throw SceneError(name, e.mark.line + 1, e.mark.column + 1, e.msg);
+                       std::string("this '") + unclosed.bracket + "' is never closed (" +
+                           e.message() + " at " + std::to_string(e.line()) + ":" +
+                           std::to_string(e.column()) + ")");
+    throw;
   }
 }
 

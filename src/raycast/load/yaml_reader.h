@@ -1,13 +1,13 @@
 #pragma once
 // Typed, positioned reading of YAML nodes: every failure is a SceneError at the node's position.
-#include <yaml-cpp/yaml.h>
-
+#include <cstdint>
 #include <functional>
-#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/scene_error.h"
+#include "load/yaml_node.h"
 #include "math/transform.h"
 #include "math/vec3.h"
 
@@ -22,25 +22,29 @@ struct SourceContext {
 };
 
 /// Throws SceneError at node's position (1-based line and column).
-[[noreturn]] void fail_at(const SourceContext& ctx, const YAML::Node& node,
+[[noreturn]] void fail_at(const SourceContext& ctx, const YamlNode& node,
                           const std::string& message);
-[[noreturn]] void fail_at(const SourceContext& ctx, const YAML::Mark& mark,
+[[noreturn]] void fail_at(const SourceContext& ctx, const YamlMark& mark,
                           const std::string& message);
 
+/// A mapping key read as text: a scalar's own, "null" for a null key (yaml-cpp's reading, which
+/// scenes were first written against); a collection is an error at it.
+std::string key_text(const SourceContext& ctx, const YamlNode& key);
+
 /// A short rendering of a node's value for messages ("-1", "[1, 2]", "a mapping").
-std::string describe(const YAML::Node& node);
+std::string describe(const YamlNode& node);
 
 /// Reads a mapping's fields by name and, on finish(), rejects any key that was not read, naming
 /// the nearest key that was asked for ("did you mean"). A key given twice is an error naming both
 /// positions. `what` prefixes messages: "sphere" gives "sphere.radius must be > 0, got -1".
 class Fields {
  public:
-  Fields(const SourceContext& ctx, const YAML::Node& map, std::string what);
+  Fields(const SourceContext& ctx, const YamlNode& map, std::string what);
 
   bool has(const std::string& key) const;
   /// The node of a key, marking it read; throws when it is required and missing.
-  YAML::Node required(const std::string& key);
-  YAML::Node optional(const std::string& key);  // a null node when absent
+  YamlNode required(const std::string& key);
+  YamlNode optional(const std::string& key);  // an undefined node when absent
 
   double number(const std::string& key);                   // required
   double number(const std::string& key, double fallback);  // optional
@@ -59,31 +63,44 @@ class Fields {
 
   /// Throws for the first key not read; call once all fields have been taken.
   void finish() const;
-  const YAML::Node& node() const { return map_; }
+  const YamlNode& node() const { return map_; }
   const SourceContext& ctx() const { return ctx_; }
   std::string name(const std::string& key) const { return what_ + "." + key; }
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
  private:
   const SourceContext& ctx_;
-  YAML::Node map_;
+  YamlNode map_;
   std::string what_;
-  std::set<std::string> read_;
-  mutable std::set<std::string> asked_;  // every key looked up, present or not: the valid keys
+  void ask(const std::string& key) const;
+  bool was_asked(std::string_view key) const;
+  bool was_read(std::string_view key) const;
+  YamlNode take(const std::string& key);  // the key's value, marked read when present
+
+  bool pair_read(std::size_t pair) const;
+  void mark_read(std::size_t pair);
+
+  // Which pairs were read (keys are unique: the constructor checks): the first 64 by bit, so
+  // that a shape's mapping needs no allocation, the rest in read_more_.
+  std::uint64_t read_first_ = 0;
+  std::vector<bool> read_more_;
+  // Every key looked up, present or not (the valid keys), each followed by '\0': one string
+  // rather than a set, since a shape's mapping asks for a handful of keys.
+  mutable std::string asked_;
 };
 
 /// A finite number; `what` names it in the error.
-double read_number(const SourceContext& ctx, const YAML::Node& node, const std::string& what);
+double read_number(const SourceContext& ctx, const YamlNode& node, const std::string& what);
 /// A sequence of exactly 3 finite numbers.
-Vec3 read_vec3(const SourceContext& ctx, const YAML::Node& node, const std::string& what);
+Vec3 read_vec3(const SourceContext& ctx, const YamlNode& node, const std::string& what);
 /// A sequence of numbers (any length, each finite).
-std::vector<double> read_numbers(const SourceContext& ctx, const YAML::Node& node,
+std::vector<double> read_numbers(const SourceContext& ctx, const YamlNode& node,
                                  const std::string& what);
 /// A sequence of [x, y, z] points.
-std::vector<Vec3> read_points(const SourceContext& ctx, const YAML::Node& node,
+std::vector<Vec3> read_points(const SourceContext& ctx, const YamlNode& node,
                               const std::string& what);
 
 /// A `transform:` list (translate, scale, rotate, matrix), composed first to last.
-Transform read_transform(const SourceContext& ctx, const YAML::Node& node);
+Transform read_transform(const SourceContext& ctx, const YamlNode& node);
 
 }  // namespace raycast

@@ -118,27 +118,27 @@ const std::map<std::string, std::vector<Arg>>& functions() {
 }  // namespace
 
 bool Interpreter::is_builtin(const std::string& w) const {
-  static const char* const special[] = {"x",
-                                        "y",
-                                        "z",
-                                        "t",
-                                        "u",
-                                        "v",
-                                        "min",
-                                        "max",
-                                        "select",
-                                        "concat",
-                                        "defined",
-                                        "dimensions",
-                                        "dimension_size",
-                                        "rand",
-                                        "inside",
-                                        "trace",
-                                        "min_extent",
-                                        "max_extent",
-                                        "now"};
-  for (const char* s : special)
-    if (w == s) return true;
+  static constexpr std::string_view special[] = {"x",
+                                                 "y",
+                                                 "z",
+                                                 "t",
+                                                 "u",
+                                                 "v",
+                                                 "min",
+                                                 "max",
+                                                 "select",
+                                                 "concat",
+                                                 "defined",
+                                                 "dimensions",
+                                                 "dimension_size",
+                                                 "rand",
+                                                 "inside",
+                                                 "trace",
+                                                 "min_extent",
+                                                 "max_extent",
+                                                 "now"};
+  for (const std::string_view s : special)
+    if (s == w) return true;
   return float_constants().count(w) || functions().count(w);
 }
 
@@ -159,13 +159,14 @@ Value Interpreter::builtin_constant(const Token& t) {
 
 Value Interpreter::builtin(const Token& t) {
   const std::string& w = t.text;
+  const std::string_view word = w;  // compared with literals inline
   next();
   if (w.size() == 1 && std::string("xyztuv").find(w[0]) != std::string::npos) {
-    if (w == "x") return Value::vector({1, 0, 0});
-    if (w == "y") return Value::vector({0, 1, 0});
-    if (w == "z") return Value::vector({0, 0, 1});
-    if (w == "t") return Value::vector({0, 0, 0, 1});
-    if (w == "u") return Value::vector({1, 0});
+    if (word == "x") return Value::vector({1, 0, 0});
+    if (word == "y") return Value::vector({0, 1, 0});
+    if (word == "z") return Value::vector({0, 0, 1});
+    if (word == "t") return Value::vector({0, 0, 0, 1});
+    if (word == "u") return Value::vector({1, 0});
     return Value::vector({0, 1});
   }
   if (const auto c = float_constants().find(w); c != float_constants().end()) {
@@ -205,9 +206,9 @@ Value Interpreter::builtin(const Token& t) {
         return Value::number(2 * std::numbers::pi);
     }
   }
-  if (w == "now") return Value::number(0);
+  if (word == "now") return Value::number(0);
   expect_symbol("(", ("after " + w).c_str());
-  if (w == "defined") {
+  if (word == "defined") {
     const Token nt = raw_name();
     if (nt.kind != Token::Word)
       fail_at(nt.pos, "expected a name in defined( ), got " + describe(nt));
@@ -218,13 +219,14 @@ Value Interpreter::builtin(const Token& t) {
   // The arguments, read whole.
   std::vector<Value> a;
   std::vector<Pos> at;
+  std::optional<Token> normal_name;  // trace's fourth argument: receives the normal
   if (!is_symbol(")")) {
     for (;;) {
       at.push_back(tok().pos);
       if (w == "trace" && a.size() == 3) {  // the normal's output variable, maybe undeclared
-        const Token nt = raw_name();
-        if (nt.kind != Token::Word) fail_at(nt.pos, "trace's fourth argument is a name");
-        assign(nt.text, Value::vector({0, 0, 0}), false, nt.pos);
+        normal_name = raw_name();
+        if (normal_name->kind != Token::Word)
+          fail_at(normal_name->pos, "trace's fourth argument is a name");
         a.push_back(Value::number(0));
       } else {
         a.push_back(rvalue());
@@ -234,12 +236,15 @@ Value Interpreter::builtin(const Token& t) {
   }
   if (!is_symbol(")")) unexpected("')' to close " + w + "(");
   next();
+  if (w == "trace" || w == "inside" || w == "min_extent" || w == "max_extent")
+    return object_query(t, a, at, normal_name);
   return call_builtin(t, a, at);
 }
 
 Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
                                 const std::vector<Pos>& at) {
   const std::string& w = t.text;
+  const std::string_view word = w;  // compared with literals inline
   auto need = [&](std::size_t n) {
     if (a.size() != n)
       fail_at(t.pos,
@@ -254,35 +259,35 @@ Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
       fail_at(at[i], w + ": expected a string, got " + kind_name(a[i]));
     return a[i].text;
   };
-  if (w == "min" || w == "max") {
+  if (word == "min" || word == "max") {
     if (a.empty()) fail_at(t.pos, w + " needs at least one argument");
     double r = f(0);
     for (std::size_t i = 1; i < a.size(); ++i)
-      r = w == "min" ? std::min(r, f(i)) : std::max(r, f(i));
+      r = word == "min" ? std::min(r, f(i)) : std::max(r, f(i));
     return Value::number(r);
   }
-  if (w == "select") {
+  if (word == "select") {
     if (a.size() != 3 && a.size() != 4) fail_at(t.pos, "select takes 3 or 4 arguments");
     const double c = f(0);
     if (a.size() == 3) return c < 0 ? a[1] : a[2];
     return c < 0 ? a[1] : c == 0 ? a[2] : a[3];
   }
-  if (w == "concat") {
+  if (word == "concat") {
     std::string r;
     for (std::size_t i = 0; i < a.size(); ++i) r += s(i);
     if (r.size() > options_.limits.string_bytes) fail_at(t.pos, "the string is too long");
     return Value::string(r);
   }
-  if (w == "dimensions" || w == "dimension_size") {
+  if (word == "dimensions" || word == "dimension_size") {
     if (a.empty() || a[0].kind != Value::Array) fail_at(t.pos, w + " needs an array");
     const auto& sizes = a[0].array->sizes;
-    if (w == "dimensions") return Value::number(static_cast<double>(sizes.size()));
+    if (word == "dimensions") return Value::number(static_cast<double>(sizes.size()));
     need(2);
     const double d = f(1);
     if (!(d >= 1 && d <= sizes.size())) return Value::number(0);
     return Value::number(sizes[static_cast<std::size_t>(d) - 1]);
   }
-  if (w == "rand") {
+  if (word == "rand") {
     need(1);
     const double id = f(0);
     if (!(id >= 0 && id < static_cast<double>(random_streams_.size())))
@@ -293,23 +298,15 @@ Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
     st = st * 6364136223846793005ULL + 1442695040888963407ULL;
     return Value::number(static_cast<double>(st >> 11) * 0x1.0p-53);
   }
-  if (w == "trace" && a.size() == 4) {
-    // The fourth argument is a name that receives the normal (declared if new).
-    unsupported_warning(t.pos, "the trace function", "its answer is <0, 0, 0>");
-    return Value::vector({0, 0, 0});
-  }
-  if (w == "inside" || w == "trace" || w == "min_extent" || w == "max_extent") {
-    unsupported_warning(t.pos, "the " + w + " function", "its answer is 0");
-    return w == "inside" ? Value::number(0) : Value::vector({0, 0, 0});
-  }
   const auto& sig = functions().at(w);
-  if (w == "str" || w == "vstr" || w == "substr" || w == "vturbulence" || w == "vaxis_rotate")
+  if (word == "str" || word == "vstr" || word == "substr" || word == "vturbulence" ||
+      word == "vaxis_rotate")
     need(sig.size());
-  else if (w == "datetime")
+  else if (word == "datetime")
     ;
   else
     need(sig.size());
-  if (w == "seed") {
+  if (word == "seed") {
     random_streams_.push_back(
         static_cast<std::uint64_t>(saturate<std::int64_t>(f(0))) * 0x9E3779B97F4A7C15ULL + 1);
     return Value::number(static_cast<double>(random_streams_.size() - 1));
@@ -320,55 +317,56 @@ Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
 
 Value Interpreter::float_builtin(const Token& t, double x, const Pos& at0) {
   const std::string& w = t.text;
+  const std::string_view word = w;  // compared with literals inline
   double r;
-  if (w == "abs")
+  if (word == "abs")
     r = std::fabs(x);
-  else if (w == "acos")
+  else if (word == "acos")
     r = std::acos(x);
-  else if (w == "acosh")
+  else if (word == "acosh")
     r = std::acosh(x);
-  else if (w == "asin")
+  else if (word == "asin")
     r = std::asin(x);
-  else if (w == "asinh")
+  else if (word == "asinh")
     r = std::asinh(x);
-  else if (w == "atan")
+  else if (word == "atan")
     r = std::atan(x);
-  else if (w == "atanh")
+  else if (word == "atanh")
     r = std::atanh(x);
-  else if (w == "ceil")
+  else if (word == "ceil")
     r = std::ceil(x);
-  else if (w == "cos")
+  else if (word == "cos")
     r = std::cos(x);
-  else if (w == "cosh")
+  else if (word == "cosh")
     r = std::cosh(x);
-  else if (w == "degrees")
+  else if (word == "degrees")
     r = x / kDegree;
-  else if (w == "exp")
+  else if (word == "exp")
     r = std::exp(x);
-  else if (w == "floor")
+  else if (word == "floor")
     r = std::floor(x);
-  else if (w == "int")
+  else if (word == "int")
     r = std::trunc(x);
-  else if (w == "ln")
+  else if (word == "ln")
     r = std::log(x);
-  else if (w == "log")
+  else if (word == "log")
     r = std::log10(x);
-  else if (w == "radians")
+  else if (word == "radians")
     r = x * kDegree;
-  else if (w == "sin")
+  else if (word == "sin")
     r = std::sin(x);
-  else if (w == "sinh")
+  else if (word == "sinh")
     r = std::sinh(x);
-  else if (w == "sqrt")
+  else if (word == "sqrt")
     r = std::sqrt(x);
-  else if (w == "tan")
+  else if (word == "tan")
     r = std::tan(x);
-  else if (w == "tanh")
+  else if (word == "tanh")
     r = std::tanh(x);
-  else if (w == "chr") {
+  else if (word == "chr") {
     if (!(x >= 1 && x < 256)) fail_at(at0, "chr needs a code in [1, 255]");
     return Value::string(std::string(1, static_cast<char>(static_cast<int>(x))));
-  } else if (w == "datetime") {
+  } else if (word == "datetime") {
     return Value::string("2000-01-01 00:00:00");
   } else
     r = x;
@@ -379,6 +377,7 @@ Value Interpreter::float_builtin(const Token& t, double x, const Pos& at0) {
 Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value>& a,
                                          const std::vector<Pos>& at) {
   const std::string& w = t.text;
+  const std::string_view word = w;  // compared with literals inline
   auto f = [&](std::size_t i) {
     if (a[i].kind != Value::Float) fail_at(at[i], w + ": expected a float, got " + kind_name(a[i]));
     return a[i].v[0];
@@ -394,40 +393,40 @@ Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value
       fail_at(at[i], w + ": expected a string, got " + kind_name(a[i]));
     return a[i].text;
   };
-  if (w == "atan2") return Value::number(std::atan2(f(0), f(1)));
-  if (w == "div") return Value::number(std::trunc(f(0) / f(1)));
-  if (w == "mod") return Value::number(std::fmod(f(0), f(1)));
-  if (w == "pow") return Value::number(std::pow(f(0), f(1)));
+  if (word == "atan2") return Value::number(std::atan2(f(0), f(1)));
+  if (word == "div") return Value::number(std::trunc(f(0) / f(1)));
+  if (word == "mod") return Value::number(std::fmod(f(0), f(1)));
+  if (word == "pow") return Value::number(std::pow(f(0), f(1)));
   if (w.rfind("bitwise_", 0) == 0) {
     const auto p = saturate<std::int64_t>(f(0)), q = saturate<std::int64_t>(f(1));
-    return Value::number(static_cast<double>(w == "bitwise_and"  ? (p & q)
-                                             : w == "bitwise_or" ? (p | q)
-                                                                 : (p ^ q)));
+    return Value::number(static_cast<double>(word == "bitwise_and"  ? (p & q)
+                                             : word == "bitwise_or" ? (p | q)
+                                                                    : (p ^ q)));
   }
-  if (w == "vdot") return Value::number(dot(vv(0), vv(1)));
-  if (w == "vlength") return Value::number(length(vv(0)));
-  if (w == "vcross") return vec3(cross(vv(0), vv(1)));
-  if (w == "vnormalize") {
+  if (word == "vdot") return Value::number(dot(vv(0), vv(1)));
+  if (word == "vlength") return Value::number(length(vv(0)));
+  if (word == "vcross") return vec3(cross(vv(0), vv(1)));
+  if (word == "vnormalize") {
     const Vec3 p = vv(0);
     const double l = length(p);
     return vec3(l > 0 ? p / l : Vec3{0, 0, 0});
   }
-  if (w == "vrotate") return vec3(rotate_xyz(vv(0), vv(1)));
-  if (w == "vaxis_rotate") return vec3(axis_rotate(vv(0), vv(1), f(2)));
-  if (w == "vturbulence") {
+  if (word == "vrotate") return vec3(rotate_xyz(vv(0), vv(1)));
+  if (word == "vaxis_rotate") return vec3(axis_rotate(vv(0), vv(1), f(2)));
+  if (word == "vturbulence") {
     unsupported_warning(t.pos, "the vturbulence function", "its answer is <0, 0, 0>");
     return vec3({0, 0, 0});
   }
-  if (w == "strlen") return Value::number(static_cast<double>(s(0).size()));
-  if (w == "strupr" || w == "strlwr") {
+  if (word == "strlen") return Value::number(static_cast<double>(s(0).size()));
+  if (word == "strupr" || word == "strlwr") {
     std::string r = s(0);
     for (char& c : r)
-      c = static_cast<char>(w == "strupr" ? std::toupper(static_cast<unsigned char>(c))
-                                          : std::tolower(static_cast<unsigned char>(c)));
+      c = static_cast<char>(word == "strupr" ? std::toupper(static_cast<unsigned char>(c))
+                                             : std::tolower(static_cast<unsigned char>(c)));
     return Value::string(r);
   }
-  if (w == "strcmp") return Value::number(s(0).compare(s(1)) < 0 ? -1 : s(0) == s(1) ? 0 : 1);
-  if (w == "substr") {
+  if (word == "strcmp") return Value::number(s(0).compare(s(1)) < 0 ? -1 : s(0) == s(1) ? 0 : 1);
+  if (word == "substr") {
     const std::string& x = s(0);
     const double start = f(1), len = f(2);
     if (!(start >= 1 && len >= 0 && start - 1 + len <= x.size()))
@@ -435,10 +434,10 @@ Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value
     return Value::string(
         x.substr(static_cast<std::size_t>(start) - 1, static_cast<std::size_t>(len)));
   }
-  if (w == "asc") return Value::number(s(0).empty() ? 0 : static_cast<unsigned char>(s(0)[0]));
-  if (w == "val") return Value::number(std::strtod(s(0).c_str(), nullptr));
-  if (w == "str") return Value::string(format_number(f(0), f(1), f(2)));
-  if (w == "vstr") {
+  if (word == "asc") return Value::number(s(0).empty() ? 0 : static_cast<unsigned char>(s(0)[0]));
+  if (word == "val") return Value::number(std::strtod(s(0).c_str(), nullptr));
+  if (word == "str") return Value::string(format_number(f(0), f(1), f(2)));
+  if (word == "vstr") {
     const double n = f(0);
     const Value& v = a[1];
     if (v.kind != Value::Vector && v.kind != Value::Float) fail_at(at[1], "vstr needs a vector");
@@ -452,7 +451,7 @@ Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value
     }
     return Value::string(r);
   }
-  if (w == "file_exists") {
+  if (word == "file_exists") {
     std::error_code ec;
     const std::string& name = s(0);
     namespace fs = std::filesystem;

@@ -103,12 +103,11 @@ struct Ops {
     return r;
   }
 
-  bool op(const char* s) {
+  bool op(std::string_view s) {
     const Token& t = in.peek_operator();
     if (in.pending_now()) return false;
     if (!is_symbol(t, s)) return false;
-    if (vector_depth > 0 && (std::string_view(s) == ">" || std::string_view(s) == ">="))
-      return false;
+    if (vector_depth > 0 && (s == ">" || s == ">=")) return false;
     in.next();
     return true;
   }
@@ -463,6 +462,7 @@ Value Interpreter::primary(int vector_depth) {
   }
   (void)vector_depth;
   const std::string& w = t.text;
+  const std::string_view word = w;  // compared with literals inline
   if (Symbol* s = find_symbol(w)) {
     next();
     const Value& v = s->value;
@@ -472,12 +472,12 @@ Value Interpreter::primary(int vector_depth) {
     }
     return postfix(v);
   }
-  if (w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w == "srgb" || w == "srgbf" ||
-      w == "srgbt" || w == "srgbft") {
+  if (word == "rgb" || word == "rgbf" || word == "rgbt" || word == "rgbft" || word == "srgb" ||
+      word == "srgbf" || word == "srgbt" || word == "srgbft") {
     next();
     return colour_keyword(t);
   }
-  if (w == "color" || w == "colour") {
+  if (word == "color" || word == "colour") {
     next();
     return colour_expression(t.pos);
   }

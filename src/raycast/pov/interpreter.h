@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -59,9 +60,13 @@ class Interpreter {
   const Token& tok();
   /// Consumes the current token (the next one is read when asked for).
   void next() { have_ = false; }
-  bool is_word(const char* w) { return tok().kind == Token::Word && tok().text == w; }
-  bool is_symbol(const char* s) { return pov::is_symbol(tok(), s); }
-  bool accept_symbol(const char* s);
+  // Words and symbols are compared as string views: a literal's length is known where it is
+  // written, and most comparisons fail on it without reading a character.
+  bool is_word(std::string_view w) {
+    return tok().kind == Token::Word && std::string_view(tok().text) == w;
+  }
+  bool is_symbol(std::string_view s) { return pov::is_symbol(tok(), s); }
+  bool accept_symbol(std::string_view s);
   void expect_symbol(const char* s, const char* where);
   void skip_comma() { accept_symbol(","); }
   /// The current token when it continues an expression: a directive or macro call that ends
@@ -95,6 +100,10 @@ class Interpreter {
   Value builtin(const Token& name);
   // builtin()'s parts: the functions by their argument types.
   Value call_builtin(const Token& t, const std::vector<Value>& a, const std::vector<Pos>& at);
+  // trace, inside, min_extent, max_extent (object_functions.cpp): answered by
+  // options_.object_queries; `normal_name` is trace's fourth argument.
+  Value object_query(const Token& t, const std::vector<Value>& a, const std::vector<Pos>& at,
+                     const std::optional<Token>& normal_name);
   Value float_builtin(const Token& t, double x, const Pos& at0);
   Value vector_string_builtin(const Token& t, const std::vector<Value>& a,
                               const std::vector<Pos>& at);
@@ -119,7 +128,9 @@ class Interpreter {
   const Value* lookup(const std::string& name);
   /// Reads a value of any kind: an expression, a string, or a block (object, texture ...).
   Value rvalue();
-  void assign(const std::string& name, Value v, bool local, const Pos& at);
+  // `local_scope`: the index in scopes_ a #local writes to (default: the innermost).
+  void assign(const std::string& name, Value v, bool local, const Pos& at,
+              std::size_t local_scope = static_cast<std::size_t>(-1));
 
   // ---- statements ----
   Texture texture_block(const Texture& base, int depth);
@@ -173,6 +184,8 @@ class Interpreter {
   Value spline_block(const Pos& at);
   void isosurface_body(Node& n, int depth);
   void spline_points(Node& n, int min_count);
+  void triangle_body(Node& n, bool smooth);
+  void polynomial_terms(Node& n);
   void mesh_body(Node& n, int depth);
   void mesh2_body(Node& n, int depth);
   long count(const char* what);
@@ -201,6 +214,7 @@ class Interpreter {
 
   // stream.cpp
   Token raw();
+  bool rereading() const;
   void fetch();
   void directive(const Token& d);
   void directive_body(const Token& d);
@@ -249,6 +263,15 @@ class Interpreter {
   void unread();
   /// The next token without running it as a macro call (a name being declared or tested).
   Token raw_name();
+  // Tokens read inside a #while, #for or macro, by file and offset, with the cursor after each:
+  // a loop reads its text again at every iteration, and a token depends on nothing but the
+  // text and where it starts (texts_ never change). Emptied when it reaches kTokenCacheSize.
+  struct CachedToken {
+    Token token;
+    Cursor after;
+  };
+  static constexpr std::size_t kTokenCacheSize = std::size_t{1} << 16;
+  std::unordered_map<std::uint64_t, CachedToken> token_cache_;
   Token cur_;
   std::size_t cur_input_ = 0;  // the input cur_ was read from, and the cursor before it
   Cursor cur_before_;

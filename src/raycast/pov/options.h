@@ -3,10 +3,13 @@
 // values (`Declare=` / `-D`-style), the clock, the image size, strictness, and the bounds that
 // keep a scene program from running away.
 #include <cstddef>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "pov/object_queries.h"
 
 namespace raycast::pov {
 
@@ -33,11 +36,11 @@ struct Options {
   bool antialias = false;     // +A / Antialias=on: POV-Ray's adaptive method 1
   double antialias_threshold = 0.3;
   int antialias_depth = 3;
-  std::ostream* debug = nullptr;  // where #debug and #warning write (nullptr: standard error)
-  bool system_library_path = true;
-  bool file_output = true;  // #fopen ... write/append allowed (the fuzz target turns it off)  //
-                            // read Library_Path from the user's and the system's povray.ini
+  std::ostream* debug = nullptr;    // where #debug and #warning write (nullptr: standard error)
+  bool system_library_path = true;  // read Library_Path from the user's and the system's povray.ini
+  bool file_output = true;  // #fopen ... write/append allowed (the fuzz target turns it off)
   Limits limits;
+  std::shared_ptr<ObjectQueries> object_queries;  // trace, inside, min/max_extent (nullptr: 0)
 };
 
 /// The library folders POV-Ray's own configuration names: Library_Path entries of

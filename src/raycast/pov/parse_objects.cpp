@@ -30,6 +30,8 @@ const std::map<std::string, Node::Kind>& object_kinds() {
                                                           {"sor", Node::Sor},
                                                           {"mesh", Node::Mesh},
                                                           {"mesh2", Node::Mesh},
+                                                          {"triangle", Node::Triangle},
+                                                          {"smooth_triangle", Node::Triangle},
                                                           {"union", Node::Union},
                                                           {"intersection", Node::Intersection},
                                                           {"difference", Node::Difference},
@@ -39,12 +41,11 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 }
 
 bool is_unbuilt_shape(const std::string& w) {
-  static const char* const shapes[] = {
-      "blob",     "height_field",    "prism",         "sphere_sweep", "superellipsoid",
-      "text",     "julia_fractal",   "bicubic_patch", "parametric",   "polygon",
-      "triangle", "smooth_triangle", "lemon",         "ovus"};
-  for (const char* s : shapes)
-    if (w == s) return true;
+  static constexpr std::string_view shapes[] = {
+      "blob",          "height_field",  "prism",      "sphere_sweep", "superellipsoid", "text",
+      "julia_fractal", "bicubic_patch", "parametric", "polygon",      "lemon",          "ovus"};
+  for (const std::string_view s : shapes)
+    if (s == w) return true;
   return false;
 }
 
@@ -165,7 +166,10 @@ std::optional<Node> Interpreter::object(int depth) {
     }
   } else {
     n.kind = object_kinds().at(kw.text);
-    object_body(n, depth);
+    if (n.kind == Node::Triangle)
+      triangle_body(n, kw.text == "smooth_triangle");
+    else
+      object_body(n, depth);
     if (kw.text == "cubic" || kw.text == "quartic") {
       poly_coefficients(n, kw.text == "cubic" ? 3 : 4);
     } else if (kw.text == "poly") {
@@ -176,29 +180,7 @@ std::optional<Node> Interpreter::object(int depth) {
       skip_comma();
       poly_coefficients(n, static_cast<int>(order));
     } else if (kw.text == "polynomial") {
-      const Pos at = tok().pos;
-      const double order = number("polynomial's order");
-      if (!(order >= 1 && order <= 16) || order != std::floor(order))
-        fail_at(at, "polynomial's order must be a whole number in [1, 16]");
-      skip_comma();
-      while (is_word("xyz")) {
-        const Pos t = tok().pos;
-        next();
-        expect_symbol("(", "after xyz");
-        std::array<int, 3> e{};
-        for (int i = 0; i < 3; ++i) {
-          const double v = number("an exponent");
-          if (!(v >= 0 && v <= order) || v != std::floor(v))
-            fail_at(t, "xyz exponents must be whole numbers in [0, order]");
-          e[static_cast<std::size_t>(i)] = static_cast<int>(v);
-          if (i < 2) expect_symbol(",", "between xyz exponents");
-        }
-        expect_symbol(")", "to close xyz(");
-        expect_symbol(":", "after xyz(...)");
-        if (e[0] + e[1] + e[2] > order) fail_at(t, "the term's degree is above the order");
-        n.terms[e] += number("a coefficient");
-        skip_comma();
-      }
+      polynomial_terms(n);
     } else if (kw.text == "mesh") {
       mesh_body(n, depth);
     } else if (kw.text == "mesh2") {
@@ -226,6 +208,33 @@ std::optional<Node> Interpreter::object(int depth) {
   if (n.kind == Node::Poly && n.terms.empty()) fail_at(n.pos, "the polynomial has no terms");
   if (is_csg(n.kind) && n.children.empty()) return std::nullopt;  // every part left out
   return n;
+}
+
+// polynomial { ORDER, xyz(i, j, k): COEFFICIENT, ... }: the terms by their exponents.
+void Interpreter::polynomial_terms(Node& n) {
+  const Pos at = tok().pos;
+  const double order = number("polynomial's order");
+  if (!(order >= 1 && order <= 16) || order != std::floor(order))
+    fail_at(at, "polynomial's order must be a whole number in [1, 16]");
+  skip_comma();
+  while (is_word("xyz")) {
+    const Pos t = tok().pos;
+    next();
+    expect_symbol("(", "after xyz");
+    std::array<int, 3> e{};
+    for (int i = 0; i < 3; ++i) {
+      const double v = number("an exponent");
+      if (!(v >= 0 && v <= order) || v != std::floor(v))
+        fail_at(t, "xyz exponents must be whole numbers in [0, order]");
+      e[static_cast<std::size_t>(i)] = static_cast<int>(v);
+      if (i < 2) expect_symbol(",", "between xyz exponents");
+    }
+    expect_symbol(")", "to close xyz(");
+    expect_symbol(":", "after xyz(...)");
+    if (e[0] + e[1] + e[2] > order) fail_at(t, "the term's degree is above the order");
+    n.terms[e] += number("a coefficient");
+    skip_comma();
+  }
 }
 
 void Interpreter::object_body(Node& n, int depth) {
@@ -485,6 +494,22 @@ void Interpreter::spline_points(Node& n, int min_count) {
       fail_at(n.pos, "profile radii must be >= 0 (raycast revolves r >= 0 about the axis)");
   n.points = out;
   n.spline = spline;
+}
+
+// triangle { P0, P1, P2 } or smooth_triangle { P0, N0, P1, N1, P2, N2 }: the corners in
+// points, the normals in normals.
+void Interpreter::triangle_body(Node& n, bool smooth) {
+  std::array<Vec3, 3> p, nn;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (i) skip_comma();
+    p[i] = vector("a triangle's corner");
+    if (smooth) {
+      skip_comma();
+      nn[i] = vector("a triangle's corner normal");
+    }
+  }
+  n.points.assign(p.begin(), p.end());
+  if (smooth) n.normals.assign(nn.begin(), nn.end());
 }
 
 void Interpreter::mesh_body(Node& n, int) {

@@ -107,6 +107,7 @@ struct Node {
     Lathe,
     Sor,
     Mesh,
+    Triangle,  // triangle / smooth_triangle outside a mesh: points, and normals when smooth
     Union,
     Intersection,
     Difference,

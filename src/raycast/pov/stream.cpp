@@ -9,7 +9,7 @@
 namespace raycast::pov {
 
 namespace {
-bool opens_block(const std::string& d) {
+bool opens_block(std::string_view d) {
   return d == "if" || d == "ifdef" || d == "ifndef" || d == "while" || d == "for" ||
          d == "switch" || d == "macro";
 }
@@ -39,11 +39,29 @@ void Interpreter::open_file(const std::string& text, const std::string& name,
   inputs_.push_back({index, {}});
 }
 
+bool Interpreter::rereading() const {
+  for (auto f = frames_.rbegin(); f != frames_.rend(); ++f)
+    if (f->kind == FrameKind::While || f->kind == FrameKind::For || f->kind == FrameKind::Macro)
+      return true;
+  return false;
+}
+
 Token Interpreter::raw() {
   Input& in = inputs_.back();
   cur_input_ = inputs_.size() - 1;
   cur_before_ = in.cursor;
-  return read_token(*texts_[static_cast<std::size_t>(in.file)], in.file, scene_.sources, in.cursor);
+  const std::string& text = *texts_[static_cast<std::size_t>(in.file)];
+  if (!rereading() || in.cursor.offset >= (std::uint64_t{1} << 40))
+    return read_token(text, in.file, scene_.sources, in.cursor);
+  const std::uint64_t key = (static_cast<std::uint64_t>(in.file) << 40) | in.cursor.offset;
+  if (const auto it = token_cache_.find(key); it != token_cache_.end()) {
+    in.cursor = it->second.after;
+    return it->second.token;
+  }
+  Token t = read_token(text, in.file, scene_.sources, in.cursor);
+  if (token_cache_.size() >= kTokenCacheSize) token_cache_.clear();
+  token_cache_.emplace(key, CachedToken{t, in.cursor});
+  return t;
 }
 
 Token Interpreter::raw_name() {
@@ -85,8 +103,8 @@ void Interpreter::fetch() {
         continue;
       }
       // POV-Ray still reads these directives without their '#' (with a warning).
-      if (!s && (t.text == "declare" || t.text == "local" || t.text == "default" ||
-                 t.text == "include")) {
+      const std::string_view word = t.text;
+      if (!s && (word == "declare" || word == "local" || word == "default" || word == "include")) {
         t.kind = Token::Directive;
         directive(t);
         continue;
@@ -118,8 +136,8 @@ const Token& Interpreter::peek_operator() {
     Token t = raw();
     // A macro's #end inside an expression returns to the caller's tokens (POV-Ray's
     // `Add(1, 2) * 3`): it runs here; any other directive waits for the statement level.
-    if (t.kind == Token::Directive && opaque_ == 0 && t.text == "end" && !frames_.empty() &&
-        frames_.back().kind == FrameKind::Macro) {
+    if (t.kind == Token::Directive && opaque_ == 0 && std::string_view(t.text) == "end" &&
+        !frames_.empty() && frames_.back().kind == FrameKind::Macro) {
       end_macro();
       continue;
     }
@@ -134,7 +152,7 @@ const Token& Interpreter::peek_operator() {
   }
 }
 
-bool Interpreter::accept_symbol(const char* s) {
+bool Interpreter::accept_symbol(std::string_view s) {
   if (!is_symbol(s)) return false;
   next();
   return true;
@@ -275,66 +293,68 @@ void Interpreter::directive(const Token& d) {
 
 void Interpreter::directive_body(const Token& d) {
   const std::string& w = d.text;
-  if (w == "declare" || w == "local") {
-    declare(d, w == "local");
-  } else if (w == "if") {
+  const std::string_view word = w;  // compared with literals inline
+  if (word == "declare" || word == "local") {
+    declare(d, word == "local");
+  } else if (word == "if") {
     ++opaque_;
     const bool v = std::fabs(paren_number("#if")) > 1e-10;
     --opaque_;
     unread();
     begin_if(d, v);
-  } else if (w == "ifdef" || w == "ifndef") {
+  } else if (word == "ifdef" || word == "ifndef") {
     ++opaque_;
     const bool defined = is_defined_test();
     --opaque_;
     unread();
-    begin_if(d, w == "ifdef" ? defined : !defined);
-  } else if (w == "else" || w == "elseif") {
+    begin_if(d, word == "ifdef" ? defined : !defined);
+  } else if (word == "else" || word == "elseif") {
     if (frames_.empty() || frames_.back().inputs != inputs_.size())
       fail_at(d.pos, "#" + w + " without #if");
-    if (frames_.back().kind == FrameKind::Switch && w == "else") return;  // falls through
+    if (frames_.back().kind == FrameKind::Switch && word == "else") return;  // falls through
     if (frames_.back().kind != FrameKind::If) fail_at(d.pos, "#" + w + " without #if");
     skip_to(false, false);
     frames_.pop_back();
-  } else if (w == "end") {
+  } else if (word == "end") {
     end_directive(d);
-  } else if (w == "while") {
+  } else if (word == "while") {
     begin_while(d);
-  } else if (w == "for") {
+  } else if (word == "for") {
     begin_for(d);
-  } else if (w == "switch") {
+  } else if (word == "switch") {
     begin_switch(d);
-  } else if (w == "case" || w == "range") {
+  } else if (word == "case" || word == "range") {
     if (frames_.empty() || frames_.back().kind != FrameKind::Switch)
       fail_at(d.pos, "#" + w + " outside #switch");
     ++opaque_;
     condition();  // a later label while a case runs: POV-Ray falls through it
     --opaque_;
     unread();
-  } else if (w == "break") {
+  } else if (word == "break") {
     break_directive(d);
-  } else if (w == "macro") {
+  } else if (word == "macro") {
     define_macro(d);
-  } else if (w == "include") {
+  } else if (word == "include") {
     include(d.pos);
-  } else if (w == "undef") {
+  } else if (word == "undef") {
     undef();
-  } else if (w == "version") {
+  } else if (word == "version") {
     ++opaque_;
     scene_.settings.version = number("#version");
     --opaque_;
     if (pov::is_symbol(peek_operator(), ";")) next();
-  } else if (w == "default") {
+  } else if (word == "default") {
     default_block();
-  } else if (w == "debug" || w == "warning" || w == "error" || w == "render" || w == "statistics") {
+  } else if (word == "debug" || word == "warning" || word == "error" || word == "render" ||
+             word == "statistics") {
     message_directive(d);
-  } else if (w == "fopen") {
+  } else if (word == "fopen") {
     fopen_directive();
-  } else if (w == "read") {
+  } else if (word == "read") {
     read_directive();
-  } else if (w == "write") {
+  } else if (word == "write") {
     write_directive();
-  } else if (w == "fclose") {
+  } else if (word == "fclose") {
     fclose_directive();
   } else {
     fail_at(d.pos, "unknown directive '#" + w + "'");

@@ -66,12 +66,13 @@ const Value* Interpreter::lookup(const std::string& name) {
   return s ? &s->value : nullptr;
 }
 
-void Interpreter::assign(const std::string& name, Value v, bool local, const Pos& at) {
+void Interpreter::assign(const std::string& name, Value v, bool local, const Pos& at,
+                         std::size_t local_scope) {
   if (v.kind == Value::String && v.text.size() > options_.limits.string_bytes)
     fail_at(at, "a string longer than " + std::to_string(options_.limits.string_bytes) + " bytes");
   Symbol* target = nullptr;
   if (local) {
-    auto& scope = scopes_.back();
+    auto& scope = scopes_[std::min(local_scope, scopes_.size() - 1)];
     const auto it = scope.find(name);
     if (it != scope.end()) {
       target = &it->second;
@@ -122,11 +123,13 @@ void Interpreter::declare(const Token& d, bool local) {
     keep->elements[index] = std::move(v);
   } else {
     expect_symbol("=", ("after #declare " + name).c_str());
+    // #local names the scope where the directive starts: a macro whose body is the value may
+    // end after it (`Add(1, 2);`) or its body may hold the `;` (`#if (C) Q; #else ... #end`).
+    const std::size_t scope = scopes_.size() - 1;
     Value v = rvalue();
-    // The token after the value first: a macro whose body is the value ends there, and #local
-    // must then name the caller's scope, not the finished macro's.
+    // The token after the value first: a macro whose body is the value ends there.
     const bool semicolon = pov::is_symbol(peek_operator(), ";");
-    assign(name, std::move(v), local, at);
+    assign(name, std::move(v), local, at, scope);
     if (semicolon) next();
     return;
   }
@@ -176,15 +179,15 @@ void Interpreter::apply_declares() {
 }
 
 namespace {
-bool is_skipped_block(const std::string& w) {
-  static const char* const kinds[] = {
+bool is_skipped_block(std::string_view w) {
+  static constexpr std::string_view kinds[] = {
       "pigment_map", "normal_map",       "texture_map", "slope_map",
       "density_map", "material_map",     "density",     "media",
       "fog",         "rainbow",          "sky_sphere",  "photons",
       "radiosity",   "interior_texture", "bump_map",    "image_pattern",
       "image_map"};
-  for (const char* k : kinds)
-    if (w == k) return true;
+  for (const std::string_view k : kinds)
+    if (k == w) return true;
   return false;
 }
 }  // namespace
@@ -194,13 +197,14 @@ Value Interpreter::rvalue() {
   Value v;
   if (t.kind != Token::Word) return expression();
   const std::string& w = t.text;
+  const std::string_view word = w;  // compared with literals inline
   if (is_object_keyword()) {
     v.kind = Value::Object;
     if (std::optional<Node> n = object(0)) v.object = std::make_shared<const Node>(std::move(*n));
-  } else if (w == "light_source") {
+  } else if (word == "light_source") {
     v.kind = Value::Object;
     v.object = std::make_shared<const Node>(light_block());
-  } else if (w == "texture") {
+  } else if (word == "texture") {
     next();
     v.kind = Value::Texture;
     Texture tx = texture_block(default_texture_, 0);
@@ -210,41 +214,41 @@ Value Interpreter::rvalue() {
       tx = layer_on_top(std::move(tx), texture_block(default_texture_, 0));
     }
     v.texture = std::make_shared<const Texture>(std::move(tx));
-  } else if (w == "pigment") {
+  } else if (word == "pigment") {
     next();
     v.kind = Value::Pigment;
     v.pigment = std::make_shared<const Pigment>(pigment_block(default_texture_.pigment));
-  } else if (w == "normal") {
+  } else if (word == "normal") {
     next();
     v.kind = Value::Normal;
     v.normal = std::make_shared<const texture::Normal>(normal_block(std::nullopt));
-  } else if (w == "finish") {
+  } else if (word == "finish") {
     next();
     v.kind = Value::Finish;
     v.finish = std::make_shared<const Finish>(finish_block(default_texture_.finish));
-  } else if (w == "interior") {
+  } else if (word == "interior") {
     next();
     v.kind = Value::Interior;
     v.ior = interior_block();
-  } else if (w == "material") {
+  } else if (word == "material") {
     next();
     v.kind = Value::Material;
     v.texture = std::make_shared<const Texture>(material_block(default_texture_, 0));
-  } else if (w == "camera") {
+  } else if (word == "camera") {
     next();
     v.kind = Value::Camera;
     v.camera = std::make_shared<const Camera>(camera_block(Camera{}));
-  } else if (w == "transform") {
+  } else if (word == "transform") {
     next();
     v.kind = Value::Transform;
     v.transform = std::make_shared<const std::vector<XformOp>>(transform_block());
-  } else if (w == "function") {
+  } else if (word == "function") {
     next();
     v = function_block(t.pos);
-  } else if (w == "spline") {
+  } else if (word == "spline") {
     next();
     v = spline_block(t.pos);
-  } else if (w == "color_map" || w == "colour_map") {
+  } else if (word == "color_map" || word == "colour_map") {
     next();
     v.kind = Value::ColourMap;
     v.colour_map = std::make_shared<const std::vector<MapEntry>>(colour_map_block());
@@ -253,7 +257,7 @@ Value Interpreter::rvalue() {
     skip_block(w);
     v.kind = Value::Opaque;
     v.text = w;
-  } else if (w == "array") {
+  } else if (word == "array") {
     next();
     v.kind = Value::Array;
     v.array = std::make_shared<ArrayValue>();

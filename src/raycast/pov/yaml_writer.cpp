@@ -356,6 +356,17 @@ class Writer {
           << "}";
         break;
       }
+      case Node::Triangle: {
+        // Mirroring reverses the winding: swap two corners to keep the face's side.
+        const std::size_t b = mirror_ ? 2 : 1, c = mirror_ ? 1 : 2;
+        o << "triangle: {vertices: [" << pt(n.points[0]) << ", " << pt(n.points[b]) << ", "
+          << pt(n.points[c]) << "]";
+        if (!n.normals.empty())
+          o << ", normals: [" << vec(m(n.normals[0])) << ", " << vec(m(n.normals[b])) << ", "
+            << vec(m(n.normals[c])) << "]";
+        o << "}";
+        break;
+      }
       case Node::Mesh: {
         o << "mesh: {vertices: [";
         for (std::size_t i = 0; i < n.vertices.size(); ++i)
