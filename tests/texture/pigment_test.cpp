@@ -122,13 +122,15 @@ TEST(Normal, TiltsAgainstTheGradient) {
   ctx.p = {0.3, 0, 0};
   ctx.n = {0, 0, 1};
   const SurfaceLook look = evaluate(t, ctx);
-  // Gradient (1, 0, 0) per pattern unit: the normal leans to -x by 0.5 before normalising.
-  EXPECT_NEAR(look.normal.x, -0.5 / std::sqrt(1.25), 1e-6);
-  EXPECT_NEAR(look.normal.z, 1 / std::sqrt(1.25), 1e-6);
+  // Gradient (1, 0, 0) per pattern unit, times the slope scale: the normal leans to -x by
+  // 0.5 * kPatternNormalScale before normalising.
+  const double lean = 0.5 * kPatternNormalScale;
+  EXPECT_NEAR(look.normal.x, -lean / std::sqrt(1 + lean * lean), 1e-6);
+  EXPECT_NEAR(look.normal.z, 1 / std::sqrt(1 + lean * lean), 1e-6);
   // A pattern scaled by 10 tilts the same (the gradient is per pattern unit).
   transform_layer(t.layers[0], Transform::scale({10, 10, 10}));
   ctx.p = {3, 0, 0};
-  EXPECT_NEAR(evaluate(t, ctx).normal.x, -0.5 / std::sqrt(1.25), 1e-6);
+  EXPECT_NEAR(evaluate(t, ctx).normal.x, -lean / std::sqrt(1 + lean * lean), 1e-6);
 }
 
 TEST(Normal, BumpsChangeTheNormalSomewhere) {

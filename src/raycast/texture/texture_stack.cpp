@@ -167,23 +167,18 @@ Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
     }
   if (!(size > 0) || !std::isfinite(size)) size = 1;
   constexpr double kStep = 0.02;
-  const double here = evaluate(pattern, ctx.p);
+  const PatternKind k = pattern.kind;
+  const bool own_normal = k == PatternKind::kBumps || k == PatternKind::kDents ||
+                          k == PatternKind::kRipples || k == PatternKind::kWaves;
+  const double scale = own_normal ? 1 : kPatternNormalScale;
   Vec3 g{0, 0, 0};
   for (int a = 0; a < 3; ++a) {
     const Vec3& axis = ctx.axes[a];
     const double l = length(axis);
     if (!(l > 0)) continue;
     const Vec3 d = (kStep * size / l) * axis;
-    const double ahead = evaluate(pattern, ctx.p + d) - here,
-                 behind = here - evaluate(pattern, ctx.p - d);
-    // A side that crosses a wave's wrap (the ramp's jump from 1 to 0) is left out: the slope is
-    // the pattern's, not the jump's.
-    const bool wraps_ahead = std::abs(ahead) > 0.5, wraps_behind = std::abs(behind) > 0.5;
-    const double slope = wraps_ahead && wraps_behind ? 0
-                         : wraps_ahead               ? behind
-                         : wraps_behind              ? ahead
-                                                     : 0.5 * (ahead + behind);
-    g[std::size_t(a)] = slope / kStep;
+    const double slope = 0.5 * (evaluate(pattern, ctx.p + d) - evaluate(pattern, ctx.p - d));
+    g[std::size_t(a)] = slope / kStep * scale;
   }
   return g;
 }
