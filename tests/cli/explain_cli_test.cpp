@@ -103,6 +103,30 @@ TEST_F(ExplainCli, PovScene_IsExplained) {
   EXPECT_EQ(root["ray"]["hit"]["shape"].as<std::string>(), "sphere");
 }
 
+TEST_F(ExplainCli, NamedObjects_AreNamedInTheTree) {
+  const std::string yaml = path("named.yaml");
+  std::ofstream(yaml)
+      << "camera: {position: [0, 0, -4], look_at: [0, 0, 0], fov: 40}\n"
+         "lights: [{type: point, position: [3, 5, -4]}]\n"
+         "objects:\n"
+         "  - {sphere: {center: [0, 0, 0], radius: 1}, name: \"red \\\"ball\\\"\"}\n";
+  CliRun r = run("explain " + yaml + " --pixel 16 12 --width 32 --height 24");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("sphere #0 'red \"ball\"'"), std::string::npos) << r.out;
+  r = run("explain " + yaml + " --pixel 16 12 --width 32 --height 24 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(YAML::Load(r.out)["ray"]["hit"]["name"].as<std::string>(), "red \"ball\"");
+
+  const std::string pov = path("named.pov");
+  std::ofstream(pov) << "camera { location <0, 0, -4> look_at 0 }\n"
+                        "light_source { <3, 5, -4> color rgb 1 }\n"
+                        "#declare Ball = sphere { 0, 1 pigment { color rgb 1 } }\n"
+                        "object { Ball }\n";
+  r = run("explain " + pov + " --pixel 16 12 --width 32 --height 24 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(YAML::Load(r.out)["ray"]["hit"]["name"].as<std::string>(), "Ball");
+}
+
 TEST_F(ExplainCli, RenderStats_PrintsTheReport) {
   const CliRun r = run("render " + scene("scenes/demo.yaml") + " -o " + path("s.png") +
                        " --width 32 --height 24 --spp 1 --stats");

@@ -74,6 +74,9 @@ const Case kCases[] = {
      "contained_by { box { -2, 2 } } translate 4*z }",
      2.5},
     {"lathe", "lathe { 4, <0, -1>, <1, -1>, <1, 1>, <0, 1> translate 3*z }", 2},
+    // A radius below 0 draws as |r| (POV-Ray meets x^2 + z^2 = r^2).
+    {"lathe_negative_radius", "lathe { 4, <0, -1>, <-1, -1>, <-1, 1>, <0, 1> translate 3*z }", 2},
+    {"lathe_crossing_the_axis", "lathe { 3, <0.5, -1>, <-1.5, 1>, <0, 1> translate 3*z }", 2.5},
     {"lathe_bezier", "lathe { bezier_spline 4, <0, -1>, <1, -1>, <1, 1>, <0, 1> translate 3*z }",
      2.25},
     {"sor", "sor { 4, <1, -2>, <1, -1>, <1, 1>, <1, 2> translate 3*z }", 2},
@@ -86,6 +89,10 @@ const Case kCases[] = {
     {"mesh2",
      "mesh2 { vertex_vectors { 3, <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } "
      "face_indices { 1, <0, 1, 2> } }",
+     3},
+    {"mesh2_trailing_commas",
+     "mesh2 { vertex_vectors { 3 <-1, -1, 3>, <1, -1, 3>, <0, 1, 3>, } "
+     "face_indices { 1, <0, 1, 2>, } }",
      3},
     {"union", "union { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2},
     {"merge", "merge { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2},

@@ -61,6 +61,10 @@ class Loader {
     for (const YamlNode& entry : objects) {
       scene_.marks.entries.push_back(mark_of(entry));
       read_object(entry, 0, scene_.entries, Placement{}, scene_.objects);
+      if (entry.IsMap() && entry["name"]) {
+        scene_.marks.entry_names.resize(std::size_t(scene_.entries) + 1);
+        scene_.marks.entry_names.back() = std::string(entry["name"].Scalar());
+      }
       ++scene_.entries;
     }
   }

@@ -65,6 +65,10 @@ class Builder {
       if (out.empty()) continue;
       ++scene_.entries;
       scene_.marks.entries.push_back({n.pos.file == 0 ? n.pos.line : 0, n.pos.column});
+      if (!n.name.empty()) {
+        scene_.marks.entry_names.resize(std::size_t(scene_.entries));
+        scene_.marks.entry_names.back() = n.name;
+      }
       for (Object& o : out) scene_.objects.push_back(std::move(o));
     }
   }

@@ -111,6 +111,8 @@ class Interpreter {
   Value builtin_constant(const Token& name);
   Value primary(int vector_depth);
   Value sub_expression(int vector_depth);
+  /// An expression read as a block's item (no comparisons outside parentheses).
+  Value item_expression();
   Value vector_literal(const Pos& at);
   Value colour_keyword(const Token& kw);
   Value colour_expression(const Pos& at);
@@ -278,9 +280,24 @@ class Interpreter {
   int opaque_ = 0;
 
  public:
-  // > 0 while reading a value inside a block (an object's numbers, a count): POV-Ray compares
-  // there only inside parentheses, so `14 <-1, 0, 0>` is a count and a vector.
-  int item_value_ = 0;
+  // > 0 inside parentheses (grouping, a condition, a call's arguments): POV-Ray reads the
+  // comparisons (< > <= >= = !=) only there, so a block's `14 <-1, 0, 0>` is a count and a
+  // vector, and `#if (C) <1, 0, 0> #else` a condition and a vector.
+  int paren_depth_ = 0;
+  /// paren_depth_ set for a scope, restored on every exit.
+  class ParenDepth {
+   public:
+    ParenDepth(Interpreter& in, int depth) : in_(in), saved_(in.paren_depth_) {
+      in.paren_depth_ = depth;
+    }
+    ~ParenDepth() { in_.paren_depth_ = saved_; }
+    ParenDepth(const ParenDepth&) = delete;
+    ParenDepth& operator=(const ParenDepth&) = delete;
+
+   private:
+    Interpreter& in_;
+    int saved_;
+  };
 
  private:  // > 0: peek_operator runs no directive (a directive's own arguments)
   bool have_ = false;
@@ -291,7 +308,7 @@ class Interpreter {
   std::size_t weight_ = 0;
   long long reads_ = 0;
   std::set<std::string> warned_;
-  std::vector<std::uint64_t> random_streams_;
+  std::vector<std::uint32_t> random_streams_;
   struct OpenFile;
   std::map<std::string, std::shared_ptr<OpenFile>> files_;
 };

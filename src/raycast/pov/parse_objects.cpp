@@ -49,6 +49,23 @@ bool is_unbuilt_shape(const std::string& w) {
   return false;
 }
 
+// POV-Ray's lathe meets x^2 + z^2 = r(y)^2, so a radius below 0 (a spline overshooting the axis,
+// or written so) draws as |r|: the profile folded onto r >= 0, with a point on the axis where it
+// crosses it.
+std::vector<Vec3> revolved_profile(const std::vector<Vec3>& points) {
+  std::vector<Vec3> out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& q = points[i];
+    if (i > 0 && (points[i - 1].x < 0) != (q.x < 0) && points[i - 1].x != 0 && q.x != 0) {
+      const Vec3& p = points[i - 1];
+      const double s = p.x / (p.x - q.x);
+      out.push_back({0, p.y + s * (q.y - p.y), 0});
+    }
+    out.push_back({std::fabs(q.x), q.y, 0});
+  }
+  return out;
+}
+
 bool is_csg(Node::Kind k) {
   return k == Node::Union || k == Node::Intersection || k == Node::Difference || k == Node::Merge;
 }
@@ -127,6 +144,7 @@ std::optional<Node> Interpreter::object(int depth) {
   bool skipped = false;  // an object raycast does not build: its modifiers are still read
   if (kw.text == "object") {
     const Value* v = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+    const std::string declared_name = v ? tok().text : std::string();
     Value element;
     bool name_read = false;
     if (v && v->kind == Value::Array) {  // object { Objects[I] }
@@ -162,7 +180,10 @@ std::optional<Node> Interpreter::object(int depth) {
       } else {
         skipped = true;
       }
-      if (!name_read) next();
+      if (!name_read) {
+        n.name = declared_name;
+        next();
+      }
     }
   } else {
     n.kind = object_kinds().at(kw.text);
@@ -489,10 +510,7 @@ void Interpreter::spline_points(Node& n, int min_count) {
             p[i + 3] * (u * u * u));
       }
   }
-  for (const Vec3& q : out)
-    if (q.x < 0)
-      fail_at(n.pos, "profile radii must be >= 0 (raycast revolves r >= 0 about the axis)");
-  n.points = out;
+  n.points = revolved_profile(out);
   n.spline = spline;
 }
 
@@ -566,9 +584,7 @@ void Interpreter::mesh2_body(Node& n, int) {
     for (long i = 0; i < cnt; ++i) {
       skip_comma();
       const Pos at = tok().pos;
-      ++item_value_;
-      const Value v = expression();
-      --item_value_;
+      const Value v = item_expression();
       if (v.dims != dims)
         fail_at(at, std::string(name) + " holds " + std::to_string(dims) + "-vectors");
       each(v, at);
@@ -582,6 +598,7 @@ void Interpreter::mesh2_body(Node& n, int) {
           number("a texture index");
         }
     }
+    accept_symbol(",");  // POV-Ray accepts a comma after the last item
     if (!is_symbol("}"))
       fail_here(std::string(name) + " announced " + std::to_string(cnt) + " items, got more");
     next();

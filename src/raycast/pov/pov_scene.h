@@ -134,6 +134,7 @@ struct Node {
   std::shared_ptr<const Node> ref;  // Reference: shared, never copied
   std::size_t weight = 0;           // this object's count against Limits::scene_weight
   bool inverse = false;             // `inverse`: the solid's complement
+  std::string name;                 // object { Name }: the declared name it was placed by
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
   std::size_t texture_at = 0;  // xforms[texture_at...] come after the texture: they move it

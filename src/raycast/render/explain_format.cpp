@@ -20,6 +20,25 @@ std::string vec_json(const Vec3& v) {
   return text;
 }
 
+/// A JSON string: quotes, backslashes and control characters escaped (names are the scene's).
+std::string json_string(const std::string& s) {
+  std::string text = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      text += '\\';
+      text += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char code[8];
+      std::snprintf(code, sizeof code, "\\u%04x", static_cast<unsigned>(c));
+      text += code;
+    } else {
+      text += c;
+    }
+  }
+  text += '"';
+  return text;
+}
+
 /// Short numbers for people: 4 significant digits.
 std::string num(double v) {
   char text[32];
@@ -38,10 +57,13 @@ std::string vec_text(const Vec3& v) {
   return text;
 }
 
-/// "sphere #2 (line 14)": the shape, the top-level entry and where the scene wrote it.
+/// "sphere #2 'mirror' (line 14)": the shape, the top-level entry, its name and where the scene
+/// wrote it.
 std::string object_text(const Scene& scene, std::int32_t index) {
   const Object& o = scene.objects[std::size_t(index)];
   std::string text = std::string(shape_name(o)) + " #" + std::to_string(o.entry);
+  if (const std::string& name = scene.marks.entry_name(o.entry); !name.empty())
+    text += " '" + name + "'";
   if (o.entry >= 0 && std::size_t(o.entry) < scene.marks.entries.size() &&
       scene.marks.entries[std::size_t(o.entry)].line > 0)
     text += " (line " + std::to_string(scene.marks.entries[std::size_t(o.entry)].line) + ")";
@@ -205,6 +227,8 @@ class JsonWriter {
     out += "\"object\": " + std::to_string(o.entry) +
            ", \"scene_object\": " + std::to_string(index) + ", \"shape\": \"" + shape_name(o) +
            "\"";
+    if (const std::string& name = scene_.marks.entry_name(o.entry); !name.empty())
+      out += ", \"name\": " + json_string(name);
   }
 
   void hit(const ExplainedRay& r) {
