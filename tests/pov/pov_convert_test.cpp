@@ -286,11 +286,11 @@ TEST(PovImport, CliConvertAndRender) {
   const auto d = test::run("render -D Q=0.5 --library-path '" + inc_dir + "' '" + uses + "' -o '" +
                            (test::temp_dir() / "d.png").string() + "' --width 8 --height 6");
   EXPECT_EQ(d.code, 0) << d.err;
-  const std::string warned = test::write("warned.pov", "sphere { 0, 1 pigment { bozo } }\n");
+  const std::string warned = test::write("warned.pov", "sphere { 0, 1 pigment { mandel 25 } }\n");
   const auto w = test::run("render '" + warned + "' --strict -o '" +
                            (test::temp_dir() / "w.png").string() + "' --width 8 --height 6");
   EXPECT_EQ(w.code, 2);
-  EXPECT_NE(w.err.find("warned.pov:1:25: raycast does not render the bozo pattern"),
+  EXPECT_NE(w.err.find("warned.pov:1:25: raycast does not render the mandel pattern"),
             std::string::npos)
       << w.err;
   const auto v =

@@ -278,17 +278,19 @@ TEST(PovInterpreter, ErrorsNameFileLineAndColumn) {
 }
 
 TEST(PovInterpreter, UnsupportedIsOneWarningPerKindOrAnErrorWhenStrict) {
-  const std::string text = "sphere { 0, 1 pigment { bozo } }\nsphere { 0, 1 pigment { bozo } }";
+  const std::string text =
+      "sphere { 0, 1 pigment { mandel 25 } }\nsphere { 0, 1 pigment { mandel 9 } }";
   Options o;
   o.system_library_path = false;
   const PovScene s = interpret_pov(text, "t.pov", ".", o);
   ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_EQ(s.warnings[0].rfind("t.pov:1:25: warning: raycast does not render the bozo pattern", 0),
-            0u)
+  EXPECT_EQ(
+      s.warnings[0].rfind("t.pov:1:25: warning: raycast does not render the mandel pattern", 0), 0u)
       << s.warnings[0];
   EXPECT_EQ(s.objects.size(), 2u);
   o.strict = true;
-  EXPECT_EQ(error_of(text, o).rfind("t.pov:1:25: raycast does not render the bozo pattern", 0), 0u);
+  EXPECT_EQ(error_of(text, o).rfind("t.pov:1:25: raycast does not render the mandel pattern", 0),
+            0u);
 }
 
 TEST(PovInterpreter, DeclaresFromTheCommandLine) {

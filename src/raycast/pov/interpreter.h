@@ -136,7 +136,35 @@ class Interpreter {
 
   // ---- statements ----
   Texture texture_block(const Texture& base, int depth);
+  /// A texture's items up to `close` ("}" for a block, "]" for a texture map entry).
+  Texture texture_body(const Texture& base, int depth, const char* close);
+  /// texture_map { [v TEXTURE_ITEMS] ... } into `map`, sorted by value.
+  void texture_map_block(const Texture& base, int depth, TextureMap& map);
+  /// The first texture of a block holding textures among other items (material_map).
+  std::optional<Texture> first_texture_in_block(const Texture& base, int depth,
+                                                const std::string& what);
   Pigment pigment_block(const Pigment& base);
+  /// A pigment's items up to `close` ("}" for a block, "]" for a pigment map entry).
+  Pigment pigment_body(const Pigment& base, const char* close);
+  /// One item of a pigment other than a modelled pattern keyword; false when t is none.
+  bool pigment_item(const Token& t, Pigment& p, texture::Pigment& model, bool& modelled);
+  void skip_pattern_modifier(const std::string& w);
+  // ---- patterns in the texture system's terms (parse_patterns.cpp) ----
+  /// A pattern keyword's own values (gradient's vector, spiral's arms), keeping the steps and
+  /// turbulence already given.
+  void start_pattern(texture::PatternKind kind, texture::Pattern& p);
+  /// Reads a pattern modifier (turbulence, octaves, waves, frequency, warp ...) named w.
+  bool pattern_modifier(const std::string& w, texture::Pattern& p);
+  void warp_block(texture::Pattern& p);
+  /// Reads to the '}' that closes the block being read (its inner blocks included).
+  void skip_warp_rest();
+  /// A block pattern's colours or pigments (checker, brick, hexagon ...).
+  void block_list(texture::Pattern& pattern, texture::Pigment& model, Pigment& p);
+  std::vector<texture::PigmentMapEntry> pigment_map_block();
+  texture::Normal normal_block(const std::optional<texture::Normal>& base);
+  /// Transformations inside a texture: they move its pigment, normal and layers.
+  void move_texture(Texture& t, const std::vector<XformOp>& ops);
+  void move_pigment(Pigment& p, const std::vector<XformOp>& ops, const Transform& x);
   Finish finish_block(const Finish& base);
   std::optional<double> interior_block();
   Texture material_block(const Texture& base, int depth);
@@ -289,6 +317,12 @@ class Interpreter {
 };
 
 /// Reads a POV-Ray scene (and the files it includes) to its description.
+/// `top` laid over `below` (layered textures): below's layers and below itself under top.
+Texture layer_on_top(Texture below, Texture top);
+/// Whether w is a pattern keyword (any POV-Ray pattern) or a pattern modifier keyword.
+bool is_pattern_word(const std::string& w);
+bool is_pattern_modifier_word(const std::string& w);
+
 PovScene interpret_pov(const std::string& text, const std::string& name, const std::string& dir,
                        const Options& options);
 

@@ -725,8 +725,12 @@ void Interpreter::mesh2_body(Node& n, int) {
 bool Interpreter::modifier(Node& n, int depth) {
   const Token t = tok();
   const std::string& w = t.text;
+  // Transformations written after an object's first texture item move the texture with it.
   auto own_texture = [&]() -> Texture& {
-    if (!n.texture) n.texture = default_texture_;
+    if (!n.texture) {
+      n.texture = default_texture_;
+      n.texture_at = n.xforms.size();
+    }
     return *n.texture;
   };
   if (t.kind != Token::Word) return false;
@@ -734,10 +738,11 @@ bool Interpreter::modifier(Node& n, int depth) {
   if (w == "texture") {
     next();
     const std::optional<double> ior = n.texture ? n.texture->ior : std::nullopt;
-    if (n.texture) {
-      unsupported_warning(t.pos, "layered textures", "the last layer is used");
-    }
-    n.texture = texture_block(default_texture_, depth + 1);
+    if (!n.texture) n.texture_at = n.xforms.size();
+    Texture layer = texture_block(default_texture_, depth + 1);
+    // A second texture is laid over the first (layered textures).
+    n.texture =
+        n.texture ? layer_on_top(std::move(*n.texture), std::move(layer)) : std::move(layer);
     if (!n.texture->ior) n.texture->ior = ior;
   } else if (w == "pigment") {
     next();
@@ -751,8 +756,9 @@ bool Interpreter::modifier(Node& n, int depth) {
     tx.name.clear();
   } else if (w == "normal") {
     next();
-    unsupported_warning(t.pos, "normal perturbations");
-    skip_block("normal");
+    Texture& tx = own_texture();
+    tx.normal = normal_block(tx.normal);
+    tx.name.clear();
   } else if (w == "interior") {
     next();
     const std::optional<double> ior = interior_block();
@@ -761,6 +767,7 @@ bool Interpreter::modifier(Node& n, int depth) {
     tx.name.clear();
   } else if (w == "material") {
     next();
+    if (!n.texture) n.texture_at = n.xforms.size();
     n.texture = material_block(n.texture ? *n.texture : default_texture_, depth + 1);
   } else if (w == "global_lights" && n.kind == Node::Union) {
     next();
