@@ -13,7 +13,7 @@ foreach(t ${layer_targets})
 endforeach()
 # Link order for pkg-config: higher layers first. A static layer missing here stops the
 # configure, so that a new layer cannot leave the pkg-config link incomplete.
-set(raycast_pc_order api cast render load pov scene objects mesh csg volume accel geometry io math)
+set(raycast_pc_order api cast render load pov scene texture objects mesh csg volume accel geometry io math)
 foreach(layer ${raycast_pc_order})
   if(TARGET raycast_${layer})
     get_target_property(type raycast_${layer} TYPE)

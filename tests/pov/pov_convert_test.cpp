@@ -74,6 +74,9 @@ const Case kCases[] = {
      "contained_by { box { -2, 2 } } translate 4*z }",
      2.5},
     {"lathe", "lathe { 4, <0, -1>, <1, -1>, <1, 1>, <0, 1> translate 3*z }", 2},
+    // A radius below 0 draws as |r| (POV-Ray meets x^2 + z^2 = r^2).
+    {"lathe_negative_radius", "lathe { 4, <0, -1>, <-1, -1>, <-1, 1>, <0, 1> translate 3*z }", 2},
+    {"lathe_crossing_the_axis", "lathe { 3, <0.5, -1>, <-1.5, 1>, <0, 1> translate 3*z }", 2.5},
     {"lathe_bezier", "lathe { bezier_spline 4, <0, -1>, <1, -1>, <1, 1>, <0, 1> translate 3*z }",
      2.25},
     {"sor", "sor { 4, <1, -2>, <1, -1>, <1, 1>, <1, 2> translate 3*z }", 2},
@@ -87,7 +90,16 @@ const Case kCases[] = {
      "mesh2 { vertex_vectors { 3, <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } "
      "face_indices { 1, <0, 1, 2> } }",
      3},
+    {"mesh2_trailing_commas",
+     "mesh2 { vertex_vectors { 3 <-1, -1, 3>, <1, -1, 3>, <0, 1, 3>, } "
+     "face_indices { 1, <0, 1, 2>, } }",
+     3},
     {"union", "union { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2},
+    // A declared object's name alone stands for object { Name } (in CSG and as a scene item).
+    {"bare_declared_object",
+     "#declare S = sphere { <0, 0, 3>, 1 }\n#declare B = box { -1, 1 translate 4 * z }\n"
+     "union { S B }\nB",
+     2},
     {"merge", "merge { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2},
     {"intersection", "intersection { sphere { <0, 0, 3>, 1 } sphere { <0, 0, 3.5>, 1 } }", 2.5},
     {"difference", "difference { sphere { <0, 0, 3>, 1 } box { <-2, -2, 0>, <2, 2, 2.5> } }", 2.5},
@@ -274,11 +286,11 @@ TEST(PovImport, CliConvertAndRender) {
   const auto d = test::run("render -D Q=0.5 --library-path '" + inc_dir + "' '" + uses + "' -o '" +
                            (test::temp_dir() / "d.png").string() + "' --width 8 --height 6");
   EXPECT_EQ(d.code, 0) << d.err;
-  const std::string warned = test::write("warned.pov", "sphere { 0, 1 pigment { bozo } }\n");
+  const std::string warned = test::write("warned.pov", "sphere { 0, 1 pigment { mandel 25 } }\n");
   const auto w = test::run("render '" + warned + "' --strict -o '" +
                            (test::temp_dir() / "w.png").string() + "' --width 8 --height 6");
   EXPECT_EQ(w.code, 2);
-  EXPECT_NE(w.err.find("warned.pov:1:25: raycast does not render the bozo pattern"),
+  EXPECT_NE(w.err.find("warned.pov:1:25: raycast does not render the mandel pattern"),
             std::string::npos)
       << w.err;
   const auto v =

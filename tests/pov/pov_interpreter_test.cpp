@@ -157,6 +157,46 @@ TEST(PovInterpreter, DeeplyNestedParentheses_AreAPositionedError) {
   EXPECT_EQ(error_of(fine), "");
 }
 
+// POV-Ray compares only inside parentheses: after `#if (C)` a '<' opens a vector, and a
+// block's `14 <-1, 0, 0>` is a count and a vector.
+TEST(PovInterpreter, ComparisonsOnlyInsideParentheses) {
+  EXPECT_EQ(debug_of("#declare P = 3;\n"
+                     "#declare C = #if (P < 5) <0.7, 0.3, 0.1> #else <0, 0, 1> #end;\n"
+                     "#debug vstr(3, C, \",\", 0, 1)"),
+            "0.7,0.3,0.1");
+  EXPECT_EQ(debug_of("#declare A = (1 < 2) + (2 >= 3) + select(1 < 2, 0, 1) + max(1 = 1, 0);\n"
+                     "#debug str(A, 0, 0)"),
+            "3");
+  EXPECT_NE(error_of("#declare A = 0.6 < 1;"), "");
+}
+
+// rand gives POV-Ray 3.7's own sequence (values printed by povray 3.7 for these seeds), so
+// scenes place their random things where POV-Ray does.
+TEST(PovInterpreter, Rand_IsPovRaysSequence) {
+  EXPECT_EQ(debug_of("#declare S = seed(1237);\n"
+                     "#debug concat(str(rand(S), 0, 12), \" \", str(rand(S), 0, 12))"),
+            "0.001633957494 0.896208123280");
+  EXPECT_EQ(debug_of("#declare S = seed(-5);\n#debug str(rand(S), 0, 12)"), "0.890052870123");
+  EXPECT_EQ(debug_of("#declare S = seed(3.7);\n#debug str(rand(S), 0, 12)"), "0.265972876983");
+  EXPECT_EQ(debug_of("#declare S = seed(1e10);\n#debug str(rand(S), 0, 12)"), "0.500002874411");
+}
+
+TEST(PovInterpreter, StringsCompareInConditions) {
+  EXPECT_EQ(debug_of("#declare V = \"tree\";\n"
+                     "#if (V = \"tree\") #debug \"a\" #end #if (V != \"bush\") #debug \"b\" #end\n"
+                     "#if (V = \"bush\") #debug \"c\" #end"),
+            "ab");
+  EXPECT_NE(error_of("#declare V = \"tree\";\n#if (V = 1) #end"), "");
+}
+
+// A function held in an array is called like a declared one.
+TEST(PovInterpreter, FunctionFromAnArrayElement_IsCalled) {
+  EXPECT_EQ(debug_of("#declare Fns = array[2] { function(a, b) { a + b }, function { x * 2 } }\n"
+                     "#declare V = <Fns[0](1, 2), Fns[1](4, 0, 0), 0>;\n"
+                     "#debug vstr(2, V, \",\", 0, 0)"),
+            "3,8");
+}
+
 // A macro whose body holds the value's `;` (`#if (C) Q; #else ... #end`): the #local that
 // called it still names the caller's scope (POV-Ray's tracevines.pov).
 TEST(PovInterpreter, LocalFromAMacroHoldingTheSemicolon_IsTheCallersLocal) {
@@ -238,17 +278,19 @@ TEST(PovInterpreter, ErrorsNameFileLineAndColumn) {
 }
 
 TEST(PovInterpreter, UnsupportedIsOneWarningPerKindOrAnErrorWhenStrict) {
-  const std::string text = "sphere { 0, 1 pigment { bozo } }\nsphere { 0, 1 pigment { bozo } }";
+  const std::string text =
+      "sphere { 0, 1 pigment { mandel 25 } }\nsphere { 0, 1 pigment { mandel 9 } }";
   Options o;
   o.system_library_path = false;
   const PovScene s = interpret_pov(text, "t.pov", ".", o);
   ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_EQ(s.warnings[0].rfind("t.pov:1:25: warning: raycast does not render the bozo pattern", 0),
-            0u)
+  EXPECT_EQ(
+      s.warnings[0].rfind("t.pov:1:25: warning: raycast does not render the mandel pattern", 0), 0u)
       << s.warnings[0];
   EXPECT_EQ(s.objects.size(), 2u);
   o.strict = true;
-  EXPECT_EQ(error_of(text, o).rfind("t.pov:1:25: raycast does not render the bozo pattern", 0), 0u);
+  EXPECT_EQ(error_of(text, o).rfind("t.pov:1:25: raycast does not render the mandel pattern", 0),
+            0u);
 }
 
 TEST(PovInterpreter, DeclaresFromTheCommandLine) {

@@ -82,6 +82,20 @@ TEST(PovObjectFunctions, Extents_AreTheBoundingBoxAndPovRaysHugeBoundWhenUnbound
   EXPECT_EQ(error_of(s), "");
 }
 
+TEST(PovObjectFunctions, ObjectNotBuilt_AnswersZeroWithAWarning) {
+  std::vector<std::string> warnings;
+  EXPECT_EQ(error_of("#declare T = text { ttf \"timrom.ttf\" \"A\" 1, 0 }\n"
+                     "#declare M = max_extent(T);\n" +
+                         expect_near("M", "<0, 0, 0>"),
+                     &warnings),
+            "");
+  bool warned = false;
+  for (const std::string& w : warnings)
+    warned = warned ||
+             w.find("max_extent function of an object raycast does not build") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 TEST(PovObjectFunctions, NonObjectArgument_IsAPositionedError) {
   const std::string e = error_of("#declare P = trace(3, <0, 0, 0>, z);");
   EXPECT_NE(e.find("t.pov:2:20: trace: expected an object"), std::string::npos) << e;

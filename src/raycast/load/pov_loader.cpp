@@ -12,10 +12,12 @@
 #include <sstream>
 
 #include "io/scene_file.h"
+#include "load/pov_textures.h"
 #include "objects/csg_tree.h"
 #include "pov/checker_grid.h"
 #include "pov/ini_file.h"
 #include "pov/interpreter.h"
+#include "pov/pov_transform.h"
 #include "pov/yaml_writer.h"
 
 namespace raycast {
@@ -59,7 +61,7 @@ class Builder {
     for (const Node& n : s_.objects) {
       const int entry = scene_.entries;
       out.clear();
-      add(n, nullptr, std::nullopt, entry, out);
+      add(n, nullptr, Transform(), std::nullopt, entry, out);
       if (out.empty()) continue;
       ++scene_.entries;
       scene_.marks.entries.push_back({n.pos.file == 0 ? n.pos.line : 0, n.pos.column});
@@ -76,7 +78,7 @@ class Builder {
   std::vector<Object> objects_of(const Node& n) {
     scene_.materials.assign(1, Material{});
     std::vector<Object> out;
-    add(n, nullptr, std::nullopt, 0, out);
+    add(n, nullptr, Transform(), std::nullopt, 0, out);
     return out;
   }
 
@@ -179,7 +181,44 @@ class Builder {
     scene_.marks.lights.push_back({l.pos.file == 0 ? l.pos.line : 0, l.pos.column});
   }
 
-  int material(const pov::Texture& t) {
+  // POV-Ray's world from a node's texture space: the parent's placement (in POV-Ray's frame) and
+  // the node's transformations written after its texture.
+  Transform texture_frame(const Node& n, const std::optional<Transform>& parent) const {
+    const std::size_t at = std::min(n.texture_at, n.xforms.size());
+    const std::vector<XformOp> after(n.xforms.begin() + static_cast<std::ptrdiff_t>(at),
+                                     n.xforms.end());
+    const std::optional<Transform> own = pov::pov_transform(after);
+    if (!own) fail_at(n.pos, "the matrix cannot be inverted");
+    return parent ? to_pov(*parent) * *own : *own;
+  }
+  // A transform of raycast's frame as seen in POV-Ray's (the mirror on both sides).
+  Transform to_pov(const Transform& t) const {
+    if (!mirror_) return t;
+    const Transform flip = Transform::scale({1, 1, -1});
+    return flip * t * flip;
+  }
+
+  // A material of the texture system for one object: its stack and the map from the object's
+  // space to the texture's (POV-Ray's world from raycast's, then the texture frame's inverse).
+  int textured_material(const pov::Texture& t, const Transform& frame,
+                        const std::optional<Transform>& object) {
+    Material mat;
+    auto it = stacks_.find(&t);
+    if (it == stacks_.end()) it = stacks_.emplace(&t, pov_textures_.stack(t)).first;
+    mat.texture = it->second;
+    mat.color = rgb(t.pigment.c0);
+    if (t.ior) mat.ior = *t.ior;
+    const Transform world = mirror_ ? Transform::scale({1, 1, -1}) : Transform();
+    mat.texture_transform = frame.inverse() * (object ? world * *object : world);
+    mat.name = t.name;
+    if (mat.name.empty()) mat.name.append("m").append(std::to_string(scene_.materials.size()));
+    scene_.materials.push_back(std::move(mat));
+    return static_cast<int>(scene_.materials.size()) - 1;
+  }
+
+  int material(const pov::Texture& t, const Transform& frame,
+               const std::optional<Transform>& object) {
+    if (needs_texture_system(t)) return textured_material(t, frame, object);
     Material mat;
     const pov::Pigment& p = t.pigment;
     const pov::Finish& f = t.finish;
@@ -432,7 +471,7 @@ class Builder {
   }
 
   // One leaf object, its transform relative to `parent`.
-  std::optional<Object> leaf(const Node& n, const pov::Texture* tex,
+  std::optional<Object> leaf(const Node& n, const pov::Texture* tex, const Transform& frame,
                              const std::optional<Transform>& parent) {
     bool axial = false;
     std::optional<ShapeVariant> sh;
@@ -453,39 +492,44 @@ class Builder {
     o.shape = std::move(*sh);
     o.xf = compose(parent, own_transform(n, axial, shift_));
     shift_ = Vec3{0, 0, 0};
-    if (tex) o.material = material(*tex);
+    if (tex) o.material = material(*tex, frame, csg_world_ ? csg_world_ : o.xf);
     return o;
   }
 
   // A top-level node (or a child of a union outside CSG): groups flatten into `out`; with
   // no_shadow, every object it gives casts no shadow.
-  void add(const Node& n, const pov::Texture* inherited, const std::optional<Transform>& parent,
-           int entry, std::vector<Object>& out) {
+  // `frame`: POV-Ray's world from the inherited texture's space (texture_frame).
+  void add(const Node& n, const pov::Texture* inherited, const Transform& inherited_frame,
+           const std::optional<Transform>& parent, int entry, std::vector<Object>& out) {
     const std::size_t first = out.size();
-    add_node(n, inherited, parent, entry, out);
+    add_node(n, inherited, inherited_frame, parent, entry, out);
     if (n.no_shadow)
       for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
   }
 
-  void add_node(const Node& n, const pov::Texture* inherited,
+  void add_node(const Node& n, const pov::Texture* inherited, const Transform& inherited_frame,
                 const std::optional<Transform>& parent, int entry, std::vector<Object>& out) {
     const pov::Texture* tex = n.texture ? &*n.texture : inherited;
+    const Transform frame = n.texture ? texture_frame(n, parent) : inherited_frame;
     if (n.kind == Node::LightSource) {
       light(*n.light, parent);
       return;
     }
     if (n.kind == Node::Union) {
       const std::optional<Transform> xf = compose(parent, own_transform(n, false));
-      for (const Node& c : n.children) add(c, tex, xf, entry, out);
+      for (const Node& c : n.children) add(c, tex, frame, xf, entry, out);
       return;
     }
     if (n.kind == Node::Reference) {
-      add(*n.ref, tex, compose(parent, own_transform(n, false)), entry, out);
+      add(*n.ref, tex, frame, compose(parent, own_transform(n, false)), entry, out);
       return;
     }
     if (is_csg(n.kind)) {
       CsgTree tree;
-      csg_operation(n, tex, std::nullopt, tree);
+      const std::optional<Transform> xf = compose(parent, own_transform(n, false));
+      csg_world_ = xf ? xf : std::optional<Transform>(Transform());
+      csg_operation(n, tex, frame, std::nullopt, tree);
+      csg_world_.reset();
       if (tree.leaves.empty()) return;
       Object o;
       try {
@@ -493,19 +537,20 @@ class Builder {
       } catch (const std::invalid_argument& e) {
         fail_at(n.pos, e.what());
       }
-      o.xf = compose(parent, own_transform(n, false));
-      o.material = tex ? material(*tex) : -1;
+      o.xf = xf;
+      o.material = tex ? material(*tex, frame, o.xf) : -1;
       o.entry = entry;
       out.push_back(std::move(o));
       return;
     }
-    std::optional<Object> o = leaf(n, tex, parent);
+    std::optional<Object> o = leaf(n, tex, frame, parent);
     if (!o) return;
     o->entry = entry;
     out.push_back(std::move(*o));
   }
 
-  std::int32_t csg_operation(const Node& n, const pov::Texture* tex,
+  // The parts' `here` placements are relative to the CSG object (csg_world_ places it).
+  std::int32_t csg_operation(const Node& n, const pov::Texture* tex, const Transform& frame,
                              const std::optional<Transform>& here, CsgTree& tree) {
     const std::size_t index = tree.nodes.size();
     tree.nodes.emplace_back();
@@ -527,22 +572,27 @@ class Builder {
         part = part->ref.get();
         if (part->texture && !c.texture) ct = &*part->texture;
       }
+      // The texture frame of the part: its own texture's, else the one it inherits.
+      const Transform part_frame =
+          part->texture ? texture_frame(*part, compose(csg_world_, part == &c ? here : at))
+          : c.texture   ? texture_frame(c, compose(csg_world_, here))
+                        : frame;
       if (part->kind == Node::Union || is_csg(part->kind)) {
         const std::optional<Transform> xf = part == &c ? compose(here, own_transform(c, false))
                                                        : compose(at, own_transform(*part, false));
-        code = csg_operation(*part, ct, xf, tree);
+        code = csg_operation(*part, ct, part_frame, xf, tree);
       } else if (part->kind == Node::LightSource) {
         light(*part->light, at);
         continue;
       } else {
-        std::optional<Object> o = leaf(*part, ct, at);
+        std::optional<Object> o = leaf(*part, ct, part_frame, at);
         if (!o) continue;
         if (!is_closed(*o)) {
           warn(c.pos, "open surfaces in CSG", "raycast's CSG needs closed solids");
           continue;
         }
-        o->material = part->texture ? material(*part->texture)
-                      : c.texture   ? material(*c.texture)
+        o->material = part->texture ? material(*part->texture, part_frame, csg_world_)
+                      : c.texture   ? material(*c.texture, part_frame, csg_world_)
                                     : -1;
         tree.leaves.push_back(std::move(*o));
         code = csg_leaf_code(tree.leaves.size() - 1);
@@ -573,6 +623,11 @@ class Builder {
   using MaterialKey = std::array<double, 19>;
   std::map<MaterialKey, int> materials_;
   std::set<std::string> warned_;
+  PovTextureBuilder pov_textures_{[this](double c) { return linear(c); }};
+  std::map<const pov::Texture*, std::shared_ptr<const texture::TextureStack>> stacks_;
+  // While a CSG object is built: its placement in the world (its parts' materials map from its
+  // space).
+  std::optional<Transform> csg_world_;
 };
 
 void report(const std::vector<std::string>& in, std::vector<std::string>* out) {

@@ -4,6 +4,7 @@
 
 #include "io/image.h"
 #include "load/read_settings.h"
+#include "load/read_textures.h"
 
 namespace raycast {
 
@@ -70,7 +71,8 @@ Material read_material(const SourceContext& ctx, const YamlNode& node, const std
   m.name = name;
   if (f.has("color") && f.has("texture")) f.fail("texture", "material has both color and texture");
   m.color = read_color(f, "color", m.color);
-  if (f.has("texture")) {
+  const bool textured = wants_texture(node);
+  if (f.has("texture") && !textured) {
     Fields t(ctx, f.required("texture"), "texture");
     if (t.has("checker")) {
       Fields c(ctx, t.required("checker"), "checker");
@@ -106,6 +108,7 @@ Material read_material(const SourceContext& ctx, const YamlNode& node, const std
   m.transmission = unit_fraction(f, "transmission", m.transmission);
   m.ior = f.positive("ior", m.ior);
   m.fresnel = f.boolean("fresnel", m.fresnel);
+  if (textured) read_texture_keys(f, m);
   f.finish();
   return m;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <numbers>
 
@@ -220,6 +221,7 @@ Value Interpreter::builtin(const Token& t) {
   std::vector<Value> a;
   std::vector<Pos> at;
   std::optional<Token> normal_name;  // trace's fourth argument: receives the normal
+  std::optional<ParenDepth> arguments(std::in_place, *this, 1);
   if (!is_symbol(")")) {
     for (;;) {
       at.push_back(tok().pos);
@@ -234,6 +236,7 @@ Value Interpreter::builtin(const Token& t) {
       if (!accept_symbol(",")) break;
     }
   }
+  arguments.reset();
   if (!is_symbol(")")) unexpected("')' to close " + w + "(");
   next();
   if (w == "trace" || w == "inside" || w == "min_extent" || w == "max_extent")
@@ -292,11 +295,11 @@ Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
     const double id = f(0);
     if (!(id >= 0 && id < static_cast<double>(random_streams_.size())))
       fail_at(at[0], "rand needs a stream made by seed( )");
-    // A 64-bit linear congruential generator per stream (Knuth's MMIX constants), its top 53
-    // bits as [0, 1).
-    std::uint64_t& st = random_streams_[static_cast<std::size_t>(id)];
-    st = st * 6364136223846793005ULL + 1442695040888963407ULL;
-    return Value::number(static_cast<double>(st >> 11) * 0x1.0p-53);
+    // POV-Ray's sequence: a 32-bit linear congruential generator per stream, its state over
+    // 2^32 - 1 as the number in [0, 1].
+    std::uint32_t& st = random_streams_[static_cast<std::size_t>(id)];
+    st = st * 1812433253u + 12345u;
+    return Value::number(static_cast<double>(st) / 4294967295.0);
   }
   const auto& sig = functions().at(w);
   if (word == "str" || word == "vstr" || word == "substr" || word == "vturbulence" ||
@@ -307,8 +310,14 @@ Value Interpreter::call_builtin(const Token& t, const std::vector<Value>& a,
   else
     need(sig.size());
   if (word == "seed") {
-    random_streams_.push_back(
-        static_cast<std::uint64_t>(saturate<std::int64_t>(f(0))) * 0x9E3779B97F4A7C15ULL + 1);
+    // The seed as a 32-bit integer (truncated; outside that range, or NaN, the lowest one, as
+    // POV-Ray on x86-64 converts it), so that scenes place their random things where POV-Ray does.
+    const double x = std::trunc(f(0));
+    const bool in_range = x >= std::numeric_limits<std::int32_t>::min() &&
+                          x <= std::numeric_limits<std::int32_t>::max();
+    const std::int32_t s =
+        in_range ? static_cast<std::int32_t>(x) : std::numeric_limits<std::int32_t>::min();
+    random_streams_.push_back(static_cast<std::uint32_t>(s));
     return Value::number(static_cast<double>(random_streams_.size() - 1));
   }
   if (sig.size() == 1 && sig[0] == Arg::F) return float_builtin(t, f(0), at[0]);

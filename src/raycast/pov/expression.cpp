@@ -39,19 +39,20 @@ double Interpreter::number_in_vector(const char* what) {
 
 double Interpreter::number(const char* what) {
   const Pos at = tok().pos;
-  ++item_value_;
-  const Value v = expression();
-  --item_value_;
+  const Value v = item_expression();
   if (v.kind != Value::Float)
     fail_at(at, std::string("expected a float for ") + what + ", got " + kind_name(v));
   return v.v[0];
 }
 
+Value Interpreter::item_expression() {
+  const ParenDepth outside(*this, 0);
+  return expression();
+}
+
 Vec3 Interpreter::vector(const char* what) {
   const Pos at = tok().pos;
-  ++item_value_;
-  const Value v = expression();
-  --item_value_;
+  const Value v = item_expression();
   if (v.kind == Value::Float) return {v.v[0], v.v[0], v.v[0]};
   if (v.kind != Value::Vector)
     fail_at(at, std::string("expected a vector for ") + what + ", got " + kind_name(v));
@@ -142,11 +143,27 @@ struct Ops {
     }
     return a;
   }
+  // Strings compare by their characters (POV-Ray reads `#if (Variant = "tree")`).
+  Value string_comparison(const Value& a) {
+    const Pos at = in.tok_pos();
+    int kind;
+    if (op("="))
+      kind = 0;
+    else if (op("!="))
+      kind = 1;
+    else
+      return a;
+    const Value b = sum();
+    if (b.kind != Value::String)
+      in.fail_at(at, "a string compares with a string, got " + std::string(kind_name(b)));
+    return Value::number((a.text == b.text) == (kind == 0));
+  }
   Value comparison() {
     Value a = sum();
-    // Only a float is compared, and not in a block's item values outside parentheses: there
-    // '<' opens the next vector (box { <a> <b> }, vertex_vectors { 14 <-1, 0, 0> ... }).
-    while (a.kind == Value::Float && in.item_value_ == 0) {
+    if (a.kind == Value::String && in.paren_depth_ > 0) return string_comparison(a);
+    // Only a float is compared, and only inside parentheses: outside, '<' opens the next
+    // vector (box { <a> <b> }, vertex_vectors { 14 <-1, 0, 0> ... }, #if (C) <1, 0, 0>).
+    while (a.kind == Value::Float && in.paren_depth_ > 0) {
       const Pos at = in.tok_pos();
       int kind;
       if (op("<="))
@@ -261,7 +278,10 @@ Value Interpreter::vector_literal(const Pos& at) {
   r.dims = 0;
   for (;;) {
     const Pos cp = tok().pos;
-    const Value c = sub_expression(1);
+    const Value c = [&] {
+      const ParenDepth component(*this, 0);
+      return sub_expression(1);
+    }();
     if (c.kind != Value::Float) fail_at(cp, "a vector's components must be floats");
     if (r.dims == 5) fail_at(cp, "a vector has at most 5 components");
     r.v[static_cast<std::size_t>(r.dims++)] = c.v[0];
@@ -424,6 +444,12 @@ Value Interpreter::postfix(Value v) {
       }
       if (!a->elements[index]) fail_at(at, "this array element was never assigned");
       v = *a->elements[index];
+      // A function held in an array is called as a declared one: Fns[0](1, 2).
+      if ((v.kind == Value::Function || v.kind == Value::Spline) &&
+          pov::is_symbol(peek_operator(), "(") && !pending_) {
+        const Value f = v;
+        v = call_value(f, Token{Token::Word, "the array's function", 0, at});
+      }
     } else {
       return v;
     }
@@ -442,10 +468,10 @@ Value Interpreter::primary(int vector_depth) {
     case Token::Symbol:
       if (t.text == "(") {
         next();
-        const int item = item_value_;
-        item_value_ = 0;
-        const Value v = sub_expression(0);
-        item_value_ = item;
+        const Value v = [&] {
+          const ParenDepth inside(*this, paren_depth_ + 1);
+          return sub_expression(0);
+        }();
         if (!is_symbol(")")) unexpected("')'");
         next();
         return postfix(v);

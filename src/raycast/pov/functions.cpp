@@ -334,6 +334,7 @@ Value Interpreter::call_value(const Value& f, const Token& name) {
   expect_symbol("(", ("after " + name.text).c_str());
   std::vector<double> args;
   std::vector<Value> raw_args;
+  std::optional<ParenDepth> arguments(std::in_place, *this, 1);
   if (!is_symbol(")")) {
     for (;;) {
       const Value a = expression();
@@ -342,6 +343,7 @@ Value Interpreter::call_value(const Value& f, const Token& name) {
       if (!accept_symbol(",")) break;
     }
   }
+  arguments.reset();
   if (!is_symbol(")")) unexpected("')' to close the call of " + name.text);
   next();
   if (f.kind == Value::Spline) {

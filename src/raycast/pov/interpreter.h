@@ -111,6 +111,8 @@ class Interpreter {
   Value builtin_constant(const Token& name);
   Value primary(int vector_depth);
   Value sub_expression(int vector_depth);
+  /// An expression read as a block's item (no comparisons outside parentheses).
+  Value item_expression();
   Value vector_literal(const Pos& at);
   Value colour_keyword(const Token& kw);
   Value colour_expression(const Pos& at);
@@ -134,7 +136,35 @@ class Interpreter {
 
   // ---- statements ----
   Texture texture_block(const Texture& base, int depth);
+  /// A texture's items up to `close` ("}" for a block, "]" for a texture map entry).
+  Texture texture_body(const Texture& base, int depth, const char* close);
+  /// texture_map { [v TEXTURE_ITEMS] ... } into `map`, sorted by value.
+  void texture_map_block(const Texture& base, int depth, TextureMap& map);
+  /// The first texture of a block holding textures among other items (material_map).
+  std::optional<Texture> first_texture_in_block(const Texture& base, int depth,
+                                                const std::string& what);
   Pigment pigment_block(const Pigment& base);
+  /// A pigment's items up to `close` ("}" for a block, "]" for a pigment map entry).
+  Pigment pigment_body(const Pigment& base, const char* close);
+  /// One item of a pigment other than a modelled pattern keyword; false when t is none.
+  bool pigment_item(const Token& t, Pigment& p, texture::Pigment& model, bool& modelled);
+  void skip_pattern_modifier(const std::string& w);
+  // ---- patterns in the texture system's terms (parse_patterns.cpp) ----
+  /// A pattern keyword's own values (gradient's vector, spiral's arms), keeping the steps and
+  /// turbulence already given.
+  void start_pattern(texture::PatternKind kind, texture::Pattern& p);
+  /// Reads a pattern modifier (turbulence, octaves, waves, frequency, warp ...) named w.
+  bool pattern_modifier(const std::string& w, texture::Pattern& p);
+  void warp_block(texture::Pattern& p);
+  /// Reads to the '}' that closes the block being read (its inner blocks included).
+  void skip_warp_rest();
+  /// A block pattern's colours or pigments (checker, brick, hexagon ...).
+  void block_list(texture::Pattern& pattern, texture::Pigment& model, Pigment& p);
+  std::vector<texture::PigmentMapEntry> pigment_map_block();
+  texture::Normal normal_block(const std::optional<texture::Normal>& base);
+  /// Transformations inside a texture: they move its pigment, normal and layers.
+  void move_texture(Texture& t, const std::vector<XformOp>& ops);
+  void move_pigment(Pigment& p, const std::vector<XformOp>& ops, const Transform& x);
   Finish finish_block(const Finish& base);
   std::optional<double> interior_block();
   Texture material_block(const Texture& base, int depth);
@@ -161,6 +191,9 @@ class Interpreter {
   void isosurface_body(Node& n, int depth);
   void spline_points(Node& n, int min_count);
   void triangle_body(Node& n, bool smooth);
+  void place_declared(const std::shared_ptr<const Node>& object, Node& n);
+  bool is_declared_object();
+  std::optional<Node> bare_declared_object();
   void polynomial_terms(Node& n);
   void mesh_body(Node& n, int depth);
   void mesh2_body(Node& n, int depth);
@@ -254,9 +287,24 @@ class Interpreter {
   int opaque_ = 0;
 
  public:
-  // > 0 while reading a value inside a block (an object's numbers, a count): POV-Ray compares
-  // there only inside parentheses, so `14 <-1, 0, 0>` is a count and a vector.
-  int item_value_ = 0;
+  // > 0 inside parentheses (grouping, a condition, a call's arguments): POV-Ray reads the
+  // comparisons (< > <= >= = !=) only there, so a block's `14 <-1, 0, 0>` is a count and a
+  // vector, and `#if (C) <1, 0, 0> #else` a condition and a vector.
+  int paren_depth_ = 0;
+  /// paren_depth_ set for a scope, restored on every exit.
+  class ParenDepth {
+   public:
+    ParenDepth(Interpreter& in, int depth) : in_(in), saved_(in.paren_depth_) {
+      in.paren_depth_ = depth;
+    }
+    ~ParenDepth() { in_.paren_depth_ = saved_; }
+    ParenDepth(const ParenDepth&) = delete;
+    ParenDepth& operator=(const ParenDepth&) = delete;
+
+   private:
+    Interpreter& in_;
+    int saved_;
+  };
 
  private:  // > 0: peek_operator runs no directive (a directive's own arguments)
   bool have_ = false;
@@ -267,12 +315,18 @@ class Interpreter {
   std::size_t weight_ = 0;
   long long reads_ = 0;
   std::set<std::string> warned_;
-  std::vector<std::uint64_t> random_streams_;
+  std::vector<std::uint32_t> random_streams_;
   struct OpenFile;
   std::map<std::string, std::shared_ptr<OpenFile>> files_;
 };
 
 /// Reads a POV-Ray scene (and the files it includes) to its description.
+/// `top` laid over `below` (layered textures): below's layers and below itself under top.
+Texture layer_on_top(Texture below, Texture top);
+/// Whether w is a pattern keyword (any POV-Ray pattern) or a pattern modifier keyword.
+bool is_pattern_word(const std::string& w);
+bool is_pattern_modifier_word(const std::string& w);
+
 PovScene interpret_pov(const std::string& text, const std::string& name, const std::string& dir,
                        const Options& options);
 

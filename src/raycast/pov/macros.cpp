@@ -48,8 +48,7 @@ void Interpreter::call_macro(const Token& name, const MacroDef& m) {
   const std::shared_ptr<const MacroDef> def =
       keep != scopes_.front().end() ? keep->second.value.macro : nullptr;
   expect_symbol("(", ("after the macro " + m.name).c_str());
-  const int item = item_value_;
-  item_value_ = 0;
+  std::optional<ParenDepth> arguments(std::in_place, *this, 1);
   std::unordered_map<std::string, Symbol> locals;
   Frame f;
   f.kind = FrameKind::Macro;
@@ -82,7 +81,7 @@ void Interpreter::call_macro(const Token& name, const MacroDef& m) {
     locals[m.params[i]].value = rvalue();
     if (!last) accept_symbol(",");  // POV-Ray reads arguments without commas where unambiguous
   }
-  item_value_ = item;
+  arguments.reset();
   if (!is_symbol(")"))
     unexpected("')' to close the call of " + m.name + " (it takes " +
                std::to_string(m.params.size()) + " arguments)");

@@ -18,7 +18,7 @@ Value Interpreter::object_query(const Token& t, const std::vector<Value>& a,
   if (a.size() != want && !(w == "trace" && a.size() == 4))
     fail_at(t.pos, w + " takes " + std::to_string(want) + " argument(s)" +
                        (w == "trace" ? " or 4" : "") + ", got " + std::to_string(a.size()));
-  if (a[0].kind != Value::Object || !a[0].object)
+  if (a[0].kind != Value::Object)
     fail_at(at[0], w + ": expected an object, got " + kind_name(a[0]));
   auto vv = [&](std::size_t i) -> Vec3 {
     if (a[i].kind == Value::Float) return {a[i].v[0], a[i].v[0], a[i].v[0]};
@@ -26,15 +26,18 @@ Value Interpreter::object_query(const Token& t, const std::vector<Value>& a,
       fail_at(at[i], w + ": expected a vector, got " + kind_name(a[i]));
     return {a[i].v[0], a[i].v[1], a[i].dims > 2 ? a[i].v[2] : 0};
   };
-  ObjectQueries* q = options_.object_queries.get();
+  // An object raycast does not build (a shape it warned about) is asked as if absent.
+  ObjectQueries* q = a[0].object ? options_.object_queries.get() : nullptr;
+  const std::string what =
+      "the " + w + " function" + (a[0].object ? "" : " of an object raycast does not build");
   if (w == "inside") {
     const Vec3 p = vv(1);
-    if (!q) unsupported_warning(t.pos, "the inside function", "its answer is 0");
+    if (!q) unsupported_warning(t.pos, what, "its answer is 0");
     return Value::number(q && q->inside(scene_, a[0].object, p) ? 1 : 0);
   }
   if (w == "trace") {
     const Vec3 origin = vv(1), direction = vv(2);
-    if (!q) unsupported_warning(t.pos, "the trace function", "its answer is <0, 0, 0>");
+    if (!q) unsupported_warning(t.pos, what, "its answer is <0, 0, 0>");
     const auto hit = q ? q->trace(scene_, a[0].object, origin, direction) : std::nullopt;
     if (normal_name)
       assign(normal_name->text, vector_value(hit ? hit->normal : Vec3{0, 0, 0}), false,
@@ -42,7 +45,7 @@ Value Interpreter::object_query(const Token& t, const std::vector<Value>& a,
     return vector_value(hit ? hit->point : Vec3{0, 0, 0});
   }
   if (!q) {
-    unsupported_warning(t.pos, "the " + w + " function", "its answer is <0, 0, 0>");
+    unsupported_warning(t.pos, what, "its answer is <0, 0, 0>");
     return vector_value({0, 0, 0});
   }
   const auto [lo, hi] = q->extent(scene_, a[0].object);

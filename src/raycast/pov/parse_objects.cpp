@@ -49,6 +49,23 @@ bool is_unbuilt_shape(const std::string& w) {
   return false;
 }
 
+// POV-Ray's lathe meets x^2 + z^2 = r(y)^2, so a radius below 0 (a spline overshooting the axis,
+// or written so) draws as |r|: the profile folded onto r >= 0, with a point on the axis where it
+// crosses it.
+std::vector<Vec3> revolved_profile(const std::vector<Vec3>& points) {
+  std::vector<Vec3> out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& q = points[i];
+    if (i > 0 && (points[i - 1].x < 0) != (q.x < 0) && points[i - 1].x != 0 && q.x != 0) {
+      const Vec3& p = points[i - 1];
+      const double s = p.x / (p.x - q.x);
+      out.push_back({0, p.y + s * (q.y - p.y), 0});
+    }
+    out.push_back({std::fabs(q.x), q.y, 0});
+  }
+  return out;
+}
+
 bool is_csg(Node::Kind k) {
   return k == Node::Union || k == Node::Intersection || k == Node::Difference || k == Node::Merge;
 }
@@ -90,6 +107,44 @@ void Interpreter::add_weight(std::size_t w, const Pos& at) {
                     std::to_string(options_.limits.scene_weight) +
                     " units (declared objects copied into each "
                     "other?)");
+}
+
+// A declared object placed by a new node: a composite is shared, not copied (a mesh of millions
+// of triangles, a union of thousands of objects), the node placing it; a shape is copied.
+void Interpreter::place_declared(const std::shared_ptr<const Node>& object, Node& n) {
+  add_weight(object->weight, tok().pos);  // a use counts as a copy
+  const Node::Kind k = object->kind;
+  if (is_csg(k) || k == Node::Union || k == Node::Mesh || k == Node::Reference) {
+    n.kind = Node::Reference;
+    n.ref = object;
+  } else {
+    n = *object;
+  }
+}
+
+bool Interpreter::is_declared_object() {
+  const Token& t = tok();
+  if (t.kind != Token::Word) return false;
+  const Value* v = lookup(t.text);
+  return v && v->kind == Value::Object;
+}
+
+// A declared object's name alone where an object may stand (POV-Ray reads it as
+// object { Name }); nothing for an object raycast does not build.
+std::optional<Node> Interpreter::bare_declared_object() {
+  const Token t = tok();
+  const std::shared_ptr<const Node> object = lookup(t.text)->object;
+  if (!object) {
+    next();
+    return std::nullopt;
+  }
+  Node n;
+  place_declared(object, n);
+  next();
+  n.pos = t.pos;
+  n.name = t.text;
+  n.weight = n.kind == Node::Reference ? n.ref->weight + kPovNodeWeight : weight(n);
+  return n;
 }
 
 bool Interpreter::is_object_keyword() {
@@ -149,20 +204,10 @@ std::optional<Node> Interpreter::object(int depth) {
         unexpected("a declared object's name or an object");
       }
     } else {
-      if (v->object) {
-        add_weight(v->object->weight, tok().pos);  // a use counts as a copy
-        const Node::Kind k = v->object->kind;
-        if (is_csg(k) || k == Node::Union || k == Node::Mesh || k == Node::Reference) {
-          // A composite is shared, not copied (a mesh of millions of triangles, a union of
-          // thousands of objects): this node places it.
-          n.kind = Node::Reference;
-          n.ref = v->object;
-        } else {
-          n = *v->object;
-        }
-      } else {
+      if (v->object)
+        place_declared(v->object, n);
+      else
         skipped = true;
-      }
       if (!name_read) {
         n.name = declared_name;
         next();
@@ -194,6 +239,10 @@ std::optional<Node> Interpreter::object(int depth) {
   while (!accept_symbol("}")) {
     if (is_csg(n.kind) && is_object_keyword()) {
       if (std::optional<Node> c = object(depth + 1)) n.children.push_back(std::move(*c));
+      continue;
+    }
+    if (is_csg(n.kind) && is_declared_object()) {
+      if (std::optional<Node> c = bare_declared_object()) n.children.push_back(std::move(*c));
       continue;
     }
     if (!modifier(n, depth)) unexpected("an object modifier in " + kw.text);
@@ -493,10 +542,7 @@ void Interpreter::spline_points(Node& n, int min_count) {
             p[i + 3] * (u * u * u));
       }
   }
-  for (const Vec3& q : out)
-    if (q.x < 0)
-      fail_at(n.pos, "profile radii must be >= 0 (raycast revolves r >= 0 about the axis)");
-  n.points = out;
+  n.points = revolved_profile(out);
   n.spline = spline;
 }
 
@@ -570,9 +616,7 @@ void Interpreter::mesh2_body(Node& n, int) {
     for (long i = 0; i < cnt; ++i) {
       skip_comma();
       const Pos at = tok().pos;
-      ++item_value_;
-      const Value v = expression();
-      --item_value_;
+      const Value v = item_expression();
       if (v.dims != dims)
         fail_at(at, std::string(name) + " holds " + std::to_string(dims) + "-vectors");
       each(v, at);
@@ -586,6 +630,7 @@ void Interpreter::mesh2_body(Node& n, int) {
           number("a texture index");
         }
     }
+    accept_symbol(",");  // POV-Ray accepts a comma after the last item
     if (!is_symbol("}"))
       fail_here(std::string(name) + " announced " + std::to_string(cnt) + " items, got more");
     next();
@@ -680,8 +725,12 @@ void Interpreter::mesh2_body(Node& n, int) {
 bool Interpreter::modifier(Node& n, int depth) {
   const Token t = tok();
   const std::string& w = t.text;
+  // Transformations written after an object's first texture item move the texture with it.
   auto own_texture = [&]() -> Texture& {
-    if (!n.texture) n.texture = default_texture_;
+    if (!n.texture) {
+      n.texture = default_texture_;
+      n.texture_at = n.xforms.size();
+    }
     return *n.texture;
   };
   if (t.kind != Token::Word) return false;
@@ -689,10 +738,11 @@ bool Interpreter::modifier(Node& n, int depth) {
   if (w == "texture") {
     next();
     const std::optional<double> ior = n.texture ? n.texture->ior : std::nullopt;
-    if (n.texture) {
-      unsupported_warning(t.pos, "layered textures", "the last layer is used");
-    }
-    n.texture = texture_block(default_texture_, depth + 1);
+    if (!n.texture) n.texture_at = n.xforms.size();
+    Texture layer = texture_block(default_texture_, depth + 1);
+    // A second texture is laid over the first (layered textures).
+    n.texture =
+        n.texture ? layer_on_top(std::move(*n.texture), std::move(layer)) : std::move(layer);
     if (!n.texture->ior) n.texture->ior = ior;
   } else if (w == "pigment") {
     next();
@@ -706,8 +756,9 @@ bool Interpreter::modifier(Node& n, int depth) {
     tx.name.clear();
   } else if (w == "normal") {
     next();
-    unsupported_warning(t.pos, "normal perturbations");
-    skip_block("normal");
+    Texture& tx = own_texture();
+    tx.normal = normal_block(tx.normal);
+    tx.name.clear();
   } else if (w == "interior") {
     next();
     const std::optional<double> ior = interior_block();
@@ -716,6 +767,7 @@ bool Interpreter::modifier(Node& n, int depth) {
     tx.name.clear();
   } else if (w == "material") {
     next();
+    if (!n.texture) n.texture_at = n.xforms.size();
     n.texture = material_block(n.texture ? *n.texture : default_texture_, depth + 1);
   } else if (w == "global_lights" && n.kind == Node::Union) {
     next();

@@ -364,8 +364,9 @@ PovScene Interpreter::run() {
       next();
       unsupported_warning(t.pos, w);
       skip_block(w);
-    } else if (t.kind == Token::Word && is_object_keyword()) {
-      if (std::optional<Node> n = object(0)) {
+    } else if (t.kind == Token::Word && (is_object_keyword() || is_declared_object())) {
+      std::optional<Node> n = is_object_keyword() ? object(0) : bare_declared_object();
+      if (n) {
         if (!n->texture && n->kind != Node::LightSource) n->texture = default_texture_;
         scene_.objects.push_back(std::move(*n));
       }

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "pov/interpreter.h"
+#include "pov/pov_transform.h"
 
 namespace raycast::pov {
 
@@ -327,106 +328,165 @@ std::vector<XformOp> Interpreter::transform_block() {
 }
 
 Pigment Interpreter::pigment_block(const Pigment& base) {
-  const Pos start = tok().pos;
   expect_symbol("{", "after pigment");
+  return pigment_body(base, "}");
+}
+
+Pigment Interpreter::pigment_body(const Pigment& base, const char* close) {
   Pigment p = base;
   if (const std::optional<Value> v = declared(Value::Pigment)) p = *v->pigment;
-  while (!accept_symbol("}")) {
+  // The texture system's model of the pigment, built alongside the summary fields.
+  texture::Pigment model = p.model ? *p.model : texture::Pigment{};
+  bool modelled = p.model != nullptr;
+  while (!accept_symbol(close)) {
     const Token t = tok();
     const std::string& w = t.text;
-    if (t.kind == Token::Word && (w == "rgb" || w == "color" || w == "colour")) {
-      p.checker = false;  // the common case first
-      p.pattern.clear();
-      p.c0 = colour("pigment");
-    } else if (t.kind == Token::Word && w == "checker") {
+    if (t.kind == Token::Word && w == "checker") {
       next();
       p.checker = true;
       p.pattern.clear();
       p.c0 = {0, 0, 1, 0, 0};  // POV-Ray's defaults: blue and green
       p.c1 = {0, 1, 0, 0, 0};
-      if (starts_colour()) {
-        p.c0 = colour("checker");
-        skip_comma();
-        if (starts_colour()) p.c1 = colour("checker");
-      } else if (is_word("pigment")) {
-        unsupported_warning(t.pos, "checker of pigments", "their colours are used");
-        next();
-        p.c0 = pigment_block(p).c0;
-        skip_comma();
-        if (is_word("pigment")) {
-          next();
-          p.c1 = pigment_block(p).c0;
-        }
-      }
-    } else if (t.kind == Token::Word && (w == "image_map" || w == "image_pattern")) {
+      start_pattern(texture::PatternKind::kChecker, model.pattern);
+      model.kind = texture::Pigment::Kind::kColorMap;
+      model.color_map = {{0, {{0, 0, 1}, 0, 0}}, {1, {{0, 1, 0}, 0, 0}}};
+      block_list(model.pattern, model, p);
+      modelled = true;
+    } else if (t.kind == Token::Word && texture::pattern_kind(w)) {
       next();
-      unsupported_warning(t.pos, "image_map pigments", "drawn grey");
-      skip_block(w);
+      const texture::PatternKind k = *texture::pattern_kind(w);
       p.checker = false;
       p.pattern = w;
-      p.c0 = {0.5, 0.5, 0.5, 0, 0};
-    } else if (t.kind == Token::Word && in(kPatterns, std::size(kPatterns), w)) {
-      next();
-      unsupported_warning(t.pos, "the " + w + " pattern",
-                          "drawn in its colour map's middle colour");
-      p.checker = false;
-      p.pattern = w;
-      pattern_arguments(t, true);
-    } else if (t.kind == Token::Word && (w == "color_map" || w == "colour_map")) {
-      next();
-      p.map = colour_map_block();
-      if (!p.map.empty()) p.c0 = p.map[p.map.size() / 2].colour;
-    } else if (t.kind == Token::Word && (w == "pigment_map" || w == "slope_map")) {
-      next();
-      unsupported_warning(t.pos, w);
-      skip_block(w);
-    } else if (t.kind == Token::Word && in(kPatternModifiers, std::size(kPatternModifiers), w)) {
-      next();
-      if (w == "fractal_interior_type" || w == "fractal_exterior_type" || w == "interior" ||
-          w == "exterior") {
-        expression();
-        skip_comma();
-        expression();
-      } else if (w == "turbulence" || w == "frequency" || w == "phase" || w == "octaves" ||
-                 w == "omega" || w == "lambda" || w == "noise_generator" || w == "metric" ||
-                 w == "offset" || w == "exponent" || w == "accuracy" || w == "interpolate" ||
-                 w == "map_type" || w == "poly_wave" || w == "color_space" ||
-                 w == "max_iteration" || w == "precision" || w == "agate_turb" ||
-                 w == "brick_size" || w == "control0" || w == "control1")
-        expression();
-      else if (w == "form" || w == "orientation" || w == "coords" || w == "mortar" || w == "repeat")
-        expression();
-    } else if (t.kind == Token::Word && w == "warp") {
-      next();
-      skip_block("warp");
-    } else if (t.kind == Token::Word && (w == "quick_color" || w == "quick_colour")) {
-      next();
-      colour("quick_color");
-    } else if (t.kind == Token::Word && w == "uv_mapping") {
-      next();
-    } else if (t.kind == Token::Word && (w == "scale" || w == "translate" || w == "rotate" ||
-                                         w == "matrix" || w == "transform")) {
-      std::vector<XformOp> ops;
-      transform_item(ops);
-      for (const XformOp& o : ops) {
-        if (o.kind == XformOp::Scale && o.v.x == o.v.y && o.v.y == o.v.z && o.v.x > 0)
-          p.scale *= o.v.x;
-        else if (p.checker)
-          unsupported_warning(t.pos, "pigment transformations other than a uniform scale");
+      start_pattern(k, model.pattern);
+      if (model.kind == texture::Pigment::Kind::kSolid) {
+        model.kind = texture::Pigment::Kind::kColorMap;  // POV-Ray's default map: black to white
+        model.color_map = {{0, {{0, 0, 0}, 0, 0}}, {1, {{1, 1, 1}, 0, 0}}};
       }
-    } else if (t.kind == Token::Word && starts_colour()) {
-      p.checker = false;
-      p.pattern.clear();
-      p.c0 = colour("pigment");
-    } else if (t.kind != Token::Word && starts_colour()) {
-      p.checker = false;
-      p.c0 = colour("pigment");
+      if (texture::block_count(k) > 0) {
+        // Brick: mortar white, brick red; hexagon: blue, green, red; the others like checker.
+        model.color_map =
+            k == texture::PatternKind::kBrick
+                ? std::vector<texture::ColorMapEntry>{{0, {{1, 1, 1}, 0, 0}},
+                                                      {1, {{0.5, 0, 0}, 0, 0}}}
+                : std::vector<texture::ColorMapEntry>{
+                      {0, {{0, 0, 1}, 0, 0}}, {1, {{0, 1, 0}, 0, 0}}, {2, {{1, 0, 0}, 0, 0}}};
+        model.kind = texture::Pigment::Kind::kColorMap;
+        block_list(model.pattern, model, p);
+      }
+      modelled = true;
+    } else if (pigment_item(t, p, model, modelled)) {
     } else {
       unexpected("a colour or a pattern in pigment");
     }
   }
-  (void)start;
+  p.model = modelled && model.kind != texture::Pigment::Kind::kSolid
+                ? std::make_shared<const texture::Pigment>(std::move(model))
+                : nullptr;
   return p;
+}
+
+bool Interpreter::pigment_item(const Token& t, Pigment& p, texture::Pigment& model,
+                               bool& modelled) {
+  const std::string& w = t.text;
+  if (t.kind != Token::Word) {
+    if (!starts_colour()) return false;
+    p.checker = false;
+    p.c0 = colour("pigment");
+    model.kind = texture::Pigment::Kind::kSolid;
+    return true;
+  }
+  if (w == "image_map" || w == "image_pattern") {
+    next();
+    unsupported_warning(t.pos, "image_map pigments", "drawn grey");
+    skip_block(w);
+    p.checker = false;
+    p.pattern = w;
+    p.c0 = {0.5, 0.5, 0.5, 0, 0};
+    model.kind = texture::Pigment::Kind::kSolid;
+  } else if (in(kPatterns, std::size(kPatterns), w)) {
+    next();
+    unsupported_warning(t.pos, "the " + w + " pattern", "drawn in its colour map's middle colour");
+    p.checker = false;
+    p.pattern = w;
+    pattern_arguments(t, true);
+    model.kind = texture::Pigment::Kind::kSolid;
+  } else if (w == "color_map" || w == "colour_map") {
+    next();
+    p.map = colour_map_block();
+    if (!p.map.empty()) p.c0 = p.map[p.map.size() / 2].colour;
+    model.color_map.clear();
+    for (const MapEntry& e : p.map)
+      model.color_map.push_back(
+          {e.at, {{e.colour.r, e.colour.g, e.colour.b}, e.colour.filter, e.colour.transmit}});
+    if (model.kind == texture::Pigment::Kind::kPigmentMap)
+      model.kind = texture::Pigment::Kind::kColorMap;
+  } else if (w == "pigment_map") {
+    next();
+    model.pigment_map = pigment_map_block();
+    if (model.kind != texture::Pigment::Kind::kSolid)
+      model.kind = texture::Pigment::Kind::kPigmentMap;
+    if (!model.pigment_map.empty()) {
+      // The middle entry's colour summarises the map for the YAML conversion.
+      const texture::Rgbft& c = model.pigment_map[model.pigment_map.size() / 2].pigment->color;
+      p.c0 = {c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit};
+    }
+  } else if (w == "slope_map") {
+    next();
+    unsupported_warning(t.pos, w);
+    skip_block(w);
+  } else if (pattern_modifier(w, model.pattern)) {
+  } else if (in(kPatternModifiers, std::size(kPatternModifiers), w)) {
+    next();
+    skip_pattern_modifier(w);
+  } else if (w == "quick_color" || w == "quick_colour") {
+    next();
+    colour("quick_color");
+  } else if (w == "uv_mapping") {
+    next();
+  } else if (w == "scale" || w == "translate" || w == "rotate" || w == "matrix" ||
+             w == "transform") {
+    std::vector<XformOp> ops;
+    transform_item(ops);
+    const std::optional<Transform> x = pov_transform(ops);
+    if (!x) fail_at(t.pos, "the pigment's matrix cannot be inverted");
+    for (const XformOp& o : ops)
+      if (o.kind == XformOp::Scale && o.v.x == o.v.y && o.v.y == o.v.z && o.v.x > 0)
+        p.scale *= o.v.x;
+      else
+        p.checker_plain = false;
+    texture::transform_pigment(model, *x);
+    // A pattern not named yet still gets the move (pigment { scale 2 bozo }).
+    if (model.kind == texture::Pigment::Kind::kSolid) texture::transform_pattern(model.pattern, *x);
+  } else if (starts_colour()) {
+    p.checker = false;
+    p.pattern.clear();
+    p.c0 = colour("pigment");
+    model.kind = texture::Pigment::Kind::kSolid;
+    modelled = false;
+    model.pattern.steps.clear();
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void Interpreter::skip_pattern_modifier(const std::string& w) {
+  if (w == "fractal_interior_type" || w == "fractal_exterior_type" || w == "interior" ||
+      w == "exterior") {
+    expression();
+    skip_comma();
+    expression();
+  } else if (w == "metric" || w == "offset" || w == "exponent" || w == "accuracy" ||
+             w == "interpolate" || w == "map_type" || w == "color_space" || w == "max_iteration" ||
+             w == "precision" || w == "form" || w == "orientation" || w == "coords" ||
+             w == "repeat") {
+    expression();
+  }
+}
+
+bool is_pattern_word(const std::string& w) { return in(kPatterns, std::size(kPatterns), w); }
+bool is_pattern_modifier_word(const std::string& w) {
+  return in(kPatternModifiers, std::size(kPatternModifiers), w);
 }
 
 void Interpreter::reflection_block(Finish& f) {
@@ -435,8 +495,15 @@ void Interpreter::reflection_block(Finish& f) {
     if (is_word("fresnel")) {
       next();
       f.fresnel = boolean_option();
-    } else if (is_word("falloff") || is_word("exponent") || is_word("metallic")) {
-      unsupported_warning(tok().pos, "reflection " + tok().text);
+    } else if (is_word("falloff")) {
+      next();
+      f.reflection_falloff = number("reflection falloff");
+    } else if (is_word("metallic")) {
+      next();
+      f.reflection_metallic = true;
+      if (numeric_ahead()) number("reflection metallic");
+    } else if (is_word("exponent")) {
+      unsupported_warning(tok().pos, "reflection exponent");
       next();
       if (starts_colour()) number("a reflection setting");
     } else if (starts_colour()) {
@@ -448,6 +515,8 @@ void Interpreter::reflection_block(Finish& f) {
     }
   }
   if (values.empty()) return;
+  f.reflection_min = values.front();
+  f.reflection_max = values.back();
   // { min, max fresnel on }: raycast's Fresnel split starts from the minimum; without fresnel,
   // POV-Ray's variable reflection is drawn at its mean.
   f.reflection = f.fresnel ? values.front() : 0.5 * (values.front() + values.back());
@@ -499,20 +568,28 @@ Finish Interpreter::finish_block(const Finish& base) {
       else {
         f.fresnel = false;
         f.reflection = grey("reflection");
+        f.reflection_min = f.reflection_max = f.reflection;
       }
     } else if (w == "conserve_energy") {
       next();
       f.conserve_energy = boolean_option();
-    } else if (w == "brilliance" || w == "metallic" || w == "crand" || w == "irid" ||
-               w == "subsurface" || w == "reflection_exponent") {
+    } else if (w == "brilliance") {
+      next(), f.brilliance = number("brilliance");
+    } else if (w == "crand") {
+      next(), f.crand = number("crand");
+    } else if (w == "metallic") {
       next();
-      if (w == "irid" || w == "subsurface") {
-        skip_block(w);
-      } else if (w == "metallic") {
-        boolean_option();
-      } else {
+      if (is_word("on") || is_word("off") || is_word("true") || is_word("false") ||
+          is_word("yes") || is_word("no"))
+        f.metallic = boolean_option() ? 1 : 0;
+      else
+        f.metallic = numeric_ahead() ? number("metallic") : 1;
+    } else if (w == "irid" || w == "subsurface" || w == "reflection_exponent") {
+      next();
+      if (w == "reflection_exponent")
         number(w.c_str());
-      }
+      else
+        skip_block(w);
       unsupported_warning(t.pos, "finish " + w);
     } else {
       unexpected("a finish item (ambient, diffuse, phong, specular, roughness, reflection ...)");
@@ -561,6 +638,10 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
   if (depth > kMaxPovNesting) fail_here("textures are nested too deeply");
   const NestingLevel level(*this);  // a texture's depth restarts in a value declared inside it
   expect_symbol("{", "after texture");
+  return texture_body(base, depth, "}");
+}
+
+Texture Interpreter::texture_body(const Texture& base, int depth, const char* close) {
   Texture t = base;
   t.name.clear();
   if (const std::optional<Value> v = declared(Value::Texture)) {
@@ -568,15 +649,17 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
     t = *v->texture;
     if (!t.ior) t.ior = ior;
   }
-  bool patterned = false, first_layer = true;
-  while (!accept_symbol("}")) {
+  std::optional<TextureMap> map;  // a patterned texture being read
+  while (!accept_symbol(close)) {
     const Token k = tok();
-    if (is_word("texture") && patterned) {  // the textures of a pattern: the first one shows
+    if (is_word("texture") && map) {  // the textures of a block pattern, in order
       next();
-      const Texture layer = texture_block(base, depth + 1);
-      if (first_layer) t = layer;
-      first_layer = false;
+      map->at.push_back(double(map->textures.size()));
+      map->textures.push_back(texture_block(base, depth + 1));
       skip_comma();
+    } else if (is_word("texture")) {  // a texture written whole inside a map entry
+      next();
+      t = texture_block(t, depth + 1);
     } else if (is_word("pigment")) {
       next();
       t.pigment = pigment_block(t.pigment);
@@ -585,40 +668,29 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
       t.finish = finish_block(t.finish);
     } else if (is_word("normal")) {
       next();
-      unsupported_warning(k.pos, "normal perturbations");
-      skip_block("normal");
-    } else if (is_word("texture_map") || is_word("material_map")) {
+      t.normal = normal_block(t.normal);
+    } else if (is_word("material_map")) {
       next();
       unsupported_warning(k.pos, k.text, "the first texture is used");
-      expect_symbol("{", ("after " + k.text).c_str());
-      bool first = true;
-      int depth = 0;  // braces of an entry's own items: [0.2 pigment { Jade } finish { ... }]
-      while (depth > 0 || !accept_symbol("}")) {
-        if (is_symbol("{")) ++depth;
-        if (is_symbol("}")) --depth;
-        if (is_word("texture")) {
-          next();
-          const Texture layer = texture_block(base, depth + 1);
-          if (first) t = layer;
-          first = false;
-        } else {
-          if (tok().kind == Token::End) fail_here(k.text + " { is never closed");
-          if (tok().kind == Token::Word) {
-            if (const std::optional<Value> v = declared(Value::Texture)) {
-              if (first) t = *v->texture;
-              first = false;
-              continue;
-            }
-          }
-          next();
-        }
+      if (std::optional<Texture> first = first_texture_in_block(base, depth, k.text)) t = *first;
+    } else if (is_word("texture_map")) {
+      next();
+      if (!map) {
+        unsupported_warning(k.pos, "texture_map without a pattern", "the first texture is used");
+        map.emplace();
       }
-    } else if (k.kind == Token::Word && in(kPatterns, std::size(kPatterns), k.text)) {
+      texture_map_block(base, depth, *map);
+    } else if (k.kind == Token::Word && texture::pattern_kind(k.text)) {
       // a patterned texture (texture { gradient x texture_map { ... } })
       next();
-      unsupported_warning(k.pos, "patterned textures", "the first texture is used");
-      patterned = true;
+      if (!map) map.emplace();
+      start_pattern(*texture::pattern_kind(k.text), map->pattern);
+    } else if (k.kind == Token::Word && in(kPatterns, std::size(kPatterns), k.text)) {
+      next();
+      unsupported_warning(k.pos, "textures patterned by " + k.text, "the first texture is used");
+      if (!map) map.emplace();
       pattern_arguments(k, false);
+    } else if (k.kind == Token::Word && map && pattern_modifier(k.text, map->pattern)) {
     } else if (k.kind == Token::Word &&
                in(kPatternModifiers, std::size(kPatternModifiers), k.text)) {
       next();
@@ -633,14 +705,72 @@ Texture Interpreter::texture_block(const Texture& base, int depth) {
                 k.text == "matrix" || k.text == "transform")) {
       std::vector<XformOp> ops;
       transform_item(ops);
-      for (const XformOp& o : ops)
-        if (o.kind == XformOp::Scale && o.v.x == o.v.y && o.v.y == o.v.z && o.v.x > 0)
-          t.pigment.scale *= o.v.x;
+      if (map) {
+        if (const std::optional<Transform> x = pov_transform(ops))
+          texture::transform_pattern(map->pattern, *x);
+        for (Texture& e : map->textures) move_texture(e, ops);
+      } else {
+        move_texture(t, ops);
+      }
     } else {
       unexpected("pigment, finish, normal or a transformation in texture");
     }
   }
+  if (map && !map->textures.empty()) {
+    const std::optional<double> ior = t.ior;
+    t = Texture{};
+    t.ior = ior;
+    t.pigment = map->textures.front().pigment;  // what the YAML conversion shows
+    t.finish = map->textures.front().finish;
+    t.map = std::make_shared<const TextureMap>(std::move(*map));
+  }
   return t;
+}
+
+std::optional<Texture> Interpreter::first_texture_in_block(const Texture& base, int depth,
+                                                           const std::string& what) {
+  expect_symbol("{", ("after " + what).c_str());
+  std::optional<Texture> first;
+  int braces = 0;  // of the items between the textures (an image's file, its options)
+  while (braces > 0 || !accept_symbol("}")) {
+    if (is_symbol("{")) ++braces;
+    if (is_symbol("}")) --braces;
+    if (is_word("texture")) {
+      next();
+      Texture layer = texture_block(base, depth + 1);
+      if (!first) first = std::move(layer);
+      continue;
+    }
+    if (tok().kind == Token::End) fail_here(what + " { is never closed");
+    if (tok().kind == Token::Word) {
+      if (const std::optional<Value> v = declared(Value::Texture)) {
+        if (!first) first = *v->texture;
+        continue;
+      }
+    }
+    next();
+  }
+  return first;
+}
+
+void Interpreter::texture_map_block(const Texture& base, int depth, TextureMap& map) {
+  expect_symbol("{", "after texture_map");
+  while (!accept_symbol("}")) {
+    if (!is_symbol("[")) unexpected("'[' to open a texture map entry");
+    next();
+    const double at = numeric_ahead()  ? number("a texture map value")
+                      : map.at.empty() ? 0
+                                       : map.at.back() + 1;
+    skip_comma();
+    if (depth + 1 > kMaxPovNesting) fail_here("textures are nested too deeply");
+    Texture entry = texture_body(base, depth + 1, "]");
+    // Entries are kept sorted by value (a stable insertion: equal values keep their order).
+    std::size_t i = map.at.size();
+    while (i > 0 && map.at[i - 1] > at) --i;
+    map.at.insert(map.at.begin() + std::ptrdiff_t(i), at);
+    map.textures.insert(map.textures.begin() + std::ptrdiff_t(i), std::move(entry));
+    if (map.at.size() > texture::kMaxMapEntries) fail_here("a texture map has at most 256 entries");
+  }
 }
 
 Texture Interpreter::material_block(const Texture& base, int depth) {

@@ -12,6 +12,7 @@
 #include "math/vec3.h"
 #include "pov/function_expr.h"
 #include "pov/source.h"
+#include "texture/texture_stack.h"
 
 namespace raycast::pov {
 
@@ -35,6 +36,10 @@ struct Pigment {
   std::string pattern;           // a pattern that is not built ("bozo", "agate", ...)
   std::string image_file;        // image_map { png "file" }: the file as resolved
   std::vector<MapEntry> map;     // the pattern's colour_map, kept for the texture system
+  // The whole pigment in the texture system's terms (patterns, maps, warps, transforms), in
+  // POV-Ray's coordinates and its colours as written (not linearised); null for a plain colour.
+  std::shared_ptr<const texture::Pigment> model;
+  bool checker_plain = true;  // a checker of two colours under uniform scales only
 };
 
 struct Finish {
@@ -44,13 +49,28 @@ struct Finish {
   double reflection = 0;  // `reflection F` or `reflection { F }`
   bool fresnel = false;   // `reflection { 0, 1 fresnel on }`
   bool conserve_energy = false;
+  double brilliance = 1, metallic = 0, crand = 0;
+  double reflection_min = 0, reflection_max = 0, reflection_falloff = 1;
+  bool reflection_metallic = false;
+};
+
+struct Texture;
+/// A patterned texture: the pattern's value picks (block patterns) or blends (texture_map) the
+/// entries' textures, in POV-Ray's coordinates.
+struct TextureMap {
+  texture::Pattern pattern;
+  std::vector<double> at;
+  std::vector<Texture> textures;
 };
 
 struct Texture {
+  std::shared_ptr<const TextureMap> map;  // set: a patterned texture (pigment, normal unused)
   Pigment pigment;
   Finish finish;
   std::optional<double> ior;  // interior { ior }, carried with the texture (raycast's material)
   std::string name;           // the #declare name it came from, for the converted file
+  std::optional<texture::Normal> normal;  // in POV-Ray's coordinates
+  std::vector<Texture> under;  // layered textures: the layers beneath this one, bottom first
 };
 
 /// One transformation as written, in POV-Ray's coordinates.
@@ -122,6 +142,7 @@ struct Node {
   std::string name;                 // object { Name }: the declared name it was placed by
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
+  std::size_t texture_at = 0;  // xforms[texture_at...] come after the texture: they move it
 };
 
 struct Camera {

@@ -284,11 +284,9 @@ void Interpreter::directive(const Token& d) {
   // A directive can start inside another's value (`#declare A = #declare B = ...`): each is a
   // level of the C++ stack, bounded with the expressions'.
   const NestingLevel level(*this);
-  // A directive met inside a block's value reads its own expressions in full.
-  const int item = item_value_;
-  item_value_ = 0;
+  // A directive starts a statement, outside the parentheses of any value it interrupts.
+  const ParenDepth statement(*this, 0);
   directive_body(d);
-  item_value_ = item;
 }
 
 void Interpreter::directive_body(const Token& d) {

@@ -24,6 +24,8 @@ const char* kind_name(const Value& v) {
       return "a pigment";
     case Value::Finish:
       return "a finish";
+    case Value::Normal:
+      return "a normal";
     case Value::Interior:
       return "an interior";
     case Value::Material:
@@ -157,7 +159,7 @@ void Interpreter::default_block() {
       default_texture_.finish = finish_block(default_texture_.finish);
     } else if (is_word("normal")) {
       next();
-      skip_block("normal");
+      default_texture_.normal = normal_block(default_texture_.normal);
     } else {
       unexpected("texture, pigment, finish or normal in #default");
     }
@@ -179,10 +181,11 @@ void Interpreter::apply_declares() {
 namespace {
 bool is_skipped_block(std::string_view w) {
   static constexpr std::string_view kinds[] = {
-      "normal",      "pigment_map",   "normal_map", "texture_map", "slope_map",
-      "density_map", "material_map",  "density",    "media",       "fog",
-      "rainbow",     "sky_sphere",    "photons",    "radiosity",   "interior_texture",
-      "bump_map",    "image_pattern", "image_map"};
+      "pigment_map", "normal_map",       "texture_map", "slope_map",
+      "density_map", "material_map",     "density",     "media",
+      "fog",         "rainbow",          "sky_sphere",  "photons",
+      "radiosity",   "interior_texture", "bump_map",    "image_pattern",
+      "image_map"};
   for (const std::string_view k : kinds)
     if (k == w) return true;
   return false;
@@ -206,16 +209,19 @@ Value Interpreter::rvalue() {
     v.kind = Value::Texture;
     Texture tx = texture_block(default_texture_, 0);
     while (peek_operator().kind == Token::Word && peek_operator().text == "texture" &&
-           !pending_) {  // layered
+           !pending_) {  // layered: each further texture goes on top
       next();
-      texture_block(default_texture_, 0);
-      unsupported_warning(t.pos, "layered textures", "the first layer is used");
+      tx = layer_on_top(std::move(tx), texture_block(default_texture_, 0));
     }
     v.texture = std::make_shared<const Texture>(std::move(tx));
   } else if (word == "pigment") {
     next();
     v.kind = Value::Pigment;
     v.pigment = std::make_shared<const Pigment>(pigment_block(default_texture_.pigment));
+  } else if (word == "normal") {
+    next();
+    v.kind = Value::Normal;
+    v.normal = std::make_shared<const texture::Normal>(normal_block(std::nullopt));
   } else if (word == "finish") {
     next();
     v.kind = Value::Finish;

@@ -40,6 +40,7 @@ struct Value {
     Texture,
     Pigment,
     Finish,
+    Normal,
     Interior,
     Material,
     Camera,
@@ -61,6 +62,7 @@ struct Value {
   std::shared_ptr<const pov::Texture> texture;  // Texture, Material (with its interior)
   std::shared_ptr<const pov::Pigment> pigment;
   std::shared_ptr<const pov::Finish> finish;
+  std::shared_ptr<const texture::Normal> normal;
   std::shared_ptr<const pov::Camera> camera;
   std::shared_ptr<const std::vector<XformOp>> transform;
   std::shared_ptr<const FunctionValue> function;

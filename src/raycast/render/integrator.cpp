@@ -57,7 +57,7 @@ Color id_color(int entry) {
 Integrator::Integrator(const Scene& scene, RenderMode mode)
     : scene_(scene), mode_(mode), textures_(load_textures(scene)) {
   for (const Material& m : scene.materials) {
-    any_transmissive_ |= m.transmission > 0;
+    any_transmissive_ |= m.transmission > 0 || (m.texture && m.texture->may_transmit());
     filters_.push_back(m.transmission * m.color);
     exponents_.push_back(integer_exponent(m.shininess));
   }
@@ -84,9 +84,12 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
     } else if (mi < scene.materials.size()) {
       const Material& m = scene.materials[mi];
       const bool textured = m.has_checker || (mi < textures_.size() && textures_[mi]);
-      f.shadow = !(m.transmission > 0) ? ObjectFacts::kOpaque
-                 : textured            ? ObjectFacts::kWalk
-                                       : ObjectFacts::kFilter;
+      if (m.texture)
+        f.shadow = m.texture->may_transmit() ? ObjectFacts::kWalk : ObjectFacts::kOpaque;
+      else
+        f.shadow = !(m.transmission > 0) ? ObjectFacts::kOpaque
+                   : textured            ? ObjectFacts::kWalk
+                                         : ObjectFacts::kFilter;
     }
     if (!o.casts_shadow) f.shadow = ObjectFacts::kPass;  // shadow rays walk past it (passes())
     any_transmissive_ |= !o.casts_shadow;
@@ -262,6 +265,18 @@ bool Integrator::passes_walk(std::uint32_t index, const Ray& segment, Color& thr
     if (!intersect(object, r, h)) return true;
     const SceneHit hit{h, std::int32_t(index)};
     const Material& m = scene_.material_of(hit);
+    if (m.texture) {
+      // A texture's filter and transmit vary over the surface: what it lets through here.
+      if (!m.texture->may_transmit()) return false;
+      if (!counted)
+        through = mul(through,
+                      texture::transmittance(*m.texture, texture_point(object, m, segment, hit)));
+      if (!(max_component(through) > 0)) return false;
+      counted = true;
+      if (!composite) return true;
+      r.tmin = interval_detail::up(h.t);
+      continue;
+    }
     if (!(m.transmission > 0)) return false;
     if (!counted) {
       const SurfaceInfo si = scene_.surface(segment, hit, needs(hit));

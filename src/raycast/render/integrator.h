@@ -8,6 +8,7 @@
 #include "render/ray_recorder.h"
 #include "render/rng.h"
 #include "render/texture.h"
+#include "render/textured_shading.h"
 #include "scene/scene.h"
 
 namespace raycast {
@@ -93,10 +94,18 @@ class Integrator {
   /// The lights' direct term at si; shadow rays on the shading normal's side leave from `lit`
   /// (render/terminator.h), the others from si. `exponent`: m.shininess as an integer (0: not
   /// one, std::pow). Adds the lights' sum to `result` in one addition (`result += sum`).
-  template <TraceMode M>
+  /// With kTextured, the terms come from `look` (a textured material's point: finish_terms) and
+  /// m, exponent and c are not used.
+  template <TraceMode M, bool kTextured = false>
   void direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
               const Material& m, unsigned exponent, const Color& c, SampleState& state,
-              Color& result) const;
+              Color& result, const texture::SurfaceLook* look = nullptr) const;
+  /// whitted_hit() for a material with a texture (Material::texture): the texture's colour,
+  /// normal and finish at the hit, its reflection (min, max, Fresnel or falloff) and what it lets
+  /// through. Kept out of whitted_hit so that plain materials keep their code.
+  template <TraceMode M>
+  Color textured_hit(const Ray& ray, const SceneHit& hit, std::size_t material, int depth,
+                     SampleState& state, double weight) const;
   /// direct()'s light term (sample: its light, l, N.L, diffuse and specular parts) in the
   /// counting and recording modes: when `term` is above 0, the render's shadow query for it from
   /// `o`, counted, and the term added to `sum` when visible; the sample (with its shadow ray) told

@@ -40,6 +40,9 @@ inline Color checker(const CheckerTexture& texture, const Vec3& p) {
 /// scene when a file cannot be read.
 std::vector<std::shared_ptr<const ImageTexture>> load_textures(const Scene& scene);
 
+/// The colour a textured material (Material::texture) shows at a hit (texture::pigment_color).
+Color textured_albedo(const Object& object, const Material& m, const Ray& ray, const SceneHit& hit);
+
 /// The albedo C of a hit: its material's checker (at the object-space hit point), image texture
 /// (at the surface's (u, v)) or colour. `ray` is the world ray that made the hit.
 Color albedo(const Scene& scene, const std::vector<std::shared_ptr<const ImageTexture>>& textures,
@@ -51,6 +54,8 @@ inline Color albedo(const Scene& scene,
                     const Ray& ray, const SceneHit& hit, const SurfaceInfo& si,
                     std::size_t material) {
   const Material& m = scene.materials[material];
+  if (m.texture) [[unlikely]]
+    return textured_albedo(scene.objects[hit.object], m, ray, hit);
   if (m.has_checker) {
     // The object-space point from the object-space ray, as the shape itself computed it.
     return checker(m.checker, to_object_space(scene.objects[hit.object], ray).at(hit.local.t));

@@ -15,6 +15,32 @@ double spot_factor(const Light& light, const Vec3& from_light) {
   return spot_cone(light, from_light);
 }
 
+// One light's term e * (diffuse + highlight) at the hit. Plain materials: e * (kd nl C +
+// ks max(0, r.v)^shininess), r = l mirrored about n (pow(0, shininess) is 0 for shininess > 0:
+// no pow call when the lobe faces away), with `highlight` the scalar Phong part. Textured ones:
+// finish_terms, with the two parts (times e) in diffuse_part and specular_part.
+template <bool kTextured>
+[[gnu::always_inline]] inline Color light_term(const Material& m, unsigned exponent, const Color& c,
+                                               const texture::SurfaceLook* look, const Vec3& n,
+                                               const Vec3& l, const Vec3& v, double nl,
+                                               const Color& e, double& highlight,
+                                               Color& diffuse_part, Color& specular_part) {
+  const Vec3 r = 2 * nl * n - l;
+  const double rv = dot(r, v);
+  if constexpr (kTextured) {
+    finish_terms(*look, n, l, v, nl, rv, diffuse_part, specular_part);
+    diffuse_part = mul(e, diffuse_part);
+    specular_part = mul(e, specular_part);
+    return diffuse_part + specular_part;
+  } else {
+    highlight = m.specular > 0 && (rv > 0 || !(m.shininess > 0))
+                    ? m.specular * (exponent > 0 ? integer_power(std::max(0.0, rv), exponent)
+                                                 : std::pow(std::max(0.0, rv), m.shininess))
+                    : 0;
+    return mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
+  }
+}
+
 }  // namespace
 
 template <Integrator::TraceMode M>
@@ -49,6 +75,9 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
                                      SampleState& state, double weight) const {
   // The material is resolved once per hit (CSG and instances search their parts for it).
   const std::size_t mi = material_index(hit);
+  // Patterned and layered textures take their own path: a plain material pays one test here.
+  if (scene_.materials[mi].texture) [[unlikely]]
+    return textured_hit<M>(ray, hit, mi, depth, state, weight);
   const Object& object = scene_.objects[hit.object];
   const bool imaged = needs(mi) == SurfaceNeeds::kAll;
   const SurfaceInfo si = raycast::surface(object, ray, hit.local,
@@ -113,6 +142,67 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
     if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract);
     result += w_refract *
               trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
+  }
+  return result;
+}
+
+template <Integrator::TraceMode M>
+Color Integrator::textured_hit(const Ray& ray, const SceneHit& hit, std::size_t mi, int depth,
+                               SampleState& state, double weight) const {
+  const Object& object = scene_.objects[hit.object];
+  const SurfaceInfo si = raycast::surface(object, ray, hit.local, SurfaceNeeds::kAll);
+  const Material& m = scene_.materials[mi];
+  const Vec3 wi = normalize(ray.d);
+  const bool outside = dot(wi, si.n) < 0;
+  const texture::SurfaceLook look =
+      look_at(object, m, ray, hit, si, outside ? si.shading_n : -si.shading_n);
+  const Vec3& n = look.normal;
+  const Vec3 v = -wi;
+  Color result = mul(scene_.render.ambient, look.ambient);
+  if constexpr (M == kRecord) {
+    state.recorder->hit(hit, si, mi, outside, n);
+    state.recorder->ambient(result);
+  }
+  if (objects_[std::size_t(hit.object)].terminator)
+    direct<M, true>(si, terminator_origin(object, hit.local, si), n, v, m, 0, look.diffuse, state,
+                    result, &look);
+  else
+    direct<M, true>(si, si, n, v, m, 0, look.diffuse, state, result, &look);
+  if (depth >= scene_.render.max_depth) {
+    if constexpr (M == kRecord) state.recorder->stop(RayStop::kMaxDepth);
+    return result;
+  }
+  // The mirror weight from the finish; what the stack lets through goes on along the refracted
+  // ray (bent by the interior's ior), tinted by the filters it passed.
+  double w_reflect = reflection_weight(look.finish, dot(v, n), m.ior);
+  const double w_refract = (look.through.x + look.through.y + look.through.z) / 3;
+  Vec3 t_dir;
+  bool tir = false;
+  double w_through = w_refract;
+  if (w_refract > 0) {
+    const double eta = outside ? 1 / m.ior : m.ior;
+    if (!refract(wi, n, eta, t_dir)) {
+      w_reflect += w_refract;
+      w_through = 0;
+      tir = true;
+    }
+  }
+  const double cutoff = scene_.render.bailout;
+  if constexpr (M == kRecord) state.recorder->split(w_reflect, w_through, tir, -1, cutoff / weight);
+  if (w_reflect > 0 && weight * w_reflect >= cutoff) {
+    const Vec3 m_dir = reflect(wi, n);
+    if constexpr (M != kPlain) ++state.recorder->counts.reflection;
+    if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
+    const Color mirrored =
+        trace<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
+    result += look.finish.reflection_metallic ? w_reflect * mul(look.pigment, mirrored)
+                                              : w_reflect * mirrored;
+  }
+  if (w_through > 0 && weight * w_through >= cutoff) {
+    if constexpr (M != kPlain) ++state.recorder->counts.refraction;
+    if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_through);
+    result += mul(look.through, trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
+                                         weight * w_through));
   }
   return result;
 }
@@ -194,12 +284,16 @@ template <class Add>
   area_light_points(light, p, rng, [&](const Vec3& target) { add(l, target, false, share); });
 }
 
-template <Integrator::TraceMode M>
+template <Integrator::TraceMode M, bool kTextured>
 void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec3& n, const Vec3& v,
                         const Material& m, unsigned exponent, const Color& c, SampleState& state,
-                        Color& result) const {
+                        Color& result, const texture::SurfaceLook* look) const {
   Color sum{0, 0, 0};
-  if (m.diffuse <= 0 && m.specular <= 0) {
+  if constexpr (kTextured) {
+    if (!(max_component(look->diffuse) > 0) && !(look->finish.phong > 0) &&
+        !(look->finish.specular > 0))
+      return;
+  } else if (m.diffuse <= 0 && m.specular <= 0) {
     result += sum;
     return;
   }
@@ -235,23 +329,21 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
         state.recorder->light({light_index, l, nl, {}, {}, false, {}, {}});
       return;
     }
-    // Diffuse and Phong highlight: e * (kd nl C + ks max(0, r.v)^shininess), r = l mirrored
-    // about n. pow(0, shininess) is 0 for shininess > 0: no pow call when the lobe faces away.
-    const Vec3 r = 2 * nl * n - l;
-    const double rv = dot(r, v);
-    const double highlight =
-        m.specular > 0 && (rv > 0 || !(m.shininess > 0))
-            ? m.specular * (exponent > 0 ? integer_power(std::max(0.0, rv), exponent)
-                                         : std::pow(std::max(0.0, rv), m.shininess))
-            : 0;
-    const Color term = mul(e, m.diffuse * nl * c + Vec3{highlight, highlight, highlight});
+    Color diffuse_part, specular_part;
+    double highlight = 0;
+    const Color term = light_term<kTextured>(m, exponent, c, look, n, l, v, nl, e, highlight,
+                                             diffuse_part, specular_part);
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
     if constexpr (M != kPlain) {  // the render's shadow query below, counted and told
       const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
-      light_recorded<M>(
-          {light_index, l, nl, mul(e, m.diffuse * nl * c), highlight * e, false, {}, {}},
-          origin_towards(from, l), target, at_infinity, lists, term, state, sum);
+      if constexpr (kTextured)
+        light_recorded<M>({light_index, l, nl, diffuse_part, specular_part, false, {}, {}},
+                          origin_towards(from, l), target, at_infinity, lists, term, state, sum);
+      else
+        light_recorded<M>(
+            {light_index, l, nl, mul(e, m.diffuse * nl * c), highlight * e, false, {}, {}},
+            origin_towards(from, l), target, at_infinity, lists, term, state, sum);
       return;
     }
     if (!(max_component(term) > 0)) return;

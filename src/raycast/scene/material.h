@@ -3,7 +3,9 @@
 #include <memory>
 #include <string>
 
+#include "math/transform.h"
 #include "math/vec3.h"
+#include "texture/texture_stack.h"
 
 namespace raycast {
 
@@ -32,6 +34,11 @@ struct Material {
   double transmission = 0;
   double ior = 1;
   bool fresnel = false;
+  // A patterned or layered texture with POV-Ray's finish (docs/textures.md): when set, it gives
+  // the colour, normal and finish of every hit and the fields above other than ior are not used.
+  // Null: the plain path above, which pays nothing for textures.
+  std::shared_ptr<const texture::TextureStack> texture;
+  Transform texture_transform;  // object space -> texture space
 };
 
 }  // namespace raycast

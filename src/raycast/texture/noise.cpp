@@ -1,0 +1,153 @@
+#include "texture/noise.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace raycast::texture {
+
+namespace {
+
+constexpr int kTable = 256;
+
+// A permutation of 0..255 by a Fisher-Yates shuffle driven by a fixed 64-bit LCG (Knuth's MMIX
+// constants), so that the noise is the same on every run and machine.
+struct LatticeTables {
+  std::array<std::uint8_t, 2 * kTable> perm{};
+  std::array<Vec3, kTable> gradients{};  // random unit vectors for generators 1 and 2
+
+  LatticeTables() {
+    std::uint64_t state = 0x5eed1234abcdULL;
+    auto next = [&]() {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      return state >> 11;
+    };
+    std::array<int, kTable> p{};
+    for (int i = 0; i < kTable; ++i) p[std::size_t(i)] = i;
+    for (int i = kTable - 1; i > 0; --i)
+      std::swap(p[std::size_t(i)], p[next() % std::uint64_t(i + 1)]);
+    for (int i = 0; i < 2 * kTable; ++i)
+      perm[std::size_t(i)] = std::uint8_t(p[std::size_t(i % kTable)]);
+    for (Vec3& g : gradients) {
+      // Rejection sampling in the unit ball, then normalised: uniform directions.
+      for (int tries = 0; tries < 1000; ++tries) {
+        const double scale = 1.0 / double(1ULL << 53);
+        const Vec3 v{2 * double(next()) * scale - 1, 2 * double(next()) * scale - 1,
+                     2 * double(next()) * scale - 1};
+        const double l2 = dot(v, v);
+        if (l2 > 1e-4 && l2 <= 1) {
+          g = v / std::sqrt(l2);
+          break;
+        }
+      }
+    }
+  }
+};
+
+const LatticeTables& tables() {
+  static const LatticeTables t;
+  return t;
+}
+
+// The lattice cell of a coordinate: its floor (wrapped to the table) and the fraction.
+struct Cell {
+  int i;
+  double f;
+};
+inline Cell cell(double v) {
+  const double fl = std::floor(v);
+  // The table repeats every 256 cells: the floor modulo 256, exact for any finite double.
+  const double wrapped = fl - 256.0 * std::floor(fl / 256.0);
+  return {int(wrapped) & (kTable - 1), v - fl};
+}
+
+inline double lerp(double t, double a, double b) { return a + t * (b - a); }
+
+// Perlin 2002: the gradient of a corner picked from the twelve cube edges (with four repeats to
+// make sixteen) by the low four bits of its hash, dotted with the offset.
+inline double edge_gradient(int hash, double x, double y, double z) {
+  const int h = hash & 15;
+  const double u = h < 8 ? x : y;
+  const double v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
+  return ((h & 1) ? -u : u) + ((h & 2) ? -v : v);
+}
+
+double improved_noise(const Vec3& p) {
+  const auto& perm = tables().perm;
+  const Cell cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
+  auto fade = [](double t) { return t * t * t * (t * (t * 6 - 15) + 10); };
+  const double u = fade(cx.f), v = fade(cy.f), w = fade(cz.f);
+  auto h = [&](int a, int b, int c) {
+    return perm[std::size_t(perm[std::size_t(perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
+  };
+  const double x = cx.f, y = cy.f, z = cz.f;
+  const double x00 =
+      lerp(u, edge_gradient(h(0, 0, 0), x, y, z), edge_gradient(h(1, 0, 0), x - 1, y, z));
+  const double x10 =
+      lerp(u, edge_gradient(h(0, 1, 0), x, y - 1, z), edge_gradient(h(1, 1, 0), x - 1, y - 1, z));
+  const double x01 =
+      lerp(u, edge_gradient(h(0, 0, 1), x, y, z - 1), edge_gradient(h(1, 0, 1), x - 1, y, z - 1));
+  const double x11 = lerp(u, edge_gradient(h(0, 1, 1), x, y - 1, z - 1),
+                          edge_gradient(h(1, 1, 1), x - 1, y - 1, z - 1));
+  return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));  // about [-1, 1]
+}
+
+double lattice_noise(const Vec3& p) {
+  const auto& t = tables();
+  const Cell cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
+  auto fade = [](double s) { return s * s * (3 - 2 * s); };
+  const double u = fade(cx.f), v = fade(cy.f), w = fade(cz.f);
+  auto corner = [&](int a, int b, int c) {
+    const int hash = t.perm[std::size_t(
+        t.perm[std::size_t(t.perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
+    const Vec3& g = t.gradients[std::size_t(hash)];
+    return g.x * (cx.f - a) + g.y * (cy.f - b) + g.z * (cz.f - c);
+  };
+  const double x00 = lerp(u, corner(0, 0, 0), corner(1, 0, 0));
+  const double x10 = lerp(u, corner(0, 1, 0), corner(1, 1, 0));
+  const double x01 = lerp(u, corner(0, 0, 1), corner(1, 0, 1));
+  const double x11 = lerp(u, corner(0, 1, 1), corner(1, 1, 1));
+  return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));  // within [-sqrt(3)/2, sqrt(3)/2]
+}
+
+}  // namespace
+
+double noise(const Vec3& p, int generator) {
+  if (!is_finite(p)) return 0.5;
+  // Scaled so that the values seen in practice spread over [0, 1] (both kinds rarely reach
+  // beyond 0.8 of their bound), then clamped.
+  const double n = generator >= 3 ? 0.6 * improved_noise(p) : 0.75 * lattice_noise(p);
+  return std::clamp(0.5 + n, 0.0, 1.0);
+}
+
+Vec3 vector_noise(const Vec3& p, int generator) {
+  // Three noises at points far apart in the lattice: independent for any practical purpose.
+  return {2 * noise(p, generator) - 1, 2 * noise(p + Vec3{31.416, -47.853, 12.793}, generator) - 1,
+          2 * noise(p + Vec3{-101.61, 73.137, -59.29}, generator) - 1};
+}
+
+Vec3 turbulence_offset(const Vec3& p, const Turbulence& t, int generator) {
+  Vec3 sum{0, 0, 0};
+  double weight = 1, frequency = 1;
+  const int octaves = std::clamp(t.octaves, 1, 10);
+  for (int i = 0; i < octaves; ++i) {
+    sum += weight * vector_noise(frequency * p, generator);
+    weight *= t.omega;
+    frequency *= t.lambda;
+  }
+  return {sum.x * t.amount.x, sum.y * t.amount.y, sum.z * t.amount.z};
+}
+
+double turbulence_value(const Vec3& p, int octaves, double omega, double lambda, int generator) {
+  double sum = 0, weight = 1, frequency = 1;
+  octaves = std::clamp(octaves, 1, 10);
+  for (int i = 0; i < octaves; ++i) {
+    sum += weight * std::abs(2 * noise(frequency * p, generator) - 1);
+    weight *= omega;
+    frequency *= lambda;
+  }
+  return sum;
+}
+
+}  // namespace raycast::texture

@@ -1,0 +1,270 @@
+#include "texture/texture_stack.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace raycast::texture {
+
+namespace {
+
+double average(const Vec3& c) { return (c.x + c.y + c.z) / 3; }
+
+// A value in [0, 1) that changes from point to point with no pattern (crand's grain).
+double grain(const Vec3& p) {
+  auto bits = [](double v) {
+    std::uint64_t u = 0;
+    static_assert(sizeof(u) == sizeof(v));
+    __builtin_memcpy(&u, &v, sizeof(u));
+    return u;
+  };
+  std::uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ULL ^ bits(p.y) * 0xC2B2AE3D27D4EB4FULL ^
+                    bits(p.z) * 0x165667B19E3779F9ULL;
+  h ^= h >> 31;
+  h *= 0xBF58476D1CE4E5B9ULL;
+  h ^= h >> 29;
+  return double(h >> 11) * (1.0 / double(1ULL << 53));
+}
+
+// The highlight and reflection terms of a layer seen through `vis` of the layers above, added
+// to the sums; the layer with the largest highlight gives the sizes.
+void add_finish(const Finish& f, double vis, Finish& sum, double& strongest) {
+  sum.phong += vis * f.phong;
+  sum.specular += vis * f.specular;
+  sum.reflection_min += vis * f.reflection_min;
+  sum.reflection_max += vis * f.reflection_max;
+  sum.crand += vis * f.crand;
+  const double highlight = vis * (f.phong + f.specular + f.reflection_max);
+  if (highlight > strongest || strongest < 0) {
+    strongest = highlight;
+    sum.phong_size = f.phong_size;
+    sum.roughness = f.roughness;
+    sum.metallic = f.metallic;
+    sum.reflection_fresnel = f.reflection_fresnel;
+    sum.reflection_falloff = f.reflection_falloff;
+    sum.reflection_metallic = f.reflection_metallic;
+  }
+}
+
+}  // namespace
+
+void transform_layer(TextureLayer& layer, const Transform& t) {
+  transform_pigment(layer.pigment, t);
+  if (layer.normal) transform_pattern(layer.normal->pattern, t);
+}
+
+bool TextureStack::may_transmit() const {
+  // The stack lets light through only where every layer does (and the map under them).
+  const bool layers_do = std::all_of(layers.begin(), layers.end(), [](const TextureLayer& l) {
+    return texture::may_transmit(l.pigment);
+  });
+  if (map_pattern)
+    return layers_do && std::any_of(map.begin(), map.end(), [](const TextureMapEntry& e) {
+             return e.texture && e.texture->may_transmit();
+           });
+  return !layers.empty() && layers_do;
+}
+
+bool TextureStack::has_normal() const {
+  return std::any_of(layers.begin(), layers.end(),
+                     [](const TextureLayer& l) { return l.normal.has_value(); }) ||
+         std::any_of(map.begin(), map.end(),
+                     [](const TextureMapEntry& e) { return e.texture && e.texture->has_normal(); });
+}
+
+namespace {
+
+// The map's entries around the pattern's value at p: a block pattern's entry k alone, else the
+// two neighbours and the weight of the second (a colour map's rule). Null entries when none.
+struct MapPick {
+  const TextureStack* a = nullptr;
+  const TextureStack* b = nullptr;
+  double t = 0;
+};
+MapPick pick(const TextureStack& texture, const Vec3& p) {
+  const std::vector<TextureMapEntry>& map = texture.map;
+  if (map.empty()) return {};
+  const double v = evaluate(*texture.map_pattern, p);
+  const int blocks = block_count(texture.map_pattern->kind);
+  if (blocks > 0) {
+    const auto k =
+        std::size_t(std::clamp(std::lround(v * double(blocks - 1)), 0L, long(map.size()) - 1));
+    return {map[k].texture.get(), nullptr, 0};
+  }
+  if (!(v > map.front().at)) return {map.front().texture.get(), nullptr, 0};
+  if (v >= map.back().at) return {map.back().texture.get(), nullptr, 0};
+  std::size_t i = 1;
+  while (map[i].at <= v) ++i;
+  const double span = map[i].at - map[i - 1].at;
+  if (!(span > 0)) return {map[i].texture.get(), nullptr, 0};
+  return {map[i - 1].texture.get(), map[i].texture.get(), (v - map[i - 1].at) / span};
+}
+
+Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + t * (b - a); }
+
+SurfaceLook blend(const SurfaceLook& a, const SurfaceLook& b, double t) {
+  SurfaceLook out = t < 0.5 ? a : b;  // sizes, flags: the nearer entry's
+  out.ambient = lerp(a.ambient, b.ambient, t);
+  out.diffuse = lerp(a.diffuse, b.diffuse, t);
+  out.pigment = lerp(a.pigment, b.pigment, t);
+  out.through = lerp(a.through, b.through, t);
+  auto mix_value = [t](double x, double y) { return x + t * (y - x); };
+  out.finish.phong = mix_value(a.finish.phong, b.finish.phong);
+  out.finish.specular = mix_value(a.finish.specular, b.finish.specular);
+  out.finish.brilliance = mix_value(a.finish.brilliance, b.finish.brilliance);
+  out.finish.reflection_min = mix_value(a.finish.reflection_min, b.finish.reflection_min);
+  out.finish.reflection_max = mix_value(a.finish.reflection_max, b.finish.reflection_max);
+  const Vec3 n = lerp(a.normal, b.normal, t);
+  const double l = length(n);
+  if (l > 0) out.normal = n / l;
+  return out;
+}
+
+}  // namespace
+
+SurfaceLook mapped_look(const TextureStack& texture, const TextureContext& ctx) {
+  const MapPick m = pick(texture, ctx.p);
+  if (!m.a) return {};
+  const SurfaceLook a = evaluate(*m.a, ctx);
+  return m.b ? blend(a, evaluate(*m.b, ctx), m.t) : a;
+}
+
+namespace {
+
+// POV-Ray's wrinkles normal: vector noise summed over ten octaves, each half as strong and twice
+// as fine (the gradient of the wrinkles value would weigh every octave alike), taken along the
+// world axes.
+Vec3 wrinkles_normal(const Pattern& pattern, const TextureContext& ctx) {
+  const Vec3 q = pattern_point(pattern, ctx.p);
+  Vec3 v{0, 0, 0};
+  double f = 1;
+  for (int i = 0; i < 10; ++i, f *= 2) v += vector_noise(f * q, pattern.noise_generator) / f;
+  // Three times: raycast's vector noise is about a third as strong as POV-Ray's DNoise, whose
+  // wrinkles these are compared with (docs/textures.md "Normals").
+  const Vec3 t = pattern_vector(pattern, 3.0 * v);
+  Vec3 g{0, 0, 0};
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double l = length(ctx.axes[a]);
+    if (l > 0) g[a] = dot(t, ctx.axes[a]) / l;
+  }
+  return g;
+}
+
+}  // namespace
+
+Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
+  if (pattern.kind == PatternKind::kWrinkles) return wrinkles_normal(pattern, ctx);
+  // A step of 0.02 of the pattern's size in texture space along each world axis (POV-Ray's
+  // default normal `accuracy`): finer steps pick up the noise's smallest octaves as grain.
+  double size = 1;
+  for (const PatternStep& s : pattern.steps)
+    if (s.transform) {
+      const Mat4& m = s.transform->matrix();
+      const double det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
+                         m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
+                         m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
+      size *= std::cbrt(std::abs(det));
+    }
+  if (!(size > 0) || !std::isfinite(size)) size = 1;
+  constexpr double kStep = 0.02;
+  const PatternKind k = pattern.kind;
+  const bool own_normal = k == PatternKind::kBumps || k == PatternKind::kDents ||
+                          k == PatternKind::kRipples || k == PatternKind::kWaves;
+  const double scale = own_normal ? 1 : kPatternNormalScale;
+  Vec3 g{0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    const Vec3& axis = ctx.axes[a];
+    const double l = length(axis);
+    if (!(l > 0)) continue;
+    const Vec3 d = (kStep * size / l) * axis;
+    const double slope = 0.5 * (evaluate(pattern, ctx.p + d) - evaluate(pattern, ctx.p - d));
+    g[std::size_t(a)] = slope / kStep * scale;
+  }
+  return g;
+}
+
+SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
+  SurfaceLook look;
+  Finish& f = look.finish;
+  f = Finish{};
+  f.phong = f.specular = f.reflection_min = f.reflection_max = f.crand = 0;
+  double strongest = -1, diffuse_weight = 0, brilliance = 0;
+  Vec3 through{1, 1, 1};
+  Vec3 tilt{0, 0, 0};
+  // From the top layer down: each is seen through the filter and transmit of those above.
+  for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
+    const TextureLayer& layer = *it;
+    const Rgbft c = evaluate(layer.pigment, ctx.p);
+    const double opaque = std::clamp(1 - c.filter - c.transmit, 0.0, 1.0);
+    const Vec3 seen = opaque * mul(through, c.rgb);
+    const double vis = average(through);
+    look.ambient += layer.finish.ambient * seen;
+    look.diffuse += layer.finish.diffuse * seen;
+    look.pigment += seen;
+    const double w = vis * opaque * layer.finish.diffuse;
+    diffuse_weight += w;
+    brilliance += w * layer.finish.brilliance;
+    add_finish(layer.finish, vis, f, strongest);
+    if (layer.normal)
+      tilt += (vis * layer.normal->bump_size) * pattern_gradient(layer.normal->pattern, ctx);
+    through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
+    if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
+  }
+  if (texture.map_pattern && (through.x > 0 || through.y > 0 || through.z > 0)) {
+    // The patterned texture under the layers, seen through them.
+    const SurfaceLook base = mapped_look(texture, ctx);
+    const double vis = average(through);
+    look.ambient += mul(through, base.ambient);
+    look.diffuse += mul(through, base.diffuse);
+    look.pigment += mul(through, base.pigment);
+    diffuse_weight += vis;
+    brilliance += vis * base.finish.brilliance;
+    add_finish(base.finish, vis, f, strongest);
+    tilt += vis * (ctx.n - base.normal);
+    through = mul(through, base.through);
+  }
+  f.brilliance = diffuse_weight > 0 ? brilliance / diffuse_weight : 1;
+  if (f.crand > 0) look.diffuse *= 1 - std::min(1.0, f.crand) * grain(ctx.p);
+  look.through = through;
+  look.normal = ctx.n;
+  if (tilt.x != 0 || tilt.y != 0 || tilt.z != 0) {
+    // Raised where the pattern is high: the normal leans away from the gradient's tangential
+    // part (the part along n does not tilt it).
+    const Vec3 tangential = tilt - dot(tilt, ctx.n) * ctx.n;
+    const Vec3 n = ctx.n - tangential;
+    const double l = length(n);
+    if (l > 0 && std::isfinite(l)) look.normal = n / l;
+  }
+  return look;
+}
+
+Vec3 pigment_color(const TextureStack& texture, const Vec3& p) {
+  Vec3 through{1, 1, 1}, sum{0, 0, 0};
+  for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
+    const Rgbft c = evaluate(it->pigment, p);
+    sum += std::clamp(1 - c.filter - c.transmit, 0.0, 1.0) * mul(through, c.rgb);
+    through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
+    if (!(through.x > 0 || through.y > 0 || through.z > 0)) return sum;
+  }
+  if (const MapPick m = texture.map_pattern ? pick(texture, p) : MapPick{}; m.a) {
+    const Vec3 a = pigment_color(*m.a, p);
+    sum += mul(through, m.b ? lerp(a, pigment_color(*m.b, p), m.t) : a);
+  }
+  return sum;
+}
+
+Vec3 transmittance(const TextureStack& texture, const Vec3& p) {
+  Vec3 through{1, 1, 1};
+  for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
+    const Rgbft c = evaluate(it->pigment, p);
+    through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
+    if (!(through.x > 0 || through.y > 0 || through.z > 0)) return through;
+  }
+  if (const MapPick m = texture.map_pattern ? pick(texture, p) : MapPick{}; m.a) {
+    const Vec3 a = transmittance(*m.a, p);
+    through = mul(through, m.b ? lerp(a, transmittance(*m.b, p), m.t) : a);
+  }
+  return through;
+}
+
+}  // namespace raycast::texture
