@@ -128,5 +128,20 @@ TEST(PovLights, SpotCone_CosineEdgeAndTightness) {
   EXPECT_NEAR(spot_cone(l, at30), t * t * (3 - 2 * t) * std::pow(std::cos(a), 10), 1e-12);
 }
 
+TEST(PovLights, Shadowless_GivesNoHighlight) {
+  // The light mirrors into the view at the origin: highlight 1 unless the light is shadowless.
+  const auto shiny = [](const std::string& shadows) {
+    return load_scene_text(
+        "materials:\n  shiny: {color: [1, 1, 1], ambient: 0, diffuse: 0.5, specular: 1, "
+        "shininess: 1}\n"
+        "lights:\n  - {type: point, position: [-8, 8, 0], shadows: " +
+        shadows +
+        "}\n"
+        "objects:\n  - {plane: {normal: [0, 1, 0], point: [0, 0, 0]}, material: shiny}\n");
+  };
+  EXPECT_NEAR(floor_light(shiny("true"), 0, 0), 0.5 * std::sqrt(0.5) + 1, 1e-12);
+  EXPECT_NEAR(floor_light(shiny("false"), 0, 0), 0.5 * std::sqrt(0.5), 1e-12);
+}
+
 }  // namespace
 }  // namespace raycast

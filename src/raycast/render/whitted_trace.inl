@@ -41,6 +41,19 @@ template <bool kTextured>
   }
 }
 
+// light_term without its highlight (a shadowless light's: POV-Ray's give none).
+template <bool kTextured>
+[[gnu::always_inline]] inline void drop_highlight(const Material& m, double nl, const Color& c,
+                                                  const Color& e, Color& term, double& highlight,
+                                                  Color& specular_part) {
+  if constexpr (kTextured)
+    term = term - specular_part;
+  else
+    term = mul(e, m.diffuse * nl * c);
+  highlight = 0;
+  specular_part = Color{0, 0, 0};
+}
+
 }  // namespace
 
 template <Integrator::TraceMode M>
@@ -256,12 +269,16 @@ template <class Add>
   add(l, p + to_plane * l, false, e);
 }
 
-// Cylinder and area lights: the cone (spot, cylinder) and attenuation of the light's centre,
-// then one shadow ray per grid point of an area light (each with its share of the light and the
-// centre's direction, as POV-Ray lights its area lights) or one along the cylinder's axis.
+// Directional, cylinder and area lights: the cone (spot, cylinder) and attenuation of the
+// light's centre, then one shadow ray per grid point of an area light (each with its share of the
+// light and the centre's direction, as POV-Ray lights its area lights) or one along the
+// cylinder's axis. `unshadowed`: set for a shadowless light or beyond a parallel light's plane.
 template <class Add>
 [[gnu::always_inline]] inline void extended_light(const Light& light, const Color& emitted,
-                                                  const Vec3& p, Rng& rng, Add& add) {
+                                                  const Vec3& p, Rng& rng, bool& unshadowed,
+                                                  Add& add) {
+  if (light.type == LightType::kDirectional)
+    return directional_light(light, emitted, p, unshadowed, add);
   const Vec3 to = light.position - p;
   const double dist2 = length_squared(to);
   if (!(dist2 > 0)) return;
@@ -315,7 +332,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
   // The direction lists around the light of the loop below (nullptr for lights without: only
   // point and spot lights have them, and add's shadow rays to such a light end at it).
   const DirectionLists* lists = nullptr;
-  bool unshadowed = false;  // a shadowless light, or a point beyond a parallel light's plane
+  bool unshadowed = false, no_highlight = false;  // per light below (extended_light)
   // One light direction l towards `target` (a point, or a direction when at infinity).
   // The light of the loop below, for a recorder.
   std::size_t light_index = 0;
@@ -331,8 +348,9 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     }
     Color diffuse_part, specular_part;
     double highlight = 0;
-    const Color term = light_term<kTextured>(m, exponent, c, look, n, l, v, nl, e, highlight,
-                                             diffuse_part, specular_part);
+    Color term = light_term<kTextured>(m, exponent, c, look, n, l, v, nl, e, highlight,
+                                       diffuse_part, specular_part);
+    if (no_highlight) drop_highlight<kTextured>(m, nl, c, e, term, highlight, specular_part);
     // The term is >= 0 in every channel; where it is exactly 0 (no diffuse part and the
     // highlight's lobe facing away, as on glass), visibility cannot matter: no shadow ray.
     if constexpr (M != kPlain) {  // the render's shadow query below, counted and told
@@ -373,15 +391,13 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const Color& emitted = emitted_by[li];
     lists = light_lists_[li];
     light_index = li;
-    unshadowed = !light.shadows;
+    unshadowed = no_highlight = !light.shadows;
     const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:
-        directional_light(light, emitted, si.p, unshadowed, add);
-        break;
       case LightType::kCylinder:
       case LightType::kArea:
-        extended_light(light, emitted, si.p, state.rng, add);
+        extended_light(light, emitted, si.p, state.rng, unshadowed, add);
         break;
       case LightType::kPoint:
       case LightType::kSpot: {
