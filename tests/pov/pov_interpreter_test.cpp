@@ -189,6 +189,16 @@ TEST(PovInterpreter, StringsCompareInConditions) {
   EXPECT_NE(error_of("#declare V = \"tree\";\n#if (V = 1) #end"), "");
 }
 
+// vturbulence is the push turbulence gives a point: zero nowhere in general, bounded by the
+// octave sum, the same at the same point.
+TEST(PovInterpreter, Vturbulence_IsBoundedAndRepeatable) {
+  EXPECT_EQ(debug_of("#declare A = vturbulence(2, 0.5, 6, <0.3, 1.7, -2.2>);\n"
+                     "#declare B = vturbulence(2, 0.5, 6, <0.3, 1.7, -2.2>);\n"
+                     "#if (vlength(A - B) = 0 & vlength(A) > 0 & abs(A.x) <= 2 & abs(A.y) <= 2 "
+                     "& abs(A.z) <= 2) #debug \"ok\" #end"),
+            "ok");
+}
+
 // A function held in an array is called like a declared one.
 TEST(PovInterpreter, FunctionFromAnArrayElement_IsCalled) {
   EXPECT_EQ(debug_of("#declare Fns = array[2] { function(a, b) { a + b }, function { x * 2 } }\n"
