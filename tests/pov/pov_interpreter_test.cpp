@@ -199,6 +199,23 @@ TEST(PovInterpreter, Vturbulence_IsBoundedAndRepeatable) {
             "ok");
 }
 
+// An array of colours picked by a macro inside a pigment is a colour (arrays.inc's
+// Rand_Array_Item, as isocacti.pov uses it).
+TEST(PovInterpreter, ColourFromAnArrayInAPigment) {
+  EXPECT_EQ(error_of("#declare Cs = array[2] { rgb <1, 0, 0>, rgb <0, 1, 0> }\n"
+                     "#macro Pick(A, I) A[I] #end\n"
+                     "sphere { 0, 1 pigment { Pick(Cs, 1) * 0.5 } }\n"
+                     "sphere { 0, 1 pigment { Cs[0] } }"),
+            "");
+}
+
+// A macro whose value is chosen by #if goes on with the caller's operators after it.
+TEST(PovInterpreter, MacroValueFromAnIf_TakesTheCallersOperators) {
+  EXPECT_EQ(debug_of("#macro Pick(C) #if (C) 2 #else 3 #end #end\n"
+                     "#declare A = Pick(1) * 10 + Pick(0);\n#debug str(A, 0, 0)"),
+            "23");
+}
+
 // A function held in an array is called like a declared one.
 TEST(PovInterpreter, FunctionFromAnArrayElement_IsCalled) {
   EXPECT_EQ(debug_of("#declare Fns = array[2] { function(a, b) { a + b }, function { x * 2 } }\n"

@@ -94,6 +94,18 @@ Colour to_colour(const Value& v) {
 }
 }  // namespace
 
+namespace {
+
+// An array of numbers (colours, vectors): its elements start a colour, not a pigment.
+bool holds_numbers(const Value& v) {
+  if (v.kind != Value::Array || !v.array) return false;
+  for (const std::optional<Value>& e : v.array->elements)
+    if (e) return e->is_numeric();
+  return false;
+}
+
+}  // namespace
+
 std::optional<Value> Interpreter::declared(Value::Kind kind) {
   if (tok().kind != Token::Word) return std::nullopt;
   const Value* v = lookup(tok().text);
@@ -103,7 +115,7 @@ std::optional<Value> Interpreter::declared(Value::Kind kind) {
     next();
     return copy;
   }
-  if (v->kind != Value::Array) return std::nullopt;
+  if (v->kind != Value::Array || holds_numbers(*v)) return std::nullopt;
   const Pos at = tok().pos;
   Value e = expression();  // an element: Textures[I]
   if (e.kind != kind && !(kind == Value::Texture && e.kind == Value::Material))
@@ -165,7 +177,7 @@ bool Interpreter::starts_colour() {
       w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft")
     return true;
   const Value* v = lookup(w);
-  return v && v->is_numeric();
+  return v && (v->is_numeric() || holds_numbers(*v));
 }
 
 Colour Interpreter::colour(const char* what) {
