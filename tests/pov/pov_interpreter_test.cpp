@@ -216,6 +216,13 @@ TEST(PovInterpreter, MacroValueFromAnIf_TakesTheCallersOperators) {
             "23");
 }
 
+// POV-Ray 3.1's refraction items in a finish are read (POV-Ray warns and goes on).
+TEST(PovInterpreter, OldFinishRefractionItems_AreRead) {
+  EXPECT_EQ(error_of("sphere { 0, 1 pigment { rgbf 1 } finish { refraction 1 ior 1.5 "
+                     "caustics 0.5 } }"),
+            "");
+}
+
 // A function held in an array is called like a declared one.
 TEST(PovInterpreter, FunctionFromAnArrayElement_IsCalled) {
   EXPECT_EQ(debug_of("#declare Fns = array[2] { function(a, b) { a + b }, function { x * 2 } }\n"

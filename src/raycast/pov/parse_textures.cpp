@@ -596,6 +596,16 @@ Finish Interpreter::finish_block(const Finish& base) {
         f.metallic = boolean_option() ? 1 : 0;
       else
         f.metallic = numeric_ahead() ? number("metallic") : 1;
+    } else if (w == "ior" || w == "refraction" || w == "caustics" || w == "fade_distance" ||
+               w == "fade_power") {
+      // POV-Ray 3.1's finish items, an interior's since 3.5: POV-Ray still reads them with a
+      // warning; `ior` is kept (refraction in raycast follows the material's transmission).
+      next();
+      const double x = number(w.c_str());
+      if (w == "ior")
+        f.ior = x;
+      else
+        unsupported_warning(t.pos, "finish " + w + " (an interior item since POV-Ray 3.5)");
     } else if (w == "irid" || w == "subsurface" || w == "reflection_exponent") {
       next();
       if (w == "reflection_exponent")
