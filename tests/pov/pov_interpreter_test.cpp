@@ -216,6 +216,19 @@ TEST(PovInterpreter, MacroValueFromAnIf_TakesTheCallersOperators) {
             "23");
 }
 
+// A pigment's name alone in a texture is its pigment, as POV-Ray reads it.
+TEST(PovInterpreter, PigmentNameInATexture_IsItsPigment) {
+  EXPECT_EQ(error_of("#declare P = pigment { rgb <1, 0, 0> }\n"
+                     "sphere { 0, 1 texture { P finish { phong 1 } } }"),
+            "");
+}
+
+TEST(PovInterpreter, UvMappingBeforeADeclaredPigment) {
+  EXPECT_EQ(error_of("#declare P = pigment { rgb <1, 0, 0> }\n"
+                     "sphere { 0, 1 pigment { uv_mapping P } }"),
+            "");
+}
+
 // POV-Ray 3.1's refraction items in a finish are read (POV-Ray warns and goes on).
 TEST(PovInterpreter, OldFinishRefractionItems_AreRead) {
   EXPECT_EQ(error_of("sphere { 0, 1 pigment { rgbf 1 } finish { refraction 1 ior 1.5 "

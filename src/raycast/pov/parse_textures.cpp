@@ -346,6 +346,9 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
 
 Pigment Interpreter::pigment_body(const Pigment& base, const char* close) {
   Pigment p = base;
+  // `uv_mapping` may come before the declared pigment it applies to (POV-Ray reads both orders;
+  // raycast's patterns are evaluated in space either way).
+  if (is_word("uv_mapping")) next();
   if (const std::optional<Value> v = declared(Value::Pigment)) p = *v->pigment;
   // The texture system's model of the pigment, built alongside the summary fields.
   texture::Pigment model = p.model ? *p.model : texture::Pigment{};
@@ -670,6 +673,10 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
     const std::optional<double> ior = t.ior;
     t = *v->texture;
     if (!t.ior) t.ior = ior;
+  } else if (const Value* p = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+             p && p->kind == Value::Pigment && p->pigment) {
+    t.pigment = *p->pigment;  // POV-Ray reads a pigment's name alone as the texture's pigment
+    next();
   }
   std::optional<TextureMap> map;  // a patterned texture being read
   while (!accept_symbol(close)) {
