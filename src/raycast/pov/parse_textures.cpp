@@ -698,6 +698,9 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
     } else if (is_word("normal")) {
       next();
       t.normal = normal_block(t.normal);
+    } else if (is_word("no_bump_scale")) {
+      next();
+      unsupported_warning(k.pos, "no_bump_scale", "bumps scale with the texture");
     } else if (is_word("material_map")) {
       next();
       unsupported_warning(k.pos, k.text, "the first texture is used");
