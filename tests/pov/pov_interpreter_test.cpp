@@ -189,6 +189,53 @@ TEST(PovInterpreter, StringsCompareInConditions) {
   EXPECT_NE(error_of("#declare V = \"tree\";\n#if (V = 1) #end"), "");
 }
 
+// vturbulence is the push turbulence gives a point: zero nowhere in general, bounded by the
+// octave sum, the same at the same point.
+TEST(PovInterpreter, Vturbulence_IsBoundedAndRepeatable) {
+  EXPECT_EQ(debug_of("#declare A = vturbulence(2, 0.5, 6, <0.3, 1.7, -2.2>);\n"
+                     "#declare B = vturbulence(2, 0.5, 6, <0.3, 1.7, -2.2>);\n"
+                     "#if (vlength(A - B) = 0 & vlength(A) > 0 & abs(A.x) <= 2 & abs(A.y) <= 2 "
+                     "& abs(A.z) <= 2) #debug \"ok\" #end"),
+            "ok");
+}
+
+// An array of colours picked by a macro inside a pigment is a colour (arrays.inc's
+// Rand_Array_Item, as isocacti.pov uses it).
+TEST(PovInterpreter, ColourFromAnArrayInAPigment) {
+  EXPECT_EQ(error_of("#declare Cs = array[2] { rgb <1, 0, 0>, rgb <0, 1, 0> }\n"
+                     "#macro Pick(A, I) A[I] #end\n"
+                     "sphere { 0, 1 pigment { Pick(Cs, 1) * 0.5 } }\n"
+                     "sphere { 0, 1 pigment { Cs[0] } }"),
+            "");
+}
+
+// A macro whose value is chosen by #if goes on with the caller's operators after it.
+TEST(PovInterpreter, MacroValueFromAnIf_TakesTheCallersOperators) {
+  EXPECT_EQ(debug_of("#macro Pick(C) #if (C) 2 #else 3 #end #end\n"
+                     "#declare A = Pick(1) * 10 + Pick(0);\n#debug str(A, 0, 0)"),
+            "23");
+}
+
+// A pigment's name alone in a texture is its pigment, as POV-Ray reads it.
+TEST(PovInterpreter, PigmentNameInATexture_IsItsPigment) {
+  EXPECT_EQ(error_of("#declare P = pigment { rgb <1, 0, 0> }\n"
+                     "sphere { 0, 1 texture { P finish { phong 1 } } }"),
+            "");
+}
+
+TEST(PovInterpreter, UvMappingBeforeADeclaredPigment) {
+  EXPECT_EQ(error_of("#declare P = pigment { rgb <1, 0, 0> }\n"
+                     "sphere { 0, 1 pigment { uv_mapping P } }"),
+            "");
+}
+
+// POV-Ray 3.1's refraction items in a finish are read (POV-Ray warns and goes on).
+TEST(PovInterpreter, OldFinishRefractionItems_AreRead) {
+  EXPECT_EQ(error_of("sphere { 0, 1 pigment { rgbf 1 } finish { refraction 1 ior 1.5 "
+                     "caustics 0.5 } }"),
+            "");
+}
+
 // A function held in an array is called like a declared one.
 TEST(PovInterpreter, FunctionFromAnArrayElement_IsCalled) {
   EXPECT_EQ(debug_of("#declare Fns = array[2] { function(a, b) { a + b }, function { x * 2 } }\n"

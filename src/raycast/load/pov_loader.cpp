@@ -207,7 +207,7 @@ class Builder {
     if (it == stacks_.end()) it = stacks_.emplace(&t, pov_textures_.stack(t)).first;
     mat.texture = it->second;
     mat.color = rgb(t.pigment.c0);
-    if (t.ior) mat.ior = *t.ior;
+    if (const std::optional<double> ior = t.ior ? t.ior : t.finish.ior) mat.ior = *ior;
     const Transform world = mirror_ ? Transform::scale({1, 1, -1}) : Transform();
     mat.texture_transform = frame.inverse() * (object ? world * *object : world);
     mat.name = t.name;
@@ -248,7 +248,7 @@ class Builder {
     mat.reflection = std::min(1.0, f.reflection);
     mat.transmission = tr;
     mat.fresnel = f.fresnel && tr > 0;
-    if (t.ior) mat.ior = *t.ior;
+    if (const std::optional<double> ior = t.ior ? t.ior : t.finish.ior) mat.ior = *ior;
     const MaterialKey key = {mat.color.x,
                              mat.color.y,
                              mat.color.z,

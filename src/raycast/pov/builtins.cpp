@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "pov/interpreter.h"
+#include "texture/noise.h"
 
 namespace raycast::pov {
 
@@ -422,9 +423,14 @@ Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value
   }
   if (word == "vrotate") return vec3(rotate_xyz(vv(0), vv(1)));
   if (word == "vaxis_rotate") return vec3(axis_rotate(vv(0), vv(1), f(2)));
-  if (word == "vturbulence") {
-    unsupported_warning(t.pos, "the vturbulence function", "its answer is <0, 0, 0>");
-    return vec3({0, 0, 0});
+  if (word == "vturbulence") {  // vturbulence(Lambda, Omega, Octaves, P): turbulence's push
+    texture::Turbulence turbulence;
+    turbulence.amount = {1, 1, 1};
+    turbulence.lambda = f(0);
+    turbulence.omega = f(1);
+    turbulence.octaves = static_cast<int>(std::clamp(std::trunc(f(2)), 1.0, 10.0));
+    // POV-Ray's default noise (noise_generator 2).
+    return vec3(texture::turbulence_offset(vv(3), turbulence, 2));
   }
   if (word == "strlen") return Value::number(static_cast<double>(s(0).size()));
   if (word == "strupr" || word == "strlwr") {

@@ -94,6 +94,18 @@ Colour to_colour(const Value& v) {
 }
 }  // namespace
 
+namespace {
+
+// An array of numbers (colours, vectors): its elements start a colour, not a pigment.
+bool holds_numbers(const Value& v) {
+  if (v.kind != Value::Array || !v.array) return false;
+  for (const std::optional<Value>& e : v.array->elements)
+    if (e) return e->is_numeric();
+  return false;
+}
+
+}  // namespace
+
 std::optional<Value> Interpreter::declared(Value::Kind kind) {
   if (tok().kind != Token::Word) return std::nullopt;
   const Value* v = lookup(tok().text);
@@ -103,7 +115,7 @@ std::optional<Value> Interpreter::declared(Value::Kind kind) {
     next();
     return copy;
   }
-  if (v->kind != Value::Array) return std::nullopt;
+  if (v->kind != Value::Array || holds_numbers(*v)) return std::nullopt;
   const Pos at = tok().pos;
   Value e = expression();  // an element: Textures[I]
   if (e.kind != kind && !(kind == Value::Texture && e.kind == Value::Material))
@@ -165,7 +177,7 @@ bool Interpreter::starts_colour() {
       w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft")
     return true;
   const Value* v = lookup(w);
-  return v && v->is_numeric();
+  return v && (v->is_numeric() || holds_numbers(*v));
 }
 
 Colour Interpreter::colour(const char* what) {
@@ -334,6 +346,9 @@ Pigment Interpreter::pigment_block(const Pigment& base) {
 
 Pigment Interpreter::pigment_body(const Pigment& base, const char* close) {
   Pigment p = base;
+  // `uv_mapping` may come before the declared pigment it applies to (POV-Ray reads both orders;
+  // raycast's patterns are evaluated in space either way).
+  if (is_word("uv_mapping")) next();
   if (const std::optional<Value> v = declared(Value::Pigment)) p = *v->pigment;
   // The texture system's model of the pigment, built alongside the summary fields.
   texture::Pigment model = p.model ? *p.model : texture::Pigment{};
@@ -584,6 +599,16 @@ Finish Interpreter::finish_block(const Finish& base) {
         f.metallic = boolean_option() ? 1 : 0;
       else
         f.metallic = numeric_ahead() ? number("metallic") : 1;
+    } else if (w == "ior" || w == "refraction" || w == "caustics" || w == "fade_distance" ||
+               w == "fade_power") {
+      // POV-Ray 3.1's finish items, an interior's since 3.5: POV-Ray still reads them with a
+      // warning; `ior` is kept (refraction in raycast follows the material's transmission).
+      next();
+      const double x = number(w.c_str());
+      if (w == "ior")
+        f.ior = x;
+      else
+        unsupported_warning(t.pos, "finish " + w + " (an interior item since POV-Ray 3.5)");
     } else if (w == "irid" || w == "subsurface" || w == "reflection_exponent") {
       next();
       if (w == "reflection_exponent")
@@ -648,6 +673,10 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
     const std::optional<double> ior = t.ior;
     t = *v->texture;
     if (!t.ior) t.ior = ior;
+  } else if (const Value* p = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+             p && p->kind == Value::Pigment && p->pigment) {
+    t.pigment = *p->pigment;  // POV-Ray reads a pigment's name alone as the texture's pigment
+    next();
   }
   std::optional<TextureMap> map;  // a patterned texture being read
   while (!accept_symbol(close)) {
@@ -669,6 +698,9 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
     } else if (is_word("normal")) {
       next();
       t.normal = normal_block(t.normal);
+    } else if (is_word("no_bump_scale")) {
+      next();
+      unsupported_warning(k.pos, "no_bump_scale", "bumps scale with the texture");
     } else if (is_word("material_map")) {
       next();
       unsupported_warning(k.pos, k.text, "the first texture is used");

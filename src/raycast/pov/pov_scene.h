@@ -44,6 +44,7 @@ struct Pigment {
 
 struct Finish {
   double ambient = 0.1, diffuse = 0.6;
+  std::optional<double> ior;  // POV-Ray 3.1's `ior` in a finish (an interior's since)
   double phong = 0, phong_size = 40;
   double specular = 0, roughness = 0.05;
   double reflection = 0;  // `reflection F` or `reflection { F }`

@@ -141,6 +141,17 @@ const Token& Interpreter::peek_operator() {
       end_macro();
       continue;
     }
+    // So does the end of an #if's branch (a macro's `#if (C) A[I] #else B #end`, then `* 2` in
+    // the caller): it only skips tokens and closes the frame.
+    if (t.kind == Token::Directive && opaque_ == 0 && !frames_.empty() &&
+        frames_.back().kind == FrameKind::If && frames_.back().inputs == inputs_.size()) {
+      const std::string_view d = t.text;
+      if (d == "else" || d == "elseif") skip_to(false, false);
+      if (d == "else" || d == "elseif" || d == "end") {
+        frames_.pop_back();
+        continue;
+      }
+    }
     cur_ = std::move(t);
     have_ = true;
     pending_ = cur_.kind == Token::Directive || cur_.kind == Token::End;
