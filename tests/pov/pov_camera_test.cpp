@@ -101,6 +101,10 @@ TEST(PovCamera, Orthographic_WithoutUpAndRight_SeesThePerspectiveViewAtLookAt) {
   EXPECT_EQ(length(given.camera->frame->right), 8);
   const Scene angle = load("camera { orthographic location <0, 0, -5> angle 90 look_at <0,0,1> }");
   EXPECT_NEAR(length(angle.camera->frame->right), 12, 1e-12);  // 2 * 6 * tan(45)
+  // `angle 0` is no angle (POV-Ray renders such scenes as if it were not written).
+  const Scene zero =
+      load("camera { orthographic location <0, 0, -5> angle 0 right 8*x up 3*y look_at 0 }");
+  EXPECT_NEAR(length(zero.camera->frame->right), 8, 1e-12);
 }
 
 TEST(PovCamera, Sky_TiltsTheFrame) {

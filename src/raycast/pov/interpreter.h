@@ -173,7 +173,7 @@ class Interpreter {
   std::vector<XformOp> transform_block();
   bool transform_item(std::vector<XformOp>& ops);
   Camera camera_block(const Camera& base);
-  void camera_angle(Camera& c, const Pos& at);
+  bool camera_angle(Camera& c, const Pos& at);
   bool light_number(Light& l, const std::string& w);
   void area_light_item(Light& l);
   void camera_finish(Camera& c, double look_distance, bool angle_given, bool frame_given);

@@ -65,8 +65,15 @@ const std::map<std::string, Camera::Kind>& camera_kinds() {
 }
 }  // namespace
 
-void Interpreter::camera_angle(Camera& c, const Pos& at) {
-  c.angle = number("angle");
+// Whether an angle was given: POV-Ray reads `angle 0` as none (the view stays as direction, up
+// and right make it).
+bool Interpreter::camera_angle(Camera& c, const Pos& at) {
+  const double angle = number("angle");
+  if (angle == 0) {
+    if (accept_symbol(",") || numeric_ahead()) number("the vertical angle");
+    return false;
+  }
+  c.angle = angle;
   const bool lens = c.kind != Camera::Perspective && c.kind != Camera::Orthographic;
   if (!(c.angle > 0 && c.angle <= 360)) fail_at(at, "angle must be in (0, 360] degrees");
   if (!lens && c.angle >= 179) {
@@ -79,6 +86,7 @@ void Interpreter::camera_angle(Camera& c, const Pos& at) {
     if (!(c.vertical_angle > 0 && c.vertical_angle <= 360))
       fail_at(at, "the vertical angle must be in (0, 360] degrees");
   }
+  return true;
 }
 
 // After the camera's items: `angle` sets the perspective direction's length from right's (the
@@ -144,7 +152,7 @@ Camera Interpreter::camera_block(const Camera& base) {
     else if (w == "sky")
       next(), c.sky = vector("sky");
     else if (w == "angle")
-      next(), camera_angle(c, t.pos), angle_given = true;
+      next(), angle_given = camera_angle(c, t.pos) || angle_given;
     else if (w == "look_at") {
       next();
       const Vec3 target = vector("look_at");
