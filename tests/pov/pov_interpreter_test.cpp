@@ -209,6 +209,14 @@ TEST(PovInterpreter, ColourFromAnArrayInAPigment) {
             "");
 }
 
+// A directive written without its '#' after a value that an #if's #end closes (whiltile.pov:
+// `#declare S = #ifdef (X) ... #else intersection { ... } #end` then `default { ... }`).
+TEST(PovInterpreter, BareDirectiveAfterAnIfClosedInsideAValue) {
+  EXPECT_EQ(error_of("#declare S = #ifdef (X) sphere { 0, 1 } #else box { -1, 1 } #end\n"
+                     "default { texture { pigment { rgb 1 } } }\nobject { S }"),
+            "");
+}
+
 // A macro whose value is chosen by #if goes on with the caller's operators after it.
 TEST(PovInterpreter, MacroValueFromAnIf_TakesTheCallersOperators) {
   EXPECT_EQ(debug_of("#macro Pick(C) #if (C) 2 #else 3 #end #end\n"

@@ -9,6 +9,11 @@
 namespace raycast::pov {
 
 namespace {
+// POV-Ray still reads these directives without their '#' (with a warning).
+bool is_bare_directive(std::string_view w) {
+  return w == "declare" || w == "local" || w == "default" || w == "include";
+}
+
 bool opens_block(std::string_view d) {
   return d == "if" || d == "ifdef" || d == "ifndef" || d == "while" || d == "for" ||
          d == "switch" || d == "macro";
@@ -102,9 +107,7 @@ void Interpreter::fetch() {
         call_macro(t, *s->value.macro);
         continue;
       }
-      // POV-Ray still reads these directives without their '#' (with a warning).
-      const std::string_view word = t.text;
-      if (!s && (word == "declare" || word == "local" || word == "default" || word == "include")) {
+      if (!s && is_bare_directive(t.text)) {
         t.kind = Token::Directive;
         directive(t);
         continue;
@@ -157,7 +160,7 @@ const Token& Interpreter::peek_operator() {
     pending_ = cur_.kind == Token::Directive || cur_.kind == Token::End;
     if (cur_.kind == Token::Word) {
       const Symbol* s = find_symbol(cur_.text);
-      pending_ = s && s->value.kind == Value::Macro;
+      pending_ = s ? s->value.kind == Value::Macro : is_bare_directive(cur_.text);
     }
     return cur_;
   }
