@@ -384,6 +384,12 @@ Value Interpreter::float_builtin(const Token& t, double x, const Pos& at0) {
   return Value::number(r);
 }
 
+Vec3 Interpreter::vector_argument(const std::string& function, const Value& v, const Pos& at) {
+  if (v.kind == Value::Float) return {v.v[0], v.v[0], v.v[0]};
+  if (v.kind != Value::Vector) fail_at(at, function + ": expected a vector, got " + kind_name(v));
+  return {v.v[0], v.v[1], v.dims > 2 ? v.v[2] : 0};
+}
+
 Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value>& a,
                                          const std::vector<Pos>& at) {
   const std::string& w = t.text;
@@ -392,12 +398,7 @@ Value Interpreter::vector_string_builtin(const Token& t, const std::vector<Value
     if (a[i].kind != Value::Float) fail_at(at[i], w + ": expected a float, got " + kind_name(a[i]));
     return a[i].v[0];
   };
-  auto vv = [&](std::size_t i) -> Vec3 {
-    if (a[i].kind == Value::Float) return {a[i].v[0], a[i].v[0], a[i].v[0]};
-    if (a[i].kind != Value::Vector)
-      fail_at(at[i], w + ": expected a vector, got " + kind_name(a[i]));
-    return {a[i].v[0], a[i].v[1], a[i].dims > 2 ? a[i].v[2] : 0};
-  };
+  auto vv = [&](std::size_t i) { return vector_argument(w, a[i], at[i]); };
   auto s = [&](std::size_t i) -> const std::string& {
     if (a[i].kind != Value::String)
       fail_at(at[i], w + ": expected a string, got " + kind_name(a[i]));

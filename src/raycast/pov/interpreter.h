@@ -100,6 +100,8 @@ class Interpreter {
   Value builtin(const Token& name);
   // builtin()'s parts: the functions by their argument types.
   Value call_builtin(const Token& t, const std::vector<Value>& a, const std::vector<Pos>& at);
+  /// A function's argument as a 3-vector (a float promoted to all three components).
+  Vec3 vector_argument(const std::string& function, const Value& v, const Pos& at);
   // trace, inside, min_extent, max_extent (object_functions.cpp): answered by
   // options_.object_queries; `normal_name` is trace's fourth argument.
   Value object_query(const Token& t, const std::vector<Value>& a, const std::vector<Pos>& at,

@@ -20,12 +20,7 @@ Value Interpreter::object_query(const Token& t, const std::vector<Value>& a,
                        (w == "trace" ? " or 4" : "") + ", got " + std::to_string(a.size()));
   if (a[0].kind != Value::Object)
     fail_at(at[0], w + ": expected an object, got " + kind_name(a[0]));
-  auto vv = [&](std::size_t i) -> Vec3 {
-    if (a[i].kind == Value::Float) return {a[i].v[0], a[i].v[0], a[i].v[0]};
-    if (a[i].kind != Value::Vector)
-      fail_at(at[i], w + ": expected a vector, got " + kind_name(a[i]));
-    return {a[i].v[0], a[i].v[1], a[i].dims > 2 ? a[i].v[2] : 0};
-  };
+  auto vv = [&](std::size_t i) { return vector_argument(w, a[i], at[i]); };
   // An object raycast does not build (a shape it warned about) is asked as if absent.
   ObjectQueries* q = a[0].object ? options_.object_queries.get() : nullptr;
   const std::string what =
