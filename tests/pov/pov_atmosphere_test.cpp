@@ -120,5 +120,20 @@ TEST(PovAtmosphere, FogPixelsAsPovRay) {
                {0.6382, 0.5609, 0.7459}, 2e-4);
 }
 
+TEST(PovAtmosphere, RainbowPixelsAsPovRay) {
+  const std::string rainbow =
+      "rainbow { angle 42.5 width 10 direction z arc_angle 120 falloff_angle 60 "
+      "color_map { [0 rgbft <1, 0, 0, 0.2, 0.3>] [1 rgbft <0, 0, 1, 0.2, 0.3>] } }\n";
+  const std::string white = "background { rgb 1 }\n";
+  // POV-Ray: 0.6291 0.2580 0.6289 at the ring's top.
+  expect_color(pixel(std::string(kHeader) + white +
+                     "camera { location 0 direction z look_at <0, 0.9163, 1> }\n" + rainbow),
+               {0.6291, 0.2580, 0.6289}, 5e-4);
+  // 90 degrees around from up, outside the 120 degree arc: the background.
+  expect_color(pixel(std::string(kHeader) + white +
+                     "camera { location 0 direction z look_at <0.9163, 0, 1> }\n" + rainbow),
+               {1, 1, 1}, 1e-6);
+}
+
 }  // namespace
 }  // namespace raycast

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/scene_error.h"
 #include "load/loader.h"
@@ -210,6 +212,68 @@ objects:
                     (1 - k1) * Vec3{0.4, 0.2, 0.8} + (1 - k2) * Vec3{1, 1, 1};
   const Vec3f c = im.at(0, 0);
   expect_color({c.x, c.y, c.z}, want, 1e-5);
+}
+
+// A ring 42.5 +- 5 degrees around +z, red inside to blue outside, filter 0.2, transmit 0.3.
+Rainbow test_rainbow() {
+  Rainbow r;
+  r.direction = {0, 0, 1};
+  r.angle = 42.5;
+  r.width = 10;
+  r.colors = {{0, {{1, 0, 0}, 0.2, 0.3}}, {1, {{0, 0, 1}, 0.2, 0.3}}};
+  return r;
+}
+
+// The direction `degrees` away from +z, turned `around` degrees from +y about +z.
+Vec3 ring_direction(double degrees, double around) {
+  const double t = degrees * M_PI / 180, a = around * M_PI / 180;
+  return {std::sin(t) * std::sin(a), std::sin(t) * std::cos(a), std::cos(t)};
+}
+
+TEST(Rainbow, RingColourVeilsAsPovRay) {
+  const std::vector<Rainbow> rs = {test_rainbow()};
+  // POV-Ray 3.7 on a white background at the ring's middle: 0.6291 0.2580 0.6289; by the
+  // formula: k = 0.3, k (1 - 0.2 * 0.7 * (1 - c)) + 0.7 c.
+  const Ray mid{{0, 0, 0}, ring_direction(42.5, 0)};
+  expect_color(apply_rainbows(rs, mid, kInfinity, {1, 1, 1}), {0.629, 0.258, 0.629}, 1e-9);
+  // The inner edge is the map's 0: red.
+  const Ray inner{{0, 0, 0}, ring_direction(37.5 + 1e-9, 0)};
+  expect_color(apply_rainbows(rs, inner, kInfinity, {0, 0, 0}), {0.7, 0, 0}, 1e-6);
+  // Outside the ring nothing changes; a near hit is barely veiled.
+  const Ray outside{{0, 0, 0}, ring_direction(50, 0)};
+  expect_color(apply_rainbows(rs, outside, kInfinity, {0.1, 0.2, 0.3}), {0.1, 0.2, 0.3}, 0);
+  const Vec3 near = apply_rainbows(rs, mid, 1, {1, 1, 1});
+  EXPECT_NEAR(near.y, 1, 1e-6);
+}
+
+TEST(Rainbow, ArcFadesAroundUp) {
+  Rainbow r = test_rainbow();
+  r.colors = {{0, {{1, 1, 1}, 0, 0}}, {1, {{1, 1, 1}, 0, 0}}};
+  r.arc_angle = 120;
+  r.falloff_angle = 60;
+  const std::vector<Rainbow> rs = {r};
+  // POV-Ray 3.7 on black: 1 up to 30 degrees from up, 0.5 at 45, 0 from 60 on.
+  for (const auto& [around, want] :
+       {std::pair{0.0, 1.0}, std::pair{30.0, 1.0}, std::pair{45.0, 0.5}, std::pair{-45.0, 0.5},
+        std::pair{60.0, 0.0}, std::pair{180.0, 0.0}}) {
+    const Ray ray{{0, 0, 0}, ring_direction(42.5, around)};
+    EXPECT_NEAR(apply_rainbows(rs, ray, kInfinity, {0, 0, 0}).x, want, 1e-9) << around;
+  }
+}
+
+TEST(Rainbow, YamlRainbow) {
+  const std::string scene = R"(
+camera: {position: [0, 0, 0], look_at: [0, 0.9163, -1], up: [0, 1, 0], fov: 10}
+image: {width: 1, height: 1, samples: 1}
+render:
+  background: [1, 1, 1]
+  rainbow: {direction: [0, 0, -1], angle: 42.5, width: 10,
+            colors: [[0, [1, 0, 0, 0.2, 0.3]], [1, [0, 0, 1, 0.2, 0.3]]]}
+objects:
+  - sphere: {center: [0, 0, 50], radius: 1}  # behind the camera
+)";
+  const Vec3f c = render_text(scene).at(0, 0);
+  expect_color({c.x, c.y, c.z}, {0.629, 0.258, 0.629}, 1e-3);
 }
 
 TEST(Fog, YamlErrorsArePositioned) {

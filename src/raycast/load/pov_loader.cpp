@@ -103,7 +103,7 @@ class Builder {
   // The sky sphere and the fogs: their transformations and the mirror map raycast's world to
   // the sky's and each fog's own space; colours made linear as every other colour.
   void atmosphere() {
-    if (!s_.sky_sphere && s_.fogs.empty()) return;
+    if (!s_.sky_sphere && s_.fogs.empty() && s_.rainbows.empty()) return;
     auto a = std::make_shared<Atmosphere>();
     const Transform world = mirror_ ? Transform::scale({1, 1, -1}) : Transform();
     if (s_.sky_sphere) {
@@ -130,7 +130,22 @@ class Builder {
       fog.to_fog = own_space(f.xforms) * world;
       a->fogs.push_back(fog);
     }
+    for (const pov::Rainbow& r : s_.rainbows) a->rainbows.push_back(rainbow(r));
     scene_.render.atmosphere = std::move(a);
+  }
+  Rainbow rainbow(const pov::Rainbow& r) const {
+    Rainbow out;
+    out.direction = normalize(m(r.direction));
+    out.up = m(r.up);
+    out.angle = r.angle;
+    out.width = r.width;
+    out.distance = r.distance;
+    out.jitter = r.jitter;
+    out.arc_angle = r.arc_angle;
+    out.falloff_angle = r.falloff_angle;
+    for (const pov::MapEntry& e : r.map)
+      out.colors.push_back({e.at, {rgb(e.colour), e.colour.filter, e.colour.transmit}});
+    return out;
   }
   // The inverse of a block's transformations (POV-Ray's world -> the block's own space); the
   // interpreter refused singular ones.

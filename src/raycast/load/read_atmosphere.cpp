@@ -1,5 +1,7 @@
 #include "load/read_atmosphere.h"
 
+#include <algorithm>
+
 #include "load/read_textures.h"
 
 namespace raycast {
@@ -63,10 +65,49 @@ Fog read_fog(const SourceContext& ctx, const YamlNode& node) {
   return fog;
 }
 
+// [r, g, b, filter?, transmit?].
+texture::Rgbft read_colour(const SourceContext& ctx, const YamlNode& node,
+                           const std::string& what) {
+  const std::vector<double> v = read_numbers(ctx, node, what);
+  if (v.size() < 3 || v.size() > 5)
+    fail_at(ctx, node,
+            what + " must be [r, g, b], [r, g, b, filter] or [r, g, b, filter, transmit]");
+  return {{v[0], v[1], v[2]}, v.size() > 3 ? v[3] : 0, v.size() > 4 ? v[4] : 0};
+}
+
+// {direction, angle, width, distance, colors: [[v, colour], ...], jitter, up, arc_angle,
+// falloff_angle}.
+Rainbow read_rainbow(const SourceContext& ctx, const YamlNode& node) {
+  Fields f(ctx, node, "render.rainbow");
+  Rainbow r;
+  r.direction = normalize(f.direction("direction"));
+  r.angle = f.number("angle");
+  r.width = f.positive("width");
+  r.distance = f.positive("distance", r.distance);
+  r.jitter = f.non_negative("jitter", r.jitter);
+  r.up = f.direction("up", r.up);
+  r.arc_angle = f.positive("arc_angle", r.arc_angle);
+  r.falloff_angle = std::min(r.arc_angle, f.non_negative("falloff_angle", r.arc_angle));
+  const YamlNode colors = f.required("colors");
+  if (!colors.IsSequence() || colors.size() == 0 || colors.size() > texture::kMaxMapEntries)
+    fail_at(ctx, colors,
+            "render.rainbow.colors must be a list of 1 to 256 [value, colour] entries");
+  for (const YamlNode& e : colors) {
+    if (!e.IsSequence() || e.size() != 2)
+      fail_at(ctx, e, "render.rainbow.colors entries are [value, [r, g, b, filter?, transmit?]]");
+    const double at = read_number(ctx, e[0], "render.rainbow.colors");
+    if (!r.colors.empty() && at < r.colors.back().at)
+      fail_at(ctx, e, "render.rainbow.colors must be sorted by value");
+    r.colors.push_back({at, read_colour(ctx, e[1], "render.rainbow.colors")});
+  }
+  f.finish();
+  return r;
+}
+
 }  // namespace
 
 std::shared_ptr<const Atmosphere> read_atmosphere(Fields& render) {
-  if (!render.has("sky_sphere") && !render.has("fog")) return nullptr;
+  if (!render.has("sky_sphere") && !render.has("fog") && !render.has("rainbow")) return nullptr;
   const SourceContext& ctx = render.ctx();
   auto a = std::make_shared<Atmosphere>();
   if (render.has("sky_sphere")) a->sky = read_sky(ctx, render.required("sky_sphere"));
@@ -77,6 +118,13 @@ std::shared_ptr<const Atmosphere> read_atmosphere(Fields& render) {
       for (const YamlNode& one : fogs) a->fogs.push_back(read_fog(ctx, one));
     else
       a->fogs.push_back(read_fog(ctx, fogs));
+  }
+  if (render.has("rainbow")) {
+    const YamlNode rainbows = render.required("rainbow");
+    if (rainbows.IsSequence())
+      for (const YamlNode& one : rainbows) a->rainbows.push_back(read_rainbow(ctx, one));
+    else
+      a->rainbows.push_back(read_rainbow(ctx, rainbows));
   }
   return a;
 }

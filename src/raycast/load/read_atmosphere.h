@@ -1,6 +1,6 @@
 #pragma once
-// The YAML form of the atmosphere: render.sky_sphere and render.fog (docs/rendering.md "Sky and
-// fog").
+// The YAML form of the atmosphere: render.sky_sphere, render.fog and render.rainbow
+// (docs/rendering.md "Sky and fog").
 #include <memory>
 
 #include "load/yaml_reader.h"
@@ -8,7 +8,7 @@
 
 namespace raycast {
 
-/// The sky_sphere and fog keys of the render mapping; null when it has neither.
+/// The sky_sphere, fog and rainbow keys of the render mapping; null when it has none.
 std::shared_ptr<const Atmosphere> read_atmosphere(Fields& render);
 
 }  // namespace raycast

@@ -96,4 +96,45 @@ Fog Interpreter::fog_block() {
   return fog;
 }
 
+Rainbow Interpreter::rainbow_block() {
+  const Pos start = tok().pos;
+  expect_symbol("{", "after rainbow");
+  Rainbow r;
+  bool falloff_given = false;
+  while (!accept_symbol("}")) {
+    const Pos at = tok().pos;
+    if (is_word("direction")) {
+      next();
+      r.direction = vector("the rainbow's direction");
+      if (!(length(r.direction) > 0)) fail_at(at, "the rainbow's direction has length 0");
+    } else if (is_word("up")) {
+      next();
+      r.up = vector("the rainbow's up");
+      if (!(length(r.up) > 0)) fail_at(at, "the rainbow's up vector has length 0");
+    } else if (is_word("angle")) {
+      next(), r.angle = number("the rainbow's angle");
+    } else if (is_word("width")) {
+      next(), r.width = number("the rainbow's width");
+    } else if (is_word("distance")) {
+      next(), r.distance = number("the rainbow's distance");
+    } else if (is_word("jitter")) {
+      next(), r.jitter = number("the rainbow's jitter");
+    } else if (is_word("arc_angle")) {
+      next(), r.arc_angle = number("arc_angle");
+    } else if (is_word("falloff_angle")) {
+      next(), r.falloff_angle = number("falloff_angle");
+      falloff_given = true;
+    } else if (is_word("color_map") || is_word("colour_map")) {
+      next();
+      r.map = colour_map_block();
+    } else {
+      unexpected("a rainbow item (direction, angle, width, distance, color_map, jitter, up ...)");
+    }
+  }
+  if (!(r.width > 0)) fail_at(start, "the rainbow needs a width above 0");
+  if (!(r.distance > 0)) fail_at(start, "the rainbow's distance must be above 0");
+  if (!falloff_given || r.falloff_angle > r.arc_angle) r.falloff_angle = r.arc_angle;
+  return r;
+}
+
 }  // namespace raycast::pov

@@ -374,8 +374,10 @@ PovScene Interpreter::run() {
       next();
       Fog f = fog_block();
       if (f.distance != 0) scene_.fogs.push_back(std::move(f));  // POV-Ray's "fog is off"
-    } else if (t.kind == Token::Word &&
-               (w == "rainbow" || w == "media" || w == "photons" || w == "radiosity")) {
+    } else if (t.kind == Token::Word && w == "rainbow") {
+      next();
+      scene_.rainbows.push_back(rainbow_block());
+    } else if (t.kind == Token::Word && (w == "media" || w == "photons" || w == "radiosity")) {
       next();
       unsupported_warning(t.pos, w);
       skip_block(w);

@@ -185,6 +185,17 @@ struct Fog {
   std::vector<XformOp> xforms;
 };
 
+/// rainbow: as written (colours not linearised); arc angles in degrees, 360: the whole ring.
+struct Rainbow {
+  Vec3 direction{0, 0, 1};
+  double angle = 0, width = 0;
+  double distance = 1e7;
+  std::vector<MapEntry> map;
+  double jitter = 0;
+  Vec3 up{0, 1, 0};
+  double arc_angle = 360, falloff_angle = 360;
+};
+
 /// What the scene's global_settings, INI options and #version ask for.
 struct Settings {
   double assumed_gamma = 1;  // 1 (linear), 2.2, or 0 for srgb
@@ -201,6 +212,7 @@ struct PovScene {
   Colour background;
   std::optional<SkySphere> sky_sphere;
   std::vector<Fog> fogs;
+  std::vector<Rainbow> rainbows;
   Colour ambient_light{1, 1, 1, 0, 0};
   int max_trace_level = 5;
   std::optional<double> adc_bailout;

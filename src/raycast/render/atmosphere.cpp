@@ -1,7 +1,9 @@
 #include "render/atmosphere.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "math/float_error.h"
@@ -29,6 +31,34 @@ double above_offset(double alt, double x0, double dh, double length) {
   const double q = length * dh / (alt * (1 + u * v));
   if (std::abs(q) < 1e-8) return length / (1 + u * v);
   return alt * std::atan(q) / dh;
+}
+
+// A value in [0, 1) fixed by the direction's bits: the rainbow's jitter, the same for the same
+// ray in every render (renders are deterministic).
+double direction_hash(const Vec3& u) {
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (const double c : {u.x, u.y, u.z}) {
+    h ^= std::bit_cast<std::uint64_t>(c) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 31;
+  }
+  return double(h >> 11) * 0x1.0p-53;
+}
+
+// The rainbow's weight at u by its arc: 1 within falloff_angle / 2 of up (the angle around the
+// direction), 0 beyond arc_angle / 2, linear between.
+double arc_fade(const Rainbow& r, const Vec3& u) {
+  if (r.arc_angle >= 360) return 1;
+  const Vec3 a = u - dot(u, r.direction) * r.direction;
+  const Vec3 b = r.up - dot(r.up, r.direction) * r.direction;
+  const double la = length(a), lb = length(b);
+  if (!(la > 0 && lb > 0)) return 1;
+  const double phi =
+      std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) * 180 / std::numbers::pi;
+  const double full = r.falloff_angle / 2, none = r.arc_angle / 2;
+  if (phi <= full) return 1;
+  if (phi >= none) return 0;
+  return (none - phi) / (none - full);
 }
 
 }  // namespace
@@ -97,9 +127,36 @@ Vec3 apply_fogs(const std::vector<Fog>& fogs, const Ray& ray, double span, const
   return mul(passing, light) + added;
 }
 
+Vec3 apply_rainbows(const std::vector<Rainbow>& rainbows, const Ray& ray, double span,
+                    const Vec3& light) {
+  const Vec3 u = normalize(ray.d);
+  Vec3 out = light;
+  for (const Rainbow& r : rainbows) {
+    const double cos_theta = std::clamp(dot(u, r.direction), -1.0, 1.0);
+    double index =
+        (std::acos(cos_theta) * 180 / std::numbers::pi - (r.angle - r.width / 2)) / r.width;
+    if (r.jitter != 0) index += r.jitter * (direction_hash(u) - 0.5);
+    if (!(index >= 0 && index <= 1)) continue;
+    const double fade = arc_fade(r, u);
+    if (!(fade > 0)) continue;
+    const texture::Rgbft c = texture::lookup(r.colors, index);
+    const double k = std::max(c.transmit, std::isinf(span) ? 0.0 : std::exp(-span / r.distance));
+    const double veil = (1 - k) * fade;
+    const Vec3 tint = Vec3{1, 1, 1} - c.filter * veil * (Vec3{1, 1, 1} - c.rgb);
+    out = (1 - veil) * mul(tint, out) + veil * c.rgb;
+  }
+  return out;
+}
+
+Vec3 veiled(const Atmosphere& atmosphere, const Ray& ray, double span, const Vec3& light) {
+  const Vec3 behind =
+      atmosphere.rainbows.empty() ? light : apply_rainbows(atmosphere.rainbows, ray, span, light);
+  return atmosphere.fogs.empty() ? behind : apply_fogs(atmosphere.fogs, ray, span, behind);
+}
+
 Vec3 miss_color(const Atmosphere& atmosphere, const Vec3& background, const Ray& ray) {
   const Vec3 seen = atmosphere.sky ? sky_color(*atmosphere.sky, background, ray.d) : background;
-  return atmosphere.fogs.empty() ? seen : apply_fogs(atmosphere.fogs, ray, kInfinity, seen);
+  return atmosphere.veils() ? veiled(atmosphere, ray, kInfinity, seen) : seen;
 }
 
 }  // namespace raycast

@@ -26,6 +26,16 @@ double ground_fog_depth(double offset, double alt, double h0, double dh, double 
 /// their passing fractions and add their colours.
 Vec3 apply_fogs(const std::vector<Fog>& fogs, const Ray& ray, double span, const Vec3& light);
 
+/// `light` as seen across the rainbows after a segment of world length `span`: a rainbow's
+/// colour c (filter f, transmit t) at the ray's angle lets k = max(t, exp(-span / distance)) of
+/// the light through, tinted as k (1 - f (1 - k) (1 - c)), and adds (1 - k) c, with 1 - k scaled
+/// by the arc's fade; several rainbows in turn.
+Vec3 apply_rainbows(const std::vector<Rainbow>& rainbows, const Ray& ray, double span,
+                    const Vec3& light);
+
+/// The light of a segment of world length `span` across the rainbows, then the fogs.
+Vec3 veiled(const Atmosphere& atmosphere, const Ray& ray, double span, const Vec3& light);
+
 /// What a ray that hits nothing sees: the sky (or the background) across the fogs.
 Vec3 miss_color(const Atmosphere& atmosphere, const Vec3& background, const Ray& ray);
 

@@ -64,7 +64,7 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
   for (const Light& light : scene.lights) emitted_.push_back(light.emitted());
   if (const Atmosphere* a = scene.render.atmosphere.get(); a && !a->empty()) {
     atmosphere_ = a;
-    if (!a->fogs.empty()) fogs_ = &a->fogs;
+    veils_ = a->veils();
   }
   for (std::size_t k = 0; k < scene.lights.size(); ++k)
     light_lists_.push_back(scene.object_set().light_lists(k));

@@ -72,9 +72,9 @@ class Integrator {
     return atmosphere_ ? miss_color(*atmosphere_, scene_.render.background, ray)
                        : scene_.render.background;
   }
-  /// Radiance c leaving a hit at ray parameter t, as it arrives across the fogs.
+  /// Radiance c leaving a hit at ray parameter t, as it arrives across the rainbows and fogs.
   Color fogged(const Ray& ray, double t, const Color& c) const {
-    return fogs_ ? apply_fogs(*fogs_, ray, t * length(ray.d), c) : c;
+    return veils_ ? veiled(*atmosphere_, ray, t * length(ray.d), c) : c;
   }
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
@@ -163,7 +163,7 @@ class Integrator {
   std::vector<unsigned> exponents_;   // by material: integer Phong exponent, 0 for std::pow
   bool any_transmissive_ = false;
   const Atmosphere* atmosphere_ = nullptr;  // null: neither sky sphere nor fog
-  const std::vector<Fog>* fogs_ = nullptr;  // null: no fog
+  bool veils_ = false;                      // fogs or rainbows over every segment
   // By light: the scene's direction lists around it (ObjectSet::light_lists), or nullptr.
   std::vector<const DirectionLists*> light_lists_;
 };

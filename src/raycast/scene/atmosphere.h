@@ -42,10 +42,27 @@ struct Fog {
   Transform to_fog;  // world -> the fog's own space (its transformations' inverse)
 };
 
+/// A rainbow: a ring of colours at `angle` +- `width` / 2 degrees around `direction` (the way
+/// the sunlight travels), the colour map's 0 on the inside, veiling what lies behind it as a fog
+/// of `distance` does (misses fully); its colours' transmit bounds the veil and their filter
+/// tints the light behind. Only the arc within `arc_angle` / 2 of `up` (measured around the
+/// direction) shows, fading out linearly beyond `falloff_angle` / 2.
+struct Rainbow {
+  Vec3 direction{0, 0, 1};  // unit length
+  double angle = 42.5, width = 5;
+  double distance = 1e7;
+  std::vector<texture::ColorMapEntry> colors;  // sorted
+  double jitter = 0;  // random shift of the map's index, at most +-jitter/2
+  Vec3 up{0, 1, 0};
+  double arc_angle = 360, falloff_angle = 360;  // degrees; falloff_angle <= arc_angle
+};
+
 struct Atmosphere {
   std::optional<SkySphere> sky;
   std::vector<Fog> fogs;
-  bool empty() const { return !sky && fogs.empty(); }
+  std::vector<Rainbow> rainbows;
+  bool empty() const { return !sky && fogs.empty() && rainbows.empty(); }
+  bool veils() const { return !fogs.empty() || !rainbows.empty(); }
 };
 
 }  // namespace raycast
