@@ -47,6 +47,7 @@ class Builder {
     camera();
     scene_.render.max_depth = std::max(0, s_.max_trace_level - 1);
     scene_.render.background = rgb(s_.background);
+    atmosphere();
     scene_.render.ambient = rgb(s_.ambient_light);
     if (s_.adc_bailout) scene_.render.bailout = *s_.adc_bailout;
     if (s_.settings.width > 0) scene_.image.width = s_.settings.width;
@@ -98,6 +99,59 @@ class Builder {
     return std::pow(c, gamma_);
   }
   Color rgb(const pov::Colour& c) const { return {linear(c.r), linear(c.g), linear(c.b)}; }
+
+  // The sky sphere and the fogs: their transformations and the mirror map raycast's world to
+  // the sky's and each fog's own space; colours made linear as every other colour.
+  void atmosphere() {
+    if (!s_.sky_sphere && s_.fogs.empty() && s_.rainbows.empty()) return;
+    auto a = std::make_shared<Atmosphere>();
+    const Transform world = mirror_ ? Transform::scale({1, 1, -1}) : Transform();
+    if (s_.sky_sphere) {
+      SkySphere sky;
+      for (const texture::Pigment& p : s_.sky_sphere->pigments)
+        sky.layers.push_back(*pov_textures_.pigment(p));
+      const pov::Colour& e = s_.sky_sphere->emission;
+      sky.emission = {e.r, e.g, e.b};
+      sky.to_sky = own_space(s_.sky_sphere->xforms) * world;
+      a->sky = std::move(sky);
+    }
+    for (const pov::Fog& f : s_.fogs) {
+      Fog fog;
+      fog.kind = f.type == 2 ? Fog::Kind::kGround : Fog::Kind::kConstant;
+      fog.color = rgb(f.colour);
+      fog.filter = f.colour.filter;
+      fog.transmit = f.colour.transmit;
+      fog.distance = f.distance;
+      fog.offset = f.offset;
+      fog.alt = f.alt;
+      fog.up = normalize(f.up);
+      fog.turbulence = f.turbulence;
+      fog.turb_depth = f.turb_depth;
+      fog.to_fog = own_space(f.xforms) * world;
+      a->fogs.push_back(fog);
+    }
+    for (const pov::Rainbow& r : s_.rainbows) a->rainbows.push_back(rainbow(r));
+    scene_.render.atmosphere = std::move(a);
+  }
+  Rainbow rainbow(const pov::Rainbow& r) const {
+    Rainbow out;
+    out.direction = normalize(m(r.direction));
+    out.up = m(r.up);
+    out.angle = r.angle;
+    out.width = r.width;
+    out.distance = r.distance;
+    out.jitter = r.jitter;
+    out.arc_angle = r.arc_angle;
+    out.falloff_angle = r.falloff_angle;
+    for (const pov::MapEntry& e : r.map)
+      out.colors.push_back({e.at, {rgb(e.colour), e.colour.filter, e.colour.transmit}});
+    return out;
+  }
+  // The inverse of a block's transformations (POV-Ray's world -> the block's own space); the
+  // interpreter refused singular ones.
+  static Transform own_space(const std::vector<XformOp>& ops) {
+    return pov::pov_transform(ops).value_or(Transform()).inverse();
+  }
 
   void camera() {
     const pov::Camera& c = s_.camera;

@@ -175,6 +175,15 @@ class Interpreter {
   std::vector<XformOp> transform_block();
   bool transform_item(std::vector<XformOp>& ops);
   Camera camera_block(const Camera& base);
+  // ---- the atmosphere (parse_atmosphere.cpp) ----
+  /// sky_sphere { [NAME] pigment { } ... emission C TRANSFORMATIONS }, after the keyword.
+  SkySphere sky_sphere_block();
+  /// fog { [NAME] fog_type, distance, COLOUR, turbulence ..., fog_offset, fog_alt, up,
+  /// TRANSFORMATIONS }, after the keyword.
+  Fog fog_block();
+  /// rainbow { direction, angle, width, distance, color_map, jitter, up, arc_angle,
+  /// falloff_angle }, after the keyword.
+  Rainbow rainbow_block();
   bool camera_angle(Camera& c, const Pos& at);
   bool light_number(Light& l, const std::string& w);
   void area_light_item(Light& l);

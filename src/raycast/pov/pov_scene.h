@@ -165,6 +165,37 @@ struct Camera {
   bool given = false;
 };
 
+/// sky_sphere: its pigments bottom first in the texture system's terms (plain colours as solid
+/// pigments, colours as written), its emission and the transformations of the whole sky.
+struct SkySphere {
+  std::vector<texture::Pigment> pigments;
+  Colour emission{1, 1, 1, 0, 0};
+  std::vector<XformOp> xforms;
+};
+
+/// fog: type 1 (constant) or 2 (ground), as written (colours not linearised).
+struct Fog {
+  int type = 1;
+  Colour colour;
+  double distance = 0;  // 0: POV-Ray leaves the fog out
+  double offset = 0, alt = 0;
+  Vec3 up{0, 1, 0};
+  texture::Turbulence turbulence;
+  double turb_depth = 0.5;
+  std::vector<XformOp> xforms;
+};
+
+/// rainbow: as written (colours not linearised); arc angles in degrees, 360: the whole ring.
+struct Rainbow {
+  Vec3 direction{0, 0, 1};
+  double angle = 0, width = 0;
+  double distance = 1e7;
+  std::vector<MapEntry> map;
+  double jitter = 0;
+  Vec3 up{0, 1, 0};
+  double arc_angle = 360, falloff_angle = 360;
+};
+
 /// What the scene's global_settings, INI options and #version ask for.
 struct Settings {
   double assumed_gamma = 1;  // 1 (linear), 2.2, or 0 for srgb
@@ -179,6 +210,9 @@ struct PovScene {
   Camera camera;
   std::deque<Node> objects;  // a deque: 100,000s of nodes are never moved as it grows
   Colour background;
+  std::optional<SkySphere> sky_sphere;
+  std::vector<Fog> fogs;
+  std::vector<Rainbow> rainbows;
   Colour ambient_light{1, 1, 1, 0, 0};
   int max_trace_level = 5;
   std::optional<double> adc_bailout;

@@ -62,6 +62,10 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
     exponents_.push_back(integer_exponent(m.shininess));
   }
   for (const Light& light : scene.lights) emitted_.push_back(light.emitted());
+  if (const Atmosphere* a = scene.render.atmosphere.get(); a && !a->empty()) {
+    atmosphere_ = a;
+    veils_ = a->veils();
+  }
   for (std::size_t k = 0; k < scene.lights.size(); ++k)
     light_lists_.push_back(scene.object_set().light_lists(k));
   objects_.reserve(scene.objects.size());
@@ -162,8 +166,8 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   // instructions on bench/scenes/whitted.yaml.
   ++state.rays;
   SceneHit hit;
-  if (!scene_.intersect(ray, hit)) return scene_.render.background;
-  return whitted_hit<kPlain>(ray, hit, depth, state, weight);
+  if (!scene_.intersect(ray, hit)) return missed(ray);
+  return fogged(ray, hit.local.t, whitted_hit<kPlain>(ray, hit, depth, state, weight));
 }
 
 Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
@@ -171,7 +175,7 @@ Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
   if (!(ray.tmin <= ray.tmax)) return {0, 0, 0};  // a lens's pixel that sees nothing
   ++state.rays;
   if (mode_ != RenderMode::kWhitted) return diagnostic_hit(ray, found, hit);
-  return found ? whitted_hit<kPlain>(ray, hit, 0, state, 1) : scene_.render.background;
+  return found ? fogged(ray, hit.local.t, whitted_hit<kPlain>(ray, hit, 0, state, 1)) : missed(ray);
 }
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,

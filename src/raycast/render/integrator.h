@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "render/atmosphere.h"
 #include "render/ray_recorder.h"
 #include "render/rng.h"
 #include "render/texture.h"
@@ -66,6 +67,15 @@ class Integrator {
   /// whitted() in one mode for the whole recursion (TraceMode).
   template <TraceMode M>
   Color trace(const Ray& ray, int depth, SampleState& state, double weight) const;
+  /// What a ray that hits nothing brings: the background, or the sky sphere across the fogs.
+  Color missed(const Ray& ray) const {
+    return atmosphere_ ? miss_color(*atmosphere_, scene_.render.background, ray)
+                       : scene_.render.background;
+  }
+  /// Radiance c leaving a hit at ray parameter t, as it arrives across the rainbows and fogs.
+  Color fogged(const Ray& ray, double t, const Color& c) const {
+    return veils_ ? veiled(*atmosphere_, ray, t * length(ray.d), c) : c;
+  }
   /// trace() for a reflected or refracted ray: in kRecord with RayRecorder::camera_ray_only, the
   /// ray is announced and its subtree traced in kCount.
   template <TraceMode M>
@@ -157,6 +167,8 @@ class Integrator {
   std::vector<Color> emitted_;        // by light: Light::emitted()
   std::vector<unsigned> exponents_;   // by material: integer Phong exponent, 0 for std::pow
   bool any_transmissive_ = false;
+  const Atmosphere* atmosphere_ = nullptr;  // null: neither sky sphere nor fog
+  bool veils_ = false;                      // fogs or rainbows over every segment
   // By light: the scene's direction lists around it (ObjectSet::light_lists), or nullptr.
   std::vector<const DirectionLists*> light_lists_;
 };

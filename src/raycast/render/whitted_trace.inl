@@ -67,17 +67,18 @@ Color Integrator::trace(const Ray& ray, int depth, SampleState& state, double we
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) {
+    const Color seen = missed(ray);
     if constexpr (M == kRecord) {
-      state.recorder->miss(scene_.render.background);
+      state.recorder->miss(seen);
       state.recorder->stop(RayStop::kMiss);
-      state.recorder->end_ray(scene_.render.background);
+      state.recorder->end_ray(seen);
     }
-    return scene_.render.background;
+    return seen;
   }
   if constexpr (M != kRecord) {
-    return whitted_hit<M>(ray, hit, depth, state, weight);
+    return fogged(ray, hit.local.t, whitted_hit<M>(ray, hit, depth, state, weight));
   } else {
-    const Color radiance = whitted_hit<M>(ray, hit, depth, state, weight);
+    const Color radiance = fogged(ray, hit.local.t, whitted_hit<M>(ray, hit, depth, state, weight));
     state.recorder->end_ray(radiance);
     return radiance;
   }
