@@ -18,10 +18,10 @@ struct FunctionInfo {
   int arity;
 };
 constexpr FunctionInfo kFunctions[] = {
-    {"sqrt", ExprOp::kSqrt, 1}, {"exp", ExprOp::kExp, 1}, {"log", ExprOp::kLog, 1},
-    {"sin", ExprOp::kSin, 1},   {"cos", ExprOp::kCos, 1}, {"tan", ExprOp::kTan, 1},
-    {"abs", ExprOp::kAbs, 1},   {"min", ExprOp::kMin, 2}, {"max", ExprOp::kMax, 2},
-    {"pow", ExprOp::kPow, 2},
+    {"sqrt", ExprOp::kSqrt, 1}, {"exp", ExprOp::kExp, 1},     {"log", ExprOp::kLog, 1},
+    {"sin", ExprOp::kSin, 1},   {"cos", ExprOp::kCos, 1},     {"tan", ExprOp::kTan, 1},
+    {"abs", ExprOp::kAbs, 1},   {"min", ExprOp::kMin, 2},     {"max", ExprOp::kMax, 2},
+    {"pow", ExprOp::kPow, 2},   {"atan2", ExprOp::kAtan2, 2}, {"floor", ExprOp::kFloor, 1},
 };
 
 class Parser {
@@ -178,8 +178,9 @@ class Parser {
     for (const FunctionInfo& f : kFunctions)
       if (id == f.name) throw ExpressionError(pos_, "expected '(' after " + id);
     throw ExpressionError(
-        at, "unknown name '" + id +
-                "' (expected x, y, z, pi, e, or sqrt exp log sin cos tan abs min max pow)");
+        at,
+        "unknown name '" + id +
+            "' (expected x, y, z, pi, e, or sqrt exp log sin cos tan abs floor min max pow atan2)");
   }
 
   std::string_view s_;

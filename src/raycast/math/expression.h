@@ -32,7 +32,8 @@ enum class ExprOp : std::uint8_t {
   kDiv,
   kPow,
   kMin,
-  kMax,  // binary
+  kMax,
+  kAtan2,  // binary
   kNeg,
   kSqrt,
   kExp,
@@ -40,7 +41,8 @@ enum class ExprOp : std::uint8_t {
   kSin,
   kCos,
   kTan,
-  kAbs,  // unary
+  kAbs,
+  kFloor,  // unary
 };
 
 /// One node: a constant (value), a variable, or an operation on children a (and b).
@@ -64,8 +66,8 @@ struct Expression {
 ///   unary   := ('-' | '+') unary | power
 ///   power   := primary ('^' unary)?                               right associative; -x^2 = -(x^2)
 ///   primary := number | x | y | z | pi | e | name '(' expr (',' expr)* ')' | '(' expr ')'
-/// Numbers: 12, 0.5, .5, 1e-3. Functions: sqrt exp log sin cos tan abs (one argument), min max pow
-/// (two). Throws ExpressionError with the offending offset.
+/// Numbers: 12, 0.5, .5, 1e-3. Functions: sqrt exp log sin cos tan abs floor (one argument), min
+/// max pow atan2 (two). Throws ExpressionError with the offending offset.
 Expression parse_expression(std::string_view text);
 
 /// Whether the subtree at `node` uses no variable.

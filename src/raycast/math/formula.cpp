@@ -120,6 +120,10 @@ class Compiler {
         return Opcode::kMin;
       case ExprOp::kMax:
         return Opcode::kMax;
+      case ExprOp::kAtan2:
+        return Opcode::kAtan2;
+      case ExprOp::kFloor:
+        return Opcode::kFloor;
       case ExprOp::kNeg:
         return Opcode::kNeg;
       case ExprOp::kSqrt:
@@ -173,7 +177,8 @@ bool continuous_everywhere(const Formula& f) {
       case Opcode::kSinVar:
       case Opcode::kCosVar:
         break;
-      default:  // division, tan (poles), sqrt, log, pow (domains), exp (overflow)
+      default:  // division, tan (poles), sqrt, log, pow (domains), exp (overflow), atan2 (its
+                // cut), floor (its steps)
         return false;
     }
   }

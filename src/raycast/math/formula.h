@@ -36,6 +36,8 @@ enum class Opcode : std::uint8_t {
   kAbs,
   kMin,
   kMax,
+  kAtan2,  // atan2(below, top): the angle of the point (top, below)
+  kFloor,
   kSinVar,  // sin of variable n (0, 1, 2 = x, y, z), computed once per run with its cosine
   kCosVar,  // cos of variable n
 };
@@ -84,8 +86,10 @@ Formula compile_formula(std::string_view text);
 template <class T>
 T run(const Formula& f, const T& x, const T& y, const T& z) {
   using std::abs;
+  using std::atan2;
   using std::cos;
   using std::exp;
+  using std::floor;
   using std::log;
   using std::max;
   using std::min;
@@ -142,6 +146,13 @@ T run(const Formula& f, const T& x, const T& y, const T& z) {
       case Opcode::kMax:
         s[top - 1] = max(s[top - 1], s[top]);
         --top;
+        break;
+      case Opcode::kAtan2:
+        s[top - 1] = atan2(s[top - 1], s[top]);
+        --top;
+        break;
+      case Opcode::kFloor:
+        s[top] = floor(s[top]);
         break;
       case Opcode::kNeg:
         s[top] = -s[top];

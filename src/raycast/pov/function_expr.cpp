@@ -6,6 +6,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "texture/noise.h"
+
 namespace raycast::pov {
 
 namespace {
@@ -107,7 +109,42 @@ double eval(const FnNode& n, const std::vector<double>& a, int depth) {
     return s < 0 ? arg(1) : s == 0 ? arg(2) : arg(3);
   }
   if (f == "if" && k == 3) return arg(0) != 0 ? arg(1) : arg(2);
+  if (f == "floor" && k == 1) return std::floor(arg(0));
+  if (f == "noise3d" && k == 4)
+    return texture::noise({arg(0), arg(1), arg(2)}, static_cast<int>(arg(3)));
   return std::nan("");
+}
+
+bool is_constant(const FnNode& n) {
+  if (n.kind == FnNode::Variable || n.kind == FnNode::Param || n.kind == FnNode::User) return false;
+  for (const auto& a : n.args)
+    if (!is_constant(*a)) return false;
+  return true;
+}
+
+// A comparison of constants, or a choice on a constant condition, made now: formulas have no
+// comparisons, and the switches of functions.inc's functions are constant in practice.
+std::shared_ptr<const FnNode> fold_choice(const std::shared_ptr<const FnNode>& n) {
+  if (n->kind != FnNode::Call) return n;
+  static const char* const kFoldable[] = {"if", "select", "lt",  "le", "gt", "ge",
+                                          "eq", "ne",     "and", "or", "not"};
+  bool foldable = false;
+  for (const char* f : kFoldable) foldable = foldable || n->function == f;
+  if (!foldable) return n;
+  const bool choice = n->function == "if" || n->function == "select";
+  for (std::size_t i = 0; i < (choice ? 1 : n->args.size()); ++i)
+    if (!is_constant(*n->args[i])) return n;
+  if (!choice) {
+    auto r = std::make_shared<FnNode>();
+    r->number = eval(*n, {}, 0);
+    return r;
+  }
+  const double c = eval(*n->args[0], {}, 0);
+  const std::size_t k = n->args.size();
+  if (n->function == "if" && k == 3) return n->args[c != 0 ? 1 : 2];
+  if (k == 3) return n->args[c < 0 ? 1 : 2];
+  if (k == 4) return n->args[c < 0 ? 1 : (c == 0 ? 2 : 3)];
+  return n;
 }
 
 // The tree with every user call replaced by the callee's body over the call's arguments.
@@ -128,13 +165,13 @@ std::shared_ptr<const FnNode> inline_calls(const std::shared_ptr<const FnNode>& 
     if (!n->callee || !n->callee->body) return nullptr;
     return inline_calls(n->callee->body, out->args, depth + 1);
   }
-  return out;
+  return fold_choice(out);
 }
 
 bool expressible(const FnNode& n) {
   if (n.kind == FnNode::Call) {
-    static const char* const ok[] = {"sqrt", "exp", "log", "sin", "cos",
-                                     "tan",  "abs", "min", "max", "pow"};
+    static const char* const ok[] = {"sqrt", "exp", "log", "sin", "cos",   "tan",
+                                     "abs",  "min", "max", "pow", "atan2", "floor"};
     bool found = false;
     for (const char* o : ok) found = found || n.function == o;
     if (!found) return false;
