@@ -8,6 +8,7 @@
 
 #include "math/dual.h"
 #include "math/expression.h"
+#include "math/formula_noise.h"
 #include "math/interval.h"
 
 namespace raycast {
@@ -38,13 +39,14 @@ enum class Opcode : std::uint8_t {
   kMax,
   kAtan2,  // atan2(below, top): the angle of the point (top, below)
   kFloor,
+  kNoise,   // noise_of the top three (x, y, z) for generator n
   kSinVar,  // sin of variable n (0, 1, 2 = x, y, z), computed once per run with its cosine
   kCosVar,  // cos of variable n
 };
 
 struct Instruction {
   Opcode op = Opcode::kConst;
-  int n = 0;         // kPowInt's exponent
+  int n = 0;         // kPowInt's exponent, kNoise's generator
   double value = 0;  // kConst's value
 };
 
@@ -153,6 +155,10 @@ T run(const Formula& f, const T& x, const T& y, const T& z) {
         break;
       case Opcode::kFloor:
         s[top] = floor(s[top]);
+        break;
+      case Opcode::kNoise:
+        s[top - 2] = noise_of(s[top - 2], s[top - 1], s[top], in.n);
+        top -= 2;
         break;
       case Opcode::kNeg:
         s[top] = -s[top];

@@ -490,6 +490,12 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
           set_lane(s[top - 1], k, binary(in.op, lane(s[top - 1], k), lane(s[top], k)));
         --top;
         break;
+      case Opcode::kNoise:
+        for (int k = 0; k < W; ++k)
+          set_lane(s[top - 2], k,
+                   noise_of(lane(s[top - 2], k), lane(s[top - 1], k), lane(s[top], k), in.n));
+        top -= 2;
+        break;
       default:
         for (int k = 0; k < W; ++k) set_lane(s[top], k, unary(in.op, lane(s[top], k), in.n));
         break;

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "pov/internal_functions.h"
 #include "texture/noise.h"
 
 namespace raycast::pov {
@@ -110,6 +111,11 @@ double eval(const FnNode& n, const std::vector<double>& a, int depth) {
   }
   if (f == "if" && k == 3) return arg(0) != 0 ? arg(1) : arg(2);
   if (f == "floor" && k == 1) return std::floor(arg(0));
+  if (f == "ridged_mf" && k == 9) {
+    double v[9];
+    for (std::size_t i = 0; i < 9; ++i) v[i] = arg(i);
+    return ridged_mf(v);
+  }
   if (f == "noise3d" && k == 4)
     return texture::noise({arg(0), arg(1), arg(2)}, static_cast<int>(arg(3)));
   return std::nan("");
@@ -123,9 +129,18 @@ bool is_constant(const FnNode& n) {
 }
 
 // A comparison of constants, or a choice on a constant condition, made now: formulas have no
-// comparisons, and the switches of functions.inc's functions are constant in practice.
+// comparisons, and the switches of functions.inc's functions are constant in practice. A fractal
+// noise with constant parameters becomes its octaves' sum.
 std::shared_ptr<const FnNode> fold_choice(const std::shared_ptr<const FnNode>& n) {
   if (n->kind != FnNode::Call) return n;
+  if (n->function == "ridged_mf" && n->args.size() == 9) {  // its octaves unrolled
+    double v[9] = {};
+    for (std::size_t i = 3; i < 9; ++i) {
+      if (!is_constant(*n->args[i])) return n;
+      v[i] = eval(*n->args[i], {}, 0);
+    }
+    return ridged_mf_tree(n->args[0], n->args[1], n->args[2], v);
+  }
   static const char* const kFoldable[] = {"if", "select", "lt",  "le", "gt", "ge",
                                           "eq", "ne",     "and", "or", "not"};
   bool foldable = false;
@@ -168,7 +183,20 @@ std::shared_ptr<const FnNode> inline_calls(const std::shared_ptr<const FnNode>& 
   return fold_choice(out);
 }
 
+// The generator of a noise3d call when formulas can name it (noise1, noise2, noise3), else 0.
+int noise_generator(const FnNode& n) {
+  if (n.args.size() != 4 || !is_constant(*n.args[3])) return 0;
+  const double g = eval(*n.args[3], {}, 0);
+  return g == 1 || g == 2 || g == 3 ? static_cast<int>(g) : 0;
+}
+
 bool expressible(const FnNode& n) {
+  if (n.kind == FnNode::Call && n.function == "noise3d") {
+    if (!noise_generator(n)) return false;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (!expressible(*n.args[i])) return false;
+    return true;
+  }
   if (n.kind == FnNode::Call) {
     static const char* const ok[] = {"sqrt", "exp", "log", "sin", "cos",   "tan",
                                      "abs",  "min", "max", "pow", "atan2", "floor"};
@@ -237,6 +265,11 @@ std::string formula_text(const FnNode& f, bool mirror_z) {
       o << "pow(" << arg(0) << ", " << arg(1) << ")";
       return o.str();
     case FnNode::Call:
+      if (f.function == "noise3d" && noise_generator(f)) {
+        o << "noise" << noise_generator(f) << "(" << arg(0) << ", " << arg(1) << ", " << arg(2)
+          << ")";
+        return o.str();
+      }
       o << f.function << "(";
       for (std::size_t i = 0; i < f.args.size(); ++i) o << (i ? ", " : "") << arg(i);
       o << ")";

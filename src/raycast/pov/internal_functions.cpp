@@ -1,10 +1,13 @@
 #include "pov/internal_functions.h"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "pov/fn_builder.h"
+#include "texture/noise.h"
 
 namespace raycast::pov {
 
@@ -222,6 +225,10 @@ const Definition kDefinitions[] = {
      }},
     {{61, "f_sphere", 1},  // the distance from the sphere of radius P0 at the origin
      [] { return sqrt(rho2) - P(0); }},
+    {{59, "f_ridged_mf", 6},  // H, lacunarity, octaves, offset, gain, noise generator
+     [] {
+       return fn::call("ridged_mf", {x, y, z, P(0), P(1), P(2), P(3), P(4), P(5)});
+     }},
     {{64, "f_spiral", 6},  // a tube wound as a flat spiral about y, P0 apart, radius P1
      [] {
        const double two_pi = 2 * std::numbers::pi;
@@ -272,6 +279,43 @@ const Definition kDefinitions[] = {
 };
 
 }  // namespace internal_definitions
+
+namespace {
+// Octaves are bounded as POV-Ray's turbulence bounds them, so that a formula stays small.
+int octave_count(double v) { return std::clamp(static_cast<int>(v), 1, 10); }
+}  // namespace
+
+double ridged_mf(const double a[9]) {
+  const double H = a[3], lacunarity = a[4], offset = a[6], gain = a[7];
+  const int generator = static_cast<int>(a[8]);
+  double f = 1, result = 0, weight = 1;
+  for (int i = 0; i < octave_count(a[5]); ++i) {
+    const double n = 2 * texture::noise({a[0] * f, a[1] * f, a[2] * f}, generator) - 1;
+    const double signal = (offset - std::abs(n)) * (offset - std::abs(n)) * weight;
+    result += signal * std::pow(f, -H);
+    weight = std::clamp(signal * gain, 0.0, 1.0);
+    f *= lacunarity;
+  }
+  return result;
+}
+
+std::shared_ptr<const FnNode> ridged_mf_tree(std::shared_ptr<const FnNode> x,
+                                             std::shared_ptr<const FnNode> y,
+                                             std::shared_ptr<const FnNode> z, const double a[9]) {
+  using namespace fn;  // NOLINT: the equation
+  const Fn X(std::move(x)), Y(std::move(y)), Z(std::move(z));
+  const double H = a[3], lacunarity = a[4], offset = a[6], gain = a[7], generator = a[8];
+  double f = 1;
+  Fn result = 0.0, weight = 1.0;
+  for (int i = 0; i < octave_count(a[5]); ++i) {
+    const Fn n = 2.0 * fn::call("noise3d", {X * f, Y * f, Z * f, generator}) - 1.0;
+    const Fn signal = sqr(offset - abs(n)) * weight;
+    result = result + signal * std::pow(f, -H);
+    weight = min(max(signal * gain, 0.0), 1.0);
+    f *= lacunarity;
+  }
+  return result.node;
+}
 
 using internal_definitions::Definition;
 using internal_definitions::kDefinitions;

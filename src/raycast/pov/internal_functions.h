@@ -22,4 +22,16 @@ std::span<const InternalFunctionInfo> internal_function_table();
 /// not define that number.
 std::shared_ptr<const FunctionValue> internal_function(int number);
 
+/// Musgrave's ridged multifractal (f_ridged_mf) at p: octaves of signed solid noise at
+/// frequencies lacunarity^i, each ridge (offset - |noise|)^2 weighted by the one before times the
+/// gain (clamped to [0, 1]) and by lacunarity^(-i H). `a` holds x, y, z, H, lacunarity, octaves,
+/// offset, gain, generator.
+double ridged_mf(const double a[9]);
+
+/// The same as a function tree over the nodes x, y, z with the other parameters constant (the
+/// octaves unrolled), for isosurface formulas.
+std::shared_ptr<const FnNode> ridged_mf_tree(std::shared_ptr<const FnNode> x,
+                                             std::shared_ptr<const FnNode> y,
+                                             std::shared_ptr<const FnNode> z, const double a[9]);
+
 }  // namespace raycast::pov
