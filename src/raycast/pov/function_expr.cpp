@@ -1,5 +1,6 @@
 #include "pov/function_expr.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -20,6 +21,7 @@ std::string number_text(double v) {
 }
 
 constexpr int kMaxCallDepth = 64;
+constexpr double kMaxUnrolledFrequency = 64;
 
 double eval(const FnNode& n, const std::vector<double>& a, int depth) {
   auto arg = [&](std::size_t i) { return eval(*n.args[i], a, depth); };
@@ -139,6 +141,11 @@ std::shared_ptr<const FnNode> fold_choice(const std::shared_ptr<const FnNode>& n
       if (!is_constant(*n->args[i])) return n;
       v[i] = eval(*n->args[i], {}, 0);
     }
+    // Octaves far finer than the first make the formula's intervals useless until the pieces
+    // are as fine: past a top frequency of 64 the isosurface solver would run out of steps on
+    // every ray, so such a sum stays a call (not a formula: the isosurface is left out, warned).
+    if (!(std::pow(std::abs(v[4]), std::clamp(v[5], 1.0, 10.0) - 1) <= kMaxUnrolledFrequency))
+      return n;
     return ridged_mf_tree(n->args[0], n->args[1], n->args[2], v);
   }
   static const char* const kFoldable[] = {"if", "select", "lt",  "le", "gt", "ge",
