@@ -98,6 +98,16 @@ TEST(PovInternalFunctions, ClassicSurfacesAreTheirEquationsTimesMinusTheStrength
   EXPECT_NEAR(call(kPoly4, {2, 1, 0, 1, 0, 1, 0, 0}), 0, 1e-15);
 }
 
+TEST(PovInternalFunctions, BlobsAreMinusTheirComponentsFields) {
+  // Strength s, inverse radius k: s (1 - (k r)^2)^2 inside r < 1 / k, 0 outside.
+  // The components at x = -0.7 and 0.7.
+  EXPECT_DOUBLE_EQ(call(6, {-0.7, 0, 0, 1.4, 1, 0.8, 1.2, 1}), -1);
+  EXPECT_NEAR(call(6, {0, 0, 0, 1.4, 1, 0.8, 1.2, 1}),
+              -(std::pow(1 - 0.64 * 0.49, 2) + 1.2 * std::pow(1 - 0.49, 2)), 1e-15);
+  // Two equal Gaussian components: P3 - s (e^-(k r1^2) + e^-(k r2^2)).
+  EXPECT_NEAR(call(7, {0.5, 0, 0, 1, 5, 2, 1}), 1 - 4 * std::exp(-1.25), 1e-15);
+}
+
 TEST(PovInternalFunctions, SorSwitchRevolvesTheCurveAboutY) {
   // The lemniscate of Gerono u^4 - u^2 + v^2: extruded along z, or revolved (u = distance from y).
   const double u = 0.5, v = 0.3, g = u * u * u * u - u * u + v * v;
@@ -122,6 +132,7 @@ TEST(PovInternalFunctions, HelixIsZeroOnItsTubeAndMinusTheRadiusOnItsAxis) {
   EXPECT_NEAR(call(kHelix1, {R * std::cos(a), 0, R * std::sin(a), 2, k, r, R, 1, 1, 0}), -r, 1e-12);
   // A flat spiral 0.2 apart: on a winding at radius 0.4 (angle 0), a tube of radius 0.04.
   EXPECT_NEAR(call(kSpiral, {0.4, 0, 0, 0.2, 0.04, 2, 0, 0, 1}), -0.04, 1e-12);
+  EXPECT_NEAR(call(kSpiral, {3, 0, 0, 0.2, 0.04, 2, 0, 0, 1}), 1, 1e-12);  // outside radius P2
 }
 
 TEST(PovInternalFunctions, NoiseIsTheTextureNoise) {

@@ -109,16 +109,19 @@ const Definition kDefinitions[] = {
      }},
     {{5, "f_bifolia", 2},  // the bifolium (r^2 + y^2)^2 = a r^2 y, revolved
      [] { return strength(sqr(rho2) - P(1) * r2_xz * y); }},
-    {{6, "f_blob", 5},  // two blob components: strength s and inverse radius k, field s e^-(k r)^2
+    {{6, "f_blob", 5},  // two blob components P0 apart on x, centred on the origin: strength s and
+                        // inverse radius k, field
+                        // s (1 - (k r)^2)^2 within r < 1 / k; the value is minus their sum
      [] {
-       const Fn r1 = rho2, r2 = sqr(x - P(0)) + y * y + z * z;
-       return -(P(1) * exp(-sqr(P(2)) * r1) + P(3) * exp(-sqr(P(4)) * r2));
+       const Fn r1 = sqr(x + 0.5 * P(0)) + y * y + z * z, r2 = sqr(x - 0.5 * P(0)) + y * y + z * z;
+       return -(P(1) * sqr(max(1.0 - sqr(P(2)) * r1, 0.0)) +
+                P(3) * sqr(max(1.0 - sqr(P(4)) * r2, 0.0)));
      }},
-    {{7, "f_blob2", 4},  // two equal components P0 apart on x; P3 is a threshold
+    {{7, "f_blob2", 4},  // two equal components P0 apart on x, fields s e^-(k r^2); P3 is a
+                         // threshold
      [] {
-       const Fn k2 = sqr(P(1));
        const Fn r1 = rho2, r2 = sqr(x - P(0)) + y * y + z * z;
-       return P(3) - P(2) * (exp(-k2 * r1) + exp(-k2 * r2));
+       return P(3) - P(2) * (exp(-P(1) * r1) + exp(-P(1) * r2));
      }},
     {{8, "f_boy_surface", 2},  // Boy's surface, the sextic of its Apery-Morin form, axis y
      [] {
@@ -229,12 +232,13 @@ const Definition kDefinitions[] = {
      [] {
        return fn::call("ridged_mf", {x, y, z, P(0), P(1), P(2), P(3), P(4), P(5)});
      }},
-    {{64, "f_spiral", 6},  // a tube wound as a flat spiral about y, P0 apart, radius P1
+    {{64, "f_spiral", 6},  // a tube wound as a flat spiral about y, P0 apart, radius P1, out to
+                           // P2 from the centre (the documented "diameter" acts so in its examples)
      [] {
        const double two_pi = 2 * std::numbers::pi;
        const Fn d = sqrt(r2_xz) - P(0) * atan2(z, x) / two_pi;
        const Fn u = d - P(0) * floor(d / P(0) + 0.5);
-       return max(section(u, y, P(5)) - P(1), sqrt(rho2) - P(2) * 0.5);
+       return max(section(u, y, P(5)) - P(1), sqrt(rho2) - P(2));
      }},
     {{65, "f_steiners_roman", 1},  // x^2 y^2 + y^2 z^2 + z^2 x^2 + x y z = 0
      [] { return strength(sqr(x) * sqr(y) + sqr(y) * sqr(z) + sqr(z) * sqr(x) + x * y * z); }},
