@@ -91,9 +91,9 @@ TEST(PovInternalFunctions, ClassicSurfacesAreTheirEquationsTimesMinusTheStrength
   EXPECT_NEAR(call(kParaboloid, {x, y, z, s}), -s * (x * x + z * z - y), 1e-15);
   EXPECT_NEAR(call(kSteiner, {x, y, z, s}),
               -s * (x * x * y * y + y * y * z * z + z * z * x * x + x * y * z), 1e-15);
-  const double h = x * x + 2.25 * z * z + y * y - 1;
+  const double h = 2.25 * x * x + y * y + z * z - 1;
   EXPECT_NEAR(call(kHeart, {x, y, z, s}),
-              -s * (h * h * h - x * x * y * y * y - 0.1125 * z * z * y * y * y), 1e-15);
+              -s * (h * h * h - y * y * z * z * z - 0.1125 * x * x * z * z * z), 1e-15);
   // A lathe: radius 1 + y^2 at height y.
   EXPECT_NEAR(call(kPoly4, {2, 1, 0, 1, 0, 1, 0, 0}), 0, 1e-15);
 }

@@ -162,10 +162,11 @@ const Definition kDefinitions[] = {
      }},
     {{17, "f_ellipsoid", 3},  // |(P0 x, P1 y, P2 z)|: 1 on the ellipsoid of semi-axes 1 / Pi
      [] { return sqrt(sqr(P(0) * x) + sqr(P(1) * y) + sqr(P(2) * z)); }},
-    {{23, "f_heart", 1},  // Taubin's heart (x^2 + 9/4 z^2 + y^2 - 1)^3 = x^2 y^3 + 9/80 z^2 y^3
+    {{23, "f_heart", 1},  // Taubin's heart (9/4 x^2 + y^2 + z^2 - 1)^3 = y^2 z^3 + 9/80 x^2 z^3:
+                          // lobes towards +z, thin along x
      [] {
-       const Fn s = sqr(x) + 2.25 * sqr(z) + sqr(y) - 1.0;
-       return strength(s * s * s - sqr(x) * y * y * y - 0.1125 * sqr(z) * y * y * y);
+       const Fn s = 2.25 * sqr(x) + sqr(y) + sqr(z) - 1.0;
+       return strength(s * s * s - sqr(y) * z * z * z - 0.1125 * sqr(x) * z * z * z);
      }},
     {{25, "f_helix1", 7}, [] { return helix(P(0), P(1), P(2), P(3), P(4), P(5), P(6)); }},
     {{26, "f_helix2", 7},  // one strand, round along the axis (P0 and P4 unused)
