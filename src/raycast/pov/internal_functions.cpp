@@ -70,7 +70,8 @@ struct Definition {
 };
 
 // The definitions, by functions.inc's numbers. Curves and surfaces from the classic literature
-// (MathWorld's and Mathcurve's equations), each surface about the y axis where it has one.
+// (MathWorld's and Mathcurve's equations), each surface about the y axis where it has one, except
+// where POV-Ray's own example (incdemo/i_internal.pov) shows it otherwise.
 const Definition kDefinitions[] = {
     {{0, "f_algbr_cyl1", 5},  // a figure of eight: the lemniscate of Gerono, u^4 - u^2 + v^2 = 0
      [] {
@@ -137,8 +138,8 @@ const Definition kDefinitions[] = {
                          108.0 * s2 * X * Z * (X * X - 3.0 * Y * Y) + 4.0 * sqr(sqr(Z)));
        return strength(f);
      }},
-    {{11, "f_crossed_trough", 1},  // y = x^2 z^2
-     [] { return strength(sqr(x) * sqr(z) - y); }},
+    {{11, "f_crossed_trough", 1},  // z = x^2 y^2 (upright along z, as POV-Ray's examples show it)
+     [] { return strength(sqr(x) * sqr(y) - z); }},
     {{12, "f_cubic_saddle", 1},  // the monkey saddle y = x^3 - 3 x z^2
      [] { return strength(x * x * x - 3.0 * x * z * z - y); }},
     {{14, "f_devils_curve", 1},  // the devil's curve revolved: x^4 + 2 x^2 z^2 - 0.36 x^2 - y^4
