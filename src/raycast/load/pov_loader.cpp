@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "io/scene_file.h"
+#include "load/formula_noise_registration.h"
 #include "load/pov_textures.h"
 #include "objects/csg_tree.h"
 #include "pov/checker_grid.h"
@@ -806,12 +807,14 @@ bool is_pov_path(const std::string& path) {
 Scene load_pov_scene_text(const std::string& text, const std::string& name, const std::string& dir,
                           int frame, const pov::Options& options,
                           std::vector<std::string>* warnings) {
+  register_formula_noise();  // functions.inc's f_noise3d in isosurfaces
   return build(pov::interpret_pov(text, name, dir, with_object_queries(with_frame(options, frame))),
                name, warnings, options.strict);
 }
 
 Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options& options,
                           std::vector<std::string>* warnings) {
+  register_formula_noise();  // functions.inc's f_noise3d in isosurfaces
   pov::Options o = with_object_queries(with_frame(options, frame));
   std::string scene_path = path;
   if (path.size() >= 4 &&
