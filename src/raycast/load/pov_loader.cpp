@@ -207,13 +207,23 @@ class Builder {
     if (it == stacks_.end()) it = stacks_.emplace(&t, pov_textures_.stack(t)).first;
     mat.texture = it->second;
     mat.color = rgb(t.pigment.c0);
-    if (const std::optional<double> ior = t.ior ? t.ior : t.finish.ior) mat.ior = *ior;
+    set_interior(t, mat);
     const Transform world = mirror_ ? Transform::scale({1, 1, -1}) : Transform();
     mat.texture_transform = frame.inverse() * (object ? world * *object : world);
     mat.name = t.name;
     if (mat.name.empty()) mat.name.append("m").append(std::to_string(scene_.materials.size()));
     scene_.materials.push_back(std::move(mat));
     return static_cast<int>(scene_.materials.size()) - 1;
+  }
+
+  // The interior's ior and fade (POV-Ray 3.1's finish items where the interior has none).
+  void set_interior(const pov::Texture& t, Material& mat) const {
+    const pov::Interior in = t.interior.value_or(pov::Interior{});
+    if (const std::optional<double> ior = in.ior ? in.ior : t.finish.ior) mat.ior = *ior;
+    const bool own = in.fade_distance != 0 || in.fade_power != 0;
+    mat.fade_distance = own ? in.fade_distance : t.finish.fade_distance;
+    mat.fade_power = own ? in.fade_power : t.finish.fade_power;
+    mat.fade_color = rgb(in.fade_color);
   }
 
   int material(const pov::Texture& t, const Transform& frame,
@@ -248,26 +258,14 @@ class Builder {
     mat.reflection = std::min(1.0, f.reflection);
     mat.transmission = tr;
     mat.fresnel = f.fresnel && tr > 0;
-    if (const std::optional<double> ior = t.ior ? t.ior : t.finish.ior) mat.ior = *ior;
-    const MaterialKey key = {mat.color.x,
-                             mat.color.y,
-                             mat.color.z,
-                             double(mat.has_checker),
-                             mat.checker.c0.x,
-                             mat.checker.c0.y,
-                             mat.checker.c0.z,
-                             mat.checker.c1.x,
-                             mat.checker.c1.y,
-                             mat.checker.c1.z,
-                             mat.checker.scale,
-                             mat.ambient,
-                             mat.diffuse,
-                             mat.specular,
-                             mat.shininess,
-                             mat.reflection,
-                             mat.transmission,
-                             double(mat.fresnel),
-                             mat.ior};
+    set_interior(t, mat);
+    const MaterialKey key = {
+        mat.color.x,      mat.color.y,         mat.color.z,       double(mat.has_checker),
+        mat.checker.c0.x, mat.checker.c0.y,    mat.checker.c0.z,  mat.checker.c1.x,
+        mat.checker.c1.y, mat.checker.c1.z,    mat.checker.scale, mat.ambient,
+        mat.diffuse,      mat.specular,        mat.shininess,     mat.reflection,
+        mat.transmission, double(mat.fresnel), mat.ior,           mat.fade_distance,
+        mat.fade_power,   mat.fade_color.x,    mat.fade_color.y,  mat.fade_color.z};
     const auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
     mat.name = t.name;
@@ -620,7 +618,7 @@ class Builder {
   bool mirror_ = false;
   double gamma_ = 1;
   // Equal materials are stored once: every field of raycast's material, as written.
-  using MaterialKey = std::array<double, 19>;
+  using MaterialKey = std::array<double, 24>;
   std::map<MaterialKey, int> materials_;
   std::set<std::string> warned_;
   PovTextureBuilder pov_textures_{[this](double c) { return linear(c); }};

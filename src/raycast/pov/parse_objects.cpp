@@ -737,13 +737,14 @@ bool Interpreter::modifier(Node& n, int depth) {
   if (transform_item(n.xforms)) return true;
   if (w == "texture") {
     next();
-    const std::optional<double> ior = n.texture ? n.texture->ior : std::nullopt;
+    const std::optional<Interior> interior =
+        n.texture ? n.texture->interior : std::optional<Interior>{};
     if (!n.texture) n.texture_at = n.xforms.size();
     Texture layer = texture_block(default_texture_, depth + 1);
     // A second texture is laid over the first (layered textures).
     n.texture =
         n.texture ? layer_on_top(std::move(*n.texture), std::move(layer)) : std::move(layer);
-    if (!n.texture->ior) n.texture->ior = ior;
+    if (!n.texture->interior) n.texture->interior = interior;
   } else if (w == "pigment") {
     next();
     Texture& tx = own_texture();
@@ -761,9 +762,9 @@ bool Interpreter::modifier(Node& n, int depth) {
     tx.name.clear();
   } else if (w == "interior") {
     next();
-    const std::optional<double> ior = interior_block();
+    const Interior interior = interior_block();
     Texture& tx = own_texture();
-    tx.ior = ior;
+    tx.interior = interior;
     tx.name.clear();
   } else if (w == "material") {
     next();

@@ -69,7 +69,7 @@ struct Value {
   std::shared_ptr<const SplineValue> spline;
   std::shared_ptr<const MacroDef> macro;
   std::shared_ptr<const std::vector<MapEntry>> colour_map;
-  std::optional<double> ior;  // Interior
+  std::optional<pov::Interior> interior;  // Interior
 
   static Value number(double f) {
     Value r;

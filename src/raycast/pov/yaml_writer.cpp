@@ -185,7 +185,14 @@ class Writer {
                         " (raycast's Fresnel splits transmitted light)");
       o << ", fresnel: true";
     }
-    if (t.ior) o << ", ior: " << num(*t.ior);
+    const Interior in = t.interior.value_or(Interior{});
+    if (in.ior) o << ", ior: " << num(*in.ior);
+    const bool own = in.fade_distance != 0 || in.fade_power != 0;
+    const double fade_distance = own ? in.fade_distance : f.fade_distance;
+    const double fade_power = own ? in.fade_power : f.fade_power;
+    if (fade_distance > 0 && fade_power > 0)
+      o << ", fade_distance: " << num(fade_distance) << ", fade_power: " << num(fade_power)
+        << ", fade_color: " << rgb(in.fade_color);
     o << "}";
     return o.str();
   }
