@@ -513,6 +513,18 @@ class Builder {
       light(*n.light, parent);
       return;
     }
+    if (!n.clipped_by.empty() || (n.inverse && !is_csg(n.kind))) {
+      // Clipped or inverted on its own: a CSG tree of one operand (csg_part), placed by parent.
+      CsgTree tree;
+      tree.nodes.emplace_back().op = CsgOp::kIntersection;
+      csg_world_ = parent ? parent : std::optional<Transform>(Transform());
+      const std::optional<std::int32_t> code = csg_part(n, tex, frame, std::nullopt, tree, false);
+      csg_world_.reset();
+      if (!code) return;
+      tree.nodes[0].operands.push_back(*code);
+      add_csg(n, std::move(tree), tex, frame, parent, entry, out);
+      return;
+    }
     if (n.kind == Node::Union) {
       const std::optional<Transform> xf = compose(parent, own_transform(n, false));
       for (const Node& c : n.children) add(c, tex, frame, xf, entry, out);
@@ -526,19 +538,9 @@ class Builder {
       CsgTree tree;
       const std::optional<Transform> xf = compose(parent, own_transform(n, false));
       csg_world_ = xf ? xf : std::optional<Transform>(Transform());
-      csg_operation(n, tex, frame, std::nullopt, tree);
+      csg_operation(n, tex, frame, std::nullopt, tree, n.inverse);
       csg_world_.reset();
-      if (tree.leaves.empty()) return;
-      Object o;
-      try {
-        o.shape = CsgShape{finish_csg_tree(std::move(tree))};
-      } catch (const std::invalid_argument& e) {
-        fail_at(n.pos, e.what());
-      }
-      o.xf = xf;
-      o.material = tex ? material(*tex, frame, o.xf) : -1;
-      o.entry = entry;
-      out.push_back(std::move(o));
+      add_csg(n, std::move(tree), tex, frame, xf, entry, out);
       return;
     }
     std::optional<Object> o = leaf(n, tex, frame, parent);
@@ -547,64 +549,131 @@ class Builder {
     out.push_back(std::move(*o));
   }
 
+  // The object of a built CSG tree, placed by xf.
+  void add_csg(const Node& n, CsgTree tree, const pov::Texture* tex, const Transform& frame,
+               const std::optional<Transform>& xf, int entry, std::vector<Object>& out) {
+    if (tree.leaves.empty()) return;
+    Object o;
+    try {
+      o.shape = CsgShape{finish_csg_tree(std::move(tree))};
+    } catch (const std::invalid_argument& e) {
+      fail_at(n.pos, e.what());
+    }
+    o.xf = xf;
+    o.material = tex ? material(*tex, frame, o.xf) : -1;
+    o.entry = entry;
+    out.push_back(std::move(o));
+  }
+
   // The parts' `here` placements are relative to the CSG object (csg_world_ places it).
+  // `invert`: build the operation's complement (POV-Ray's `inverse`), by De Morgan's laws down to
+  // the leaves: a union's complement is the intersection of its operands' complements, an
+  // intersection's the union, a difference's (a minus the rest) the union of a's complement and
+  // the rest.
   std::int32_t csg_operation(const Node& n, const pov::Texture* tex, const Transform& frame,
-                             const std::optional<Transform>& here, CsgTree& tree) {
+                             const std::optional<Transform>& here, CsgTree& tree, bool invert) {
     const std::size_t index = tree.nodes.size();
     tree.nodes.emplace_back();
-    tree.nodes[index].op = n.kind == Node::Intersection ? CsgOp::kIntersection
-                           : n.kind == Node::Difference ? CsgOp::kDifference
-                                                        : CsgOp::kUnion;
+    const CsgOp op = n.kind == Node::Intersection ? CsgOp::kIntersection
+                     : n.kind == Node::Difference ? CsgOp::kDifference
+                                                  : CsgOp::kUnion;
+    tree.nodes[index].op = !invert                    ? op
+                           : op == CsgOp::kUnion      ? CsgOp::kIntersection
+                           : op == CsgOp::kDifference ? CsgOp::kUnion
+                                                      : CsgOp::kUnion;
     for (const Node& c : n.children) {
-      const pov::Texture* ct = c.texture ? &*c.texture : tex;
-      if (c.kind == Node::Reference && c.ref->texture) ct = &*c.ref->texture;
-      if (c.kind == Node::LightSource) {
-        light(*c.light, std::nullopt);
-        continue;
-      }
-      std::int32_t code;
-      const Node* part = &c;
-      std::optional<Transform> at = here;
-      while (part->kind == Node::Reference) {  // object { Name }: the shared object, placed
-        at = compose(at, own_transform(*part, false));
-        part = part->ref.get();
-        if (part->texture && !c.texture) ct = &*part->texture;
-      }
-      // The texture frame of the part: its own texture's, else the one it inherits.
-      const Transform part_frame =
-          part->texture ? texture_frame(*part, compose(csg_world_, part == &c ? here : at))
-          : c.texture   ? texture_frame(c, compose(csg_world_, here))
-                        : frame;
-      if (part->kind == Node::Union || is_csg(part->kind)) {
-        const std::optional<Transform> xf = part == &c ? compose(here, own_transform(c, false))
-                                                       : compose(at, own_transform(*part, false));
-        code = csg_operation(*part, ct, part_frame, xf, tree);
-      } else if (part->kind == Node::LightSource) {
-        light(*part->light, at);
-        continue;
-      } else {
-        std::optional<Object> o = leaf(*part, ct, part_frame, at);
-        if (!o) continue;
-        if (!is_closed(*o)) {
-          warn(c.pos, "open surfaces in CSG", "raycast's CSG needs closed solids");
-          continue;
-        }
-        o->material = part->texture ? material(*part->texture, part_frame, csg_world_)
-                      : c.texture   ? material(*c.texture, part_frame, csg_world_)
-                                    : -1;
-        tree.leaves.push_back(std::move(*o));
-        code = csg_leaf_code(tree.leaves.size() - 1);
-      }
-      tree.nodes[index].operands.push_back(code);
+      const bool first = tree.nodes[index].operands.empty();
+      const bool part_invert = invert && (op != CsgOp::kDifference || first);
+      if (const std::optional<std::int32_t> code = csg_part(c, tex, frame, here, tree, part_invert))
+        tree.nodes[index].operands.push_back(*code);
     }
     if (tree.nodes[index].operands.empty()) {
       // Every operand was left out: an empty solid stays empty as an empty intersection.
       Object o;
       o.shape = make_sphere({0, 0, 0}, 1e-9);
-      tree.leaves.push_back(o);
-      tree.nodes[index].operands.push_back(csg_leaf_code(tree.leaves.size() - 1));
+      tree.nodes[index].operands.push_back(push_leaf(tree, std::move(o), false));
     }
     return static_cast<std::int32_t>(index);
+  }
+
+  // One operand of a CSG operation: a leaf, an operation, or (clipped_by) the intersection of
+  // the part with its clipping objects, whose leaves are hidden. nullopt: left out.
+  std::optional<std::int32_t> csg_part(const Node& c, const pov::Texture* tex,
+                                       const Transform& frame, const std::optional<Transform>& here,
+                                       CsgTree& tree, bool invert) {
+    const pov::Texture* ct = c.texture ? &*c.texture : tex;
+    if (c.kind == Node::Reference && c.ref->texture) ct = &*c.ref->texture;
+    if (c.kind == Node::LightSource) {
+      light(*c.light, std::nullopt);
+      return std::nullopt;
+    }
+    const Node* part = &c;
+    std::optional<Transform> at = here;
+    bool inverse = invert != c.inverse;
+    // Clipping objects with the placement of the frame they are written in.
+    std::vector<std::pair<const Node*, std::optional<Transform>>> clips;
+    for (const Node& k : c.clipped_by) clips.emplace_back(&k, here);
+    while (part->kind == Node::Reference) {  // object { Name }: the shared object, placed
+      at = compose(at, own_transform(*part, false));
+      part = part->ref.get();
+      if (part->texture && !c.texture) ct = &*part->texture;
+      inverse = inverse != part->inverse;
+      for (const Node& k : part->clipped_by) clips.emplace_back(&k, at);
+    }
+    // The clipped part is an intersection with its clipping objects: that node comes first.
+    const std::size_t clip_node = tree.nodes.size();
+    if (!clips.empty()) tree.nodes.emplace_back().op = CsgOp::kIntersection;
+    std::optional<std::int32_t> code = csg_body(c, part, ct, frame, here, at, tree, inverse);
+    if (clips.empty() || !code) return code;
+    tree.nodes[clip_node].operands.push_back(*code);
+    const bool hiding = hiding_;
+    hiding_ = true;
+    for (const auto& [k, placed] : clips)
+      if (const std::optional<std::int32_t> kc = csg_part(*k, nullptr, frame, placed, tree, false))
+        tree.nodes[clip_node].operands.push_back(*kc);
+    hiding_ = hiding;
+    return static_cast<std::int32_t>(clip_node);
+  }
+
+  // csg_part's own shape: `part` is c or the object c names, placed by `at`.
+  std::optional<std::int32_t> csg_body(const Node& c, const Node* part, const pov::Texture* ct,
+                                       const Transform& frame, const std::optional<Transform>& here,
+                                       const std::optional<Transform>& at, CsgTree& tree,
+                                       bool inverse) {
+    // The texture frame of the part: its own texture's, else the one it inherits.
+    const Transform part_frame =
+        part->texture ? texture_frame(*part, compose(csg_world_, part == &c ? here : at))
+        : c.texture   ? texture_frame(c, compose(csg_world_, here))
+                      : frame;
+    if (part->kind == Node::Union || is_csg(part->kind)) {
+      const std::optional<Transform> xf = part == &c ? compose(here, own_transform(c, false))
+                                                     : compose(at, own_transform(*part, false));
+      return csg_operation(*part, ct, part_frame, xf, tree, inverse);
+    }
+    if (part->kind == Node::LightSource) {
+      light(*part->light, at);
+      return std::nullopt;
+    }
+    std::optional<Object> o = leaf(*part, ct, part_frame, at);
+    if (!o) return std::nullopt;
+    if (!is_closed(*o)) {
+      warn(c.pos, "open surfaces in CSG", "raycast's CSG needs closed solids");
+      return std::nullopt;
+    }
+    o->material = part->texture ? material(*part->texture, part_frame, csg_world_)
+                  : c.texture   ? material(*c.texture, part_frame, csg_world_)
+                                : -1;
+    return push_leaf(tree, std::move(*o), inverse);
+  }
+
+  // Appends a leaf (inverse: its complement; hidden while clipping objects are built).
+  std::int32_t push_leaf(CsgTree& tree, Object o, bool inverse) {
+    tree.leaves.push_back(std::move(o));
+    tree.leaf_inverse.resize(tree.leaves.size(), 0);
+    tree.leaf_hidden.resize(tree.leaves.size(), 0);
+    tree.leaf_inverse.back() = inverse;
+    tree.leaf_hidden.back() = hiding_;
+    return csg_leaf_code(tree.leaves.size() - 1);
   }
 
  public:
@@ -626,6 +695,7 @@ class Builder {
   // While a CSG object is built: its placement in the world (its parts' materials map from its
   // space).
   std::optional<Transform> csg_world_;
+  bool hiding_ = false;  // while a CSG tree's clipping objects are built (CsgTree::leaf_hidden)
 };
 
 void report(const std::vector<std::string>& in, std::vector<std::string>* out) {

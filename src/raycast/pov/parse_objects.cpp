@@ -734,7 +734,13 @@ bool Interpreter::modifier(Node& n, int depth) {
     return *n.texture;
   };
   if (t.kind != Token::Word) return false;
-  if (transform_item(n.xforms)) return true;
+  const std::size_t placed = n.xforms.size();
+  if (transform_item(n.xforms)) {
+    // POV-Ray moves an object's clipping objects with it from where they are attached on.
+    for (Node& c : n.clipped_by)
+      c.xforms.insert(c.xforms.end(), n.xforms.begin() + std::ptrdiff_t(placed), n.xforms.end());
+    return true;
+  }
   if (w == "texture") {
     next();
     const std::optional<Interior> interior =
@@ -788,7 +794,6 @@ bool Interpreter::modifier(Node& n, int depth) {
   } else if (w == "inverse") {
     next();
     n.inverse = !n.inverse;
-    unsupported_warning(t.pos, "inverse", "the object is drawn as it is");
   } else if (w == "open" &&
              (n.kind == Node::Cylinder || n.kind == Node::Cone || n.kind == Node::Sor ||
               n.kind == Node::Lathe || n.kind == Node::Isosurface)) {
@@ -798,18 +803,32 @@ bool Interpreter::modifier(Node& n, int depth) {
     next();
     expect_symbol("{", "after bounded_by");
     if (is_word("clipped_by")) {
-      next();
+      next();  // the clipping objects bound it: nothing to keep
     } else {
+      n.bounded_by.clear();
       while (!is_symbol("}")) {
-        const std::optional<Node> b = object(depth + 1);
+        std::optional<Node> b = object(depth + 1);
+        if (!b) continue;
         // Only an optimisation in POV-Ray; a poly needs it as its bounds in raycast.
-        if (b && b->kind == Node::Box && b->xforms.empty() && n.kind == Node::Poly)
+        if (b->kind == Node::Box && b->xforms.empty() && n.kind == Node::Poly)
           n.bounds = std::array<Vec3, 2>{b->points[0], b->points[1]};
+        n.bounded_by.push_back(std::move(*b));  // for clipped_by { bounded_by }
       }
     }
     expect_symbol("}", "to close bounded_by");
-  } else if (w == "clipped_by" || w == "photons" || w == "radiosity" || w == "interior_texture" ||
-             w == "texture_list" || w == "uv_vectors") {
+  } else if (w == "clipped_by") {
+    next();
+    expect_symbol("{", "after clipped_by");
+    if (is_word("bounded_by")) {
+      next();
+      n.clipped_by.insert(n.clipped_by.end(), n.bounded_by.begin(), n.bounded_by.end());
+    } else {
+      while (!is_symbol("}"))
+        if (std::optional<Node> c = object(depth + 1)) n.clipped_by.push_back(std::move(*c));
+    }
+    expect_symbol("}", "to close clipped_by");
+  } else if (w == "photons" || w == "radiosity" || w == "interior_texture" || w == "texture_list" ||
+             w == "uv_vectors") {
     next();
     if (w != "texture_list" && w != "uv_vectors") unsupported_warning(t.pos, w);
     skip_block(w);

@@ -150,8 +150,12 @@ struct Node {
   std::shared_ptr<const Node> ref;  // Reference: shared, never copied
   std::size_t weight = 0;           // this object's count against Limits::scene_weight
   bool inverse = false;             // `inverse`: the solid's complement
-  bool no_shadow = false;           // `no_shadow`: casts no shadow (its parts neither)
-  std::string name;                 // object { Name }: the declared name it was placed by
+  // clipped_by: the objects whose common inside keeps the surface, in the frame of this node's
+  // parent (later transformations of the node are added to theirs as they are read)
+  std::vector<Node> clipped_by;
+  std::vector<Node> bounded_by;  // bounded_by's objects, kept for clipped_by { bounded_by }
+  bool no_shadow = false;        // `no_shadow`: casts no shadow (its parts neither)
+  std::string name;              // object { Name }: the declared name it was placed by
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
   std::size_t texture_at = 0;  // xforms[texture_at...] come after the texture: they move it

@@ -284,6 +284,9 @@ class Writer {
   // raycast's solid union there, and a group elsewhere, keeping its inner surfaces).
   void object(const Node& n, int indent, bool solid, const Texture* inherited) {
     if (n.kind == Node::LightSource) return;  // written under lights:
+    // The scene format has neither (raycast renders them from the .pov file itself).
+    if (!n.clipped_by.empty()) fail_at(n.pos, unsupported("clipped_by"));
+    if (n.inverse) fail_at(n.pos, unsupported("inverse"));
     if (n.kind == Node::Reference) {  // object { Name }: a union of the shared object, placed
       Node wrap = n;
       wrap.kind = Node::Union;
