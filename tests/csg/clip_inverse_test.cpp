@@ -107,6 +107,20 @@ TEST(ClippedBy, BoundedByAndClippedByShareTheirObjects) {
   EXPECT_NEAR(p.y, -1, 1e-12);
 }
 
+TEST(ClippedBy, ClippedUnion_ClipsEachChildAndKeepsTheirInnerSurfaces) {
+  // Two overlapping spheres: the second one's surface inside the first stays (a union, not a
+  // merge), both cut at y = 0.25.
+  const Scene s =
+      pov("union { sphere { 0, 1 } sphere { 0.5 * x, 1 } clipped_by { plane { y, 0.25 } } }\n");
+  ASSERT_EQ(s.objects.size(), 2u);
+  std::vector<Crossing> crossings;
+  s.intersect_all(Ray{{-5, 0, 0}, {1, 0, 0}}, crossings);
+  ASSERT_EQ(crossings.size(), 4u);  // x = -1, -0.5, 1, 1.5
+  EXPECT_NEAR(crossings[1].t, 4.5, 1e-12);
+  Vec3 p, n;
+  EXPECT_FALSE(hit_point(s, Ray{{-5, 0.5, 0}, {1, 0, 0}}, p, n));
+}
+
 TEST(Inverse, StandaloneSphere_IsItsComplementWithFlippedNormals) {
   std::vector<std::string> warnings;
   const Scene s = pov("sphere { 0, 1 inverse }\n", &warnings);

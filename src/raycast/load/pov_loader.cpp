@@ -513,6 +513,10 @@ class Builder {
       light(*n.light, parent);
       return;
     }
+    if (n.kind == Node::Union && !n.clipped_by.empty() && !n.inverse) {
+      add_clipped_union(n, tex, frame, parent, entry, out);
+      return;
+    }
     if (!n.clipped_by.empty() || (n.inverse && !is_csg(n.kind))) {
       // Clipped or inverted on its own: a CSG tree of one operand (csg_part), placed by parent.
       CsgTree tree;
@@ -547,6 +551,38 @@ class Builder {
     if (!o) return;
     o->entry = entry;
     out.push_back(std::move(*o));
+  }
+
+  // A union's clipping objects clip each of its children on its own: the children keep their
+  // surfaces inside one another, as a union's (merge's would not).
+  void add_clipped_union(const Node& n, const pov::Texture* tex, const Transform& frame,
+                         const std::optional<Transform>& parent, int entry,
+                         std::vector<Object>& out) {
+    const std::optional<Transform> own = own_transform(n, false);
+    for (const Node& c : n.children) {
+      if (c.kind == Node::LightSource) {
+        light(*c.light, compose(parent, own));
+        continue;
+      }
+      CsgTree tree;
+      tree.nodes.emplace_back().op = CsgOp::kIntersection;
+      csg_world_ = parent ? parent : std::optional<Transform>(Transform());
+      const std::optional<std::int32_t> code = csg_part(c, tex, frame, own, tree, false);
+      if (code) {
+        tree.nodes[0].operands.push_back(*code);
+        hiding_ = true;
+        for (const Node& k : n.clipped_by)
+          if (const std::optional<std::int32_t> kc =
+                  csg_part(k, nullptr, frame, std::nullopt, tree, false))
+            tree.nodes[0].operands.push_back(*kc);
+        hiding_ = false;
+      }
+      csg_world_.reset();
+      const std::size_t first = out.size();
+      if (code) add_csg(c, std::move(tree), tex, frame, parent, entry, out);
+      if (c.no_shadow)
+        for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+    }
   }
 
   // The object of a built CSG tree, placed by xf.
