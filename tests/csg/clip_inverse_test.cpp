@@ -121,6 +121,16 @@ TEST(ClippedBy, ClippedUnion_ClipsEachChildAndKeepsTheirInnerSurfaces) {
   EXPECT_FALSE(hit_point(s, Ray{{-5, 0.5, 0}, {1, 0, 0}}, p, n));
 }
 
+TEST(ClippedBy, OpenSurface_IsDrawnWholeWithAWarning) {
+  std::vector<std::string> warnings;
+  const Scene s = pov("disc { 0, y, 1 clipped_by { plane { x, 0 } } }\n", &warnings);
+  ASSERT_EQ(s.objects.size(), 1u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("open surfaces"), std::string::npos) << warnings[0];
+  Vec3 p, n;
+  EXPECT_TRUE(hit_point(s, Ray{{0.5, 5, 0}, {0, -1, 0}}, p, n));
+}
+
 TEST(Inverse, StandaloneSphere_IsItsComplementWithFlippedNormals) {
   std::vector<std::string> warnings;
   const Scene s = pov("sphere { 0, 1 inverse }\n", &warnings);

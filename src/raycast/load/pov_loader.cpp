@@ -453,15 +453,16 @@ class Builder {
     }
   }
 
-  void warn(const pov::Pos& at, const std::string& kind, const std::string& detail) {
+  void warn(const pov::Pos& at, const std::string& kind, const std::string& detail,
+            const char* outcome = "left out") {
     if (strict_)
       fail_at(at, "raycast does not render " + kind + " yet (" + detail +
                       "); without --strict it is a warning and is left out");
     if (!warned_.insert(kind).second) return;
     const std::string& name = s_.sources.names[static_cast<std::size_t>(at.file)];
     warnings_.push_back(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
-                        ": warning: raycast does not render " + kind + " yet (" + detail +
-                        "); left out");
+                        ": warning: raycast does not render " + kind + " yet (" + detail + "); " +
+                        outcome);
   }
 
   static bool is_csg(Node::Kind k) {
@@ -519,6 +520,8 @@ class Builder {
     }
     if (!n.clipped_by.empty() || (n.inverse && !is_csg(n.kind))) {
       // Clipped or inverted on its own: a CSG tree of one operand (csg_part), placed by parent.
+      // An open surface cannot be a CSG leaf: it is drawn whole, as before clipping.
+      if (open_leaf(n, tex, frame, parent, entry, out)) return;
       CsgTree tree;
       tree.nodes.emplace_back().op = CsgOp::kIntersection;
       csg_world_ = parent ? parent : std::optional<Transform>(Transform());
@@ -583,6 +586,20 @@ class Builder {
       if (c.no_shadow)
         for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
     }
+  }
+
+  // For a clipped or inverted shape that is an open surface (an open cylinder, a disc, a mesh
+  // that is not closed): a warning, and the surface added as it is. false for other nodes.
+  bool open_leaf(const Node& n, const pov::Texture* tex, const Transform& frame,
+                 const std::optional<Transform>& parent, int entry, std::vector<Object>& out) {
+    if (n.kind == Node::Union || n.kind == Node::Reference || is_csg(n.kind)) return false;
+    std::optional<Object> o = leaf(n, tex, frame, parent);
+    if (!o || is_closed(*o)) return false;
+    warn(n.pos, "clipped_by and inverse on open surfaces", "raycast's CSG needs closed solids",
+         "the surface is drawn whole");
+    o->entry = entry;
+    out.push_back(std::move(*o));
+    return true;
   }
 
   // The object of a built CSG tree, placed by xf.
