@@ -168,7 +168,7 @@ class Interpreter {
   void move_texture(Texture& t, const std::vector<XformOp>& ops);
   void move_pigment(Pigment& p, const std::vector<XformOp>& ops, const Transform& x);
   Finish finish_block(const Finish& base);
-  std::optional<double> interior_block();
+  Interior interior_block();
   Texture material_block(const Texture& base, int depth);
   void reflection_block(Finish& f);
   std::vector<MapEntry> colour_map_block();

@@ -45,6 +45,8 @@ struct Pigment {
 struct Finish {
   double ambient = 0.1, diffuse = 0.6;
   std::optional<double> ior;  // POV-Ray 3.1's `ior` in a finish (an interior's since)
+  // POV-Ray 3.1's fade items in a finish (an interior's since; used when the interior has none)
+  double fade_distance = 0, fade_power = 0;
   double phong = 0, phong_size = 40;
   double specular = 0, roughness = 0.05;
   double reflection = 0;  // `reflection F` or `reflection { F }`
@@ -53,6 +55,15 @@ struct Finish {
   double brilliance = 1, metallic = 0, crand = 0;
   double reflection_min = 0, reflection_max = 0, reflection_falloff = 1;
   bool reflection_metallic = false;
+};
+
+/// interior { ior fade_distance fade_power fade_color }: what raycast builds of an interior.
+/// Light travelling a distance d inside is attenuated when fade_distance and fade_power are both
+/// set (POV-Ray's defaults, 0, turn it off); fade_color is the colour it fades towards.
+struct Interior {
+  std::optional<double> ior;
+  double fade_distance = 0, fade_power = 0;
+  Colour fade_color;
 };
 
 struct Texture;
@@ -68,8 +79,8 @@ struct Texture {
   std::shared_ptr<const TextureMap> map;  // set: a patterned texture (pigment, normal unused)
   Pigment pigment;
   Finish finish;
-  std::optional<double> ior;  // interior { ior }, carried with the texture (raycast's material)
-  std::string name;           // the #declare name it came from, for the converted file
+  std::optional<Interior> interior;       // carried with the texture (raycast's material)
+  std::string name;                       // the #declare name it came from, for the converted file
   std::optional<texture::Normal> normal;  // in POV-Ray's coordinates
   std::vector<Texture> under;  // layered textures: the layers beneath this one, bottom first
 };
@@ -139,8 +150,12 @@ struct Node {
   std::shared_ptr<const Node> ref;  // Reference: shared, never copied
   std::size_t weight = 0;           // this object's count against Limits::scene_weight
   bool inverse = false;             // `inverse`: the solid's complement
-  bool no_shadow = false;           // `no_shadow`: casts no shadow (its parts neither)
-  std::string name;                 // object { Name }: the declared name it was placed by
+  // clipped_by: the objects whose common inside keeps the surface, in the frame of this node's
+  // parent (later transformations of the node are added to theirs as they are read)
+  std::vector<Node> clipped_by;
+  std::vector<Node> bounded_by;  // bounded_by's objects, kept for clipped_by { bounded_by }
+  bool no_shadow = false;        // `no_shadow`: casts no shadow (its parts neither)
+  std::string name;              // object { Name }: the declared name it was placed by
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
   std::size_t texture_at = 0;  // xforms[texture_at...] come after the texture: they move it

@@ -231,7 +231,7 @@ Value Interpreter::rvalue() {
   } else if (word == "interior") {
     next();
     v.kind = Value::Interior;
-    v.ior = interior_block();
+    v.interior = interior_block();
   } else if (word == "material") {
     next();
     v.kind = Value::Material;

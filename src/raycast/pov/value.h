@@ -73,7 +73,7 @@ struct Value {
   std::shared_ptr<const std::vector<MapEntry>> colour_map;
   std::shared_ptr<const pov::SkySphere> sky_sphere;
   std::shared_ptr<const pov::Fog> fog;
-  std::optional<double> ior;  // Interior
+  std::optional<pov::Interior> interior;  // Interior
 
   static Value number(double f) {
     Value r;

@@ -185,7 +185,14 @@ class Writer {
                         " (raycast's Fresnel splits transmitted light)");
       o << ", fresnel: true";
     }
-    if (t.ior) o << ", ior: " << num(*t.ior);
+    const Interior in = t.interior.value_or(Interior{});
+    if (in.ior) o << ", ior: " << num(*in.ior);
+    const bool own = in.fade_distance != 0 || in.fade_power != 0;
+    const double fade_distance = own ? in.fade_distance : f.fade_distance;
+    const double fade_power = own ? in.fade_power : f.fade_power;
+    if (fade_distance > 0 && fade_power > 0)
+      o << ", fade_distance: " << num(fade_distance) << ", fade_power: " << num(fade_power)
+        << ", fade_color: " << rgb(in.fade_color);
     o << "}";
     return o.str();
   }
@@ -277,6 +284,9 @@ class Writer {
   // raycast's solid union there, and a group elsewhere, keeping its inner surfaces).
   void object(const Node& n, int indent, bool solid, const Texture* inherited) {
     if (n.kind == Node::LightSource) return;  // written under lights:
+    // The scene format has neither (raycast renders them from the .pov file itself).
+    if (!n.clipped_by.empty()) fail_at(n.pos, unsupported("clipped_by"));
+    if (n.inverse) fail_at(n.pos, unsupported("inverse"));
     if (n.kind == Node::Reference) {  // object { Name }: a union of the shared object, placed
       Node wrap = n;
       wrap.kind = Node::Union;

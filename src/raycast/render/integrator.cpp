@@ -96,6 +96,10 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
                                          : ObjectFacts::kFilter;
     }
     if (!o.casts_shadow) f.shadow = ObjectFacts::kPass;  // shadow rays walk past it (passes())
+    if (f.hit_material >= 0 && std::size_t(f.hit_material) < scene.materials.size() &&
+        (f.shadow == ObjectFacts::kFilter || f.shadow == ObjectFacts::kWalk) &&
+        fades(scene.materials[std::size_t(f.hit_material)]))
+      f.fade = &scene.materials[std::size_t(f.hit_material)];
     any_transmissive_ |= !o.casts_shadow;
     objects_.push_back(f);
   }
@@ -152,11 +156,11 @@ Color Integrator::diagnostic_hit(const Ray& ray, bool found, const SceneHit& hit
 // inlining offset_ray_origin into the render's mode (3 % more instructions on
 // bench/scenes/glass.yaml under bench/render_instructions.sh).
 extern template Color Integrator::trace<Integrator::kCount>(const Ray& ray, int depth,
-                                                            SampleState& state,
-                                                            double weight) const;
+                                                            SampleState& state, double weight,
+                                                            const Material* medium) const;
 extern template Color Integrator::trace<Integrator::kRecord>(const Ray& ray, int depth,
-                                                             SampleState& state,
-                                                             double weight) const;
+                                                             SampleState& state, double weight,
+                                                             const Material* medium) const;
 
 Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double weight) const {
   if (state.recorder) [[unlikely]]
@@ -249,12 +253,34 @@ inline bool Integrator::passes(std::uint32_t index, const Ray& segment, Color& t
   // material's transmission * color once.
   if (facts.shadow == ObjectFacts::kOpaque) return !crosses(index, segment);
   if (facts.shadow == ObjectFacts::kPass) return true;
+  if (facts.fade) [[unlikely]]
+    return passes_fading(index, segment, through);
   if (facts.shadow == ObjectFacts::kFilter) {
     if (!crosses(index, segment)) return true;
     through = mul(through, filters_[std::size_t(facts.material)]);
     return max_component(through) > 0;
   }
   return passes_walk(index, segment, through);
+}
+
+bool Integrator::passes_fading(std::uint32_t index, const Ray& segment, Color& through) const {
+  const ObjectFacts& facts = objects_[index];
+  if (facts.shadow == ObjectFacts::kFilter) {
+    if (crosses(index, segment)) through = mul(through, filters_[std::size_t(facts.material)]);
+  } else if (!passes_walk(index, segment, through)) {
+    return false;
+  }
+  // The length inside: the solid's spans over the whole line, cut to the segment.
+  SpanList inside;
+  spans(scene_.objects[index], segment, inside);
+  double length_inside = 0;
+  for (const Span& s : inside) {
+    const double from = std::max(s.in.t, segment.tmin), to = std::min(s.out.t, segment.tmax);
+    if (to > from) length_inside += to - from;
+  }
+  if (length_inside > 0)
+    through = mul(through, interior_fade(*facts.fade, length_inside * length(segment.d)));
+  return max_component(through) > 0;
 }
 
 bool Integrator::passes_walk(std::uint32_t index, const Ray& segment, Color& through) const {

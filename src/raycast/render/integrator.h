@@ -65,8 +65,11 @@ class Integrator {
 
  private:
   /// whitted() in one mode for the whole recursion (TraceMode).
+  /// `medium`: the fading interior the ray starts in (its radiance is attenuated by the distance
+  /// to its hit, interior_fade), or nullptr.
   template <TraceMode M>
-  Color trace(const Ray& ray, int depth, SampleState& state, double weight) const;
+  Color trace(const Ray& ray, int depth, SampleState& state, double weight,
+              const Material* medium = nullptr) const;
   /// What a ray that hits nothing brings: the background, or the sky sphere across the fogs.
   Color missed(const Ray& ray) const {
     return atmosphere_ ? miss_color(*atmosphere_, scene_.render.background, ray)
@@ -80,7 +83,7 @@ class Integrator {
   /// ray is announced and its subtree traced in kCount.
   template <TraceMode M>
   [[gnu::always_inline]] Color trace_child(const Ray& ray, int depth, SampleState& state,
-                                           double weight) const;
+                                           double weight, const Material* medium) const;
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
   /// li_diagnostic() after its query (found, hit: scene.intersect's answer); counts no ray.
@@ -98,6 +101,9 @@ class Integrator {
   /// passes() for an object with materials per part or a textured transmissive one: a walk of
   /// its crossings.
   bool passes_walk(std::uint32_t index, const Ray& segment, Color& through) const;
+  /// passes() for an object whose interior fades light: the filter of its kind, then the fade
+  /// over the length of the segment inside it.
+  bool passes_fading(std::uint32_t index, const Ray& segment, Color& through) const;
   /// Whether the segment crosses object `index` (occluded(), with planes and spheres called
   /// directly).
   bool crosses(std::uint32_t index, const Ray& segment) const;
@@ -157,6 +163,8 @@ class Integrator {
     // The shape when it is an untransformed plane or sphere (crosses() calls it directly).
     const Plane* plane = nullptr;
     const Sphere* sphere = nullptr;
+    // Its material when light fading inside it (Material::fade_distance) dims shadow rays.
+    const Material* fade = nullptr;
   };
 
   const Scene& scene_;
