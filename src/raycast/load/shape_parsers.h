@@ -38,5 +38,6 @@ ShapeVariant parse_shape(std::type_identity<Implicit>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<MeshShape>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Revolution>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Isosurface>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Prism>, Fields& f);
 
 }  // namespace raycast

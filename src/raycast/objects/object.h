@@ -14,6 +14,7 @@
 #include "geometry/plane.h"
 #include "geometry/polygon.h"
 #include "geometry/polyhedron.h"
+#include "geometry/prism.h"
 #include "geometry/quadric.h"
 #include "geometry/revolution.h"
 #include "geometry/shape.h"
@@ -33,7 +34,7 @@ namespace raycast {
 using ShapeVariant =
     std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder,
                  Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, Revolution, MeshShape,
-                 CsgShape, InstanceShape, Isosurface>;
+                 CsgShape, InstanceShape, Isosurface, Prism>;
 
 struct Object {
   ShapeVariant shape;
