@@ -91,6 +91,11 @@ const Case kCases[] = {
      "prism { conic_sweep linear_spline 0, 1, 5, <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> "
      "rotate -90*x translate 3*z }",
      2},
+    // timrom.ttf from the library path: the I's stem is about x in [0.12, 0.22] around 0.171,
+    // its front face at z = 0 (the letters run from z = 0 to the thickness).
+    {"text", "text { ttf \"timrom.ttf\", \"I\", 1, 0 translate <-0.171, -0.34, 3> }", 3},
+    {"text_between_letters", "text { ttf \"timrom.ttf\" \"II\" 1, 0 translate <-0.4, -0.34, 3> }",
+     std::numeric_limits<double>::infinity()},
     {"mesh", "mesh { triangle { <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } }", 3},
     {"triangle", "triangle { <-1, -1, 2>, <1, -1, 4>, <0, 1, 3> }", 3},
     {"smooth_triangle",

@@ -1,11 +1,13 @@
-// Parsers for the swept shapes: prism (and text, whose letters are prisms).
+// Parsers for the swept shapes: prism, and text (whose letters are prisms).
 #include <array>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "geometry/prism_spline.h"
 #include "load/shape_parsers.h"
+#include "load/text_shape.h"
 
 namespace raycast {
 
@@ -52,6 +54,33 @@ ShapeVariant parse_shape(std::type_identity<Prism>, Fields& f) {
     return make_prism(spline_contours(points, spline), z0, z1, sweep == "conic", open);
   } catch (const std::invalid_argument& e) {
     fail_at(f.ctx(), list, f.name("points") + ": " + e.what());
+  }
+}
+
+}  // namespace raycast
+
+namespace raycast {
+
+ShapeVariant parse_shape(std::type_identity<Text>, Fields& f) {
+  const std::string font = f.string("font");
+  const std::string text = f.string("string");
+  const double thickness = f.positive("thickness", 1);
+  Vec3 offset;
+  if (const YamlNode o = f.optional("offset")) {
+    const auto v = read_numbers(f.ctx(), o, f.name("offset"));
+    if (v.size() != 2 && v.size() != 3)
+      fail_at(f.ctx(), o, f.name("offset") + " must be [x, y] or [x, y, z], got " + describe(o));
+    offset = {v[0], v[1], v.size() == 3 ? v[2] : 0};
+  }
+  const std::filesystem::path p(font);
+  const std::string path =
+      p.is_absolute() ? font : (std::filesystem::path(f.ctx().dir) / p).string();
+  try {
+    return make_text_shape(path, text, thickness, offset);
+  } catch (const std::runtime_error& e) {
+    f.fail("font", f.name("font") + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    f.fail("string", f.name("string") + ": " + e.what());
   }
 }
 

@@ -14,6 +14,7 @@
 #include "geometry/prism_spline.h"
 #include "io/scene_file.h"
 #include "load/pov_textures.h"
+#include "load/text_shape.h"
 #include "objects/csg_tree.h"
 #include "pov/checker_grid.h"
 #include "pov/ini_file.h"
@@ -435,8 +436,13 @@ class Builder {
                           n.conic_sweep, n.open);
       }
       case Node::Text:
-        warn(n.pos, "text", "the letters are left out");
-        return std::nullopt;
+        if (n.font.empty()) return std::nullopt;  // not found: the reader warned
+        try {
+          return make_text_shape(n.font, n.text, n.values[0], n.points[0], mirror_);
+        } catch (const std::runtime_error& e) {
+          warn(n.pos, "text in this font", e.what());
+          return std::nullopt;
+        }
       case Node::Triangle: {
         // Mirroring reverses the winding: swap two corners to keep the face's side.
         const std::size_t b = mirror_ ? 2 : 1, c = mirror_ ? 1 : 2;

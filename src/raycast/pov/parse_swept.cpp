@@ -65,12 +65,14 @@ void Interpreter::text_body(Node& n) {
   if (is_word("ttf")) {
     next();
     font = string_value("the font file");
+    skip_comma();
   } else if (is_word("internal")) {
     next();
     font = internal_font(static_cast<long>(number("the internal font's number")));
   } else {
     unexpected("ttf \"font.ttf\" or internal N");
   }
+  skip_comma();
   n.text = string_value("the text");
   skip_comma();
   const double thickness = number("the text's thickness");
