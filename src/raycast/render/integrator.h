@@ -66,6 +66,11 @@ class Integrator {
   /// whitted() in one mode for the whole recursion (TraceMode).
   template <TraceMode M>
   Color trace(const Ray& ray, int depth, SampleState& state, double weight) const;
+  /// trace() for a reflected or refracted ray: in kRecord with RayRecorder::camera_ray_only, the
+  /// ray is announced and its subtree traced in kCount.
+  template <TraceMode M>
+  [[gnu::always_inline]] Color trace_child(const Ray& ray, int depth, SampleState& state,
+                                           double weight) const;
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
   /// li_diagnostic() after its query (found, hit: scene.intersect's answer); counts no ray.

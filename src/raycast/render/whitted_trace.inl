@@ -84,6 +84,20 @@ Color Integrator::trace(const Ray& ray, int depth, SampleState& state, double we
 }
 
 template <Integrator::TraceMode M>
+inline Color Integrator::trace_child(const Ray& ray, int depth, SampleState& state,
+                                     double weight) const {
+  if constexpr (M == kRecord) {
+    if (state.recorder->camera_ray_only) {
+      state.recorder->begin_ray(ray, depth);
+      const Color radiance = trace<kCount>(ray, depth, state, weight);
+      state.recorder->end_ray(radiance);
+      return radiance;
+    }
+  }
+  return trace<M>(ray, depth, state, weight);
+}
+
+template <Integrator::TraceMode M>
 inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int depth,
                                      SampleState& state, double weight) const {
   // The material is resolved once per hit (CSG and instances search their parts for it).
@@ -147,14 +161,14 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
-    result += w_reflect *
-              trace<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
+    result += w_reflect * trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
+                                         weight * w_reflect);
   }
   if (w_refract > 0 && weight * w_refract >= cutoff) {
     if constexpr (M != kPlain) ++state.recorder->counts.refraction;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract);
-    result += w_refract *
-              trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
+    result += w_refract * trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
+                                         weight * w_refract);
   }
   return result;
 }
@@ -207,15 +221,15 @@ Color Integrator::textured_hit(const Ray& ray, const SceneHit& hit, std::size_t 
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
     const Color mirrored =
-        trace<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
+        trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
     result += look.finish.reflection_metallic ? w_reflect * mul(look.pigment, mirrored)
                                               : w_reflect * mirrored;
   }
   if (w_through > 0 && weight * w_through >= cutoff) {
     if constexpr (M != kPlain) ++state.recorder->counts.refraction;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_through);
-    result += mul(look.through, trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
-                                         weight * w_through));
+    result += mul(look.through, trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1,
+                                               state, weight * w_through));
   }
   return result;
 }
