@@ -75,6 +75,7 @@ ShapeVariant parse_shape(std::type_identity<Text>, Fields& f) {
   const std::filesystem::path p(font);
   const std::string path =
       p.is_absolute() ? font : (std::filesystem::path(f.ctx().dir) / p).string();
+  if (f.ctx().files) f.ctx().files->push_back(path);  // a data file of the scene
   try {
     return make_text_shape(path, text, thickness, offset);
   } catch (const std::runtime_error& e) {
