@@ -11,9 +11,11 @@
 #include <set>
 #include <sstream>
 
+#include "geometry/prism_spline.h"
 #include "io/scene_file.h"
 #include "load/formula_noise_registration.h"
 #include "load/pov_textures.h"
+#include "load/text_shape.h"
 #include "objects/csg_tree.h"
 #include "pov/checker_grid.h"
 #include "pov/ini_file.h"
@@ -27,6 +29,13 @@ namespace {
 
 using pov::Node;
 using pov::XformOp;
+
+PrismSpline prism_spline(const std::string& pov_name) {
+  if (pov_name == "quadratic_spline") return PrismSpline::kQuadratic;
+  if (pov_name == "cubic_spline") return PrismSpline::kCubic;
+  if (pov_name == "bezier_spline") return PrismSpline::kBezier;
+  return PrismSpline::kLinear;
+}
 
 // Builds the engine's scene from the interpreted description. POV-Ray's frame is left-handed
 // when (up x direction) . right > 0 (the default camera): then z is negated everywhere, which
@@ -470,6 +479,23 @@ class Builder {
         for (const Vec3& p : n.points) profile.push_back({p.x, p.y});
         return make_revolution(profile, ProfileCurve::kLinear, n.kind == Node::Sor && !n.open);
       }
+      case Node::Prism: {
+        // Swept along y in POV-Ray, along z in raycast: the axial turn takes raycast's (x, y, h)
+        // to (x, h, -y), which is POV-Ray's (x, h, z) mirrored when y = z.
+        axial = true;
+        std::vector<std::array<double, 2>> points;
+        for (const Vec3& p : n.points) points.push_back({p.x, mirror_ ? p.y : -p.y});
+        return make_prism(spline_contours(points, prism_spline(n.spline)), n.values[0], n.values[1],
+                          n.conic_sweep, n.open);
+      }
+      case Node::Text:
+        if (n.font.empty()) return std::nullopt;  // not found: the reader warned
+        try {
+          return make_text_shape(n.font, n.text, n.values[0], n.points[0], mirror_);
+        } catch (const std::runtime_error& e) {
+          warn(n.pos, "text in this font", e.what());
+          return std::nullopt;
+        }
       case Node::Triangle: {
         // Mirroring reverses the winding: swap two corners to keep the face's side.
         const std::size_t b = mirror_ ? 2 : 1, c = mirror_ ? 1 : 2;

@@ -201,6 +201,8 @@ class Interpreter {
   Value spline_block(const Pos& at);
   void isosurface_body(Node& n, int depth);
   void spline_points(Node& n, int min_count);
+  void prism_body(Node& n);
+  void text_body(Node& n);
   void triangle_body(Node& n, bool smooth);
   void place_declared(const std::shared_ptr<const Node>& object, Node& n);
   bool is_declared_object();
@@ -242,6 +244,10 @@ class Interpreter {
                  const std::string& dir);
   void include(const Pos& at);
   std::string find_include(const std::string& name, const Pos& at);
+  /// The folders searched for included and data files: the including file's, the scene's, the
+  /// library paths.
+  std::vector<std::string> library_dirs() const;
+  std::optional<std::string> find_on_library_path(const std::string& name) const;
   void close_file();
   /// Skips raw tokens to the #else / #elseif / #end (or, in a switch, #case / #range) of the
   /// construct being skipped; returns that directive (nested constructs are skipped whole).

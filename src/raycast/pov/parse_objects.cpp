@@ -28,6 +28,8 @@ const std::map<std::string, Node::Kind>& object_kinds() {
                                                           {"isosurface", Node::Isosurface},
                                                           {"lathe", Node::Lathe},
                                                           {"sor", Node::Sor},
+                                                          {"prism", Node::Prism},
+                                                          {"text", Node::Text},
                                                           {"mesh", Node::Mesh},
                                                           {"mesh2", Node::Mesh},
                                                           {"triangle", Node::Triangle},
@@ -42,8 +44,8 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 
 bool is_unbuilt_shape(const std::string& w) {
   static constexpr std::string_view shapes[] = {
-      "blob",          "height_field",  "prism",      "sphere_sweep", "superellipsoid", "text",
-      "julia_fractal", "bicubic_patch", "parametric", "polygon",      "lemon",          "ovus"};
+      "blob",          "height_field", "sphere_sweep", "superellipsoid", "julia_fractal",
+      "bicubic_patch", "parametric",   "polygon",      "lemon",          "ovus"};
   for (const std::string_view s : shapes)
     if (s == w) return true;
   return false;
@@ -364,6 +366,12 @@ void Interpreter::object_body(Node& n, int depth) {
       break;
     case Node::Sor:
       spline_points(n, 4);
+      break;
+    case Node::Prism:
+      prism_body(n);
+      break;
+    case Node::Text:
+      text_body(n);
       break;
     default:
       break;  // poly, meshes: read by object(); CSG: children in the modifier loop
@@ -796,7 +804,7 @@ bool Interpreter::modifier(Node& n, int depth) {
     n.inverse = !n.inverse;
   } else if (w == "open" &&
              (n.kind == Node::Cylinder || n.kind == Node::Cone || n.kind == Node::Sor ||
-              n.kind == Node::Lathe || n.kind == Node::Isosurface)) {
+              n.kind == Node::Lathe || n.kind == Node::Isosurface || n.kind == Node::Prism)) {
     next();
     n.open = boolean_option();
   } else if (w == "bounded_by") {

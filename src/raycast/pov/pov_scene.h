@@ -122,6 +122,8 @@ struct Node {
     Isosurface,
     Lathe,
     Sor,
+    Prism,  // points: the contour's <x, z> as (x, z, 0); values: the two heights
+    Text,   // font, text; values: the thickness; points: the offset between letters
     Mesh,
     Triangle,  // triangle / smooth_triangle outside a mesh: points, and normals when smooth
     Union,
@@ -141,7 +143,9 @@ struct Node {
   std::shared_ptr<const FnNode> function;     // isosurface: f(x, y, z) - threshold
   std::optional<std::array<Vec3, 2>> bounds;  // poly: bounded_by / intersection box; isosurface box
   bool contained_by_sphere = false;           // isosurface: bounds hold the sphere's box
-  std::string spline;                         // lathe: linear_spline, cubic_spline, bezier_spline
+  std::string spline;  // lathe, prism: linear_spline, quadratic_spline, cubic_spline, bezier_spline
+  bool conic_sweep = false;  // prism: conic_sweep (else linear_sweep)
+  std::string font, text;    // text: the font file as found on the library path, the string
   // mesh: triangles of vertex indices, and normals per vertex when smooth
   std::vector<Vec3> vertices, normals;
   std::vector<std::array<int, 3>> triangles;
