@@ -6,7 +6,9 @@
 #include <map>
 #include <numbers>
 
+#include "math/float_error.h"
 #include "pov/interpreter.h"
+#include "pov/pov_transform.h"
 
 namespace raycast::pov {
 
@@ -90,6 +92,34 @@ void fold_poly_bounds(Node& n) {
       break;
     }
   }
+}
+
+// The box around a bounded_by object that a poly takes as its bounds: a box or a sphere, moved
+// by the object's own transformations (the box of the moved corners); nullopt for other shapes
+// and singular transformations. POV-Ray tests the bound only to skip rays that miss it; a poly
+// that reaches beyond it shows there only on rays through it, which this box approximates.
+std::optional<std::array<Vec3, 2>> poly_bounds_of(const Node& b) {
+  Vec3 lo, hi;
+  if (b.kind == Node::Box && b.points.size() == 2) {
+    lo = min(b.points[0], b.points[1]);
+    hi = max(b.points[0], b.points[1]);
+  } else if (b.kind == Node::Sphere && !b.points.empty() && !b.values.empty()) {
+    const double r = std::abs(b.values[0]);
+    lo = b.points[0] - Vec3{r, r, r};
+    hi = b.points[0] + Vec3{r, r, r};
+  } else {
+    return std::nullopt;
+  }
+  if (b.xforms.empty()) return std::array<Vec3, 2>{lo, hi};
+  const std::optional<Transform> t = pov_transform(b.xforms);
+  if (!t) return std::nullopt;
+  Vec3 out_lo{kInfinity, kInfinity, kInfinity}, out_hi = -out_lo;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 p = t->point({c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z});
+    out_lo = min(out_lo, p);
+    out_hi = max(out_hi, p);
+  }
+  return std::array<Vec3, 2>{out_lo, out_hi};
 }
 
 std::size_t weight(const Node& n) {
@@ -817,9 +847,10 @@ bool Interpreter::modifier(Node& n, int depth) {
       while (!is_symbol("}")) {
         std::optional<Node> b = object(depth + 1);
         if (!b) continue;
-        // Only an optimisation in POV-Ray; a poly needs it as its bounds in raycast.
-        if (b->kind == Node::Box && b->xforms.empty() && n.kind == Node::Poly)
-          n.bounds = std::array<Vec3, 2>{b->points[0], b->points[1]};
+        // Only an optimisation in POV-Ray; a poly needs it as its bounds in raycast (in its own
+        // space: before any transformation of the poly).
+        if (n.kind == Node::Poly && n.xforms.empty())
+          if (const auto box = poly_bounds_of(*b)) n.bounds = box;
         n.bounded_by.push_back(std::move(*b));  // for clipped_by { bounded_by }
       }
     }
