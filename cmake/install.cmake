@@ -44,7 +44,7 @@ install(EXPORT raycastTargets NAMESPACE raycast:: DESTINATION ${raycast_cmake_di
 
 # The config finds what the static libraries link against.
 set(raycast_deps "list(APPEND CMAKE_MODULE_PATH \${CMAKE_CURRENT_LIST_DIR})
-find_dependency(yaml-cpp)\nfind_dependency(LibYAML)\nfind_dependency(TBB)\nfind_dependency(PNG)\n")
+find_dependency(yaml-cpp)\nfind_dependency(LibYAML)\nfind_dependency(TBB)\nfind_dependency(PNG)\nfind_dependency(Freetype)\n")
 # OpenVDB, assimp and OpenEXR are used through plugins (lib/raycast/libraycast_*.so), loaded at
 # run time: users link nothing of them.
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/raycastConfig.cmake.in

@@ -188,5 +188,33 @@ TEST(CombineSpans, ManySpans_GrowPastInlineStorage) {
   EXPECT_EQ(out[39].out.t, 157);
 }
 
+TEST(ComplementSpans, GapsBetweenTheSpans_OpenAtBothEnds) {
+  SpanList s = make_list({{1, 3}, {4, 6}}, 1);
+  complement_spans(s);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].in.t, -kInfinity);
+  EXPECT_EQ(s[0].in.part, kNoSurface);
+  EXPECT_EQ(s[0].out.t, 1);
+  EXPECT_EQ(s[0].out.prim, 1000);  // the span's own crossing
+  EXPECT_EQ(s[1].in.t, 3);
+  EXPECT_EQ(s[1].out.t, 4);
+  EXPECT_EQ(s[2].in.t, 6);
+  EXPECT_EQ(s[2].out.t, kInfinity);
+  EXPECT_EQ(s[2].out.part, kNoSurface);
+  complement_spans(s);  // twice: the spans again
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].in.t, 1);
+  EXPECT_EQ(s[1].out.t, 6);
+  SpanList all;
+  all.add(LocalHit{.t = -kInfinity, .part = kNoSurface},
+          LocalHit{.t = kInfinity, .part = kNoSurface});
+  complement_spans(all);
+  EXPECT_TRUE(all.empty());
+  complement_spans(all);
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0].in.t, -kInfinity);
+  EXPECT_EQ(all[0].out.t, kInfinity);
+}
+
 }  // namespace
 }  // namespace raycast

@@ -80,6 +80,22 @@ const Case kCases[] = {
     {"lathe_bezier", "lathe { bezier_spline 4, <0, -1>, <1, -1>, <1, 1>, <0, 1> translate 3*z }",
      2.25},
     {"sor", "sor { 4, <1, -2>, <1, -1>, <1, 1>, <1, 2> translate 3*z }", 2},
+    // The contour's second coordinate is z: mirrored the wrong way the prism would be behind.
+    {"prism", "prism { -1, 1, 4, <-1, 3>, <1, 3>, <0, 6>, <-1, 3> }", 3},
+    // From <-1, 3> to <1, 3> after the control point <0, 5>: q(s) = (-1 + s / 2 + 3 s^2 / 2,
+    // 3 - s + s^2) meets x = 0 at s = 2/3, z = 25/9.
+    {"prism_quadratic",
+     "prism { quadratic_spline -1, 1, 5, <0, 5>, <-1, 3>, <1, 3>, <0, 5>, <-1, 3> }", 25.0 / 9},
+    // The square swept to the apex, turned so the apex is at z = 3 and the base cap at z = 2.
+    {"prism_conic",
+     "prism { conic_sweep linear_spline 0, 1, 5, <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> "
+     "rotate -90*x translate 3*z }",
+     2},
+    // timrom.ttf from the library path: the I's stem is about x in [0.12, 0.22] around 0.171,
+    // its front face at z = 0 (the letters run from z = 0 to the thickness).
+    {"text", "text { ttf \"timrom.ttf\", \"I\", 1, 0 translate <-0.171, -0.34, 3> }", 3},
+    {"text_between_letters", "text { ttf \"timrom.ttf\" \"II\" 1, 0 translate <-0.4, -0.34, 3> }",
+     std::numeric_limits<double>::infinity()},
     {"mesh", "mesh { triangle { <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } }", 3},
     {"triangle", "triangle { <-1, -1, 2>, <1, -1, 4>, <0, 1, 3> }", 3},
     {"smooth_triangle",

@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "load/demo_scene.h"
@@ -102,6 +103,28 @@ TEST(ExplainPixel, EveryPixelOfTheDemo_EqualsTheRender) {
 
 TEST(ExplainPixel, EveryPixelOfTheGlassScene_EqualsTheRender) {
   expect_every_pixel_explained(load_scene_text(kGlassScene), 32, 24);
+}
+
+TEST(ExplainPixel, GlassSceneUnderSkyAndFog_EqualsTheRender) {
+  // Misses see the sky and every segment the fog: the recording mode must add them as the render
+  // does.
+  Scene scene = load_scene_text(kGlassScene);
+  auto a = std::make_shared<Atmosphere>();
+  SkySphere sky;
+  texture::Pigment p;
+  p.kind = texture::Pigment::Kind::kColorMap;
+  p.pattern = texture::make_pattern(texture::PatternKind::kGradient);
+  p.pattern.vector = {0, 1, 0};
+  p.color_map = {{0, {{1, 0.5, 0}, 0, 0}}, {1, {{0, 0.2, 1}, 0, 0}}};
+  sky.layers.push_back(p);
+  a->sky = sky;
+  Fog fog;
+  fog.color = {0.5, 0.6, 0.7};
+  fog.filter = 0.3;
+  fog.distance = 8;
+  a->fogs.push_back(fog);
+  scene.render.atmosphere = a;
+  expect_every_pixel_explained(scene, 32, 24);
 }
 
 TEST(ExplainPixel, EveryPixelOfTheExampleScenes_EqualsTheRender) {

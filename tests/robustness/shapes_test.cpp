@@ -54,6 +54,11 @@ const std::map<std::string, std::string>& examples() {
       {"revolution",
        "{profile: [[0, 0], [0.7, 0], [0.7, 0.1], [0.1, 0.3], [0.1, 1.2], [0.8, 1.6]], curve: "
        "linear}"},
+      {"prism",
+       "{points: [[0.3, -0.3], [1, 0], [0.3, 0.3], [0, 1], [-0.3, 0.3], [-1, 0], [-0.3, -0.3], "
+       "[0, -1], [0.3, -0.3], [1, 0], [0.3, 0.3]], spline: cubic, heights: [0.2, 1.5], sweep: "
+       "conic}"},
+      {"text", "{font: /usr/share/povray-3.7/include/timrom.ttf, string: 'Bo8', thickness: 0.4}"},
       {"isosurface", "{grid: '" + std::string(RAYCAST_SOURCE_DIR) +
                          "/tests/volume/data/gaussians.raw', iso: 0.5}"},
   };

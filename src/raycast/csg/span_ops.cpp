@@ -128,4 +128,17 @@ void combine_spans(CsgOp op, const SpanList& a, const SpanList& b, SpanList& out
   }
 }
 
+void complement_spans(SpanList& spans) {
+  const LocalHit lo{.t = -kInfinity, .part = kNoSurface}, hi{.t = kInfinity, .part = kNoSurface};
+  SpanList gaps;
+  LocalHit from = lo;
+  for (const Span& s : spans) {
+    if (from.t < s.in.t) gaps.add(from, s.in);
+    from = s.out;
+  }
+  if (from.t < kInfinity) gaps.add(from, hi);
+  spans.clear();
+  for (const Span& s : gaps) spans.push_back(s);
+}
+
 }  // namespace raycast

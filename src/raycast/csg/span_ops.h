@@ -33,4 +33,10 @@ constexpr bool csg_inside(CsgOp op, bool a, bool b) {
 /// its inline capacity.
 void combine_spans(CsgOp op, const SpanList& a, const SpanList& b, SpanList& out);
 
+/// The complement of a solid's spans over the whole line (POV-Ray's `inverse`), in place: the
+/// gaps between the spans, with ends at -inf or +inf (part kNoSurface) where the spans leave the
+/// line open. Each end keeps the crossing it had (the caller flips the normals). `spans` must
+/// be sorted and disjoint, as shapes produce them.
+void complement_spans(SpanList& spans);
+
 }  // namespace raycast

@@ -56,6 +56,23 @@ void polish(const Revolution::Segment& g, double z0, double z1, double B, double
   }
 }
 
+// Whether the line z = z0 + z1 t, r^2 = B t^2 + 2 E t + F stays out of the segment's bounding
+// ring (z_lo <= z <= z_hi, r <= r_hi: the control points' hull holds the curve), so that it
+// cannot cross the segment. Widened by a relative margin far above the polished roots' rounding;
+// for a horizontal line the test is the one the horizontal branch below makes, at height z0.
+bool misses_segment(const Revolution::Segment& g, double z0, double z1, bool horizontal, double B,
+                    double E, double F) {
+  const double margin = 1e-9 * (1 + std::max(std::abs(g.z_lo), std::abs(g.z_hi)) + g.r_hi);
+  const double lo = g.z_lo - margin, hi = g.z_hi + margin;
+  const double r2 = (g.r_hi + margin) * (g.r_hi + margin);
+  if (horizontal) return z0 < lo || z0 > hi || (B > 0 && F - E * (E / B) > r2);
+  double ta = (lo - z0) / z1, tb = (hi - z0) / z1;
+  if (ta > tb) std::swap(ta, tb);
+  // The least r^2 over the slab's stretch of the line: at the vertex, or the nearer end.
+  const double t = B > 0 ? std::clamp(-E / B, ta, tb) : ta;
+  return B * t * t + 2 * E * t + F > r2;
+}
+
 // Every crossing of the line with the revolved segments and caps, unsorted.
 int crossings(const Revolution& sh, const Ray& ray, Crossing* out) {
   int n = 0;
@@ -66,6 +83,7 @@ int crossings(const Revolution& sh, const Ray& ray, Crossing* out) {
   const bool horizontal = std::abs(z1) <= kHorizontal * length(d);
   for (std::size_t i = 0; i < sh.segments.size(); ++i) {
     const Revolution::Segment& g = sh.segments[i];
+    if (misses_segment(g, z0, z1, horizontal, B, E, F)) continue;
     Polynomial w = g.z;
     w.c[0] -= z0;  // w(s) = z(s) - z0
     double roots[2 * 3];

@@ -8,6 +8,7 @@
 #include "geometry/shape_error.h"
 #include "io/huge_pages.h"
 #include "io/scene_file.h"
+#include "load/formula_noise_registration.h"
 #include "load/pov_loader.h"
 #include "load/read_materials.h"
 #include "load/read_settings.h"
@@ -350,6 +351,7 @@ class Loader {
 // of it), without a copy of a large file.
 Scene load_owned_text(std::string text, const std::string& name, const std::string& dir,
                       int frame) {
+  register_formula_noise();  // the formulas' noise1, noise2, noise3
   Scene scene;
   scene.source = name;
   SourceContext ctx{name, dir, frame};

@@ -11,8 +11,11 @@
 #include <set>
 #include <sstream>
 
+#include "geometry/prism_spline.h"
 #include "io/scene_file.h"
+#include "load/formula_noise_registration.h"
 #include "load/pov_textures.h"
+#include "load/text_shape.h"
 #include "objects/csg_tree.h"
 #include "pov/checker_grid.h"
 #include "pov/ini_file.h"
@@ -26,6 +29,13 @@ namespace {
 
 using pov::Node;
 using pov::XformOp;
+
+PrismSpline prism_spline(const std::string& pov_name) {
+  if (pov_name == "quadratic_spline") return PrismSpline::kQuadratic;
+  if (pov_name == "cubic_spline") return PrismSpline::kCubic;
+  if (pov_name == "bezier_spline") return PrismSpline::kBezier;
+  return PrismSpline::kLinear;
+}
 
 // Builds the engine's scene from the interpreted description. POV-Ray's frame is left-handed
 // when (up x direction) . right > 0 (the default camera): then z is negated everywhere, which
@@ -47,6 +57,7 @@ class Builder {
     camera();
     scene_.render.max_depth = std::max(0, s_.max_trace_level - 1);
     scene_.render.background = rgb(s_.background);
+    atmosphere();
     scene_.render.ambient = rgb(s_.ambient_light);
     if (s_.adc_bailout) scene_.render.bailout = *s_.adc_bailout;
     if (s_.settings.width > 0) scene_.image.width = s_.settings.width;
@@ -98,6 +109,59 @@ class Builder {
     return std::pow(c, gamma_);
   }
   Color rgb(const pov::Colour& c) const { return {linear(c.r), linear(c.g), linear(c.b)}; }
+
+  // The sky sphere and the fogs: their transformations and the mirror map raycast's world to
+  // the sky's and each fog's own space; colours made linear as every other colour.
+  void atmosphere() {
+    if (!s_.sky_sphere && s_.fogs.empty() && s_.rainbows.empty()) return;
+    auto a = std::make_shared<Atmosphere>();
+    const Transform world = mirror_ ? Transform::scale({1, 1, -1}) : Transform();
+    if (s_.sky_sphere) {
+      SkySphere sky;
+      for (const texture::Pigment& p : s_.sky_sphere->pigments)
+        sky.layers.push_back(*pov_textures_.pigment(p));
+      const pov::Colour& e = s_.sky_sphere->emission;
+      sky.emission = {e.r, e.g, e.b};
+      sky.to_sky = own_space(s_.sky_sphere->xforms) * world;
+      a->sky = std::move(sky);
+    }
+    for (const pov::Fog& f : s_.fogs) {
+      Fog fog;
+      fog.kind = f.type == 2 ? Fog::Kind::kGround : Fog::Kind::kConstant;
+      fog.color = rgb(f.colour);
+      fog.filter = f.colour.filter;
+      fog.transmit = f.colour.transmit;
+      fog.distance = f.distance;
+      fog.offset = f.offset;
+      fog.alt = f.alt;
+      fog.up = normalize(f.up);
+      fog.turbulence = f.turbulence;
+      fog.turb_depth = f.turb_depth;
+      fog.to_fog = own_space(f.xforms) * world;
+      a->fogs.push_back(fog);
+    }
+    for (const pov::Rainbow& r : s_.rainbows) a->rainbows.push_back(rainbow(r));
+    scene_.render.atmosphere = std::move(a);
+  }
+  Rainbow rainbow(const pov::Rainbow& r) const {
+    Rainbow out;
+    out.direction = normalize(m(r.direction));
+    out.up = m(r.up);
+    out.angle = r.angle;
+    out.width = r.width;
+    out.distance = r.distance;
+    out.jitter = r.jitter;
+    out.arc_angle = r.arc_angle;
+    out.falloff_angle = r.falloff_angle;
+    for (const pov::MapEntry& e : r.map)
+      out.colors.push_back({e.at, {rgb(e.colour), e.colour.filter, e.colour.transmit}});
+    return out;
+  }
+  // The inverse of a block's transformations (POV-Ray's world -> the block's own space); the
+  // interpreter refused singular ones.
+  static Transform own_space(const std::vector<XformOp>& ops) {
+    return pov::pov_transform(ops).value_or(Transform()).inverse();
+  }
 
   void camera() {
     const pov::Camera& c = s_.camera;
@@ -207,13 +271,23 @@ class Builder {
     if (it == stacks_.end()) it = stacks_.emplace(&t, pov_textures_.stack(t)).first;
     mat.texture = it->second;
     mat.color = rgb(t.pigment.c0);
-    if (const std::optional<double> ior = t.ior ? t.ior : t.finish.ior) mat.ior = *ior;
+    set_interior(t, mat);
     const Transform world = mirror_ ? Transform::scale({1, 1, -1}) : Transform();
     mat.texture_transform = frame.inverse() * (object ? world * *object : world);
     mat.name = t.name;
     if (mat.name.empty()) mat.name.append("m").append(std::to_string(scene_.materials.size()));
     scene_.materials.push_back(std::move(mat));
     return static_cast<int>(scene_.materials.size()) - 1;
+  }
+
+  // The interior's ior and fade (POV-Ray 3.1's finish items where the interior has none).
+  void set_interior(const pov::Texture& t, Material& mat) const {
+    const pov::Interior in = t.interior.value_or(pov::Interior{});
+    if (const std::optional<double> ior = in.ior ? in.ior : t.finish.ior) mat.ior = *ior;
+    const bool own = in.fade_distance != 0 || in.fade_power != 0;
+    mat.fade_distance = own ? in.fade_distance : t.finish.fade_distance;
+    mat.fade_power = own ? in.fade_power : t.finish.fade_power;
+    mat.fade_color = rgb(in.fade_color);
   }
 
   int material(const pov::Texture& t, const Transform& frame,
@@ -248,26 +322,14 @@ class Builder {
     mat.reflection = std::min(1.0, f.reflection);
     mat.transmission = tr;
     mat.fresnel = f.fresnel && tr > 0;
-    if (const std::optional<double> ior = t.ior ? t.ior : t.finish.ior) mat.ior = *ior;
-    const MaterialKey key = {mat.color.x,
-                             mat.color.y,
-                             mat.color.z,
-                             double(mat.has_checker),
-                             mat.checker.c0.x,
-                             mat.checker.c0.y,
-                             mat.checker.c0.z,
-                             mat.checker.c1.x,
-                             mat.checker.c1.y,
-                             mat.checker.c1.z,
-                             mat.checker.scale,
-                             mat.ambient,
-                             mat.diffuse,
-                             mat.specular,
-                             mat.shininess,
-                             mat.reflection,
-                             mat.transmission,
-                             double(mat.fresnel),
-                             mat.ior};
+    set_interior(t, mat);
+    const MaterialKey key = {
+        mat.color.x,      mat.color.y,         mat.color.z,       double(mat.has_checker),
+        mat.checker.c0.x, mat.checker.c0.y,    mat.checker.c0.z,  mat.checker.c1.x,
+        mat.checker.c1.y, mat.checker.c1.z,    mat.checker.scale, mat.ambient,
+        mat.diffuse,      mat.specular,        mat.shininess,     mat.reflection,
+        mat.transmission, double(mat.fresnel), mat.ior,           mat.fade_distance,
+        mat.fade_power,   mat.fade_color.x,    mat.fade_color.y,  mat.fade_color.z};
     const auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
     mat.name = t.name;
@@ -417,6 +479,23 @@ class Builder {
         for (const Vec3& p : n.points) profile.push_back({p.x, p.y});
         return make_revolution(profile, ProfileCurve::kLinear, n.kind == Node::Sor && !n.open);
       }
+      case Node::Prism: {
+        // Swept along y in POV-Ray, along z in raycast: the axial turn takes raycast's (x, y, h)
+        // to (x, h, -y), which is POV-Ray's (x, h, z) mirrored when y = z.
+        axial = true;
+        std::vector<std::array<double, 2>> points;
+        for (const Vec3& p : n.points) points.push_back({p.x, mirror_ ? p.y : -p.y});
+        return make_prism(spline_contours(points, prism_spline(n.spline)), n.values[0], n.values[1],
+                          n.conic_sweep, n.open);
+      }
+      case Node::Text:
+        if (n.font.empty()) return std::nullopt;  // not found: the reader warned
+        try {
+          return make_text_shape(n.font, n.text, n.values[0], n.points[0], mirror_);
+        } catch (const std::runtime_error& e) {
+          warn(n.pos, "text in this font", e.what());
+          return std::nullopt;
+        }
       case Node::Triangle: {
         // Mirroring reverses the winding: swap two corners to keep the face's side.
         const std::size_t b = mirror_ ? 2 : 1, c = mirror_ ? 1 : 2;
@@ -455,15 +534,16 @@ class Builder {
     }
   }
 
-  void warn(const pov::Pos& at, const std::string& kind, const std::string& detail) {
+  void warn(const pov::Pos& at, const std::string& kind, const std::string& detail,
+            const char* outcome = "left out") {
     if (strict_)
       fail_at(at, "raycast does not render " + kind + " yet (" + detail +
                       "); without --strict it is a warning and is left out");
     if (!warned_.insert(kind).second) return;
     const std::string& name = s_.sources.names[static_cast<std::size_t>(at.file)];
     warnings_.push_back(name + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
-                        ": warning: raycast does not render " + kind + " yet (" + detail +
-                        "); left out");
+                        ": warning: raycast does not render " + kind + " yet (" + detail + "); " +
+                        outcome);
   }
 
   static bool is_csg(Node::Kind k) {
@@ -515,6 +595,24 @@ class Builder {
       light(*n.light, parent);
       return;
     }
+    if (n.kind == Node::Union && !n.clipped_by.empty() && !n.inverse) {
+      add_clipped_union(n, tex, frame, parent, entry, out);
+      return;
+    }
+    if (!n.clipped_by.empty() || (n.inverse && !is_csg(n.kind))) {
+      // Clipped or inverted on its own: a CSG tree of one operand (csg_part), placed by parent.
+      // An open surface cannot be a CSG leaf: it is drawn whole, as before clipping.
+      if (open_leaf(n, tex, frame, parent, entry, out)) return;
+      CsgTree tree;
+      tree.nodes.emplace_back().op = CsgOp::kIntersection;
+      csg_world_ = parent ? parent : std::optional<Transform>(Transform());
+      const std::optional<std::int32_t> code = csg_part(n, tex, frame, std::nullopt, tree, false);
+      csg_world_.reset();
+      if (!code) return;
+      tree.nodes[0].operands.push_back(*code);
+      add_csg(n, std::move(tree), tex, frame, parent, entry, out);
+      return;
+    }
     if (n.kind == Node::Union) {
       const std::optional<Transform> xf = compose(parent, own_transform(n, false));
       for (const Node& c : n.children) add(c, tex, frame, xf, entry, out);
@@ -528,19 +626,9 @@ class Builder {
       CsgTree tree;
       const std::optional<Transform> xf = compose(parent, own_transform(n, false));
       csg_world_ = xf ? xf : std::optional<Transform>(Transform());
-      csg_operation(n, tex, frame, std::nullopt, tree);
+      csg_operation(n, tex, frame, std::nullopt, tree, n.inverse);
       csg_world_.reset();
-      if (tree.leaves.empty()) return;
-      Object o;
-      try {
-        o.shape = CsgShape{finish_csg_tree(std::move(tree))};
-      } catch (const std::invalid_argument& e) {
-        fail_at(n.pos, e.what());
-      }
-      o.xf = xf;
-      o.material = tex ? material(*tex, frame, o.xf) : -1;
-      o.entry = entry;
-      out.push_back(std::move(o));
+      add_csg(n, std::move(tree), tex, frame, xf, entry, out);
       return;
     }
     std::optional<Object> o = leaf(n, tex, frame, parent);
@@ -549,64 +637,177 @@ class Builder {
     out.push_back(std::move(*o));
   }
 
+  // A union's clipping objects clip each of its children on its own: the children keep their
+  // surfaces inside one another, as a union's (merge's would not).
+  void add_clipped_union(const Node& n, const pov::Texture* tex, const Transform& frame,
+                         const std::optional<Transform>& parent, int entry,
+                         std::vector<Object>& out) {
+    const std::optional<Transform> own = own_transform(n, false);
+    for (const Node& c : n.children) {
+      if (c.kind == Node::LightSource) {
+        light(*c.light, compose(parent, own));
+        continue;
+      }
+      CsgTree tree;
+      tree.nodes.emplace_back().op = CsgOp::kIntersection;
+      csg_world_ = parent ? parent : std::optional<Transform>(Transform());
+      const std::optional<std::int32_t> code = csg_part(c, tex, frame, own, tree, false);
+      if (code) {
+        tree.nodes[0].operands.push_back(*code);
+        hiding_ = true;
+        for (const Node& k : n.clipped_by)
+          if (const std::optional<std::int32_t> kc =
+                  csg_part(k, nullptr, frame, std::nullopt, tree, false))
+            tree.nodes[0].operands.push_back(*kc);
+        hiding_ = false;
+      }
+      csg_world_.reset();
+      const std::size_t first = out.size();
+      if (code) add_csg(c, std::move(tree), tex, frame, parent, entry, out);
+      if (c.no_shadow)
+        for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+    }
+  }
+
+  // For a clipped or inverted shape that is an open surface (an open cylinder, a disc, a mesh
+  // that is not closed): a warning, and the surface added as it is. false for other nodes.
+  bool open_leaf(const Node& n, const pov::Texture* tex, const Transform& frame,
+                 const std::optional<Transform>& parent, int entry, std::vector<Object>& out) {
+    if (n.kind == Node::Union || n.kind == Node::Reference || is_csg(n.kind)) return false;
+    std::optional<Object> o = leaf(n, tex, frame, parent);
+    if (!o || is_closed(*o)) return false;
+    warn(n.pos, "clipped_by and inverse on open surfaces", "raycast's CSG needs closed solids",
+         "the surface is drawn whole");
+    o->entry = entry;
+    out.push_back(std::move(*o));
+    return true;
+  }
+
+  // The object of a built CSG tree, placed by xf.
+  void add_csg(const Node& n, CsgTree tree, const pov::Texture* tex, const Transform& frame,
+               const std::optional<Transform>& xf, int entry, std::vector<Object>& out) {
+    if (tree.leaves.empty()) return;
+    Object o;
+    try {
+      o.shape = CsgShape{finish_csg_tree(std::move(tree))};
+    } catch (const std::invalid_argument& e) {
+      fail_at(n.pos, e.what());
+    }
+    o.xf = xf;
+    o.material = tex ? material(*tex, frame, o.xf) : -1;
+    o.entry = entry;
+    out.push_back(std::move(o));
+  }
+
   // The parts' `here` placements are relative to the CSG object (csg_world_ places it).
+  // `invert`: build the operation's complement (POV-Ray's `inverse`), by De Morgan's laws down to
+  // the leaves: a union's complement is the intersection of its operands' complements, an
+  // intersection's the union, a difference's (a minus the rest) the union of a's complement and
+  // the rest.
   std::int32_t csg_operation(const Node& n, const pov::Texture* tex, const Transform& frame,
-                             const std::optional<Transform>& here, CsgTree& tree) {
+                             const std::optional<Transform>& here, CsgTree& tree, bool invert) {
     const std::size_t index = tree.nodes.size();
     tree.nodes.emplace_back();
-    tree.nodes[index].op = n.kind == Node::Intersection ? CsgOp::kIntersection
-                           : n.kind == Node::Difference ? CsgOp::kDifference
-                                                        : CsgOp::kUnion;
+    const CsgOp op = n.kind == Node::Intersection ? CsgOp::kIntersection
+                     : n.kind == Node::Difference ? CsgOp::kDifference
+                                                  : CsgOp::kUnion;
+    tree.nodes[index].op = !invert                    ? op
+                           : op == CsgOp::kUnion      ? CsgOp::kIntersection
+                           : op == CsgOp::kDifference ? CsgOp::kUnion
+                                                      : CsgOp::kUnion;
     for (const Node& c : n.children) {
-      const pov::Texture* ct = c.texture ? &*c.texture : tex;
-      if (c.kind == Node::Reference && c.ref->texture) ct = &*c.ref->texture;
-      if (c.kind == Node::LightSource) {
-        light(*c.light, std::nullopt);
-        continue;
-      }
-      std::int32_t code;
-      const Node* part = &c;
-      std::optional<Transform> at = here;
-      while (part->kind == Node::Reference) {  // object { Name }: the shared object, placed
-        at = compose(at, own_transform(*part, false));
-        part = part->ref.get();
-        if (part->texture && !c.texture) ct = &*part->texture;
-      }
-      // The texture frame of the part: its own texture's, else the one it inherits.
-      const Transform part_frame =
-          part->texture ? texture_frame(*part, compose(csg_world_, part == &c ? here : at))
-          : c.texture   ? texture_frame(c, compose(csg_world_, here))
-                        : frame;
-      if (part->kind == Node::Union || is_csg(part->kind)) {
-        const std::optional<Transform> xf = part == &c ? compose(here, own_transform(c, false))
-                                                       : compose(at, own_transform(*part, false));
-        code = csg_operation(*part, ct, part_frame, xf, tree);
-      } else if (part->kind == Node::LightSource) {
-        light(*part->light, at);
-        continue;
-      } else {
-        std::optional<Object> o = leaf(*part, ct, part_frame, at);
-        if (!o) continue;
-        if (!is_closed(*o)) {
-          warn(c.pos, "open surfaces in CSG", "raycast's CSG needs closed solids");
-          continue;
-        }
-        o->material = part->texture ? material(*part->texture, part_frame, csg_world_)
-                      : c.texture   ? material(*c.texture, part_frame, csg_world_)
-                                    : -1;
-        tree.leaves.push_back(std::move(*o));
-        code = csg_leaf_code(tree.leaves.size() - 1);
-      }
-      tree.nodes[index].operands.push_back(code);
+      const bool first = tree.nodes[index].operands.empty();
+      const bool part_invert = invert && (op != CsgOp::kDifference || first);
+      if (const std::optional<std::int32_t> code = csg_part(c, tex, frame, here, tree, part_invert))
+        tree.nodes[index].operands.push_back(*code);
     }
     if (tree.nodes[index].operands.empty()) {
       // Every operand was left out: an empty solid stays empty as an empty intersection.
       Object o;
       o.shape = make_sphere({0, 0, 0}, 1e-9);
-      tree.leaves.push_back(o);
-      tree.nodes[index].operands.push_back(csg_leaf_code(tree.leaves.size() - 1));
+      tree.nodes[index].operands.push_back(push_leaf(tree, std::move(o), false));
     }
     return static_cast<std::int32_t>(index);
+  }
+
+  // One operand of a CSG operation: a leaf, an operation, or (clipped_by) the intersection of
+  // the part with its clipping objects, whose leaves are hidden. nullopt: left out.
+  std::optional<std::int32_t> csg_part(const Node& c, const pov::Texture* tex,
+                                       const Transform& frame, const std::optional<Transform>& here,
+                                       CsgTree& tree, bool invert) {
+    const pov::Texture* ct = c.texture ? &*c.texture : tex;
+    if (c.kind == Node::Reference && c.ref->texture) ct = &*c.ref->texture;
+    if (c.kind == Node::LightSource) {
+      light(*c.light, std::nullopt);
+      return std::nullopt;
+    }
+    const Node* part = &c;
+    std::optional<Transform> at = here;
+    bool inverse = invert != c.inverse;
+    // Clipping objects with the placement of the frame they are written in.
+    std::vector<std::pair<const Node*, std::optional<Transform>>> clips;
+    for (const Node& k : c.clipped_by) clips.emplace_back(&k, here);
+    while (part->kind == Node::Reference) {  // object { Name }: the shared object, placed
+      at = compose(at, own_transform(*part, false));
+      part = part->ref.get();
+      if (part->texture && !c.texture) ct = &*part->texture;
+      inverse = inverse != part->inverse;
+      for (const Node& k : part->clipped_by) clips.emplace_back(&k, at);
+    }
+    // The clipped part is an intersection with its clipping objects: that node comes first.
+    const std::size_t clip_node = tree.nodes.size();
+    if (!clips.empty()) tree.nodes.emplace_back().op = CsgOp::kIntersection;
+    std::optional<std::int32_t> code = csg_body(c, part, ct, frame, here, at, tree, inverse);
+    if (clips.empty() || !code) return code;
+    tree.nodes[clip_node].operands.push_back(*code);
+    const bool hiding = hiding_;
+    hiding_ = true;
+    for (const auto& [k, placed] : clips)
+      if (const std::optional<std::int32_t> kc = csg_part(*k, nullptr, frame, placed, tree, false))
+        tree.nodes[clip_node].operands.push_back(*kc);
+    hiding_ = hiding;
+    return static_cast<std::int32_t>(clip_node);
+  }
+
+  // csg_part's own shape: `part` is c or the object c names, placed by `at`.
+  std::optional<std::int32_t> csg_body(const Node& c, const Node* part, const pov::Texture* ct,
+                                       const Transform& frame, const std::optional<Transform>& here,
+                                       const std::optional<Transform>& at, CsgTree& tree,
+                                       bool inverse) {
+    // The texture frame of the part: its own texture's, else the one it inherits.
+    const Transform part_frame =
+        part->texture ? texture_frame(*part, compose(csg_world_, part == &c ? here : at))
+        : c.texture   ? texture_frame(c, compose(csg_world_, here))
+                      : frame;
+    if (part->kind == Node::Union || is_csg(part->kind)) {
+      const std::optional<Transform> xf = part == &c ? compose(here, own_transform(c, false))
+                                                     : compose(at, own_transform(*part, false));
+      return csg_operation(*part, ct, part_frame, xf, tree, inverse);
+    }
+    if (part->kind == Node::LightSource) {
+      light(*part->light, at);
+      return std::nullopt;
+    }
+    std::optional<Object> o = leaf(*part, ct, part_frame, at);
+    if (!o) return std::nullopt;
+    if (!is_closed(*o)) {
+      warn(c.pos, "open surfaces in CSG", "raycast's CSG needs closed solids");
+      return std::nullopt;
+    }
+    o->material = part->texture ? material(*part->texture, part_frame, csg_world_)
+                  : c.texture   ? material(*c.texture, part_frame, csg_world_)
+                                : -1;
+    return push_leaf(tree, std::move(*o), inverse);
+  }
+
+  // Appends a leaf (inverse: its complement; hidden while clipping objects are built).
+  std::int32_t push_leaf(CsgTree& tree, Object o, bool inverse) {
+    tree.leaves.push_back(std::move(o));
+    tree.leaf_inverse.resize(tree.leaves.size(), 0);
+    tree.leaf_hidden.resize(tree.leaves.size(), 0);
+    tree.leaf_inverse.back() = inverse;
+    tree.leaf_hidden.back() = hiding_;
+    return csg_leaf_code(tree.leaves.size() - 1);
   }
 
  public:
@@ -620,7 +821,7 @@ class Builder {
   bool mirror_ = false;
   double gamma_ = 1;
   // Equal materials are stored once: every field of raycast's material, as written.
-  using MaterialKey = std::array<double, 19>;
+  using MaterialKey = std::array<double, 24>;
   std::map<MaterialKey, int> materials_;
   std::set<std::string> warned_;
   PovTextureBuilder pov_textures_{[this](double c) { return linear(c); }};
@@ -628,6 +829,7 @@ class Builder {
   // While a CSG object is built: its placement in the world (its parts' materials map from its
   // space).
   std::optional<Transform> csg_world_;
+  bool hiding_ = false;  // while a CSG tree's clipping objects are built (CsgTree::leaf_hidden)
 };
 
 void report(const std::vector<std::string>& in, std::vector<std::string>* out) {
@@ -752,12 +954,14 @@ bool is_pov_path(const std::string& path) {
 Scene load_pov_scene_text(const std::string& text, const std::string& name, const std::string& dir,
                           int frame, const pov::Options& options,
                           std::vector<std::string>* warnings) {
+  register_formula_noise();  // functions.inc's f_noise3d in isosurfaces
   return build(pov::interpret_pov(text, name, dir, with_object_queries(with_frame(options, frame))),
                name, warnings, options.strict);
 }
 
 Scene load_pov_scene_file(const std::string& path, int frame, const pov::Options& options,
                           std::vector<std::string>* warnings) {
+  register_formula_noise();  // functions.inc's f_noise3d in isosurfaces
   pov::Options o = with_object_queries(with_frame(options, frame));
   std::string scene_path = path;
   if (path.size() >= 4 &&

@@ -24,10 +24,11 @@ class PovTextureBuilder {
   /// The stack for a texture and its layers; pigments shared between textures are converted
   /// once.
   std::shared_ptr<const texture::TextureStack> stack(const pov::Texture& t, int depth = 0);
+  /// A pigment with its colours (and its maps' pigments' colours) made linear.
+  std::shared_ptr<const texture::Pigment> pigment(const texture::Pigment& p, int depth = 0);
 
  private:
   texture::TextureLayer layer(const pov::Texture& t);
-  std::shared_ptr<const texture::Pigment> pigment(const texture::Pigment& p, int depth);
   texture::Rgbft colour(const texture::Rgbft& c) const;
 
   std::function<double(double)> linear_;

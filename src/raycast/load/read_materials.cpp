@@ -108,6 +108,9 @@ Material read_material(const SourceContext& ctx, const YamlNode& node, const std
   m.transmission = unit_fraction(f, "transmission", m.transmission);
   m.ior = f.positive("ior", m.ior);
   m.fresnel = f.boolean("fresnel", m.fresnel);
+  m.fade_distance = f.non_negative("fade_distance", m.fade_distance);
+  m.fade_power = f.non_negative("fade_power", m.fade_power);
+  m.fade_color = read_color(f, "fade_color", m.fade_color);
   if (textured) read_texture_keys(f, m);
   f.finish();
   return m;

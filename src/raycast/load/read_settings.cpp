@@ -3,6 +3,8 @@
 #include <map>
 #include <string>
 
+#include "load/read_atmosphere.h"
+
 namespace raycast {
 
 namespace {
@@ -124,6 +126,7 @@ RenderSettings read_render(const SourceContext& ctx, const YamlNode& node) {
   r.bailout = f.non_negative("bailout", r.bailout);
   r.background = read_color(f, "background", r.background);
   r.ambient = read_color(f, "ambient", r.ambient);
+  r.atmosphere = read_atmosphere(f);
   r.seed = static_cast<unsigned>(f.integer("seed", 0, 0, 2147483647));
   if (f.has("antialias")) read_antialias(ctx, f.required("antialias"), r.antialias);
   f.finish();

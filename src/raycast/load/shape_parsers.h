@@ -38,5 +38,7 @@ ShapeVariant parse_shape(std::type_identity<Implicit>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<MeshShape>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Revolution>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Isosurface>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Prism>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Text>, Fields& f);
 
 }  // namespace raycast

@@ -138,6 +138,29 @@ Dual<T, N> pow(const Dual<T, N>& a, const Dual<T, N>& b) {
   return exp(b * log(a));
 }
 
+/// atan2(y, x): the angle of the point (x, y), d = (x dy - y dx) / (x^2 + y^2).
+template <class T, int N>
+Dual<T, N> atan2(const Dual<T, N>& y, const Dual<T, N>& x) {
+  using std::atan2;
+  Dual<T, N> r;
+  r.v = atan2(y.v, x.v);
+  const T r2 = x.v * x.v + y.v * y.v;
+  for (int i = 0; i < N; ++i) r.d[i] = (x.v * y.d[i] - y.v * x.d[i]) / r2;
+  return r;
+}
+/// floor: flat between its steps. Over an interval that holds a step the slope is unbounded.
+template <int N>
+Dual<double, N> floor(const Dual<double, N>& a) {
+  return Dual<double, N>(std::floor(a.v));
+}
+template <int N>
+Dual<Interval, N> floor(const Dual<Interval, N>& a) {
+  Dual<Interval, N> r(floor(a.v));
+  if (!(r.v.lo == r.v.hi))
+    for (int i = 0; i < N; ++i) r.d[i] = Interval::entire();
+  return r;
+}
+
 // min and max pick the smaller (larger) operand with its derivatives; over intervals, where the
 // operands overlap, the hull of both.
 template <int N>

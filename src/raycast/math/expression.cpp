@@ -18,10 +18,11 @@ struct FunctionInfo {
   int arity;
 };
 constexpr FunctionInfo kFunctions[] = {
-    {"sqrt", ExprOp::kSqrt, 1}, {"exp", ExprOp::kExp, 1}, {"log", ExprOp::kLog, 1},
-    {"sin", ExprOp::kSin, 1},   {"cos", ExprOp::kCos, 1}, {"tan", ExprOp::kTan, 1},
-    {"abs", ExprOp::kAbs, 1},   {"min", ExprOp::kMin, 2}, {"max", ExprOp::kMax, 2},
-    {"pow", ExprOp::kPow, 2},
+    {"sqrt", ExprOp::kSqrt, 1},     {"exp", ExprOp::kExp, 1},       {"log", ExprOp::kLog, 1},
+    {"sin", ExprOp::kSin, 1},       {"cos", ExprOp::kCos, 1},       {"tan", ExprOp::kTan, 1},
+    {"abs", ExprOp::kAbs, 1},       {"min", ExprOp::kMin, 2},       {"max", ExprOp::kMax, 2},
+    {"pow", ExprOp::kPow, 2},       {"atan2", ExprOp::kAtan2, 2},   {"floor", ExprOp::kFloor, 1},
+    {"noise1", ExprOp::kNoise1, 3}, {"noise2", ExprOp::kNoise2, 3}, {"noise3", ExprOp::kNoise3, 3},
 };
 
 class Parser {
@@ -160,14 +161,25 @@ class Parser {
         ++pos_;
         const int a = expr(depth + 1);
         int b = -1;
-        if (f.arity == 2) {
-          if (peek() != ',') throw ExpressionError(pos_, id + " takes two arguments: expected ','");
+        if (f.arity >= 2) {
+          if (peek() != ',')
+            throw ExpressionError(pos_, id + " takes " + (f.arity == 2 ? "two" : "three") +
+                                            " arguments: expected ','");
           ++pos_;
           b = expr(depth + 1);
         }
+        int c = -1;
+        if (f.arity == 3) {
+          if (peek() != ',')
+            throw ExpressionError(pos_, id + " takes three arguments: expected ','");
+          ++pos_;
+          c = expr(depth + 1);
+        }
         if (peek() != ')') throw ExpressionError(pos_, "expected ')' after the arguments of " + id);
         ++pos_;
-        return add(f.op, at, a, b);
+        const int node = add(f.op, at, a, b);
+        e_.nodes[static_cast<std::size_t>(node)].c = c;
+        return node;
       }
     }
     if (id == "x") return add(ExprOp::kX, at);
@@ -177,9 +189,9 @@ class Parser {
     if (id == "e") return add(ExprOp::kConst, at, -1, -1, std::numbers::e);
     for (const FunctionInfo& f : kFunctions)
       if (id == f.name) throw ExpressionError(pos_, "expected '(' after " + id);
-    throw ExpressionError(
-        at, "unknown name '" + id +
-                "' (expected x, y, z, pi, e, or sqrt exp log sin cos tan abs min max pow)");
+    throw ExpressionError(at, "unknown name '" + id +
+                                  "' (expected x, y, z, pi, e, or sqrt exp log sin cos tan abs "
+                                  "floor min max pow atan2 noise1 noise2 noise3)");
   }
 
   std::string_view s_;
@@ -196,6 +208,7 @@ bool is_constant(const Expression& e, int node) {
   if (n.op == ExprOp::kX || n.op == ExprOp::kY || n.op == ExprOp::kZ) return false;
   if (n.a >= 0 && !is_constant(e, n.a)) return false;
   if (n.b >= 0 && !is_constant(e, n.b)) return false;
+  if (n.c >= 0 && !is_constant(e, n.c)) return false;
   return true;
 }
 

@@ -32,7 +32,8 @@ enum class ExprOp : std::uint8_t {
   kDiv,
   kPow,
   kMin,
-  kMax,  // binary
+  kMax,
+  kAtan2,  // binary
   kNeg,
   kSqrt,
   kExp,
@@ -40,15 +41,20 @@ enum class ExprOp : std::uint8_t {
   kSin,
   kCos,
   kTan,
-  kAbs,  // unary
+  kAbs,
+  kFloor,  // unary
+  kNoise1,
+  kNoise2,
+  kNoise3,  // ternary: solid noise of generator 1, 2, 3 (math/formula_noise.h)
 };
 
-/// One node: a constant (value), a variable, or an operation on children a (and b).
+/// One node: a constant (value), a variable, or an operation on children a (and b, c).
 struct ExprNode {
   ExprOp op = ExprOp::kConst;
   double value = 0;
   int a = -1, b = -1;
   std::size_t offset = 0;  // where the node's text starts (operators: the operator character)
+  int c = -1;
 };
 
 /// A syntax tree; nodes refer to children by index, children come before parents.
@@ -64,8 +70,10 @@ struct Expression {
 ///   unary   := ('-' | '+') unary | power
 ///   power   := primary ('^' unary)?                               right associative; -x^2 = -(x^2)
 ///   primary := number | x | y | z | pi | e | name '(' expr (',' expr)* ')' | '(' expr ')'
-/// Numbers: 12, 0.5, .5, 1e-3. Functions: sqrt exp log sin cos tan abs (one argument), min max pow
-/// (two). Throws ExpressionError with the offending offset.
+/// Numbers: 12, 0.5, .5, 1e-3. Functions: sqrt exp log sin cos tan abs floor (one argument), min
+/// max pow atan2 (two), noise1 noise2 noise3 (three: solid noise in [0, 1] of POV-Ray's
+/// generators 1, 2, 3, where a scene loader has registered it: math/formula_noise.h). Throws
+/// ExpressionError with the offending offset.
 Expression parse_expression(std::string_view text);
 
 /// Whether the subtree at `node` uses no variable.

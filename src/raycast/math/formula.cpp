@@ -70,7 +70,13 @@ class Compiler {
     }
     emit(n.a, depth);
     if (n.b >= 0) emit(n.b, depth + 1);
-    push({opcode(n.op), 0, 0}, depth);
+    if (n.c >= 0) emit(n.c, depth + 2);
+    push({opcode(n.op), generator(n.op), 0}, depth);
+  }
+
+  // The noise generator of a noise operation (0 for the others).
+  static int generator(ExprOp op) {
+    return op == ExprOp::kNoise1 ? 1 : op == ExprOp::kNoise2 ? 2 : op == ExprOp::kNoise3 ? 3 : 0;
   }
 
   double constant(int index) {
@@ -93,7 +99,8 @@ class Compiler {
     }
     if (n.a >= 0) emit_plain(n.a, depth);
     if (n.b >= 0) emit_plain(n.b, depth + 1);
-    push({opcode(n.op), 0, 0}, depth);
+    if (n.c >= 0) emit_plain(n.c, depth + 2);
+    push({opcode(n.op), generator(n.op), 0}, depth);
   }
 
   static Opcode opcode(ExprOp op) {
@@ -120,6 +127,14 @@ class Compiler {
         return Opcode::kMin;
       case ExprOp::kMax:
         return Opcode::kMax;
+      case ExprOp::kAtan2:
+        return Opcode::kAtan2;
+      case ExprOp::kFloor:
+        return Opcode::kFloor;
+      case ExprOp::kNoise1:
+      case ExprOp::kNoise2:
+      case ExprOp::kNoise3:
+        return Opcode::kNoise;
       case ExprOp::kNeg:
         return Opcode::kNeg;
       case ExprOp::kSqrt:
@@ -173,7 +188,8 @@ bool continuous_everywhere(const Formula& f) {
       case Opcode::kSinVar:
       case Opcode::kCosVar:
         break;
-      default:  // division, tan (poles), sqrt, log, pow (domains), exp (overflow)
+      default:  // division, tan (poles), sqrt, log, pow (domains), exp (overflow), atan2 (its
+                // cut), floor (its steps)
         return false;
     }
   }
@@ -184,6 +200,10 @@ bool continuous_everywhere(const Formula& f) {
 
 Formula compile_formula(std::string_view text) {
   const Expression e = parse_expression(text);
+  if (!formula_noise().value)
+    for (const ExprNode& n : e.nodes)
+      if (n.op == ExprOp::kNoise1 || n.op == ExprOp::kNoise2 || n.op == ExprOp::kNoise3)
+        throw ExpressionError(n.offset, "noise is not available here (no scene loader set it up)");
   Formula f = Compiler(e).compile();
   f.continuous = continuous_everywhere(f);
   return f;

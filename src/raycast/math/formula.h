@@ -8,6 +8,7 @@
 
 #include "math/dual.h"
 #include "math/expression.h"
+#include "math/formula_noise.h"
 #include "math/interval.h"
 
 namespace raycast {
@@ -36,13 +37,16 @@ enum class Opcode : std::uint8_t {
   kAbs,
   kMin,
   kMax,
+  kAtan2,  // atan2(below, top): the angle of the point (top, below)
+  kFloor,
+  kNoise,   // noise_of the top three (x, y, z) for generator n
   kSinVar,  // sin of variable n (0, 1, 2 = x, y, z), computed once per run with its cosine
   kCosVar,  // cos of variable n
 };
 
 struct Instruction {
   Opcode op = Opcode::kConst;
-  int n = 0;         // kPowInt's exponent
+  int n = 0;         // kPowInt's exponent, kNoise's generator
   double value = 0;  // kConst's value
 };
 
@@ -84,8 +88,10 @@ Formula compile_formula(std::string_view text);
 template <class T>
 T run(const Formula& f, const T& x, const T& y, const T& z) {
   using std::abs;
+  using std::atan2;
   using std::cos;
   using std::exp;
+  using std::floor;
   using std::log;
   using std::max;
   using std::min;
@@ -142,6 +148,17 @@ T run(const Formula& f, const T& x, const T& y, const T& z) {
       case Opcode::kMax:
         s[top - 1] = max(s[top - 1], s[top]);
         --top;
+        break;
+      case Opcode::kAtan2:
+        s[top - 1] = atan2(s[top - 1], s[top]);
+        --top;
+        break;
+      case Opcode::kFloor:
+        s[top] = floor(s[top]);
+        break;
+      case Opcode::kNoise:
+        s[top - 2] = noise_of(s[top - 2], s[top - 1], s[top], in.n);
+        top -= 2;
         break;
       case Opcode::kNeg:
         s[top] = -s[top];

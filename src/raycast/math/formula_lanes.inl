@@ -358,6 +358,8 @@ DualI unary(Opcode op, const DualI& a, int n) {
       return tan(a);
     case Opcode::kAbs:
       return abs(a);
+    case Opcode::kFloor:
+      return floor(a);
     default:
       return a;
   }
@@ -372,6 +374,8 @@ DualI binary(Opcode op, const DualI& a, const DualI& b) {
       return min(a, b);
     case Opcode::kMax:
       return max(a, b);
+    case Opcode::kAtan2:
+      return atan2(a, b);
     default:
       return a;
   }
@@ -481,9 +485,16 @@ void lanes_kernel(const Formula& f, const double o[3], const double d[3], const 
       case Opcode::kPow:
       case Opcode::kMin:
       case Opcode::kMax:
+      case Opcode::kAtan2:
         for (int k = 0; k < W; ++k)
           set_lane(s[top - 1], k, binary(in.op, lane(s[top - 1], k), lane(s[top], k)));
         --top;
+        break;
+      case Opcode::kNoise:
+        for (int k = 0; k < W; ++k)
+          set_lane(s[top - 2], k,
+                   noise_of(lane(s[top - 2], k), lane(s[top - 1], k), lane(s[top], k), in.n));
+        top -= 2;
         break;
       default:
         for (int k = 0; k < W; ++k) set_lane(s[top], k, unary(in.op, lane(s[top], k), in.n));

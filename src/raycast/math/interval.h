@@ -188,6 +188,23 @@ inline Interval max(const Interval& a, const Interval& b) {
   if (a.is_empty() || b.is_empty()) return Interval::empty();
   return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)};
 }
+/// floor is exact: the steps of the ends.
+inline Interval floor(const Interval& a) {
+  if (a.is_empty()) return a;
+  return {std::floor(a.lo), std::floor(a.hi)};
+}
+/// atan2(y, x): the angles of the points of the box y x x. A box that touches the cut (x <= 0,
+/// y = 0) or the origin takes the whole range; any other box is convex and sees the origin under
+/// less than pi, so its angles are those between its corners' angles.
+inline Interval atan2(const Interval& y, const Interval& x) {
+  if (y.is_empty() || x.is_empty()) return Interval::empty();
+  if (x.lo <= 0 && y.contains(0))
+    return interval_detail::widen(-std::numbers::pi, std::numbers::pi, kLibmUlps);
+  const double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo),
+                       std::atan2(y.hi, x.hi)};
+  return interval_detail::widen(*std::min_element(c, c + 4), *std::max_element(c, c + 4),
+                                kLibmUlps);
+}
 /// a^n for a whole n (negative n through the reciprocal).
 inline Interval pow_int(const Interval& a, int n) {
   if (a.is_empty()) return a;

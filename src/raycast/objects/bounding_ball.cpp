@@ -50,7 +50,11 @@ Ball frustum_ball(const Frustum& f) {
 Ball object_ball(const Object& o);
 
 Ball csg_ball(const CsgTree& tree, std::int32_t code) {
-  if (code < 0) return object_ball(tree.leaves[static_cast<std::size_t>(-code - 1)]);
+  if (code < 0) {
+    const auto leaf = static_cast<std::size_t>(-code - 1);
+    if (leaf < tree.leaf_inverse.size() && tree.leaf_inverse[leaf]) return Ball{};  // unbounded
+    return object_ball(tree.leaves[leaf]);
+  }
   const CsgNode& node = tree.nodes[static_cast<std::size_t>(code)];
   Ball ball = csg_ball(tree, node.operands[0]);
   if (node.op != CsgOp::kDifference)

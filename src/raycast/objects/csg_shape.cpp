@@ -39,6 +39,14 @@ struct CullRay {
 };
 
 // A cylinder's or cone's frustum (null for other shapes).
+// A leaf's spans as the tree sees them: complemented for an inverse leaf, without surfaces for a
+// hidden one (CsgTree::leaf_inverse, leaf_hidden).
+void mark_leaf_spans(const CsgTree& tree, std::size_t leaf, SpanList& list) {
+  if (tree.leaf_inverse[leaf]) complement_spans(list);
+  if (tree.leaf_hidden[leaf])
+    for (Span& s : list) s.in.part = s.out.part = kNoSurface;
+}
+
 const Frustum* leaf_frustum(const ShapeVariant& shape) {
   if (const auto* c = std::get_if<Cylinder>(&shape)) return &c->f;
   if (const auto* c = std::get_if<Cone>(&shape)) return &c->f;
@@ -103,6 +111,7 @@ struct Evaluator {
       if (!box_meets(tree.leaf_boxes[leaf], cull, lo, hi)) return;
       spans(tree.leaves[leaf], ray, out);
       const bool flip = tree.leaf_flipped[leaf] != 0;
+      mark_leaf_spans(tree, leaf, out);
       for (Span& s : out) {
         s.in.leaf = s.out.leaf = static_cast<std::int32_t>(leaf);
         s.in.flip = s.out.flip = flip;
@@ -135,7 +144,10 @@ struct Evaluator {
   }
 
   bool contains(std::int32_t code, const Vec3& p) const {
-    if (code < 0) return raycast::contains(tree.leaves[static_cast<std::size_t>(-code - 1)], p);
+    if (code < 0) {
+      const auto leaf = static_cast<std::size_t>(-code - 1);
+      return raycast::contains(tree.leaves[leaf], p) != (tree.leaf_inverse[leaf] != 0);
+    }
     const CsgNode& node = tree.nodes[static_cast<std::size_t>(code)];
     bool inside = contains(node.operands[0], p);
     for (std::size_t i = 1; i < node.operands.size(); ++i) {
@@ -233,6 +245,7 @@ struct Gather {
         SpanList& list = lists[leaf];
         list.clear();
         spans(object, ray, list);
+        mark_leaf_spans(tree, leaf, list);
         if (count + 2 * list.size() > kMaxEnds) {
           overflow = true;
           return true;
@@ -373,13 +386,17 @@ namespace {
 void finish_leaves(CsgTree& tree) {
   tree.leaf_boxes.clear();
   tree.leaf_flipped.clear();
-  for (const Object& leaf : tree.leaves) {
+  tree.leaf_inverse.resize(tree.leaves.size(), 0);
+  tree.leaf_hidden.resize(tree.leaves.size(), 0);
+  for (std::size_t i = 0; i < tree.leaves.size(); ++i) {
+    const Object& leaf = tree.leaves[i];
     if (std::holds_alternative<CsgShape>(leaf.shape) ||
         std::holds_alternative<InstanceShape>(leaf.shape))
       throw std::invalid_argument("a CSG leaf must be a primitive shape");
-    tree.leaf_boxes.push_back(bounds(leaf));
+    const bool inverse = tree.leaf_inverse[i] != 0;
+    tree.leaf_boxes.push_back(inverse ? Aabb::everything() : bounds(leaf));
     const auto* mesh = std::get_if<MeshShape>(&leaf.shape);
-    tree.leaf_flipped.push_back(mesh && mesh->mesh->orientation() < 0);
+    tree.leaf_flipped.push_back((mesh && mesh->mesh->orientation() < 0) != inverse);
   }
 }
 
@@ -452,6 +469,7 @@ void choose_culls(CsgTree& tree) {
   tree.leaf_kind.assign(tree.leaves.size(), CsgTree::LeafKind::kGeneric);
   for (std::size_t i = 0; i < tree.leaves.size(); ++i) {
     const ShapeVariant& shape = tree.leaves[i].shape;
+    if (tree.leaf_inverse[i] || tree.leaf_hidden[i]) continue;  // spans changed: kGeneric
     if (const auto* s = std::get_if<Sphere>(&shape); s && !s->is_partial())
       tree.leaf_kind[i] = CsgTree::LeafKind::kSphere;
     else if (std::holds_alternative<Box>(shape))

@@ -23,6 +23,11 @@ struct CsgTree {
   std::vector<Object> leaves;
   std::vector<Aabb> leaf_boxes;    // set by finish_csg_tree
   std::vector<char> leaf_flipped;  // set by finish_csg_tree: hits of the leaf start flipped
+  // Per leaf, given by the builder (shorter or empty: the rest 0). Inverse: the leaf stands for
+  // its complement over the whole line (POV-Ray's `inverse`), its normals flipped. Hidden: the
+  // leaf's crossings are no surface (part kNoSurface): a `clipped_by` object, which cuts the
+  // tree's solid but is never drawn, so the object is open where it is cut.
+  std::vector<char> leaf_inverse, leaf_hidden;
   std::vector<CsgNode> nodes;
   std::size_t depth = 0;  // operation levels below the root; set by finish_csg_tree
   // Largest |coordinate| per axis over the finite sides of every node and leaf box, for the

@@ -14,11 +14,13 @@
 #include "geometry/plane.h"
 #include "geometry/polygon.h"
 #include "geometry/polyhedron.h"
+#include "geometry/prism.h"
 #include "geometry/quadric.h"
 #include "geometry/revolution.h"
 #include "geometry/shape.h"
 #include "geometry/slab.h"
 #include "geometry/sphere.h"
+#include "geometry/text.h"
 #include "geometry/torus.h"
 #include "math/transform.h"
 #include "mesh/mesh.h"
@@ -33,7 +35,7 @@ namespace raycast {
 using ShapeVariant =
     std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder,
                  Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, Revolution, MeshShape,
-                 CsgShape, InstanceShape, Isosurface>;
+                 CsgShape, InstanceShape, Isosurface, Prism, Text>;
 
 struct Object {
   ShapeVariant shape;

@@ -1,10 +1,14 @@
 #include "pov/function_expr.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <numbers>
 #include <sstream>
+
+#include "pov/internal_functions.h"
+#include "texture/noise.h"
 
 namespace raycast::pov {
 
@@ -17,6 +21,7 @@ std::string number_text(double v) {
 }
 
 constexpr int kMaxCallDepth = 64;
+constexpr double kMaxUnrolledFrequency = 64;
 
 double eval(const FnNode& n, const std::vector<double>& a, int depth) {
   auto arg = [&](std::size_t i) { return eval(*n.args[i], a, depth); };
@@ -107,7 +112,61 @@ double eval(const FnNode& n, const std::vector<double>& a, int depth) {
     return s < 0 ? arg(1) : s == 0 ? arg(2) : arg(3);
   }
   if (f == "if" && k == 3) return arg(0) != 0 ? arg(1) : arg(2);
+  if (f == "floor" && k == 1) return std::floor(arg(0));
+  if (f == "ridged_mf" && k == 9) {
+    double v[9];
+    for (std::size_t i = 0; i < 9; ++i) v[i] = arg(i);
+    return ridged_mf(v);
+  }
+  if (f == "noise3d" && k == 4)
+    return texture::noise({arg(0), arg(1), arg(2)}, static_cast<int>(arg(3)));
   return std::nan("");
+}
+
+bool is_constant(const FnNode& n) {
+  if (n.kind == FnNode::Variable || n.kind == FnNode::Param || n.kind == FnNode::User) return false;
+  for (const auto& a : n.args)
+    if (!is_constant(*a)) return false;
+  return true;
+}
+
+// A comparison of constants, or a choice on a constant condition, made now: formulas have no
+// comparisons, and the switches of functions.inc's functions are constant in practice. A fractal
+// noise with constant parameters becomes its octaves' sum.
+std::shared_ptr<const FnNode> fold_choice(const std::shared_ptr<const FnNode>& n) {
+  if (n->kind != FnNode::Call) return n;
+  if (n->function == "ridged_mf" && n->args.size() == 9) {  // its octaves unrolled
+    double v[9] = {};
+    for (std::size_t i = 3; i < 9; ++i) {
+      if (!is_constant(*n->args[i])) return n;
+      v[i] = eval(*n->args[i], {}, 0);
+    }
+    // Octaves far finer than the first make the formula's intervals useless until the pieces
+    // are as fine: past a top frequency of 64 the isosurface solver would run out of steps on
+    // every ray, so such a sum stays a call (not a formula: the isosurface is left out, warned).
+    if (!(std::pow(std::abs(v[4]), std::clamp(v[5], 1.0, 10.0) - 1) <= kMaxUnrolledFrequency))
+      return n;
+    return ridged_mf_tree(n->args[0], n->args[1], n->args[2], v);
+  }
+  static const char* const kFoldable[] = {"if", "select", "lt",  "le", "gt", "ge",
+                                          "eq", "ne",     "and", "or", "not"};
+  bool foldable = false;
+  for (const char* f : kFoldable) foldable = foldable || n->function == f;
+  if (!foldable) return n;
+  const bool choice = n->function == "if" || n->function == "select";
+  for (std::size_t i = 0; i < (choice ? 1 : n->args.size()); ++i)
+    if (!is_constant(*n->args[i])) return n;
+  if (!choice) {
+    auto r = std::make_shared<FnNode>();
+    r->number = eval(*n, {}, 0);
+    return r;
+  }
+  const double c = eval(*n->args[0], {}, 0);
+  const std::size_t k = n->args.size();
+  if (n->function == "if" && k == 3) return n->args[c != 0 ? 1 : 2];
+  if (k == 3) return n->args[c < 0 ? 1 : 2];
+  if (k == 4) return n->args[c < 0 ? 1 : (c == 0 ? 2 : 3)];
+  return n;
 }
 
 // The tree with every user call replaced by the callee's body over the call's arguments.
@@ -128,13 +187,26 @@ std::shared_ptr<const FnNode> inline_calls(const std::shared_ptr<const FnNode>& 
     if (!n->callee || !n->callee->body) return nullptr;
     return inline_calls(n->callee->body, out->args, depth + 1);
   }
-  return out;
+  return fold_choice(out);
+}
+
+// The generator of a noise3d call when formulas can name it (noise1, noise2, noise3), else 0.
+int noise_generator(const FnNode& n) {
+  if (n.args.size() != 4 || !is_constant(*n.args[3])) return 0;
+  const double g = eval(*n.args[3], {}, 0);
+  return g == 1 || g == 2 || g == 3 ? static_cast<int>(g) : 0;
 }
 
 bool expressible(const FnNode& n) {
+  if (n.kind == FnNode::Call && n.function == "noise3d") {
+    if (!noise_generator(n)) return false;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (!expressible(*n.args[i])) return false;
+    return true;
+  }
   if (n.kind == FnNode::Call) {
-    static const char* const ok[] = {"sqrt", "exp", "log", "sin", "cos",
-                                     "tan",  "abs", "min", "max", "pow"};
+    static const char* const ok[] = {"sqrt", "exp", "log", "sin", "cos",   "tan",
+                                     "abs",  "min", "max", "pow", "atan2", "floor"};
     bool found = false;
     for (const char* o : ok) found = found || n.function == o;
     if (!found) return false;
@@ -200,6 +272,11 @@ std::string formula_text(const FnNode& f, bool mirror_z) {
       o << "pow(" << arg(0) << ", " << arg(1) << ")";
       return o.str();
     case FnNode::Call:
+      if (f.function == "noise3d" && noise_generator(f)) {
+        o << "noise" << noise_generator(f) << "(" << arg(0) << ", " << arg(1) << ", " << arg(2)
+          << ")";
+        return o.str();
+      }
       o << f.function << "(";
       for (std::size_t i = 0; i < f.args.size(); ++i) o << (i ? ", " : "") << arg(i);
       o << ")";

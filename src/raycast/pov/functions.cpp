@@ -4,6 +4,7 @@
 #include <map>
 #include <numbers>
 
+#include "pov/internal_functions.h"
 #include "pov/interpreter.h"
 
 namespace raycast::pov {
@@ -236,10 +237,22 @@ Value Interpreter::function_block(const Pos& at) {
       if (is_symbol("}")) --depth;
       next();
     }
+  } else if (is_word("internal")) {
+    // functions.inc's built-in functions, by number: raycast's own definitions, with their
+    // parameter lists (x, y, z and the documented extra parameters).
+    next();
+    expect_symbol("(", "after internal");
+    const double number = this->number("an internal function's number");
+    expect_symbol(")", "to close internal( )");
+    expect_symbol("}", "to close the function");
+    if (auto known = internal_function(static_cast<int>(number))) {
+      *f = *known;
+    } else {
+      f->body = call("internal", {});
+      f->opaque = "internal function";
+    }
   } else {
     f->body = function_expression(0, f->params);
-    if (f->body->kind == FnNode::Call && f->body->function == "internal")
-      f->opaque = "internal function";
     expect_symbol("}", "to close the function");
   }
   Value v;

@@ -168,13 +168,22 @@ class Interpreter {
   void move_texture(Texture& t, const std::vector<XformOp>& ops);
   void move_pigment(Pigment& p, const std::vector<XformOp>& ops, const Transform& x);
   Finish finish_block(const Finish& base);
-  std::optional<double> interior_block();
+  Interior interior_block();
   Texture material_block(const Texture& base, int depth);
   void reflection_block(Finish& f);
   std::vector<MapEntry> colour_map_block();
   std::vector<XformOp> transform_block();
   bool transform_item(std::vector<XformOp>& ops);
   Camera camera_block(const Camera& base);
+  // ---- the atmosphere (parse_atmosphere.cpp) ----
+  /// sky_sphere { [NAME] pigment { } ... emission C TRANSFORMATIONS }, after the keyword.
+  SkySphere sky_sphere_block();
+  /// fog { [NAME] fog_type, distance, COLOUR, turbulence ..., fog_offset, fog_alt, up,
+  /// TRANSFORMATIONS }, after the keyword.
+  Fog fog_block();
+  /// rainbow { direction, angle, width, distance, color_map, jitter, up, arc_angle,
+  /// falloff_angle }, after the keyword.
+  Rainbow rainbow_block();
   bool camera_angle(Camera& c, const Pos& at);
   bool light_number(Light& l, const std::string& w);
   void area_light_item(Light& l);
@@ -192,6 +201,8 @@ class Interpreter {
   Value spline_block(const Pos& at);
   void isosurface_body(Node& n, int depth);
   void spline_points(Node& n, int min_count);
+  void prism_body(Node& n);
+  void text_body(Node& n);
   void triangle_body(Node& n, bool smooth);
   void place_declared(const std::shared_ptr<const Node>& object, Node& n);
   bool is_declared_object();
@@ -233,6 +244,10 @@ class Interpreter {
                  const std::string& dir);
   void include(const Pos& at);
   std::string find_include(const std::string& name, const Pos& at);
+  /// The folders searched for included and data files: the including file's, the scene's, the
+  /// library paths.
+  std::vector<std::string> library_dirs() const;
+  std::optional<std::string> find_on_library_path(const std::string& name) const;
   void close_file();
   /// Skips raw tokens to the #else / #elseif / #end (or, in a switch, #case / #range) of the
   /// construct being skipped; returns that directive (nested constructs are skipped whole).

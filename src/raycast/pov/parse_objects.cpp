@@ -28,6 +28,8 @@ const std::map<std::string, Node::Kind>& object_kinds() {
                                                           {"isosurface", Node::Isosurface},
                                                           {"lathe", Node::Lathe},
                                                           {"sor", Node::Sor},
+                                                          {"prism", Node::Prism},
+                                                          {"text", Node::Text},
                                                           {"mesh", Node::Mesh},
                                                           {"mesh2", Node::Mesh},
                                                           {"triangle", Node::Triangle},
@@ -42,8 +44,8 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 
 bool is_unbuilt_shape(const std::string& w) {
   static constexpr std::string_view shapes[] = {
-      "blob",          "height_field",  "prism",      "sphere_sweep", "superellipsoid", "text",
-      "julia_fractal", "bicubic_patch", "parametric", "polygon",      "lemon",          "ovus"};
+      "blob",          "height_field", "sphere_sweep", "superellipsoid", "julia_fractal",
+      "bicubic_patch", "parametric",   "polygon",      "lemon",          "ovus"};
   for (const std::string_view s : shapes)
     if (s == w) return true;
   return false;
@@ -364,6 +366,12 @@ void Interpreter::object_body(Node& n, int depth) {
       break;
     case Node::Sor:
       spline_points(n, 4);
+      break;
+    case Node::Prism:
+      prism_body(n);
+      break;
+    case Node::Text:
+      text_body(n);
       break;
     default:
       break;  // poly, meshes: read by object(); CSG: children in the modifier loop
@@ -734,16 +742,23 @@ bool Interpreter::modifier(Node& n, int depth) {
     return *n.texture;
   };
   if (t.kind != Token::Word) return false;
-  if (transform_item(n.xforms)) return true;
+  const std::size_t placed = n.xforms.size();
+  if (transform_item(n.xforms)) {
+    // POV-Ray moves an object's clipping objects with it from where they are attached on.
+    for (Node& c : n.clipped_by)
+      c.xforms.insert(c.xforms.end(), n.xforms.begin() + std::ptrdiff_t(placed), n.xforms.end());
+    return true;
+  }
   if (w == "texture") {
     next();
-    const std::optional<double> ior = n.texture ? n.texture->ior : std::nullopt;
+    const std::optional<Interior> interior =
+        n.texture ? n.texture->interior : std::optional<Interior>{};
     if (!n.texture) n.texture_at = n.xforms.size();
     Texture layer = texture_block(default_texture_, depth + 1);
     // A second texture is laid over the first (layered textures).
     n.texture =
         n.texture ? layer_on_top(std::move(*n.texture), std::move(layer)) : std::move(layer);
-    if (!n.texture->ior) n.texture->ior = ior;
+    if (!n.texture->interior) n.texture->interior = interior;
   } else if (w == "pigment") {
     next();
     Texture& tx = own_texture();
@@ -761,9 +776,9 @@ bool Interpreter::modifier(Node& n, int depth) {
     tx.name.clear();
   } else if (w == "interior") {
     next();
-    const std::optional<double> ior = interior_block();
+    const Interior interior = interior_block();
     Texture& tx = own_texture();
-    tx.ior = ior;
+    tx.interior = interior;
     tx.name.clear();
   } else if (w == "material") {
     next();
@@ -787,28 +802,41 @@ bool Interpreter::modifier(Node& n, int depth) {
   } else if (w == "inverse") {
     next();
     n.inverse = !n.inverse;
-    unsupported_warning(t.pos, "inverse", "the object is drawn as it is");
   } else if (w == "open" &&
              (n.kind == Node::Cylinder || n.kind == Node::Cone || n.kind == Node::Sor ||
-              n.kind == Node::Lathe || n.kind == Node::Isosurface)) {
+              n.kind == Node::Lathe || n.kind == Node::Isosurface || n.kind == Node::Prism)) {
     next();
     n.open = boolean_option();
   } else if (w == "bounded_by") {
     next();
     expect_symbol("{", "after bounded_by");
     if (is_word("clipped_by")) {
-      next();
+      next();  // the clipping objects bound it: nothing to keep
     } else {
+      n.bounded_by.clear();
       while (!is_symbol("}")) {
-        const std::optional<Node> b = object(depth + 1);
+        std::optional<Node> b = object(depth + 1);
+        if (!b) continue;
         // Only an optimisation in POV-Ray; a poly needs it as its bounds in raycast.
-        if (b && b->kind == Node::Box && b->xforms.empty() && n.kind == Node::Poly)
+        if (b->kind == Node::Box && b->xforms.empty() && n.kind == Node::Poly)
           n.bounds = std::array<Vec3, 2>{b->points[0], b->points[1]};
+        n.bounded_by.push_back(std::move(*b));  // for clipped_by { bounded_by }
       }
     }
     expect_symbol("}", "to close bounded_by");
-  } else if (w == "clipped_by" || w == "photons" || w == "radiosity" || w == "interior_texture" ||
-             w == "texture_list" || w == "uv_vectors") {
+  } else if (w == "clipped_by") {
+    next();
+    expect_symbol("{", "after clipped_by");
+    if (is_word("bounded_by")) {
+      next();
+      n.clipped_by.insert(n.clipped_by.end(), n.bounded_by.begin(), n.bounded_by.end());
+    } else {
+      while (!is_symbol("}"))
+        if (std::optional<Node> c = object(depth + 1)) n.clipped_by.push_back(std::move(*c));
+    }
+    expect_symbol("}", "to close clipped_by");
+  } else if (w == "photons" || w == "radiosity" || w == "interior_texture" || w == "texture_list" ||
+             w == "uv_vectors") {
     next();
     if (w != "texture_list" && w != "uv_vectors") unsupported_warning(t.pos, w);
     skip_block(w);

@@ -23,7 +23,7 @@ Vec3 as_vector(const Value& v) {
 Texture layer_on_top(Texture below, Texture top) {
   top.under = std::move(below.under);
   below.under.clear();
-  if (!top.ior) top.ior = below.ior;
+  if (!top.interior) top.interior = below.interior;
   top.under.push_back(std::move(below));
   return top;
 }

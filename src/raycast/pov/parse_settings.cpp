@@ -367,8 +367,17 @@ PovScene Interpreter::run() {
       expect_symbol("{", "after background");
       scene_.background = colour("background");
       expect_symbol("}", "to close background");
-    } else if (t.kind == Token::Word && (w == "fog" || w == "rainbow" || w == "sky_sphere" ||
-                                         w == "media" || w == "photons" || w == "radiosity")) {
+    } else if (t.kind == Token::Word && w == "sky_sphere") {
+      next();
+      scene_.sky_sphere = sky_sphere_block();
+    } else if (t.kind == Token::Word && w == "fog") {
+      next();
+      Fog f = fog_block();
+      if (f.distance != 0) scene_.fogs.push_back(std::move(f));  // POV-Ray's "fog is off"
+    } else if (t.kind == Token::Word && w == "rainbow") {
+      next();
+      scene_.rainbows.push_back(rainbow_block());
+    } else if (t.kind == Token::Word && (w == "media" || w == "photons" || w == "radiosity")) {
       next();
       unsupported_warning(t.pos, w);
       skip_block(w);

@@ -602,11 +602,16 @@ Finish Interpreter::finish_block(const Finish& base) {
     } else if (w == "ior" || w == "refraction" || w == "caustics" || w == "fade_distance" ||
                w == "fade_power") {
       // POV-Ray 3.1's finish items, an interior's since 3.5: POV-Ray still reads them with a
-      // warning; `ior` is kept (refraction in raycast follows the material's transmission).
+      // warning; `ior` and the fade are kept (refraction in raycast follows the material's
+      // transmission).
       next();
       const double x = number(w.c_str());
       if (w == "ior")
         f.ior = x;
+      else if (w == "fade_distance")
+        f.fade_distance = x;
+      else if (w == "fade_power")
+        f.fade_power = x;
       else
         unsupported_warning(t.pos, "finish " + w + " (an interior item since POV-Ray 3.5)");
     } else if (w == "irid" || w == "subsurface" || w == "reflection_exponent") {
@@ -623,13 +628,13 @@ Finish Interpreter::finish_block(const Finish& base) {
   return f;
 }
 
-std::optional<double> Interpreter::interior_block() {
+Interior Interpreter::interior_block() {
   expect_symbol("{", "after interior");
-  std::optional<double> ior;
+  Interior in;
   if (tok().kind == Token::Word) {
     const Value* v = lookup(tok().text);
     if (v && v->kind == Value::Interior) {
-      ior = v->ior;
+      if (v->interior) in = *v->interior;
       next();
     }
   }
@@ -637,26 +642,30 @@ std::optional<double> Interpreter::interior_block() {
     const Token t = tok();
     if (t.text == "ior") {
       next();
-      ior = number("ior");
-      if (*ior <= 0) fail_at(t.pos, "ior must be > 0");
+      in.ior = number("ior");
+      if (*in.ior <= 0) fail_at(t.pos, "ior must be > 0");
     } else if (t.text == "media") {
       next();
       unsupported_warning(t.pos, "media");
       skip_block("media");
-    } else if (t.text == "caustics" || t.text == "dispersion" || t.text == "dispersion_samples" ||
-               t.text == "fade_distance" || t.text == "fade_power") {
+    } else if (t.text == "fade_distance") {
       next();
-      number(t.text.c_str());
-      unsupported_warning(t.pos, "interior " + t.text);
+      in.fade_distance = number("fade_distance");
+    } else if (t.text == "fade_power") {
+      next();
+      in.fade_power = number("fade_power");
     } else if (t.text == "fade_color" || t.text == "fade_colour") {
       next();
-      colour("fade_color");
+      in.fade_color = colour("fade_color");
+    } else if (t.text == "caustics" || t.text == "dispersion" || t.text == "dispersion_samples") {
+      next();
+      number(t.text.c_str());
       unsupported_warning(t.pos, "interior " + t.text);
     } else {
       unexpected("ior, media, caustics, dispersion or fade settings in interior");
     }
   }
-  return ior;
+  return in;
 }
 
 Texture Interpreter::texture_block(const Texture& base, int depth) {
@@ -670,9 +679,9 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
   Texture t = base;
   t.name.clear();
   if (const std::optional<Value> v = declared(Value::Texture)) {
-    const std::optional<double> ior = t.ior;
+    const std::optional<Interior> interior = t.interior;
     t = *v->texture;
-    if (!t.ior) t.ior = ior;
+    if (!t.interior) t.interior = interior;
   } else if (const Value* p = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
              p && p->kind == Value::Pigment && p->pigment) {
     t.pigment = *p->pigment;  // POV-Ray reads a pigment's name alone as the texture's pigment
@@ -749,9 +758,9 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
     }
   }
   if (map && !map->textures.empty()) {
-    const std::optional<double> ior = t.ior;
+    const std::optional<Interior> interior = t.interior;
     t = Texture{};
-    t.ior = ior;
+    t.interior = interior;
     t.pigment = map->textures.front().pigment;  // what the YAML conversion shows
     t.finish = map->textures.front().finish;
     t.map = std::make_shared<const TextureMap>(std::move(*map));
@@ -812,12 +821,12 @@ Texture Interpreter::material_block(const Texture& base, int depth) {
   while (!accept_symbol("}")) {
     if (is_word("texture")) {
       next();
-      const std::optional<double> ior = t.ior;
+      const std::optional<Interior> interior = t.interior;
       t = texture_block(t, depth + 1);
-      t.ior = ior;
+      t.interior = interior;
     } else if (is_word("interior")) {
       next();
-      t.ior = interior_block();
+      t.interior = interior_block();
     } else if (is_word("interior_texture")) {
       unsupported_warning(tok().pos, "interior_texture");
       next();

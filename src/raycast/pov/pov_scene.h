@@ -45,6 +45,8 @@ struct Pigment {
 struct Finish {
   double ambient = 0.1, diffuse = 0.6;
   std::optional<double> ior;  // POV-Ray 3.1's `ior` in a finish (an interior's since)
+  // POV-Ray 3.1's fade items in a finish (an interior's since; used when the interior has none)
+  double fade_distance = 0, fade_power = 0;
   double phong = 0, phong_size = 40;
   double specular = 0, roughness = 0.05;
   double reflection = 0;  // `reflection F` or `reflection { F }`
@@ -53,6 +55,15 @@ struct Finish {
   double brilliance = 1, metallic = 0, crand = 0;
   double reflection_min = 0, reflection_max = 0, reflection_falloff = 1;
   bool reflection_metallic = false;
+};
+
+/// interior { ior fade_distance fade_power fade_color }: what raycast builds of an interior.
+/// Light travelling a distance d inside is attenuated when fade_distance and fade_power are both
+/// set (POV-Ray's defaults, 0, turn it off); fade_color is the colour it fades towards.
+struct Interior {
+  std::optional<double> ior;
+  double fade_distance = 0, fade_power = 0;
+  Colour fade_color;
 };
 
 struct Texture;
@@ -68,8 +79,8 @@ struct Texture {
   std::shared_ptr<const TextureMap> map;  // set: a patterned texture (pigment, normal unused)
   Pigment pigment;
   Finish finish;
-  std::optional<double> ior;  // interior { ior }, carried with the texture (raycast's material)
-  std::string name;           // the #declare name it came from, for the converted file
+  std::optional<Interior> interior;       // carried with the texture (raycast's material)
+  std::string name;                       // the #declare name it came from, for the converted file
   std::optional<texture::Normal> normal;  // in POV-Ray's coordinates
   std::vector<Texture> under;  // layered textures: the layers beneath this one, bottom first
 };
@@ -111,6 +122,8 @@ struct Node {
     Isosurface,
     Lathe,
     Sor,
+    Prism,  // points: the contour's <x, z> as (x, z, 0); values: the two heights
+    Text,   // font, text; values: the thickness; points: the offset between letters
     Mesh,
     Triangle,  // triangle / smooth_triangle outside a mesh: points, and normals when smooth
     Union,
@@ -130,7 +143,9 @@ struct Node {
   std::shared_ptr<const FnNode> function;     // isosurface: f(x, y, z) - threshold
   std::optional<std::array<Vec3, 2>> bounds;  // poly: bounded_by / intersection box; isosurface box
   bool contained_by_sphere = false;           // isosurface: bounds hold the sphere's box
-  std::string spline;                         // lathe: linear_spline, cubic_spline, bezier_spline
+  std::string spline;  // lathe, prism: linear_spline, quadratic_spline, cubic_spline, bezier_spline
+  bool conic_sweep = false;  // prism: conic_sweep (else linear_sweep)
+  std::string font, text;    // text: the font file as found on the library path, the string
   // mesh: triangles of vertex indices, and normals per vertex when smooth
   std::vector<Vec3> vertices, normals;
   std::vector<std::array<int, 3>> triangles;
@@ -139,8 +154,12 @@ struct Node {
   std::shared_ptr<const Node> ref;  // Reference: shared, never copied
   std::size_t weight = 0;           // this object's count against Limits::scene_weight
   bool inverse = false;             // `inverse`: the solid's complement
-  bool no_shadow = false;           // `no_shadow`: casts no shadow (its parts neither)
-  std::string name;                 // object { Name }: the declared name it was placed by
+  // clipped_by: the objects whose common inside keeps the surface, in the frame of this node's
+  // parent (later transformations of the node are added to theirs as they are read)
+  std::vector<Node> clipped_by;
+  std::vector<Node> bounded_by;  // bounded_by's objects, kept for clipped_by { bounded_by }
+  bool no_shadow = false;        // `no_shadow`: casts no shadow (its parts neither)
+  std::string name;              // object { Name }: the declared name it was placed by
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
   std::size_t texture_at = 0;  // xforms[texture_at...] come after the texture: they move it
@@ -165,6 +184,37 @@ struct Camera {
   bool given = false;
 };
 
+/// sky_sphere: its pigments bottom first in the texture system's terms (plain colours as solid
+/// pigments, colours as written), its emission and the transformations of the whole sky.
+struct SkySphere {
+  std::vector<texture::Pigment> pigments;
+  Colour emission{1, 1, 1, 0, 0};
+  std::vector<XformOp> xforms;
+};
+
+/// fog: type 1 (constant) or 2 (ground), as written (colours not linearised).
+struct Fog {
+  int type = 1;
+  Colour colour;
+  double distance = 0;  // 0: POV-Ray leaves the fog out
+  double offset = 0, alt = 0;
+  Vec3 up{0, 1, 0};
+  texture::Turbulence turbulence;
+  double turb_depth = 0.5;
+  std::vector<XformOp> xforms;
+};
+
+/// rainbow: as written (colours not linearised); arc angles in degrees, 360: the whole ring.
+struct Rainbow {
+  Vec3 direction{0, 0, 1};
+  double angle = 0, width = 0;
+  double distance = 1e7;
+  std::vector<MapEntry> map;
+  double jitter = 0;
+  Vec3 up{0, 1, 0};
+  double arc_angle = 360, falloff_angle = 360;
+};
+
 /// What the scene's global_settings, INI options and #version ask for.
 struct Settings {
   double assumed_gamma = 1;  // 1 (linear), 2.2, or 0 for srgb
@@ -179,6 +229,9 @@ struct PovScene {
   Camera camera;
   std::deque<Node> objects;  // a deque: 100,000s of nodes are never moved as it grows
   Colour background;
+  std::optional<SkySphere> sky_sphere;
+  std::vector<Fog> fogs;
+  std::vector<Rainbow> rainbows;
   Colour ambient_light{1, 1, 1, 0, 0};
   int max_trace_level = 5;
   std::optional<double> adc_bailout;

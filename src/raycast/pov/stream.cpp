@@ -235,23 +235,33 @@ void Interpreter::skip_block(const std::string& what) {
 
 // ---- files ----------------------------------------------------------------------------------
 
-std::string Interpreter::find_include(const std::string& name, const Pos& at) {
-  namespace fs = std::filesystem;
+std::vector<std::string> Interpreter::library_dirs() const {
   std::vector<std::string> dirs;
   dirs.push_back(dirs_[static_cast<std::size_t>(inputs_.back().file)]);
   dirs.push_back(dirs_[0]);
   for (const std::string& d : options_.library_paths) dirs.push_back(d);
   if (options_.system_library_path)
     for (const std::string& d : configured_library_paths()) dirs.push_back(d);
+  return dirs;
+}
+
+std::optional<std::string> Interpreter::find_on_library_path(const std::string& name) const {
+  namespace fs = std::filesystem;
   std::error_code ec;
-  if (fs::path(name).is_absolute()) {
-    if (fs::is_regular_file(name, ec)) return name;
-    dirs.clear();
-  }
-  for (const std::string& d : dirs) {
+  if (fs::path(name).is_absolute())
+    return fs::is_regular_file(name, ec) ? std::optional<std::string>(name) : std::nullopt;
+  for (const std::string& d : library_dirs()) {
     const fs::path p = fs::path(d) / name;
     if (fs::is_regular_file(p, ec)) return p.string();
   }
+  return std::nullopt;
+}
+
+std::string Interpreter::find_include(const std::string& name, const Pos& at) {
+  namespace fs = std::filesystem;
+  if (const auto found = find_on_library_path(name)) return *found;
+  std::vector<std::string> dirs;
+  if (!fs::path(name).is_absolute()) dirs = library_dirs();
   std::string looked;
   for (const std::string& d : dirs) looked += (looked.empty() ? "" : ", ") + d;
   fail_at(at, "cannot open #include file '" + name + "' (looked in " + looked +

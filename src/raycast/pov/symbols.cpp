@@ -44,6 +44,10 @@ const char* kind_name(const Value& v) {
       return "a macro";
     case Value::ColourMap:
       return "a colour map";
+    case Value::SkySphere:
+      return "a sky_sphere";
+    case Value::Fog:
+      return "a fog";
     case Value::Opaque:
       return "a block";
   }
@@ -181,11 +185,9 @@ void Interpreter::apply_declares() {
 namespace {
 bool is_skipped_block(std::string_view w) {
   static constexpr std::string_view kinds[] = {
-      "pigment_map", "normal_map",       "texture_map", "slope_map",
-      "density_map", "material_map",     "density",     "media",
-      "fog",         "rainbow",          "sky_sphere",  "photons",
-      "radiosity",   "interior_texture", "bump_map",    "image_pattern",
-      "image_map"};
+      "pigment_map",  "normal_map",       "texture_map", "slope_map",     "density_map",
+      "material_map", "density",          "media",       "rainbow",       "photons",
+      "radiosity",    "interior_texture", "bump_map",    "image_pattern", "image_map"};
   for (const std::string_view k : kinds)
     if (k == w) return true;
   return false;
@@ -229,7 +231,7 @@ Value Interpreter::rvalue() {
   } else if (word == "interior") {
     next();
     v.kind = Value::Interior;
-    v.ior = interior_block();
+    v.interior = interior_block();
   } else if (word == "material") {
     next();
     v.kind = Value::Material;
@@ -252,6 +254,14 @@ Value Interpreter::rvalue() {
     next();
     v.kind = Value::ColourMap;
     v.colour_map = std::make_shared<const std::vector<MapEntry>>(colour_map_block());
+  } else if (word == "sky_sphere") {
+    next();
+    v.kind = Value::SkySphere;
+    v.sky_sphere = std::make_shared<const SkySphere>(sky_sphere_block());
+  } else if (word == "fog") {
+    next();
+    v.kind = Value::Fog;
+    v.fog = std::make_shared<const Fog>(fog_block());
   } else if (is_skipped_block(w)) {
     next();
     skip_block(w);

@@ -50,6 +50,8 @@ struct Value {
     Spline,
     Macro,
     ColourMap,
+    SkySphere,
+    Fog,
     Opaque,  // a block raycast reads but does not build (normal, media, fog, ...): `text` names it
   };
   Kind kind = Float;
@@ -69,7 +71,9 @@ struct Value {
   std::shared_ptr<const SplineValue> spline;
   std::shared_ptr<const MacroDef> macro;
   std::shared_ptr<const std::vector<MapEntry>> colour_map;
-  std::optional<double> ior;  // Interior
+  std::shared_ptr<const pov::SkySphere> sky_sphere;
+  std::shared_ptr<const pov::Fog> fog;
+  std::optional<pov::Interior> interior;  // Interior
 
   static Value number(double f) {
     Value r;

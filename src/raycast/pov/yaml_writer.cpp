@@ -185,7 +185,14 @@ class Writer {
                         " (raycast's Fresnel splits transmitted light)");
       o << ", fresnel: true";
     }
-    if (t.ior) o << ", ior: " << num(*t.ior);
+    const Interior in = t.interior.value_or(Interior{});
+    if (in.ior) o << ", ior: " << num(*in.ior);
+    const bool own = in.fade_distance != 0 || in.fade_power != 0;
+    const double fade_distance = own ? in.fade_distance : f.fade_distance;
+    const double fade_power = own ? in.fade_power : f.fade_power;
+    if (fade_distance > 0 && fade_power > 0)
+      o << ", fade_distance: " << num(fade_distance) << ", fade_power: " << num(fade_power)
+        << ", fade_color: " << rgb(in.fade_color);
     o << "}";
     return o.str();
   }
@@ -201,8 +208,10 @@ class Writer {
     return name;
   }
 
-  std::string transform(const Node& n, bool axial) const {
+  std::string transform(const Node& n, bool axial, bool flip_z = false) const {
     std::vector<std::string> ops;
+    // Text is extruded towards +z in both frames: the mirror turns it round.
+    if (flip_z) ops.push_back("{scale: [1, 1, -1]}");
     // Torus, lathe and sor are about y in POV-Ray, about z in raycast: turn z onto y. (They are
     // symmetric about their axis, so mirroring z leaves this turn as it is.)
     if (axial) ops.push_back("{rotate: {axis: [1, 0, 0], degrees: -90}}");
@@ -277,6 +286,9 @@ class Writer {
   // raycast's solid union there, and a group elsewhere, keeping its inner surfaces).
   void object(const Node& n, int indent, bool solid, const Texture* inherited) {
     if (n.kind == Node::LightSource) return;  // written under lights:
+    // The scene format has neither (raycast renders them from the .pov file itself).
+    if (!n.clipped_by.empty()) fail_at(n.pos, unsupported("clipped_by"));
+    if (n.inverse) fail_at(n.pos, unsupported("inverse"));
     if (n.kind == Node::Reference) {  // object { Name }: a union of the shared object, placed
       Node wrap = n;
       wrap.kind = Node::Union;
@@ -377,6 +389,38 @@ class Writer {
           << "}";
         break;
       }
+      case Node::Prism: {
+        // Swept along y in POV-Ray, along z in raycast: see the loader's prism.
+        axial = true;
+        const char* spline = n.spline == "quadratic_spline" ? "quadratic"
+                             : n.spline == "cubic_spline"   ? "cubic"
+                             : n.spline == "bezier_spline"  ? "bezier"
+                                                            : "linear";
+        o << "prism: {points: [";
+        for (std::size_t i = 0; i < n.points.size(); ++i)
+          o << (i ? ", " : "") << "[" << num(n.points[i].x) << ", "
+            << num(mirror_ ? n.points[i].y : -n.points[i].y) << "]";
+        o << "], spline: " << spline << ", heights: [" << num(n.values[0]) << ", "
+          << num(n.values[1]) << "]";
+        if (n.conic_sweep) o << ", sweep: conic";
+        if (n.open) o << ", open: true";
+        o << "}";
+        break;
+      }
+      case Node::Text: {
+        if (n.font.empty()) return;  // the font was not found (the reader warned)
+        const auto quoted = [](const std::string& text) {
+          std::string q = "\"";
+          for (char c : text) {
+            if (c == '"' || c == '\\') q += '\\';
+            q += c;
+          }
+          return q + "\"";
+        };
+        o << "text: {font: " << quoted(n.font) << ", string: " << quoted(n.text)
+          << ", thickness: " << num(n.values[0]) << ", offset: " << vec(n.points[0]) << "}";
+        break;
+      }
       case Node::Triangle: {
         // Mirroring reverses the winding: swap two corners to keep the face's side.
         const std::size_t b = mirror_ ? 2 : 1, c = mirror_ ? 1 : 2;
@@ -425,7 +469,7 @@ class Writer {
     if (n.texture &&
         (!inherited || material_text(*n.texture, n.pos) != material_text(*inherited, n.pos)))
       mat = material(*n.texture, n.pos);
-    const std::string xf = transform(n, axial);
+    const std::string xf = transform(n, axial, n.kind == Node::Text && mirror_);
     if (n.kind == Node::Isosurface && n.contained_by_sphere) {
       // POV-Ray's container sphere: the implicit solid in the sphere's box, cut by the sphere.
       const Vec3 c = (n.bounds->at(0) + n.bounds->at(1)) * 0.5;

@@ -112,7 +112,7 @@ class TextWriter {
     line(indent, head + ": o " + vec_text(r.ray.o) + " d " + vec_text(r.ray.d) + " t in [" +
                      num(r.ray.tmin) + ", " + num(r.ray.tmax) + "]");
     if (!r.hit) {
-      line(indent + 1, "miss: background " + vec_text(scene_.render.background));
+      line(indent + 1, "miss: background " + vec_text(r.radiance));
       return;
     }
     hit(r, indent + 1);
@@ -203,8 +203,7 @@ class JsonWriter {
            : r.stop == RayStop::kMiss   ? "\"miss\""
                                         : "null";
     if (!r.hit) {
-      out += ", \"background\": " + vec_json(scene_.render.background) +
-             ", \"hit\": null, \"children\": []}";
+      out += ", \"background\": " + vec_json(r.radiance) + ", \"hit\": null, \"children\": []}";
       return;
     }
     out += ", \"hit\": ";

@@ -62,6 +62,10 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
     exponents_.push_back(integer_exponent(m.shininess));
   }
   for (const Light& light : scene.lights) emitted_.push_back(light.emitted());
+  if (const Atmosphere* a = scene.render.atmosphere.get(); a && !a->empty()) {
+    atmosphere_ = a;
+    veils_ = a->veils();
+  }
   for (std::size_t k = 0; k < scene.lights.size(); ++k)
     light_lists_.push_back(scene.object_set().light_lists(k));
   objects_.reserve(scene.objects.size());
@@ -92,6 +96,10 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
                                          : ObjectFacts::kFilter;
     }
     if (!o.casts_shadow) f.shadow = ObjectFacts::kPass;  // shadow rays walk past it (passes())
+    if (f.hit_material >= 0 && std::size_t(f.hit_material) < scene.materials.size() &&
+        (f.shadow == ObjectFacts::kFilter || f.shadow == ObjectFacts::kWalk) &&
+        fades(scene.materials[std::size_t(f.hit_material)]))
+      f.fade = &scene.materials[std::size_t(f.hit_material)];
     any_transmissive_ |= !o.casts_shadow;
     objects_.push_back(f);
   }
@@ -148,11 +156,11 @@ Color Integrator::diagnostic_hit(const Ray& ray, bool found, const SceneHit& hit
 // inlining offset_ray_origin into the render's mode (3 % more instructions on
 // bench/scenes/glass.yaml under bench/render_instructions.sh).
 extern template Color Integrator::trace<Integrator::kCount>(const Ray& ray, int depth,
-                                                            SampleState& state,
-                                                            double weight) const;
+                                                            SampleState& state, double weight,
+                                                            const Material* medium) const;
 extern template Color Integrator::trace<Integrator::kRecord>(const Ray& ray, int depth,
-                                                             SampleState& state,
-                                                             double weight) const;
+                                                             SampleState& state, double weight,
+                                                             const Material* medium) const;
 
 Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double weight) const {
   if (state.recorder) [[unlikely]]
@@ -162,8 +170,8 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   // instructions on bench/scenes/whitted.yaml.
   ++state.rays;
   SceneHit hit;
-  if (!scene_.intersect(ray, hit)) return scene_.render.background;
-  return whitted_hit<kPlain>(ray, hit, depth, state, weight);
+  if (!scene_.intersect(ray, hit)) return missed(ray);
+  return fogged(ray, hit.local.t, whitted_hit<kPlain>(ray, hit, depth, state, weight));
 }
 
 Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
@@ -171,7 +179,7 @@ Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
   if (!(ray.tmin <= ray.tmax)) return {0, 0, 0};  // a lens's pixel that sees nothing
   ++state.rays;
   if (mode_ != RenderMode::kWhitted) return diagnostic_hit(ray, found, hit);
-  return found ? whitted_hit<kPlain>(ray, hit, 0, state, 1) : scene_.render.background;
+  return found ? fogged(ray, hit.local.t, whitted_hit<kPlain>(ray, hit, 0, state, 1)) : missed(ray);
 }
 
 Color Integrator::shadow(const Vec3& from, const Vec3& to, bool to_infinity,
@@ -245,12 +253,34 @@ inline bool Integrator::passes(std::uint32_t index, const Ray& segment, Color& t
   // material's transmission * color once.
   if (facts.shadow == ObjectFacts::kOpaque) return !crosses(index, segment);
   if (facts.shadow == ObjectFacts::kPass) return true;
+  if (facts.fade) [[unlikely]]
+    return passes_fading(index, segment, through);
   if (facts.shadow == ObjectFacts::kFilter) {
     if (!crosses(index, segment)) return true;
     through = mul(through, filters_[std::size_t(facts.material)]);
     return max_component(through) > 0;
   }
   return passes_walk(index, segment, through);
+}
+
+bool Integrator::passes_fading(std::uint32_t index, const Ray& segment, Color& through) const {
+  const ObjectFacts& facts = objects_[index];
+  if (facts.shadow == ObjectFacts::kFilter) {
+    if (crosses(index, segment)) through = mul(through, filters_[std::size_t(facts.material)]);
+  } else if (!passes_walk(index, segment, through)) {
+    return false;
+  }
+  // The length inside: the solid's spans over the whole line, cut to the segment.
+  SpanList inside;
+  spans(scene_.objects[index], segment, inside);
+  double length_inside = 0;
+  for (const Span& s : inside) {
+    const double from = std::max(s.in.t, segment.tmin), to = std::min(s.out.t, segment.tmax);
+    if (to > from) length_inside += to - from;
+  }
+  if (length_inside > 0)
+    through = mul(through, interior_fade(*facts.fade, length_inside * length(segment.d)));
+  return max_component(through) > 0;
 }
 
 bool Integrator::passes_walk(std::uint32_t index, const Ray& segment, Color& through) const {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "render/atmosphere.h"
 #include "render/ray_recorder.h"
 #include "render/rng.h"
 #include "render/texture.h"
@@ -64,8 +65,25 @@ class Integrator {
 
  private:
   /// whitted() in one mode for the whole recursion (TraceMode).
+  /// `medium`: the fading interior the ray starts in (its radiance is attenuated by the distance
+  /// to its hit, interior_fade), or nullptr.
   template <TraceMode M>
-  Color trace(const Ray& ray, int depth, SampleState& state, double weight) const;
+  Color trace(const Ray& ray, int depth, SampleState& state, double weight,
+              const Material* medium = nullptr) const;
+  /// What a ray that hits nothing brings: the background, or the sky sphere across the fogs.
+  Color missed(const Ray& ray) const {
+    return atmosphere_ ? miss_color(*atmosphere_, scene_.render.background, ray)
+                       : scene_.render.background;
+  }
+  /// Radiance c leaving a hit at ray parameter t, as it arrives across the rainbows and fogs.
+  Color fogged(const Ray& ray, double t, const Color& c) const {
+    return veils_ ? veiled(*atmosphere_, ray, t * length(ray.d), c) : c;
+  }
+  /// trace() for a reflected or refracted ray: in kRecord with RayRecorder::camera_ray_only, the
+  /// ray is announced and its subtree traced in kCount.
+  template <TraceMode M>
+  [[gnu::always_inline]] Color trace_child(const Ray& ray, int depth, SampleState& state,
+                                           double weight, const Material* medium) const;
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
   /// li_diagnostic() after its query (found, hit: scene.intersect's answer); counts no ray.
@@ -83,6 +101,9 @@ class Integrator {
   /// passes() for an object with materials per part or a textured transmissive one: a walk of
   /// its crossings.
   bool passes_walk(std::uint32_t index, const Ray& segment, Color& through) const;
+  /// passes() for an object whose interior fades light: the filter of its kind, then the fade
+  /// over the length of the segment inside it.
+  bool passes_fading(std::uint32_t index, const Ray& segment, Color& through) const;
   /// Whether the segment crosses object `index` (occluded(), with planes and spheres called
   /// directly).
   bool crosses(std::uint32_t index, const Ray& segment) const;
@@ -142,6 +163,8 @@ class Integrator {
     // The shape when it is an untransformed plane or sphere (crosses() calls it directly).
     const Plane* plane = nullptr;
     const Sphere* sphere = nullptr;
+    // Its material when light fading inside it (Material::fade_distance) dims shadow rays.
+    const Material* fade = nullptr;
   };
 
   const Scene& scene_;
@@ -152,6 +175,8 @@ class Integrator {
   std::vector<Color> emitted_;        // by light: Light::emitted()
   std::vector<unsigned> exponents_;   // by material: integer Phong exponent, 0 for std::pow
   bool any_transmissive_ = false;
+  const Atmosphere* atmosphere_ = nullptr;  // null: neither sky sphere nor fog
+  bool veils_ = false;                      // fogs or rainbows over every segment
   // By light: the scene's direction lists around it (ObjectSet::light_lists), or nullptr.
   std::vector<const DirectionLists*> light_lists_;
 };

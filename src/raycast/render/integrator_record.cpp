@@ -14,8 +14,8 @@
 namespace raycast {
 
 template Color Integrator::trace<Integrator::kCount>(const Ray& ray, int depth, SampleState& state,
-                                                     double weight) const;
+                                                     double weight, const Material* medium) const;
 template Color Integrator::trace<Integrator::kRecord>(const Ray& ray, int depth, SampleState& state,
-                                                      double weight) const;
+                                                      double weight, const Material* medium) const;
 
 }  // namespace raycast

@@ -152,6 +152,7 @@ RecordedRender render_recorded(const Scene& scene, const RenderOptions& options,
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     SampleRecorder recorder;
     recorder.events = terms;
+    recorder.camera_ray_only = true;  // the terms are the camera ray's
     std::vector<Color> sums(outputs.size());
     for (int y = rows.begin(); y != rows.end(); ++y)
       for (int x = 0; x < width; ++x) {

@@ -55,6 +55,9 @@ class RayRecorder {
   RayCounts counts;
   /// false: only `counts` is kept and no hook is called (the integrator's cheaper counting mode).
   bool events = true;
+  /// true: hooks only for the camera ray; its secondary rays report begin_ray and end_ray (so
+  /// their radiance reaches the camera ray's terms) and are traced below in the counting mode.
+  bool camera_ray_only = false;
   /// The next begin_ray is a secondary ray of this kind carrying `weight` of its parent.
   virtual void child(RayKind kind, double weight) = 0;
   /// A ray is cast (the first of a sample is a camera ray).

@@ -10,6 +10,13 @@ namespace raycast {
 
 namespace {
 
+/// The interior a secondary ray travels in: m's when the ray goes into the object (`inward`: a
+/// refracted ray from outside, a mirrored one from inside) and m fades, else none (nullptr).
+/// Only the innermost interior is followed: a ray leaving an object is taken to be in air.
+inline const Material* interior_after(const Material& m, bool inward) {
+  return inward && fades(m) ? &m : nullptr;
+}
+
 /// The spot light's cone (render/light_falloff.h).
 double spot_factor(const Light& light, const Vec3& from_light) {
   return spot_cone(light, from_light);
@@ -57,7 +64,8 @@ template <bool kTextured>
 }  // namespace
 
 template <Integrator::TraceMode M>
-Color Integrator::trace(const Ray& ray, int depth, SampleState& state, double weight) const {
+Color Integrator::trace(const Ray& ray, int depth, SampleState& state, double weight,
+                        const Material* medium) const {
   if constexpr (M != kPlain) {
     RayCounts& counts = state.recorder->counts;
     if (depth == 0) ++counts.camera;  // secondary rays are counted where they are cast
@@ -67,20 +75,38 @@ Color Integrator::trace(const Ray& ray, int depth, SampleState& state, double we
   ++state.rays;
   SceneHit hit;
   if (!scene_.intersect(ray, hit)) {
+    // Inside a fading interior, light from beyond an open surface comes from infinitely far.
+    const Color seen = medium ? mul(interior_fade(*medium, kInfinity), missed(ray)) : missed(ray);
     if constexpr (M == kRecord) {
-      state.recorder->miss(scene_.render.background);
+      state.recorder->miss(seen);
       state.recorder->stop(RayStop::kMiss);
-      state.recorder->end_ray(scene_.render.background);
+      state.recorder->end_ray(seen);
     }
-    return scene_.render.background;
+    return seen;
   }
-  if constexpr (M != kRecord) {
-    return whitted_hit<M>(ray, hit, depth, state, weight);
-  } else {
-    const Color radiance = whitted_hit<M>(ray, hit, depth, state, weight);
-    state.recorder->end_ray(radiance);
-    return radiance;
+  Color radiance = whitted_hit<M>(ray, hit, depth, state, weight);
+  // The light reaching the ray's origin travelled hit.t |d| inside the interior it starts in
+  // (where, as in POV-Ray, there is no fog), or across the atmosphere.
+  if (medium) [[unlikely]]
+    radiance = mul(interior_fade(*medium, hit.local.t * length(ray.d)), radiance);
+  else
+    radiance = fogged(ray, hit.local.t, radiance);
+  if constexpr (M == kRecord) state.recorder->end_ray(radiance);
+  return radiance;
+}
+
+template <Integrator::TraceMode M>
+inline Color Integrator::trace_child(const Ray& ray, int depth, SampleState& state, double weight,
+                                     const Material* medium) const {
+  if constexpr (M == kRecord) {
+    if (state.recorder->camera_ray_only) {
+      state.recorder->begin_ray(ray, depth);
+      const Color radiance = trace<kCount>(ray, depth, state, weight, medium);
+      state.recorder->end_ray(radiance);
+      return radiance;
+    }
   }
+  return trace<M>(ray, depth, state, weight, medium);
 }
 
 template <Integrator::TraceMode M>
@@ -147,14 +173,14 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
-    result += w_reflect *
-              trace<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
+    result += w_reflect * trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
+                                         weight * w_reflect, interior_after(m, !outside));
   }
   if (w_refract > 0 && weight * w_refract >= cutoff) {
     if constexpr (M != kPlain) ++state.recorder->counts.refraction;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract);
-    result += w_refract *
-              trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state, weight * w_refract);
+    result += w_refract * trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
+                                         weight * w_refract, interior_after(m, outside));
   }
   return result;
 }
@@ -206,16 +232,17 @@ Color Integrator::textured_hit(const Ray& ray, const SceneHit& hit, std::size_t 
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
-    const Color mirrored =
-        trace<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state, weight * w_reflect);
+    const Color mirrored = trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
+                                          weight * w_reflect, interior_after(m, !outside));
     result += look.finish.reflection_metallic ? w_reflect * mul(look.pigment, mirrored)
                                               : w_reflect * mirrored;
   }
   if (w_through > 0 && weight * w_through >= cutoff) {
     if constexpr (M != kPlain) ++state.recorder->counts.refraction;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_through);
-    result += mul(look.through, trace<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
-                                         weight * w_through));
+    result +=
+        mul(look.through, trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
+                                         weight * w_through, interior_after(m, outside)));
   }
   return result;
 }

@@ -1,7 +1,9 @@
 #pragma once
+#include <memory>
 #include <optional>
 
 #include "math/vec3.h"
+#include "scene/atmosphere.h"
 #include "scene/render_mode.h"
 
 namespace raycast {
@@ -79,6 +81,9 @@ struct RenderSettings {
   int max_depth = 5;
   double bailout = 1.0 / 255;  // secondary rays of accumulated weight below this are not traced
   Vec3 background{0, 0, 0};
+  // The sky sphere and fogs (scene/atmosphere.h); null when the scene has neither, which keeps
+  // the background's plain path.
+  std::shared_ptr<const Atmosphere> atmosphere;
   Vec3 ambient{0, 0, 0};
   unsigned seed = 0;
   AntialiasSettings antialias;

@@ -45,10 +45,9 @@ struct LatticeTables {
   }
 };
 
-const LatticeTables& tables() {
-  static const LatticeTables t;
-  return t;
-}
+// Built at start-up (a namespace-scope constant: no guard on every noise call).
+const LatticeTables kTables;
+const LatticeTables& tables() { return kTables; }
 
 // The lattice cell of a coordinate: its floor (wrapped to the table) and the fraction.
 struct Cell {
@@ -57,7 +56,11 @@ struct Cell {
 };
 inline Cell cell(double v) {
   const double fl = std::floor(v);
-  // The table repeats every 256 cells: the floor modulo 256, exact for any finite double.
+  // The table repeats every 256 cells: the floor modulo 256. In the range of a 64-bit integer
+  // its low bits are that (two's complement), without the division; beyond, exact for any
+  // finite double.
+  if (std::abs(fl) < 0x1p62) [[likely]]
+    return {int(static_cast<std::int64_t>(fl) & (kTable - 1)), v - fl};
   const double wrapped = fl - 256.0 * std::floor(fl / 256.0);
   return {int(wrapped) & (kTable - 1), v - fl};
 }
