@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """raycast.RaycastingScene beside Open3D's RaycastingScene (python3-open3d), the same script
-for both (docs/performance-python.md "Beside Open3D"):
+for both (docs/performance.md "Python"):
 
   PYTHONPATH=build/release/python /usr/bin/python3 python/bench_open3d.py [--points N]
 
