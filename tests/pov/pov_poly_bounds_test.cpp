@@ -55,5 +55,14 @@ TEST(PovPolyBounds, OtherBoundingShapes_LeaveThePolyUnbounded) {
   EXPECT_FALSE(only_object(s).bounds.has_value());
 }
 
+TEST(PovPolyBounds, IntersectionWithASphere_BoundsThePolyAndKeepsTheSphere) {
+  const PovScene s =
+      read("intersection { " + std::string(kSphereQuadric) + "} sphere { <0, 1, 0>, 3 } }\n");
+  const Node& n = only_object(s);
+  ASSERT_EQ(n.children.size(), 2u);
+  expect_box(n.children[0], {-3, -2, -3}, {3, 4, 3});
+  EXPECT_EQ(n.children[1].kind, Node::Sphere);
+}
+
 }  // namespace
 }  // namespace raycast::pov

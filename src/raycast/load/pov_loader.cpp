@@ -457,7 +457,7 @@ class Builder {
       case Node::Poly:
         if (!n.bounds) {
           warn(n.pos, "unbounded polynomials",
-               "raycast needs bounded_by { box } or an intersection with a box");
+               "raycast needs bounded_by { box } or { sphere }, or an intersection with one");
           return std::nullopt;
         }
         return make_algebraic(polynomial_text(n), box_of(*n.bounds));

@@ -76,24 +76,6 @@ bool is_csg(Node::Kind k) {
 
 constexpr int kSplineSamples = 16;  // line segments per spline segment of a lathe or sor
 
-// An intersection of a poly (which raycast needs bounded) with a box in the same space: the box
-// becomes the poly's bounds (raycast's algebraic solid is the polynomial's inside closed by its
-// box: the same solid) and leaves the intersection.
-void fold_poly_bounds(Node& n) {
-  for (std::size_t k = 0; k < n.children.size(); ++k) {
-    Node& p = n.children[k];
-    if (p.kind != Node::Poly || p.bounds || !p.xforms.empty()) continue;
-    for (std::size_t i = 0; i < n.children.size(); ++i) {
-      const Node& b = n.children[i];
-      if (b.kind != Node::Box || !b.xforms.empty() || (b.texture && !p.texture)) continue;
-      p.bounds = std::array<Vec3, 2>{b.points[0], b.points[1]};
-      n.children.erase(n.children.begin() + static_cast<std::ptrdiff_t>(i));
-      if (i < k) --k;  // the poly moved down by one
-      break;
-    }
-  }
-}
-
 // The box around a bounded_by object that a poly takes as its bounds: a box or a sphere, moved
 // by the object's own transformations (the box of the moved corners); nullopt for other shapes
 // and singular transformations. POV-Ray tests the bound only to skip rays that miss it; a poly
@@ -120,6 +102,29 @@ std::optional<std::array<Vec3, 2>> poly_bounds_of(const Node& b) {
     out_hi = max(out_hi, p);
   }
   return std::array<Vec3, 2>{out_lo, out_hi};
+}
+
+// An intersection of a poly (which raycast needs bounded) with a box in the same space: the box
+// becomes the poly's bounds (raycast's algebraic solid is the polynomial's inside closed by its
+// box: the same solid) and leaves the intersection. With a sphere, the sphere's box bounds it.
+void fold_poly_bounds(Node& n) {
+  for (std::size_t k = 0; k < n.children.size(); ++k) {
+    Node& p = n.children[k];
+    if (p.kind != Node::Poly || p.bounds || !p.xforms.empty()) continue;
+    for (std::size_t i = 0; i < n.children.size(); ++i) {
+      const Node& b = n.children[i];
+      if (b.kind == Node::Sphere && b.points.size() == 1 && !b.values.empty()) {
+        // A sphere's box bounds the poly; the sphere stays in the intersection and cuts it.
+        p.bounds = poly_bounds_of(b);
+        break;
+      }
+      if (b.kind != Node::Box || !b.xforms.empty() || (b.texture && !p.texture)) continue;
+      p.bounds = std::array<Vec3, 2>{b.points[0], b.points[1]};
+      n.children.erase(n.children.begin() + static_cast<std::ptrdiff_t>(i));
+      if (i < k) --k;  // the poly moved down by one
+      break;
+    }
+  }
 }
 
 std::size_t weight(const Node& n) {
