@@ -7,10 +7,6 @@
    preallocated columns), 10^6 rays at a 1M-triangle sphere, best of 3 each.
 2. compute_distance / compute_signed_distance points per second on the same sphere, and the same
    for Open3D's RaycastingScene when --open3d is given (python3-open3d). --distance runs only 2.
-3. --api: raycast.RaycastingScene against Open3D's RaycastingScene through the same calls on the
-   same sphere: cast_rays (10^5 rays), compute_distance, compute_signed_distance and
-   compute_occupancy (5,000 points in [-1.5, 1.5]^3), queries per CPU second. Debian's Open3D 0.16
-   returns no hits from cast_rays: its figure is throughput only.
 """
 import os
 import sys
@@ -51,34 +47,9 @@ def best(f, k=2):
     return min(out)
 
 
-def compare_api(v, f):
-    """Queries per CPU second of the same Open3D calls on raycast's and Open3D's class."""
-    import open3d as o3d
-    rng = np.random.default_rng(2)
-    o = rng.normal(size=(10**5, 3))
-    o *= 3 / np.linalg.norm(o, axis=1, keepdims=True)
-    rays = np.concatenate([o, rng.uniform(-1, 1, o.shape) - o], 1).astype(np.float32)
-    pts = rng.uniform(-1.5, 1.5, (5000, 3)).astype(np.float32)
-    scenes = {"raycast": raycast.RaycastingScene(), "open3d": o3d.t.geometry.RaycastingScene()}
-    for s in scenes.values():
-        s.add_triangles(o3d.core.Tensor(v.astype(np.float32)), o3d.core.Tensor(f.astype(np.uint32)))
-    for name, n in (("cast_rays", len(rays)), ("compute_distance", len(pts)),
-                    ("compute_signed_distance", len(pts)), ("compute_occupancy", len(pts))):
-        rate = {}
-        for who, s in scenes.items():
-            q = o3d.core.Tensor(rays if name == "cast_rays" else pts)
-            getattr(s, name)(q)  # builds what the query needs once
-            rate[who] = n / best(lambda: getattr(s, name)(q), 3)
-        print(f"{name}: raycast {rate['raycast']:,.0f}, open3d {rate['open3d']:,.0f} per cpu-s, "
-              f"ratio {rate['raycast'] / rate['open3d']:.1f}x", flush=True)
-
-
 def main():
     open3d = "--open3d" in sys.argv
     v, f = uv_sphere(501, 1000)
-    if "--api" in sys.argv:
-        print(f"load {os.getloadavg()}; {len(f)} triangles; {os.cpu_count()} cores")
-        return compare_api(v, f)
     print(f"load {os.getloadavg()}; {len(f)} triangles; {os.cpu_count()} cores")
     scene = raycast.Scene()
     scene.add_triangles(v, f)
