@@ -278,6 +278,7 @@ TEST(PovImport, LightsMap) {
   EXPECT_EQ(s.lights[1].type, LightType::kSpot);
   EXPECT_EQ(s.lights[2].type, LightType::kArea);  // POV-Ray's grid of 3 x 4 points
   EXPECT_EQ(s.lights[2].size1 * s.lights[2].size2, 12);
+  EXPECT_EQ(s.lights[2].adaptive, 1);
 }
 
 TEST(PovImport, CliConvertAndRender) {

@@ -58,6 +58,7 @@ TEST(PovLightImport, AreaLight_GridAxesTurnedWithTheLight) {
   EXPECT_EQ(l.size1, 3);
   EXPECT_EQ(l.size2, 5);
   EXPECT_TRUE(l.jitter && l.circular && l.orient);
+  EXPECT_EQ(l.adaptive, 1);
   EXPECT_FALSE(l.spot);
   // rotate 90 about y turns x to -z (POV-Ray's), mirrored to +z in raycast's frame.
   EXPECT_NEAR(l.axis1.x, 0, 1e-12);
@@ -66,6 +67,7 @@ TEST(PovLightImport, AreaLight_GridAxesTurnedWithTheLight) {
   const Light spot =
       light("light_source { <0, 5, 0> rgb 1 spotlight point_at 0 area_light x, z, 2, 2 }");
   EXPECT_EQ(spot.type, LightType::kArea);
+  EXPECT_EQ(spot.adaptive, -1);  // absent: every grid point sampled
   EXPECT_TRUE(spot.spot);
   EXPECT_EQ(spot.angle, 45);  // POV-Ray's default falloff
 }

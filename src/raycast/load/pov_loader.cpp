@@ -232,6 +232,7 @@ class Builder {
       out.axis2 = turn(l.axis2);
       out.size1 = l.size1;
       out.size2 = l.size2;
+      out.adaptive = l.adaptive;
       out.jitter = l.jitter;
       out.circular = l.circular;
       out.orient = l.orient;

@@ -49,6 +49,7 @@ void read_area(Fields& f, Light& light) {
   light.axis2 = f.vec3("axis2");
   light.size1 = f.integer("size1", light.size1, 1, 64);
   light.size2 = f.integer("size2", light.size2, 1, 64);
+  light.adaptive = f.integer("adaptive", light.adaptive, -1, 6);
   light.jitter = f.boolean("jitter", light.jitter);
   light.circular = f.boolean("circular", light.circular);
   light.orient = f.boolean("orient", light.orient);

@@ -208,7 +208,10 @@ bool Interpreter::light_number(Light& l, const std::string& w) {
   if (!target && w != "adaptive") return false;
   next();
   const double v = number(w.c_str());
-  if (target) *target = v;  // adaptive: the full grid is always sampled
+  if (target)
+    *target = v;
+  else  // levels above 6 split past any grid of at most 64 points a side
+    l.adaptive = static_cast<int>(std::clamp(v, 0.0, 6.0));
   return true;
 }
 

@@ -104,6 +104,7 @@ struct Light {
   bool area = false;
   Vec3 axis1, axis2;
   int size1 = 1, size2 = 1;
+  int adaptive = -1;  // -1: absent (every grid point sampled)
   bool jitter = false, circular = false, orient = false;
   Pos pos;
 };

@@ -125,6 +125,7 @@ class Writer {
     } else if (l.area) {
       o << "  - {type: area, position: " << vec(m(l.position)) << ", axis1: " << vec(m(l.axis1))
         << ", axis2: " << vec(m(l.axis2)) << ", size1: " << l.size1 << ", size2: " << l.size2
+        << (l.adaptive >= 0 ? ", adaptive: " + std::to_string(l.adaptive) : std::string())
         << ", jitter: " << (l.jitter ? "true" : "false")
         << ", circular: " << (l.circular ? "true" : "false")
         << ", orient: " << (l.orient ? "true" : "false");

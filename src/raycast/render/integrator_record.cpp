@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "geometry/spawn.h"
+#include "render/area_light_adaptive.h"
 #include "render/integrator.h"
 #include "render/light_falloff.h"
 #include "render/optics.h"

@@ -66,14 +66,24 @@ inline double attenuation_factor(const Light& light, double dist2) {
   return 1;
 }
 
-/// The area light's grid points seen from p, each passed to add(target): POV-Ray's array of
-/// size1 x size2 point lights spanning axis1 and axis2 (corners included; one row or column is
-/// the centre line), jittered within their cells, squeezed into an ellipse (circular), turned
-/// to face p (orient).
-template <class Add>
-void area_light_points(const Light& light, const Vec3& p, Rng& rng, Add&& add) {
-  Vec3 a1 = light.axis1, a2 = light.axis2;
-  if (light.orient) {
+/// An area light's grid seen from p: POV-Ray's array of size1 x size2 point lights spanning
+/// axis1 and axis2 (corners included; one row or column is the centre line), jittered within
+/// their cells, squeezed into an ellipse (circular), turned to face p (orient). The light's
+/// fields copied: the compiler keeps them in registers across the generator's calls.
+struct AreaLightGrid {
+  Vec3 position, a1, a2;
+  int n1, n2;
+  bool jitter, circular;
+
+  AreaLightGrid(const Light& light, const Vec3& p)
+      : position(light.position),
+        a1(light.axis1),
+        a2(light.axis2),
+        n1(light.size1),
+        n2(light.size2),
+        jitter(light.jitter),
+        circular(light.circular) {
+    if (!light.orient) return;
     // The grid's plane turned perpendicular to the light-to-point line, its axes' lengths kept.
     const Vec3 w = p - light.position;
     if (length_squared(w) > 0) {
@@ -83,31 +93,38 @@ void area_light_points(const Light& light, const Vec3& p, Rng& rng, Add&& add) {
       a2 = length(light.axis2) * t;
     }
   }
-  const int n1 = light.size1, n2 = light.size2;
-  for (int i = 0; i < n1; ++i) {
-    for (int j = 0; j < n2; ++j) {
-      double u = n1 > 1 ? double(i) / (n1 - 1) - 0.5 : 0;
-      double v = n2 > 1 ? double(j) / (n2 - 1) - 0.5 : 0;
-      if (light.jitter) {
-        if (n1 > 1) u += (rng.uniform() - 0.5) / (n1 - 1);
-        if (n2 > 1) v += (rng.uniform() - 0.5) / (n2 - 1);
-      }
-      if (light.circular) {
-        // The square [-0.5, 0.5]^2 onto the disc of radius 0.5, square rings onto circles
-        // (Shirley and Chiu's concentric map).
-        const double a = 2 * u, b = 2 * v;
-        if (a != 0 || b != 0) {
-          const bool wide = std::abs(a) > std::abs(b);
-          const double r = wide ? a : b;
-          const double phi = wide ? std::numbers::pi / 4 * (b / a)
-                                  : std::numbers::pi / 2 - std::numbers::pi / 4 * (a / b);
-          u = 0.5 * r * std::cos(phi);
-          v = 0.5 * r * std::sin(phi);
-        }
-      }
-      add(light.position + u * a1 + v * a2);
+
+  /// Grid point (i, j); with jitter, two numbers from rng.
+  [[gnu::always_inline]] Vec3 point(int i, int j, Rng& rng) const {
+    double u = n1 > 1 ? double(i) / (n1 - 1) - 0.5 : 0;
+    double v = n2 > 1 ? double(j) / (n2 - 1) - 0.5 : 0;
+    if (jitter) {
+      if (n1 > 1) u += (rng.uniform() - 0.5) / (n1 - 1);
+      if (n2 > 1) v += (rng.uniform() - 0.5) / (n2 - 1);
     }
+    if (circular) {
+      // The square [-0.5, 0.5]^2 onto the disc of radius 0.5, square rings onto circles
+      // (Shirley and Chiu's concentric map).
+      const double a = 2 * u, b = 2 * v;
+      if (a != 0 || b != 0) {
+        const bool wide = std::abs(a) > std::abs(b);
+        const double r = wide ? a : b;
+        const double phi = wide ? std::numbers::pi / 4 * (b / a)
+                                : std::numbers::pi / 2 - std::numbers::pi / 4 * (a / b);
+        u = 0.5 * r * std::cos(phi);
+        v = 0.5 * r * std::sin(phi);
+      }
+    }
+    return position + u * a1 + v * a2;
   }
+};
+
+/// Every grid point of the area light seen from p, row by row, each passed to add(target).
+template <class Add>
+void area_light_points(const Light& light, const Vec3& p, Rng& rng, Add&& add) {
+  const AreaLightGrid grid(light, p);
+  for (int i = 0; i < grid.n1; ++i)
+    for (int j = 0; j < grid.n2; ++j) add(grid.point(i, j, rng));
 }
 
 }  // namespace raycast

@@ -2,7 +2,8 @@
 // integrator.cpp (kPlain, the render's) and integrator_record.cpp (kCount and kRecord, for
 // `raycast explain` and the recorded outputs), so that the render's translation unit is compiled
 // and inlined as if there were one mode only.
-// Needs, before it: render/integrator.h, geometry/spawn.h, render/light_falloff.h, render/optics.h,
+// Needs, before it: render/integrator.h, geometry/spawn.h, render/light_falloff.h,
+// render/area_light_adaptive.h, render/optics.h,
 // render/terminator.h,
 // <algorithm>, <cmath>, <numbers>.
 
@@ -298,12 +299,13 @@ template <class Add>
 
 // Directional, cylinder and area lights: the cone (spot, cylinder) and attenuation of the
 // light's centre, then one shadow ray per grid point of an area light (each with its share of the
-// light and the centre's direction, as POV-Ray lights its area lights) or one along the
+// light and the centre's direction, as POV-Ray lights its area lights; with `adaptive`, only
+// those adaptive_area_light_sum samples, through add_to into its own total) or one along the
 // cylinder's axis. `unshadowed`: set for a shadowless light or beyond a parallel light's plane.
-template <class Add>
+template <class Add, class AddTo>
 [[gnu::always_inline]] inline void extended_light(const Light& light, const Color& emitted,
                                                   const Vec3& p, Rng& rng, bool& unshadowed,
-                                                  Add& add) {
+                                                  Add& add, AddTo& add_to, Color& sum) {
   if (light.type == LightType::kDirectional)
     return directional_light(light, emitted, p, unshadowed, add);
   const Vec3 to = light.position - p;
@@ -325,6 +327,14 @@ template <class Add>
     e *= cone;
   }
   const Color share = e / double(light.size1 * light.size2);
+  if (light.adaptive >= 0) {
+    sum += adaptive_area_light_sum(light, p, rng, [&](const Vec3& target) {
+      Color point{0, 0, 0};
+      add_to(point, l, target, false, share);
+      return point;
+    });
+    return;
+  }
   area_light_points(light, p, rng, [&](const Vec3& target) { add(l, target, false, share); });
 }
 
@@ -360,11 +370,12 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
   // point and spot lights have them, and add's shadow rays to such a light end at it).
   const DirectionLists* lists = nullptr;
   bool unshadowed = false, no_highlight = false;  // per light below (extended_light)
-  // One light direction l towards `target` (a point, or a direction when at infinity).
+  // One light direction l towards `target` (a point, or a direction when at infinity), its
+  // visible part added to `sum` (add_to: to `acc`).
   // The light of the loop below, for a recorder.
   std::size_t light_index = 0;
-  auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e)
-      __attribute__((always_inline)) {
+  auto add_to = [&](Color & acc, const Vec3& l, const Vec3& target, bool at_infinity,
+                    const Color& e) __attribute__((always_inline)) {
     const double nl = dot(n, l);
     // A light with no positive channel (e <= 0) gives a term <= 0: the test of the term below
     // drops it, without a test of e here for every light.
@@ -384,11 +395,11 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
       const SurfaceInfo& from = &lit != &si && dot(l, si.shading_n) > 0 ? lit : si;
       if constexpr (kTextured)
         light_recorded<M>({light_index, l, nl, diffuse_part, specular_part, false, {}, {}},
-                          origin_towards(from, l), target, at_infinity, lists, term, state, sum);
+                          origin_towards(from, l), target, at_infinity, lists, term, state, acc);
       else
         light_recorded<M>(
             {light_index, l, nl, mul(e, m.diffuse * nl * c), highlight * e, false, {}, {}},
-            origin_towards(from, l), target, at_infinity, lists, term, state, sum);
+            origin_towards(from, l), target, at_infinity, lists, term, state, acc);
       return;
     }
     if (!(max_component(term) > 0)) return;
@@ -399,7 +410,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
       const Vec3& o = origin_towards(from, l);
       if (unshadowed ||
           !(lists ? blocked_to(o, *lists, state) : blocked(o, target, at_infinity, state)))
-        sum += term;
+        acc += term;
       return;
     }
     // Unblocked, the filter product has a channel above 0 (passes() stops the walk otherwise).
@@ -407,7 +418,11 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     const Vec3& o = origin_towards(from, l);
     if (unshadowed || (lists ? filters_to(o, *lists, state, through)
                              : filters(o, target, at_infinity, state, through)))
-      sum += mul(through, term);
+      acc += mul(through, term);
+  };
+  auto add = [&](const Vec3& l, const Vec3& target, bool at_infinity, const Color& e)
+      __attribute__((always_inline)) {
+    add_to(sum, l, target, at_infinity, e);
   };
   // The lights' bounds once (the shadow rays' calls would otherwise make them reloaded per light).
   const Light* const lights = scene_.lights.data();
@@ -424,7 +439,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
       case LightType::kDirectional:
       case LightType::kCylinder:
       case LightType::kArea:
-        extended_light(light, emitted, si.p, state.rng, unshadowed, add);
+        extended_light(light, emitted, si.p, state.rng, unshadowed, add, add_to, sum);
         break;
       case LightType::kPoint:
       case LightType::kSpot: {

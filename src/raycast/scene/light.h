@@ -32,9 +32,12 @@ struct Light {
   // `position` (corners included), each with 1/(size1 size2) of the light; `jitter` moves each
   // point at random within its cell, `circular` squeezes the grid into the inscribed ellipse,
   // `orient` turns it to face the lit point. With `spot`, a spot cone (direction, angle,
-  // falloff, tightness, edge) shapes it.
+  // falloff, tightness, edge) shapes it. `adaptive` >= 0 (POV-Ray's adaptive N): the corners
+  // of the grid's (2^N + 1)^2 coarse cells are sampled first, and a cell is split where its
+  // corners differ; -1: every point sampled.
   Vec3 axis1{1, 0, 0}, axis2{0, 0, 1};
   int size1 = 2, size2 = 2;
+  int adaptive = -1;
   bool jitter = false, circular = false, orient = false, spot = false;
 
   Color emitted() const { return intensity * color; }
