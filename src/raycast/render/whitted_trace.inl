@@ -283,6 +283,24 @@ template <class Add>
   }
 }
 
+// A point or spot light: one shadow ray to its position, the spot's cone applied.
+template <class Add>
+[[gnu::always_inline]] inline void point_light(const Light& light, const Color& emitted,
+                                               const Vec3& p, Add& add) {
+  const Vec3 to = light.position - p;
+  const double dist2 = length_squared(to);
+  if (!(dist2 > 0)) return;
+  const Vec3 l = to / std::sqrt(dist2);
+  const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
+  Color e = inverse_square ? emitted / dist2 : emitted * attenuation_factor(light, dist2);
+  if (light.type == LightType::kSpot) {
+    const double cone = spot_factor(light, -l);
+    if (!(cone > 0)) return;  // outside the cone: no term
+    e *= cone;
+  }
+  add(l, light.position, false, e);
+}
+
 // A directional light; a bounded one is POV-Ray's parallel light: shadows only from what lies
 // between the point and the plane through the light's position, points beyond that plane lit
 // unshadowed, attenuation by the distance to the position as a point light's.
@@ -371,8 +389,7 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
   const DirectionLists* lists = nullptr;
   bool unshadowed = false, no_highlight = false;  // per light below (extended_light)
   // One light direction l towards `target` (a point, or a direction when at infinity), its
-  // visible part added to `sum` (add_to: to `acc`).
-  // The light of the loop below, for a recorder.
+  // visible part added to `acc` (add: to `sum`). light_index: the loop's light, for a recorder.
   std::size_t light_index = 0;
   auto add_to = [&](Color & acc, const Vec3& l, const Vec3& target, bool at_infinity,
                     const Color& e) __attribute__((always_inline)) {
@@ -434,7 +451,6 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
     lists = light_lists_[li];
     light_index = li;
     unshadowed = no_highlight = !light.shadows;
-    const bool inverse_square = light.attenuation == Attenuation::kInverseSquare;
     switch (light.type) {
       case LightType::kDirectional:
       case LightType::kCylinder:
@@ -442,20 +458,9 @@ void Integrator::direct(const SurfaceInfo& si, const SurfaceInfo& lit, const Vec
         extended_light(light, emitted, si.p, state.rng, unshadowed, add, add_to, sum);
         break;
       case LightType::kPoint:
-      case LightType::kSpot: {
-        const Vec3 to = light.position - si.p;
-        const double dist2 = length_squared(to);
-        if (!(dist2 > 0)) break;
-        const Vec3 l = to / std::sqrt(dist2);
-        Color e = inverse_square ? emitted / dist2 : emitted * attenuation_factor(light, dist2);
-        if (light.type == LightType::kSpot) {
-          const double cone = spot_factor(light, -l);
-          if (!(cone > 0)) break;  // outside the cone: no term
-          e *= cone;
-        }
-        add(l, light.position, false, e);
+      case LightType::kSpot:
+        point_light(light, emitted, si.p, add);
         break;
-      }
       case LightType::kSphere:
         sphere_light_samples(light, emitted, si.p, state.rng, add);
         break;
