@@ -55,7 +55,7 @@ install(FILES ${PROJECT_BINARY_DIR}/raycastConfig.cmake
   ${PROJECT_BINARY_DIR}/raycastConfigVersion.cmake ${PROJECT_SOURCE_DIR}/cmake/FindLibYAML.cmake
   DESTINATION ${raycast_cmake_dir})
 
-set(raycast_pc_requires "yaml-cpp yaml-0.1 tbb libpng")
+set(raycast_pc_requires "yaml-cpp yaml-0.1 tbb libpng freetype2")
 set(raycast_pc_extra "")
 foreach(lib ${CMAKE_DL_LIBS})  # the plugin loader (io/plugin_library.cpp)
   string(APPEND raycast_pc_extra " -l${lib}")
