@@ -30,7 +30,8 @@ materials:
   glass: {color: [1, 1, 1], ambient: 0, diffuse: 0, specular: 0, transmission: 1, ior: 1, )" +
          fade + R"(}
 objects:
-  - box: {min: [-50, -50, 0.5], max: [50, 50, 2]}
+  - box: {min: [-50, -50, 0.5], max: [50, 50, )" +
+         std::to_string(0.5 + kThickness) + R"(]}
     material: glass
 )";
 }
