@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "geometry/crossing_list.h"
 #include "math/polynomial_solver.h"
 #include "math/quadratic.h"
 
@@ -15,12 +16,6 @@ namespace {
 
 // Crossings kept per ray (each piece gives at most 3, the caps 2); more are dropped.
 constexpr int kMaxCrossings = 512;
-
-struct Crossing {
-  double t;
-  int part;  // piece index, or pieces + 0 (the cap at z0) / pieces + 1 (the cap at z1)
-  double s;
-};
 
 // The power-basis polynomial of one coordinate of a Bezier piece.
 Polynomial bezier_polynomial(const ContourPiece& c, int axis) {
@@ -96,7 +91,7 @@ bool crosses_odd(const Prism::Piece& g, double x, double y) {
 // The side crossings of one piece: the roots of a x(s) + b y(s) + c on [0, 1), where the plane
 // a X + b Y + c W = 0 holds the ray and the rulings (W = 1: parallel to z; conic: W = Z scaled).
 int piece_crossings(const Prism& sh, int index, const Ray& ray, double a, double b, double c,
-                    Crossing* out) {
+                    CurveCrossing* out) {
   const Prism::Piece& g = sh.pieces[static_cast<std::size_t>(index)];
   // The plane misses the piece when the corners of its box all lie on one side.
   const double f[4] = {a * g.x_lo + b * g.y_lo + c, a * g.x_hi + b * g.y_lo + c,
@@ -134,7 +129,7 @@ int piece_crossings(const Prism& sh, int index, const Ray& ray, double a, double
 }
 
 // Every crossing of the line with the sides and caps, unsorted.
-int crossings(const Prism& sh, const Ray& ray, Crossing* out) {
+int crossings(const Prism& sh, const Ray& ray, CurveCrossing* out) {
   int n = 0;
   const Vec3& o = ray.o;
   const Vec3& d = ray.d;
@@ -163,15 +158,13 @@ int crossings(const Prism& sh, const Ray& ray, Crossing* out) {
   return n;
 }
 
-int sorted_crossings(const Prism& s, const Ray& ray, Crossing* c) {
+int sorted_crossings(const Prism& s, const Ray& ray, CurveCrossing* c) {
   double t0, t1;
   if (!slab_interval(s.box, ray.o, reciprocal(ray.d), t0, t1)) return 0;
   const int n = crossings(s, ray, c);
-  std::sort(c, c + n, [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
+  std::sort(c, c + n, [](const CurveCrossing& a, const CurveCrossing& b) { return a.t < b.t; });
   return n;
 }
-
-LocalHit to_hit(const Crossing& c) { return LocalHit{.t = c.t, .part = c.part, .a = c.s}; }
 
 // The signed area of a closed contour, 1/2 oint (x dy - y dx), exact for polynomial pieces.
 double signed_area(const std::vector<Prism::Piece>& pieces, std::size_t from, std::size_t to) {
@@ -288,33 +281,15 @@ Prism make_prism(const std::vector<Contour>& contours, double z0, double z1, boo
 Aabb bounds(const Prism& s) { return s.box; }
 
 bool intersect(const Prism& s, const Ray& ray, LocalHit& hit) {
-  Crossing c[kMaxCrossings];
-  const int n = sorted_crossings(s, ray, c);
-  for (int i = 0; i < n; ++i) {
-    if (c[i].t >= ray.tmin && c[i].t <= ray.tmax) {
-      hit = to_hit(c[i]);
-      return true;
-    }
-  }
-  return false;
+  CurveCrossing c[kMaxCrossings];
+  return first_crossing_in_range(c, sorted_crossings(s, ray, c), ray, hit);
 }
 
 void spans(const Prism& s, const Ray& ray, SpanList& out) {
-  Crossing c[kMaxCrossings];
+  CurveCrossing c[kMaxCrossings];
   const int n = sorted_crossings(s, ray, c);
-  const std::size_t first = out.size();
-  if (s.open) {
-    for (int i = 0; i < n; ++i) out.add(to_hit(c[i]), to_hit(c[i]));
-    return;
-  }
-  for (int i = 0; i + 1 < n; ++i) {
-    if (!(c[i].t < c[i + 1].t)) continue;
-    if (!contains(s, ray.at(0.5 * (c[i].t + c[i + 1].t)))) continue;
-    if (out.size() > first && out.back().out.t == c[i].t)
-      out.back().out = to_hit(c[i + 1]);
-    else
-      out.add(to_hit(c[i]), to_hit(c[i + 1]));
-  }
+  spans_from_crossings(
+      c, n, ray, !s.open, [&](const Vec3& p) { return contains(s, p); }, out);
 }
 
 SurfaceInfo surface(const Prism& s, const Ray& ray, const LocalHit& hit) {

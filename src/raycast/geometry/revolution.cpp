@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "geometry/angles.h"
+#include "geometry/crossing_list.h"
 #include "math/polynomial_solver.h"
 
 namespace raycast {
@@ -21,12 +22,6 @@ constexpr int kPolishSteps = 4;
 constexpr double kSegmentSlack = 1e-9;
 // Crossings per ray: segments * 2 * 3 (bspline) + caps; more are dropped.
 constexpr int kMaxCrossings = 256;
-
-struct Crossing {
-  double t;
-  int part;  // segment index, or segments + cap index (never negative: -1 is kNoSurface)
-  double s;
-};
 
 Polynomial linear_poly(double a, double b) {  // a + b s
   Polynomial p;
@@ -74,7 +69,7 @@ bool misses_segment(const Revolution::Segment& g, double z0, double z1, bool hor
 }
 
 // Every crossing of the line with the revolved segments and caps, unsorted.
-int crossings(const Revolution& sh, const Ray& ray, Crossing* out) {
+int crossings(const Revolution& sh, const Ray& ray, CurveCrossing* out) {
   int n = 0;
   const Vec3& o = ray.o;
   const Vec3& d = ray.d;
@@ -133,17 +128,16 @@ int crossings(const Revolution& sh, const Ray& ray, Crossing* out) {
   return n;
 }
 
-int sorted_crossings(const Revolution& s, const Ray& ray, Crossing* c) {
+int sorted_crossings(const Revolution& s, const Ray& ray, CurveCrossing* c) {
   double t0, t1;
   if (!slab_interval(s.box, ray.o, reciprocal(ray.d), t0, t1)) return 0;
   const int n = crossings(s, ray, c);
-  std::sort(c, c + n, [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
+  std::sort(c, c + n, [](const CurveCrossing& a, const CurveCrossing& b) { return a.t < b.t; });
   return n;
 }
 
-LocalHit to_hit(const Crossing& c) { return LocalHit{.t = c.t, .part = c.part, .a = c.s}; }
-
-// Crossing number of the profile loop (profile + caps + axis) by a ray from (rho, z) towards +r.
+// CurveCrossing number of the profile loop (profile + caps + axis) by a ray from (rho, z) towards
+// +r.
 bool inside_profile(const Revolution& s, double rho, double z) {
   int count = 0;
   for (const Revolution::Segment& g : s.segments) {
@@ -248,33 +242,15 @@ Revolution make_revolution(const std::vector<std::array<double, 2>>& profile, Pr
 Aabb bounds(const Revolution& s) { return s.box; }
 
 bool intersect(const Revolution& s, const Ray& ray, LocalHit& hit) {
-  Crossing c[kMaxCrossings];
-  const int n = sorted_crossings(s, ray, c);
-  for (int i = 0; i < n; ++i) {
-    if (c[i].t >= ray.tmin && c[i].t <= ray.tmax) {
-      hit = to_hit(c[i]);
-      return true;
-    }
-  }
-  return false;
+  CurveCrossing c[kMaxCrossings];
+  return first_crossing_in_range(c, sorted_crossings(s, ray, c), ray, hit);
 }
 
 void spans(const Revolution& s, const Ray& ray, SpanList& out) {
-  Crossing c[kMaxCrossings];
+  CurveCrossing c[kMaxCrossings];
   const int n = sorted_crossings(s, ray, c);
-  const std::size_t first = out.size();
-  if (!s.closed) {
-    for (int i = 0; i < n; ++i) out.add(to_hit(c[i]), to_hit(c[i]));
-    return;
-  }
-  for (int i = 0; i + 1 < n; ++i) {
-    if (!(c[i].t < c[i + 1].t)) continue;
-    if (!contains(s, ray.at(0.5 * (c[i].t + c[i + 1].t)))) continue;
-    if (out.size() > first && out.back().out.t == c[i].t)
-      out.back().out = to_hit(c[i + 1]);
-    else
-      out.add(to_hit(c[i]), to_hit(c[i + 1]));
-  }
+  spans_from_crossings(
+      c, n, ray, s.closed, [&](const Vec3& p) { return contains(s, p); }, out);
 }
 
 SurfaceInfo surface(const Revolution& s, const Ray& ray, const LocalHit& hit) {
