@@ -96,6 +96,10 @@ const Case kCases[] = {
     {"text", "text { ttf \"timrom.ttf\", \"I\", 1, 0 translate <-0.171, -0.34, 3> }", 3},
     {"text_between_letters", "text { ttf \"timrom.ttf\" \"II\" 1, 0 translate <-0.4, -0.34, 3> }",
      std::numeric_limits<double>::infinity()},
+    {"superellipsoid_sphere", "superellipsoid { <1, 1> translate 3*z }", 2},
+    // <2, 2>: the octahedron |x| + |y| + |z| = 1, its vertex on the axis.
+    {"superellipsoid_octahedron", "superellipsoid { <2, 2> scale 2 translate 4*z }", 2},
+    {"superellipsoid_rounded_box", "superellipsoid { <0.1, 0.3> rotate 90*x translate 3*z }", 2},
     {"mesh", "mesh { triangle { <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } }", 3},
     {"triangle", "triangle { <-1, -1, 2>, <1, -1, 4>, <0, 1, 3> }", 3},
     {"smooth_triangle",
@@ -197,7 +201,7 @@ TEST_P(PovConvertRoundTrip, ConvertedYamlRendersIdentically) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovConvertRoundTrip,
                          ::testing::Values("basic", "csg", "surfaces", "glass", "transmit",
-                                           "lens"));
+                                           "superellipsoids", "lens"));
 
 TEST(PovImport, DegenerateShapesAreLeftOutWithTheirPosition) {
   // POV-Ray draws nothing for a sphere of negative radius; raycast says so and goes on.

@@ -1,4 +1,4 @@
-// Parsers for the higher-degree shapes: torus, algebraic, implicit, revolution.
+// Parsers for the higher-degree shapes: torus, superellipsoid, algebraic, implicit, revolution.
 #include <cmath>
 #include <stdexcept>
 
@@ -47,6 +47,12 @@ ShapeVariant parse_shape(std::type_identity<Torus>, Fields& f) {
   const double R = f.positive("major_radius");
   const double r = f.positive("minor_radius");
   return make_torus(R, r);
+}
+
+ShapeVariant parse_shape(std::type_identity<Superellipsoid>, Fields& f) {
+  const double e = f.positive("e", 1);
+  const double n = f.positive("n", 1);
+  return make_superellipsoid(e, n);
 }
 
 ShapeVariant parse_shape(std::type_identity<Algebraic>, Fields& f) {

@@ -489,6 +489,8 @@ class Builder {
         return make_prism(spline_contours(points, prism_spline(n.spline)), n.values[0], n.values[1],
                           n.conic_sweep, n.open);
       }
+      case Node::Superellipsoid:
+        return make_superellipsoid(n.values[0], n.values[1]);  // symmetric in z: no mirror
       case Node::Text:
         if (n.font.empty()) return std::nullopt;  // not found: the reader warned
         try {

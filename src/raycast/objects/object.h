@@ -20,6 +20,7 @@
 #include "geometry/shape.h"
 #include "geometry/slab.h"
 #include "geometry/sphere.h"
+#include "geometry/superellipsoid.h"
 #include "geometry/text.h"
 #include "geometry/torus.h"
 #include "math/transform.h"
@@ -35,7 +36,7 @@ namespace raycast {
 using ShapeVariant =
     std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder,
                  Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, Revolution, MeshShape,
-                 CsgShape, InstanceShape, Isosurface, Prism, Text>;
+                 CsgShape, InstanceShape, Isosurface, Prism, Text, Superellipsoid>;
 
 struct Object {
   ShapeVariant shape;

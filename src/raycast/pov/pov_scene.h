@@ -123,8 +123,9 @@ struct Node {
     Isosurface,
     Lathe,
     Sor,
-    Prism,  // points: the contour's <x, z> as (x, z, 0); values: the two heights
-    Text,   // font, text; values: the thickness; points: the offset between letters
+    Prism,           // points: the contour's <x, z> as (x, z, 0); values: the two heights
+    Text,            // font, text; values: the thickness; points: the offset between letters
+    Superellipsoid,  // values: e, n
     Mesh,
     Triangle,  // triangle / smooth_triangle outside a mesh: points, and normals when smooth
     Union,

@@ -408,6 +408,9 @@ class Writer {
         o << "}";
         break;
       }
+      case Node::Superellipsoid:
+        o << "superellipsoid: {e: " << num(n.values[0]) << ", n: " << num(n.values[1]) << "}";
+        break;
       case Node::Text: {
         if (n.font.empty()) return;  // the font was not found (the reader warned)
         const auto quoted = [](const std::string& text) {
