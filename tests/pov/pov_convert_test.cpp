@@ -100,6 +100,16 @@ const Case kCases[] = {
     // <2, 2>: the octahedron |x| + |y| + |z| = 1, its vertex on the axis.
     {"superellipsoid_octahedron", "superellipsoid { <2, 2> scale 2 translate 4*z }", 2},
     {"superellipsoid_rounded_box", "superellipsoid { <0.1, 0.3> rotate 90*x translate 3*z }", 2},
+    // Turned to face the camera: a point at height y lands at z = -y, before the last move.
+    {"height_field_function",
+     "height_field { function 3, 3 { 0.5 } translate <-0.5, 0, -0.5> rotate -90*x "
+     "translate 3.5*z }",
+     3},
+    // The height is x, 0.5 on the axis: under the water, cut away, so the ray passes.
+    {"height_field_water_level",
+     "height_field { function 3, 3 { x } water_level 0.6 translate <-0.5, 0, -0.5> "
+     "rotate -90*x translate 3.5*z }",
+     std::numeric_limits<double>::infinity()},
     {"mesh", "mesh { triangle { <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } }", 3},
     {"triangle", "triangle { <-1, -1, 2>, <1, -1, 4>, <0, 1, 3> }", 3},
     {"smooth_triangle",

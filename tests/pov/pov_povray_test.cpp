@@ -63,7 +63,7 @@ TEST_P(PovRayRoundTrip, MeanAbsoluteDifferenceIsSmall) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovRayRoundTrip,
                          ::testing::Values("basic", "csg", "surfaces", "glass", "transmit",
-                                           "superellipsoids", "lens"));
+                                           "superellipsoids", "heightfield", "lens"));
 
 }  // namespace
 }  // namespace raycast

@@ -16,6 +16,7 @@
 #include "load/formula_noise_registration.h"
 #include "load/pov_textures.h"
 #include "load/text_shape.h"
+#include "mesh/height_field.h"
 #include "objects/csg_tree.h"
 #include "pov/checker_grid.h"
 #include "pov/ini_file.h"
@@ -488,6 +489,14 @@ class Builder {
         for (const Vec3& p : n.points) points.push_back({p.x, mirror_ ? p.y : -p.y});
         return make_prism(spline_contours(points, prism_spline(n.spline)), n.values[0], n.values[1],
                           n.conic_sweep, n.open);
+      }
+      case Node::HeightField: {
+        if (!n.heights) return std::nullopt;  // a type or function not read: the reader warned
+        HeightFieldOptions o;
+        o.smooth = n.smooth;
+        o.water_level = n.values[0];
+        o.mirror_z = mirror_;
+        return MeshShape{make_height_field(height_grid_of(*n.heights), o)};
       }
       case Node::Superellipsoid:
         return make_superellipsoid(n.values[0], n.values[1]);  // symmetric in z: no mirror

@@ -21,6 +21,7 @@ std::map<std::string, ShapeParser> make_shape_parsers(std::index_sequence<I...>)
           T::kName, +[](Fields& f) { return parse_shape(std::type_identity<T>{}, f); });
   };
   (add(std::type_identity<std::variant_alternative_t<I, ShapeVariant>>{}), ...);
+  table.emplace("height_field", &parse_height_field);
   return table;
 }
 

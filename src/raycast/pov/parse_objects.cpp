@@ -33,6 +33,7 @@ const std::map<std::string, Node::Kind>& object_kinds() {
                                                           {"prism", Node::Prism},
                                                           {"text", Node::Text},
                                                           {"superellipsoid", Node::Superellipsoid},
+                                                          {"height_field", Node::HeightField},
                                                           {"mesh", Node::Mesh},
                                                           {"mesh2", Node::Mesh},
                                                           {"triangle", Node::Triangle},
@@ -46,9 +47,9 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 }
 
 bool is_unbuilt_shape(const std::string& w) {
-  static constexpr std::string_view shapes[] = {"blob",          "height_field",  "sphere_sweep",
-                                                "julia_fractal", "bicubic_patch", "parametric",
-                                                "polygon",       "lemon",         "ovus"};
+  static constexpr std::string_view shapes[] = {"blob",          "sphere_sweep", "julia_fractal",
+                                                "bicubic_patch", "parametric",   "polygon",
+                                                "lemon",         "ovus"};
   for (const std::string_view s : shapes)
     if (s == w) return true;
   return false;
@@ -408,6 +409,9 @@ void Interpreter::object_body(Node& n, int depth) {
       break;
     case Node::Text:
       text_body(n);
+      break;
+    case Node::HeightField:
+      height_field_body(n, depth);
       break;
     case Node::Superellipsoid: {
       const Pos at = tok().pos;
@@ -833,7 +837,7 @@ bool Interpreter::modifier(Node& n, int depth) {
   } else if (w == "hollow" || w == "sturm" || w == "no_shadow" || w == "no_image" ||
              w == "no_reflection" || w == "double_illuminate" || w == "no_radiosity" ||
              w == "split_union" || w == "cutaway_textures" || w == "uv_mapping" ||
-             w == "all_intersections") {
+             w == "all_intersections" || w == "hierarchy") {
     next();
     bool on = true;
     if (w != "cutaway_textures" && w != "uv_mapping" && w != "all_intersections")

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/height_image.h"
 #include "math/vec3.h"
 #include "pov/function_expr.h"
 #include "pov/source.h"
@@ -126,6 +127,7 @@ struct Node {
     Prism,           // points: the contour's <x, z> as (x, z, 0); values: the two heights
     Text,            // font, text; values: the thickness; points: the offset between letters
     Superellipsoid,  // values: e, n
+    HeightField,     // heights (image or function), image, image_type, smooth; values: water level
     Mesh,
     Triangle,  // triangle / smooth_triangle outside a mesh: points, and normals when smooth
     Union,
@@ -148,6 +150,11 @@ struct Node {
   std::string spline;  // lathe, prism: linear_spline, quadratic_spline, cubic_spline, bezier_spline
   bool conic_sweep = false;  // prism: conic_sweep (else linear_sweep)
   std::string font, text;    // text: the font file as found on the library path, the string
+  // height_field: the 16-bit heights (null: not built), the image file as found and its type
+  // keyword (empty for a function, or when the extension names the type), `smooth`
+  std::shared_ptr<const HeightImage> heights;
+  std::string image, image_type;
+  bool smooth = false;
   // mesh: triangles of vertex indices, and normals per vertex when smooth
   std::vector<Vec3> vertices, normals;
   std::vector<std::array<int, 3>> triangles;

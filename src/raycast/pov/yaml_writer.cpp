@@ -408,6 +408,16 @@ class Writer {
         o << "}";
         break;
       }
+      case Node::HeightField:
+        if (!n.heights) return;  // not read (the reader warned)
+        if (n.image.empty())
+          fail_at(n.pos, "raycast's scene format has no height field of a function");
+        o << "height_field: {image: \"" << n.image << "\"";
+        if (!n.image_type.empty()) o << ", format: " << n.image_type;
+        if (n.smooth) o << ", smooth: true";
+        if (n.values[0] != 0) o << ", water_level: " << num(n.values[0]);
+        o << "}";
+        break;
       case Node::Superellipsoid:
         o << "superellipsoid: {e: " << num(n.values[0]) << ", n: " << num(n.values[1]) << "}";
         break;
@@ -473,7 +483,10 @@ class Writer {
     if (n.texture &&
         (!inherited || material_text(*n.texture, n.pos) != material_text(*inherited, n.pos)))
       mat = material(*n.texture, n.pos);
-    const std::string xf = transform(n, axial, n.kind == Node::Text && mirror_);
+    // Text is extruded and a height field laid out towards +z in both frames: the mirror turns
+    // them round.
+    const std::string xf =
+        transform(n, axial, (n.kind == Node::Text || n.kind == Node::HeightField) && mirror_);
     if (n.kind == Node::Isosurface && n.contained_by_sphere) {
       // POV-Ray's container sphere: the implicit solid in the sphere's box, cut by the sphere.
       const Vec3 c = (n.bounds->at(0) + n.bounds->at(1)) * 0.5;
