@@ -100,6 +100,7 @@ const Case kCases[] = {
     // <2, 2>: the octahedron |x| + |y| + |z| = 1, its vertex on the axis.
     {"superellipsoid_octahedron", "superellipsoid { <2, 2> scale 2 translate 4*z }", 2},
     {"superellipsoid_rounded_box", "superellipsoid { <0.1, 0.3> rotate 90*x translate 3*z }", 2},
+    {"superellipsoid_float", "superellipsoid { 0.2 translate 3*z }", 2},
     // Turned to face the camera: a point at height y lands at z = -y, before the last move.
     {"height_field_function",
      "height_field { function 3, 3 { 0.5 } translate <-0.5, 0, -0.5> rotate -90*x "

@@ -84,7 +84,7 @@ TEST(PovObjectFunctions, Extents_AreTheBoundingBoxAndPovRaysHugeBoundWhenUnbound
 
 TEST(PovObjectFunctions, ObjectNotBuilt_AnswersZeroWithAWarning) {
   std::vector<std::string> warnings;
-  EXPECT_EQ(error_of("#declare T = superellipsoid { <0.5, 0.5> }\n"
+  EXPECT_EQ(error_of("#declare T = ovus { 1, 0.5 }\n"
                      "#declare M = max_extent(T);\n" +
                          expect_near("M", "<0, 0, 0>"),
                      &warnings),

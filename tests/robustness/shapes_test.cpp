@@ -42,6 +42,9 @@ const std::map<std::string, std::string>& examples() {
        "{planes: [[1, 0, 0, -1], [-1, 0, 0, -1], [0, 1, 0, -1], [0, -1, 0, -1], [0, 0, 1, -1], "
        "[0, 0, -1, -1]]}"},
       {"torus", "{major_radius: 1, minor_radius: 0.35}"},
+      {"superellipsoid", "{e: 3, n: 0.5}"},
+      {"height_field", "{image: '" + std::string(RAYCAST_SOURCE_DIR) +
+                           "/tests/pov/scenes/hills.pgm', smooth: true, water_level: 0.3}"},
       {"algebraic",
        "{equation: \"(x^2 + 9/4*y^2 + z^2 - 1)^3 - x^2*z^3 - 9/80*y^2*z^3\", "
        "bounds: {min: [-1.5, -1, -1.5], max: [1.5, 1, 1.5]}}"},

@@ -415,9 +415,13 @@ void Interpreter::object_body(Node& n, int depth) {
       break;
     case Node::Superellipsoid: {
       const Pos at = tok().pos;
-      const Value v = expression();
-      if (v.dims != 2) fail_at(at, "expected the superellipsoid's exponents <e, n>");
-      n.values = {v.v[0], v.v[1]};
+      const Value v = expression();  // a float stands for <f, f>, as anywhere a vector goes
+      if (v.kind == Value::Float)
+        n.values = {v.v[0], v.v[0]};
+      else if (v.dims == 2)
+        n.values = {v.v[0], v.v[1]};
+      else
+        fail_at(at, "expected the superellipsoid's exponents <e, n>");
       break;
     }
     default:
