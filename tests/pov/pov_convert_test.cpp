@@ -227,6 +227,28 @@ TEST(PovImport, DegenerateShapesAreLeftOutWithTheirPosition) {
   EXPECT_NE(warnings[0].find("radius"), std::string::npos) << warnings[0];
 }
 
+TEST(PovImport, HeightFieldImagesAreReadOrPositionedErrors) {
+  const std::string dir = RAYCAST_SOURCE_DIR "/tests/pov/scenes";
+  const Scene s = load_pov_scene_text("height_field { pgm \"hills.pgm\" smooth }", "t.pov", dir);
+  EXPECT_EQ(s.objects.size(), 1u);
+  try {
+    load_pov_scene_text("camera { }\nheight_field { png \"nothere.png\" }", "t.pov", dir);
+    FAIL() << "expected an error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.line(), 2) << e.what();
+    EXPECT_EQ(e.column(), 20) << e.what();
+    EXPECT_NE(e.message().find("not found"), std::string::npos) << e.what();
+  }
+  // A type raycast does not read: a warning at the file's name, the field left out.
+  std::vector<std::string> warnings;
+  const Scene g =
+      load_pov_scene_text("height_field { gif \"hills.gif\" }", "t.pov", dir, -1, {}, &warnings);
+  EXPECT_TRUE(g.objects.empty());
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind("t.pov:1:20: warning: raycast does not render height fields", 0), 0u)
+      << warnings[0];
+}
+
 TEST(PovImport, OpenSurfacesInCsgAreAWarningOrAnErrorWhenStrict) {
   const std::string text = "difference {\n  sphere { 0, 1 }\n  disc { 0, y, 2 }\n}";
   std::vector<std::string> warnings;

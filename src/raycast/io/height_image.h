@@ -22,7 +22,7 @@ struct HeightImage {
 /// Files wider or taller than this, or of more pixels than kMaxHeightImagePixels, are an
 /// ImageError (a height field makes two triangles per pixel).
 inline constexpr int kMaxHeightImageSide = 16384;
-inline constexpr std::size_t kMaxHeightImagePixels = std::size_t(1) << 24;
+inline constexpr std::size_t kMaxHeightImagePixels = std::size_t(1) << 22;
 
 /// The formats read as heights.
 enum class HeightImageFormat { kPng, kPgm, kPpm, kTga };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "io/image.h"
@@ -95,17 +96,22 @@ void Interpreter::height_field_body(Node& n, int) {
     }
     const Pos fpos = tok().pos;
     const std::string name = string_value("the height field's image file");
-    const std::optional<std::string> found = find_on_library_path(name);
-    if (!found) fail_at(fpos, "height field image '" + name + "' not found on the library path");
+    std::optional<HeightImageFormat> format;
     try {
-      const HeightImageFormat format = height_image_format(type, *found);
-      n.heights = std::make_shared<HeightImage>(read_height_image(*found, format));
+      format = height_image_format(type, name);
+    } catch (const ImageError& e) {  // a type raycast does not read: the field is left out
+      unsupported_warning(fpos, "height fields from this image type", e.what());
+    }
+    if (format) {
+      const std::optional<std::string> found = find_on_library_path(name);
+      if (!found) fail_at(fpos, "height field image '" + name + "' not found on the library path");
+      try {
+        n.heights = std::make_shared<HeightImage>(read_height_image(*found, *format));
+      } catch (const ImageError& e) {
+        fail_at(fpos, e.what());
+      }
       n.image = *found;
       n.image_type = type;
-    } catch (const ImageError& e) {
-      const std::string m = e.what();
-      if (m.find("raycast reads height fields from") == std::string::npos) fail_at(fpos, m);
-      unsupported_warning(fpos, "height fields from this image type", m);
     }
   }
   for (;;) {

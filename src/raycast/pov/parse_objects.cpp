@@ -129,9 +129,14 @@ void fold_poly_bounds(Node& n) {
   }
 }
 
+// A height field's two triangles a point count as a mesh's would: each copy builds its own mesh.
+std::size_t height_field_weight(const Node& n) {
+  return n.heights ? 2 * n.heights->values.size() : 0;
+}
+
 std::size_t weight(const Node& n) {
   std::size_t w = kPovNodeWeight + n.points.size() + n.vertices.size() + n.normals.size() +
-                  n.triangles.size() + n.terms.size();
+                  n.triangles.size() + n.terms.size() + height_field_weight(n);
   for (const Node& c : n.children) w += weight(c);
   return w;
 }
@@ -289,7 +294,8 @@ std::optional<Node> Interpreter::object(int depth) {
   if (skipped) return std::nullopt;
   if (kw.text != "object") {  // its own data (children were counted when they were read)
     const std::size_t own = kPovNodeWeight + n.points.size() + n.vertices.size() +
-                            n.normals.size() + n.triangles.size() + n.terms.size();
+                            n.normals.size() + n.triangles.size() + n.terms.size() +
+                            height_field_weight(n);
     add_weight(own, n.pos);
     n.weight = own;
     for (const Node& c : n.children) n.weight += c.weight;
