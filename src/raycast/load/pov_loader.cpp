@@ -592,8 +592,16 @@ class Builder {
            const std::optional<Transform>& parent, int entry, std::vector<Object>& out) {
     const std::size_t first = out.size();
     add_node(n, inherited, inherited_frame, parent, entry, out);
-    if (n.no_shadow)
-      for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+    hide(n, first, out);
+  }
+
+  // What no_shadow, no_image and no_reflection take away from the objects a node gave.
+  static void hide(const Node& n, std::size_t first, std::vector<Object>& out) {
+    for (std::size_t i = first; i < out.size(); ++i) {
+      if (n.no_shadow) out[i].casts_shadow = false;
+      if (n.no_image) out[i].seen_by_camera = false;
+      if (n.no_reflection) out[i].seen_in_reflections = false;
+    }
   }
 
   void add_node(const Node& n, const pov::Texture* inherited, const Transform& inherited_frame,
@@ -673,8 +681,7 @@ class Builder {
       csg_world_.reset();
       const std::size_t first = out.size();
       if (code) add_csg(c, std::move(tree), tex, frame, parent, entry, out);
-      if (c.no_shadow)
-        for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+      hide(c, first, out);
     }
   }
 

@@ -832,7 +832,11 @@ bool Interpreter::modifier(Node& n, int depth) {
       on = boolean_option();
     if (w == "no_shadow")
       n.no_shadow = on;
-    else if (w == "no_image" || w == "no_reflection" || w == "double_illuminate")
+    else if (w == "no_image")
+      n.no_image = on;
+    else if (w == "no_reflection")
+      n.no_reflection = on;
+    else if (w == "double_illuminate")
       unsupported_warning(t.pos, w);
   } else if (w == "inverse") {
     next();

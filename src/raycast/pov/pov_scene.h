@@ -162,6 +162,8 @@ struct Node {
   std::vector<Node> clipped_by;
   std::vector<Node> bounded_by;  // bounded_by's objects, kept for clipped_by { bounded_by }
   bool no_shadow = false;        // `no_shadow`: casts no shadow (its parts neither)
+  bool no_image = false;         // `no_image`: camera rays pass through it
+  bool no_reflection = false;    // `no_reflection`: mirrored rays pass through it
   std::string name;              // object { Name }: the declared name it was placed by
   std::vector<XformOp> xforms;
   std::optional<Texture> texture;
