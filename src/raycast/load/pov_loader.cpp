@@ -424,6 +424,29 @@ class Builder {
     return first ? "0" : e.str();
   }
 
+  // A blob from its component nodes: each component's own transformations place its field; the
+  // checker offset moves the whole blob.
+  Blob blob(const Node& n) {
+    std::vector<BlobComponent> components;
+    components.reserve(n.children.size());
+    for (const Node& c : n.children) {
+      BlobComponent b;
+      b.cylinder = c.kind == Node::Cylinder;
+      b.radius = c.values[0];
+      b.strength = c.values[1];
+      b.xf = own_transform(c, false);
+      b.a = b.xf ? m(c.points[0]) : pt(c.points[0]);
+      b.b = b.cylinder ? (b.xf ? m(c.points[1]) : pt(c.points[1])) : b.a;
+      if (b.xf && shift_ != Vec3{0, 0, 0}) b.xf = Transform::translate(shift_) * *b.xf;
+      components.push_back(b);
+      if (c.texture)
+        warn(c.pos, "blended textures of blob components",
+             "each point takes one texture, not their blend by field",
+             n.texture ? "the blob's texture is used" : "the first component's texture is used");
+    }
+    return make_blob(n.values[0], std::move(components));
+  }
+
   // The shape of a primitive node, or nothing (with a warning) when raycast cannot build it.
   std::optional<ShapeVariant> shape(const Node& n, bool& axial) {
     axial = false;
@@ -489,6 +512,8 @@ class Builder {
         return make_prism(spline_contours(points, prism_spline(n.spline)), n.values[0], n.values[1],
                           n.conic_sweep, n.open);
       }
+      case Node::Blob:
+        return blob(n);
       case Node::Text:
         if (n.font.empty()) return std::nullopt;  // not found: the reader warned
         try {
@@ -557,6 +582,12 @@ class Builder {
     bool axial = false;
     std::optional<ShapeVariant> sh;
     shift_ = Vec3{0, 0, 0};
+    if (n.kind == Node::Blob && !n.texture)  // the components' textures: not blended (blob())
+      for (const Node& c : n.children)
+        if (c.texture) {
+          tex = &*c.texture;
+          break;
+        }
     if (tex && tex->pigment.checker && pov::on_checker_grid(n, tex->pigment.scale)) {
       const double e = pov::kCheckerOffset * tex->pigment.scale;
       shift_ = m(Vec3{e, e, e});
