@@ -439,12 +439,23 @@ class Builder {
       b.b = b.cylinder ? (b.xf ? m(c.points[1]) : pt(c.points[1])) : b.a;
       if (b.xf && shift_ != Vec3{0, 0, 0}) b.xf = Transform::translate(shift_) * *b.xf;
       components.push_back(b);
-      if (c.texture)
-        warn(c.pos, "blended textures of blob components",
-             "each point takes one texture, not their blend by field",
-             n.texture ? "the blob's texture is used" : "the first component's texture is used");
     }
     return make_blob(n.values[0], std::move(components));
+  }
+
+  // POV-Ray blends the textures of a blob's components by their fields at each point; raycast
+  // gives a blob one texture: its own (or the one it inherits), else its first component's.
+  const pov::Texture* blob_texture(const Node& n, const pov::Texture* own) {
+    const pov::Texture* first = nullptr;
+    for (const Node& c : n.children)
+      if (c.texture) {
+        first = &*c.texture;
+        warn(c.pos, "blended textures of blob components",
+             "each point takes one texture, not their blend by field",
+             own ? "the blob's texture is used" : "the first component's texture is used");
+        break;
+      }
+    return own ? own : first;
   }
 
   // The shape of a primitive node, or nothing (with a warning) when raycast cannot build it.
@@ -582,12 +593,7 @@ class Builder {
     bool axial = false;
     std::optional<ShapeVariant> sh;
     shift_ = Vec3{0, 0, 0};
-    if (n.kind == Node::Blob && !n.texture)  // the components' textures: not blended (blob())
-      for (const Node& c : n.children)
-        if (c.texture) {
-          tex = &*c.texture;
-          break;
-        }
+    if (n.kind == Node::Blob) tex = blob_texture(n, tex);
     if (tex && tex->pigment.checker && pov::on_checker_grid(n, tex->pigment.scale)) {
       const double e = pov::kCheckerOffset * tex->pigment.scale;
       shift_ = m(Vec3{e, e, e});
