@@ -243,16 +243,16 @@ void apply(Scratch& s, const Event& e) {
 }
 
 // Sweeps the stretches between consecutive events in increasing t, calling
-// stretch(a, b, quartic in t - m, m) on those where the field may reach the threshold; stops when
-// it returns true or the stretches pass thi.
+// stretch(a, b, quartic in t - m, m) on those that meet [tlo, thi] where the field may reach the
+// threshold; stops when it returns true or the stretches pass thi.
 template <class Stretch>
-void sweep(const Data& data, Scratch& s, double thi, const Stretch& stretch) {
+void sweep(const Data& data, Scratch& s, double tlo, double thi, const Stretch& stretch) {
   s.active.clear();
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     apply(s, s.events[k]);
     const double a = s.events[k].t, b = s.events[k + 1].t;
     if (a > thi) return;
-    if (!(a < b) || s.active.empty()) continue;
+    if (!(a < b) || b < tlo || s.active.empty()) continue;
     const double m = 0.5 * (a + b);
     Polynomial p;
     if (!stretch_quartic(data, s, m, p)) continue;
@@ -324,8 +324,14 @@ Blob make_blob(double threshold, std::vector<BlobComponent> components) {
     boxes.push_back(part_box(data->parts.back()));
     if (components[i].strength > 0) data->box.grow(boxes.back());
   }
+  double extents = 0;
+  for (const Aabb& b : boxes) extents += std::max({b.extent().x, b.extent().y, b.extent().z});
   if (data->box.is_empty())
     throw std::invalid_argument("a blob needs a component of positive strength");
+  // At most 64 windows cross the box, whatever the spread of the parts' sizes.
+  const Vec3 e = data->box.extent();
+  data->window =
+      std::max(4 * extents / static_cast<double>(boxes.size()), std::max({e.x, e.y, e.z}) / 64);
   data->order.resize(data->parts.size());
   for (std::uint32_t i = 0; i < data->order.size(); ++i) data->order[i] = i;
   data->nodes.resize(1);
@@ -337,25 +343,36 @@ Aabb bounds(const Blob& s) { return s.data->box; }
 
 bool intersect(const Blob& s, const Ray& ray, LocalHit& hit) {
   const Data& data = *s.data;
-  double t_enter;
-  if (!intersect_slabs(data.box, ray.o, reciprocal(ray.d), ray.tmin, ray.tmax, t_enter))
-    return false;
+  double t0, t1;
+  if (!slab_interval(data.box, ray.o, reciprocal(ray.d), t0, t1)) return false;
+  t0 = std::max(t0, ray.tmin);
+  t1 = std::min(t1, ray.tmax);
+  if (!(t0 <= t1)) return false;
+  // The chord is taken in windows of a few components' size, nearest first: a hit near the
+  // front spares gathering the components further along.
+  const double window = data.window / length(ray.d);
   Scratch& sc = scratch();
-  gather(data, ray, ray.tmin, ray.tmax, sc);
-  bool found = false;
-  sweep(data, sc, ray.tmax, [&](double a, double b, const Polynomial& p, double m) {
-    const auto in_range = [&](double u) {
-      const double t = m + u;
-      return t >= ray.tmin && t <= ray.tmax;
-    };
-    double u;
-    if (!find_first_real_root(p, std::max(a, ray.tmin) - m, std::min(b, ray.tmax) - m, in_range, u))
-      return false;
-    hit = LocalHit{.t = m + u};
-    found = true;
-    return true;
-  });
-  return found;
+  for (double lo = t0; lo <= t1;) {
+    double hi = t1 - lo > window ? lo + window : t1;
+    if (!(hi > lo)) hi = t1;  // a window below the rounding of t
+    gather(data, ray, lo, hi, sc);
+    bool found = false;
+    sweep(data, sc, lo, hi, [&](double a, double b, const Polynomial& p, double m) {
+      const auto in_range = [&](double u) {
+        const double t = m + u;
+        return t >= ray.tmin && t <= ray.tmax;
+      };
+      double u;
+      if (!find_first_real_root(p, std::max(a, lo) - m, std::min(b, hi) - m, in_range, u))
+        return false;
+      hit = LocalHit{.t = m + u};
+      found = true;
+      return true;
+    });
+    if (found || hi >= t1) return found;
+    lo = hi;
+  }
+  return false;
 }
 
 void spans(const Blob& s, const Ray& ray, SpanList& out) {
@@ -365,7 +382,7 @@ void spans(const Blob& s, const Ray& ray, SpanList& out) {
   Scratch& sc = scratch();
   gather(data, ray, -kInfinity, kInfinity, sc);
   sc.crossings.clear();
-  sweep(data, sc, kInfinity, [&](double a, double b, const Polynomial& p, double m) {
+  sweep(data, sc, -kInfinity, kInfinity, [&](double a, double b, const Polynomial& p, double m) {
     double u[4];
     const int n = find_real_roots(p, a - m, b - m, u);
     for (int i = 0; i < n; ++i) {
@@ -389,8 +406,6 @@ SurfaceInfo surface(const Blob& s, const Ray& ray, const LocalHit& hit) {
   if (gl > 0 && std::isfinite(gl)) {
     // One Newton step along the gradient puts p back on the surface.
     p += ((data.threshold - blob_field(s, p)) / (gl * gl)) * g;
-    const Vec3 g2 = field_gradient(data, p);
-    if (length(g2) > 0) g = g2;
     si.n = normalize(-g);
   } else {
     si.n = -normalize(ray.d);

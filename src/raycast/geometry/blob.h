@@ -53,7 +53,8 @@ struct Blob {
     std::vector<Part> parts;
     std::vector<Node> nodes;  // nodes[0] is the root
     std::vector<std::uint32_t> order;
-    Aabb box;  // the parts of positive strength: the solid lies inside
+    Aabb box;           // the parts of positive strength: the solid lies inside
+    double window = 0;  // intersect's step along the ray (blob space units)
   };
   std::shared_ptr<const Data> data;
 };
