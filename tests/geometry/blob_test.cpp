@@ -260,8 +260,9 @@ TEST(Blob, RandomRays_SpansAgreeWithContainsAndIntersect) {
         EXPECT_NEAR(h.t, want, 1e-9 * (1 + std::abs(want)));
         const SurfaceInfo si = surface(b, r, h);
         testing::expect_unit(si.n);
-        if (!contains(b, r.o))
-          (dot(si.n, r.d), 1e-9 * length(r.d));  // a first hit from outside faces the ray
+        if (!contains(b, r.o)) {  // a first hit from outside faces the ray
+          EXPECT_LT(dot(si.n, r.d), 1e-9 * length(r.d)) << testing::describe(r);
+        }
       }
     }
   }
