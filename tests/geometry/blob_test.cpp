@@ -299,3 +299,29 @@ TEST(Blob, ManyComponents_HierarchyFindsTheSameField) {
 
 }  // namespace
 }  // namespace raycast
+
+namespace raycast {
+namespace {
+
+TEST(Blob, Material_OfTheStrongestComponent) {
+  BlobComponent left = ball({-0.6, 0, 0}, 1, 1), right = ball({0.6, 0, 0}, 1, 1);
+  left.material = 3;
+  const BlobComponent plain = ball({0, 2, 0}, 1, 1);  // the object's material
+  const Blob b = make_blob(0.5, {left, right, plain});
+  LocalHit h;
+  ASSERT_TRUE(intersect(b, Ray{{-5, 0, 0}, {1, 0, 0}}, h));
+  EXPECT_EQ(blob_material(b, h), 3);
+  ASSERT_TRUE(intersect(b, Ray{{5, 0, 0}, {-1, 0, 0}}, h));
+  EXPECT_EQ(blob_material(b, h), -1);
+  SpanList l;
+  spans(b, Ray{{-5, 0.1, 0}, {1, 0, 0}}, l);
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_EQ(blob_material(b, l[0].in), 3);
+  EXPECT_EQ(blob_material(b, l[0].out), -1);
+  // Without any component material every hit takes the object's.
+  ASSERT_TRUE(intersect(make_blob(0.5, {right}), Ray{{5, 0, 0}, {-1, 0, 0}}, h));
+  EXPECT_EQ(blob_material(make_blob(0.5, {right}), h), -1);
+}
+
+}  // namespace
+}  // namespace raycast

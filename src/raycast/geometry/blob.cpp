@@ -242,6 +242,29 @@ void apply(Scratch& s, const Event& e) {
   }
 }
 
+double part_field(const Part& p, const Vec3& blob_p) {
+  const Vec3 q = p.c.xf ? p.c.xf->inverse_point(blob_p) : blob_p;
+  Vec3 r = q - p.c.a;
+  if (p.c.cylinder) r -= std::clamp(dot(r, p.axis), 0.0, p.length) * p.axis;
+  const double g = p.r2 - dot(r, r);
+  return g > 0 ? p.k * g * g : 0;
+}
+
+// The part whose field is the strongest at t among the active pieces (the hit's `part`), or 0
+// when no component has a material of its own (nothing asks).
+std::int32_t strongest(const Data& data, const Scratch& s, const Ray& ray, double t) {
+  if (!data.materials) return 0;
+  const Vec3 p = ray.at(t);
+  std::int32_t best = 0;
+  double most = -kInfinity;
+  for (const std::uint32_t i : s.active) {
+    const std::uint32_t part = s.pieces[i].part;
+    const double f = part_field(data.parts[part], p);
+    if (f > most) most = f, best = static_cast<std::int32_t>(part);
+  }
+  return best;
+}
+
 // Sweeps the stretches between consecutive events in increasing t, calling
 // stretch(a, b, quartic in t - m, m) on those that meet [tlo, thi] where the field may reach the
 // threshold; stops when it returns true or the stretches pass thi.
@@ -258,14 +281,6 @@ void sweep(const Data& data, Scratch& s, double tlo, double thi, const Stretch& 
     if (!stretch_quartic(data, s, m, p)) continue;
     if (stretch(a, b, p, m)) return;
   }
-}
-
-double part_field(const Part& p, const Vec3& blob_p) {
-  const Vec3 q = p.c.xf ? p.c.xf->inverse_point(blob_p) : blob_p;
-  Vec3 r = q - p.c.a;
-  if (p.c.cylinder) r -= std::clamp(dot(r, p.axis), 0.0, p.length) * p.axis;
-  const double g = p.r2 - dot(r, r);
-  return g > 0 ? p.k * g * g : 0;
 }
 
 // The field's gradient at p (blob space).
@@ -323,6 +338,7 @@ Blob make_blob(double threshold, std::vector<BlobComponent> components) {
     data->parts.push_back(make_part(components[i], i));
     boxes.push_back(part_box(data->parts.back()));
     if (components[i].strength > 0) data->box.grow(boxes.back());
+    data->materials = data->materials || components[i].material >= 0;
   }
   double extents = 0;
   for (const Aabb& b : boxes) extents += std::max({b.extent().x, b.extent().y, b.extent().z});
@@ -365,7 +381,7 @@ bool intersect(const Blob& s, const Ray& ray, LocalHit& hit) {
       double u;
       if (!find_first_real_root(p, std::max(a, lo) - m, std::min(b, hi) - m, in_range, u))
         return false;
-      hit = LocalHit{.t = m + u};
+      hit = LocalHit{.t = m + u, .part = strongest(data, sc, ray, m + u)};
       found = true;
       return true;
     });
@@ -388,7 +404,8 @@ void spans(const Blob& s, const Ray& ray, SpanList& out) {
     for (int i = 0; i < n; ++i) {
       const double t = m + u[i];
       // A root on a stretch's end is found on both sides of it: once is enough.
-      if (sc.crossings.empty() || t > sc.crossings.back().t) sc.crossings.push_back({t, 0, 0});
+      if (sc.crossings.empty() || t > sc.crossings.back().t)
+        sc.crossings.push_back({t, strongest(data, sc, ray, t), 0});
     }
     return false;
   });
@@ -425,6 +442,13 @@ double blob_field(const Blob& s, const Vec3& p) {
       data, [&](const Aabb& b) { return b.contains(p); },
       [&](std::uint32_t i) { f += part_field(data.parts[i], p); });
   return f;
+}
+
+int blob_material(const Blob& s, const LocalHit& hit) {
+  const Data& data = *s.data;
+  if (!data.materials || hit.part < 0 || static_cast<std::size_t>(hit.part) >= data.parts.size())
+    return -1;
+  return data.parts[static_cast<std::size_t>(hit.part)].c.material;
 }
 
 bool contains(const Blob& s, const Vec3& p) { return blob_field(s, p) > s.data->threshold; }

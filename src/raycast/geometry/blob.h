@@ -25,6 +25,8 @@ struct BlobComponent {
   double strength = 1;
   bool cylinder = false;
   std::optional<Transform> xf;
+  int material = -1;  // the scene's material where this component's field is the strongest; -1:
+                      // the object's
 };
 
 /// The solid where the summed field exceeds `threshold` (> 0, so it lies within the components
@@ -33,7 +35,8 @@ struct BlobComponent {
 /// a quartic on each stretch between the pieces' ends; each stretch's quartic, written about its
 /// midpoint, is solved by the isolating solver (math/polynomial_solver.h). A median-split box
 /// hierarchy over the components finds those a ray meets. The normal is the field's gradient,
-/// reversed; (u, v) are 0 (POV-Ray gives blobs no surface parameters).
+/// reversed; (u, v) are 0 (POV-Ray gives blobs no surface parameters). A hit's `part` is its
+/// strongest component (the one whose material it takes) when some component has a material.
 struct Blob {
   static constexpr const char* kName = "blob";
   struct Part {
@@ -53,8 +56,9 @@ struct Blob {
     std::vector<Part> parts;
     std::vector<Node> nodes;  // nodes[0] is the root
     std::vector<std::uint32_t> order;
-    Aabb box;           // the parts of positive strength: the solid lies inside
-    double window = 0;  // intersect's step along the ray (blob space units)
+    Aabb box;                // the parts of positive strength: the solid lies inside
+    bool materials = false;  // some component has a material of its own
+    double window = 0;       // intersect's step along the ray (blob space units)
   };
   std::shared_ptr<const Data> data;
 };
@@ -70,6 +74,11 @@ void spans(const Blob& s, const Ray& ray, SpanList& out);
 SurfaceInfo surface(const Blob& s, const Ray& ray, const LocalHit& hit);
 bool contains(const Blob& s, const Vec3& p);
 inline bool is_closed(const Blob&) { return true; }
+
+/// The material of a hit (of intersect or spans): its strongest component's, or -1 (the
+/// object's). POV-Ray blends the components' textures by their fields; raycast takes the
+/// strongest one's.
+int blob_material(const Blob& s, const LocalHit& hit);
 
 /// The summed field at p (blob space); the solid is where it exceeds the threshold.
 double blob_field(const Blob& s, const Vec3& p);

@@ -426,11 +426,12 @@ class Builder {
 
   // A blob from its component nodes: each component's own transformations place its field; the
   // checker offset moves the whole blob.
-  Blob blob(const Node& n) {
+  Blob blob(const Node& n, const std::vector<int>* materials = nullptr) {
     std::vector<BlobComponent> components;
     components.reserve(n.children.size());
     for (const Node& c : n.children) {
       BlobComponent b;
+      if (materials) b.material = (*materials)[components.size()];
       b.cylinder = c.kind == Node::Cylinder;
       b.radius = c.values[0];
       b.strength = c.values[1];
@@ -444,18 +445,33 @@ class Builder {
   }
 
   // POV-Ray blends the textures of a blob's components by their fields at each point; raycast
-  // gives a blob one texture: its own (or the one it inherits), else its first component's.
+  // takes the strongest component's there (blob_material), and the blob's own (or inherited)
+  // texture where that component has none: else its first component's.
   const pov::Texture* blob_texture(const Node& n, const pov::Texture* own) {
     const pov::Texture* first = nullptr;
     for (const Node& c : n.children)
       if (c.texture) {
         first = &*c.texture;
         warn(c.pos, "blended textures of blob components",
-             "each point takes one texture, not their blend by field",
-             own ? "the blob's texture is used" : "the first component's texture is used");
+             "each point takes the texture of the component whose field is strongest there",
+             "not blended");
         break;
       }
     return own ? own : first;
+  }
+
+  // The blob rebuilt with a material for each component that has a texture of its own, in the
+  // frame of the component's transformations within the blob.
+  void blob_materials(const Node& n, Object& o) {
+    std::vector<int> materials;
+    bool any = false;
+    for (const Node& c : n.children) {
+      materials.push_back(
+          c.texture ? material(*c.texture, texture_frame(c, o.xf), csg_world_ ? csg_world_ : o.xf)
+                    : -1);
+      any = any || c.texture;
+    }
+    if (any) o.shape = blob(n, &materials);
   }
 
   // The shape of a primitive node, or nothing (with a warning) when raycast cannot build it.
@@ -609,6 +625,7 @@ class Builder {
     Object o;
     o.shape = std::move(*sh);
     o.xf = compose(parent, own_transform(n, axial, shift_));
+    if (n.kind == Node::Blob) blob_materials(n, o);  // (shift_ still holds the blob's offset)
     shift_ = Vec3{0, 0, 0};
     if (tex) o.material = material(*tex, frame, csg_world_ ? csg_world_ : o.xf);
     return o;
