@@ -7,6 +7,7 @@
 
 #include "geometry/algebraic.h"
 #include "geometry/basic_shapes.h"
+#include "geometry/blob.h"
 #include "geometry/cone.h"
 #include "geometry/cylinder.h"
 #include "geometry/ellipsoid.h"
@@ -35,7 +36,7 @@ namespace raycast {
 using ShapeVariant =
     std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder,
                  Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, Revolution, MeshShape,
-                 CsgShape, InstanceShape, Isosurface, Prism, Text>;
+                 CsgShape, InstanceShape, Isosurface, Prism, Text, Blob>;
 
 struct Object {
   ShapeVariant shape;

@@ -127,6 +127,8 @@ struct Node {
     Sor,
     Prism,  // points: the contour's <x, z> as (x, z, 0); values: the two heights
     Text,   // font, text; values: the thickness; points: the offset between letters
+    Blob,   // values: the threshold; children: the components, Sphere or Cylinder nodes whose
+            // values are the radius and the strength
     Mesh,
     Triangle,  // triangle / smooth_triangle outside a mesh: points, and normals when smooth
     Union,

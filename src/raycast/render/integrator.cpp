@@ -37,8 +37,10 @@ unsigned integer_exponent(double shininess) {
 
 /// The value material_of(o, hit) takes for every hit on o, when it is one value: o.material for
 /// a plain shape; for a CSG object or an instance, the same answer from every part (and from a
-/// hit outside the parts, which gives o.material). Else nullopt.
+/// hit outside the parts, which gives o.material). Else nullopt (also for a blob whose components
+/// have materials of their own).
 std::optional<int> sole_material(const Object& o) {
+  if (const auto* b = std::get_if<Blob>(&o.shape); b && b->data->materials) return std::nullopt;
   std::span<const Object> parts;
   if (const auto* c = std::get_if<CsgShape>(&o.shape)) parts = c->tree->leaves;
   if (const auto* i = std::get_if<InstanceShape>(&o.shape)) parts = i->proto->objects;
