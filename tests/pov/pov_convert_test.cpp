@@ -111,6 +111,14 @@ const Case kCases[] = {
      "height_field { function 3, 3 { x } water_level 0.6 translate <-0.5, 0, -0.5> "
      "rotate -90*x translate 3.5*z }",
      std::numeric_limits<double>::infinity()},
+    // A lone component's surface: 2 (1 - r^2 / 4)^2 = 1, r = 2 sqrt(1 - sqrt(1 / 2)).
+    {"blob", "blob { threshold 1 sphere { <0, 0, 4>, 2, 2 } }", 2.9176077997},
+    {"blob_old_component_syntax", "blob { component 2, 2, <0, 0, 4> }", 2.9176077997},
+    {"blob_cylinder", "blob { cylinder { <0, -1, 4>, <0, 1, 4>, 2, strength 2 } sturm }",
+     2.9176077997},
+    {"blob_scaled_component",
+     "blob { threshold 1 sphere { 0, 2, 2 scale <1, 1, 2> } hierarchy off translate 4*z }",
+     1.8352155994},
     {"mesh", "mesh { triangle { <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } }", 3},
     {"triangle", "triangle { <-1, -1, 2>, <1, -1, 4>, <0, 1, 3> }", 3},
     {"smooth_triangle",
@@ -212,7 +220,7 @@ TEST_P(PovConvertRoundTrip, ConvertedYamlRendersIdentically) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovConvertRoundTrip,
                          ::testing::Values("basic", "csg", "surfaces", "glass", "transmit",
-                                           "superellipsoids", "lens"));
+                                           "superellipsoids", "lens", "blob"));
 
 TEST(PovImport, DegenerateShapesAreLeftOutWithTheirPosition) {
   // POV-Ray draws nothing for a sphere of negative radius; raycast says so and goes on.

@@ -40,6 +40,7 @@ ShapeVariant parse_shape(std::type_identity<Revolution>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Isosurface>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Prism>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Text>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Blob>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Superellipsoid>, Fields& f);
 /// `height_field` (parse_height_field.cpp): no type of its own, it builds a MeshShape.
 ShapeVariant parse_height_field(Fields& f);

@@ -205,6 +205,8 @@ class Interpreter {
   void text_body(Node& n);
   void height_field_body(Node& n, int depth);
   void height_field_function(Node& n, const Pos& at);
+  void blob_body(Node& n, int depth);
+  Node blob_component(int depth);
   void triangle_body(Node& n, bool smooth);
   void place_declared(const std::shared_ptr<const Node>& object, Node& n);
   bool is_declared_object();

@@ -34,6 +34,7 @@ const std::map<std::string, Node::Kind>& object_kinds() {
                                                           {"text", Node::Text},
                                                           {"superellipsoid", Node::Superellipsoid},
                                                           {"height_field", Node::HeightField},
+                                                          {"blob", Node::Blob},
                                                           {"mesh", Node::Mesh},
                                                           {"mesh2", Node::Mesh},
                                                           {"triangle", Node::Triangle},
@@ -47,9 +48,8 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 }
 
 bool is_unbuilt_shape(const std::string& w) {
-  static constexpr std::string_view shapes[] = {"blob",          "sphere_sweep", "julia_fractal",
-                                                "bicubic_patch", "parametric",   "polygon",
-                                                "lemon",         "ovus"};
+  static constexpr std::string_view shapes[] = {
+      "sphere_sweep", "julia_fractal", "bicubic_patch", "parametric", "polygon", "lemon", "ovus"};
   for (const std::string_view s : shapes)
     if (s == w) return true;
   return false;
@@ -415,6 +415,9 @@ void Interpreter::object_body(Node& n, int depth) {
       break;
     case Node::Text:
       text_body(n);
+      break;
+    case Node::Blob:
+      blob_body(n, depth);
       break;
     case Node::HeightField:
       height_field_body(n, depth);
@@ -854,7 +857,11 @@ bool Interpreter::modifier(Node& n, int depth) {
       on = boolean_option();
     if (w == "no_shadow")
       n.no_shadow = on;
-    else if (w == "no_image" || w == "no_reflection" || w == "double_illuminate")
+    else if (w == "no_image")
+      n.no_image = on;
+    else if (w == "no_reflection")
+      n.no_reflection = on;
+    else if (w == "double_illuminate")
       unsupported_warning(t.pos, w);
   } else if (w == "inverse") {
     next();
