@@ -94,6 +94,21 @@ std::vector<Entry> read_map(const SourceContext& ctx, const YamlNode& node, cons
   return out;
 }
 
+// An average's weights: none negative, some positive.
+double weight_of(const texture::PigmentMapEntry& e) { return e.at; }
+double weight_of(const texture::NormalMapEntry& e) { return e.weight; }
+template <class Entry>
+void check_weights(const SourceContext& ctx, const YamlNode& node, const std::vector<Entry>& map,
+                   const std::string& what) {
+  double total = 0;
+  for (const Entry& e : map) {
+    if (!(weight_of(e) >= 0))
+      fail_at(ctx, node, what + ": an average's weights must not be negative");
+    total += weight_of(e);
+  }
+  if (!(total > 0)) fail_at(ctx, node, what + ": an average's weights must not all be 0");
+}
+
 }  // namespace
 
 texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, int depth) {
@@ -102,6 +117,17 @@ texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, in
   texture::Pigment p;
   if (f.has("color")) {
     p.color = read_rgbft(ctx, f.required("color"), f.name("color"));
+    f.finish();
+    return p;
+  }
+  if (f.has("pattern") && f.string("pattern") == "average") {
+    // The pigments' weighted mean: each entry's value is its weight.
+    p.kind = texture::Pigment::Kind::kAverage;
+    p.pigment_map = read_map<texture::PigmentMapEntry>(
+        ctx, f.required("pigments"), f.name("pigments"), [&](const YamlNode& c) {
+          return std::make_shared<const texture::Pigment>(read_pigment(ctx, c, depth + 1));
+        });
+    check_weights(ctx, f.required("pigments"), p.pigment_map, f.name("pigments"));
     f.finish();
     return p;
   }
@@ -126,9 +152,27 @@ texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, in
   return p;
 }
 
-texture::Normal read_normal(const SourceContext& ctx, const YamlNode& node) {
+texture::Normal read_normal(const SourceContext& ctx, const YamlNode& node, int depth) {
+  if (depth > kMaxPigmentDepth) fail_at(ctx, node, "normals are nested more than 16 deep");
   Fields f(ctx, node, "normal");
   texture::Normal n;
+  if (f.has("pattern") && f.string("pattern") == "average") {
+    // The normals' weighted mean: entries [weight, normal].
+    const YamlNode list = f.required("normals");
+    const std::string what = f.name("normals");
+    if (!list.IsSequence() || list.size() == 0 || list.size() > texture::kMaxMapEntries)
+      fail_at(ctx, list, what + " must be a list of 1 to 256 [weight, normal]");
+    for (const YamlNode& e : list) {
+      if (!e.IsSequence() || e.size() != 2)
+        fail_at(ctx, e, what + ": each entry is [weight, normal]");
+      n.average.push_back({read_number(ctx, e[0], what), std::make_shared<const texture::Normal>(
+                                                             read_normal(ctx, e[1], depth + 1))});
+    }
+    check_weights(ctx, list, n.average, what);
+    n.bump_size = 1;
+    f.finish();
+    return n;
+  }
   n.bump_size = f.number("bump_size", n.bump_size);
   n.pattern = read_pattern(f);
   f.finish();

@@ -160,10 +160,14 @@ class Interpreter {
   void warp_block(texture::Pattern& p);
   /// Reads to the '}' that closes the block being read (its inner blocks included).
   void skip_warp_rest();
+  void skip_entry_rest();  // the rest of a map entry, through its ']'
   /// A block pattern's colours or pigments (checker, brick, hexagon ...).
   void block_list(texture::Pattern& pattern, texture::Pigment& model, Pigment& p);
-  std::vector<texture::PigmentMapEntry> pigment_map_block();
+  // An entry without a value is weighted 1 in an average's map, else one above the last.
+  std::vector<texture::PigmentMapEntry> pigment_map_block(bool weights);
   texture::Normal normal_block(const std::optional<texture::Normal>& base);
+  texture::Normal normal_body(const std::optional<texture::Normal>& base, const char* close);
+  std::vector<texture::NormalMapEntry> normal_map_block();
   /// Transformations inside a texture: they move its pigment, normal and layers.
   void move_texture(Texture& t, const std::vector<XformOp>& ops);
   void move_pigment(Pigment& p, const std::vector<XformOp>& ops, const Transform& x);

@@ -48,9 +48,19 @@ void add_finish(const Finish& f, double vis, Finish& sum, double& strongest) {
 
 }  // namespace
 
+void transform_normal(Normal& normal, const Transform& t) {
+  transform_pattern(normal.pattern, t);
+  for (NormalMapEntry& e : normal.average) {
+    if (!e.normal) continue;
+    auto moved = std::make_shared<Normal>(*e.normal);
+    transform_normal(*moved, t);
+    e.normal = std::move(moved);
+  }
+}
+
 void transform_layer(TextureLayer& layer, const Transform& t) {
   transform_pigment(layer.pigment, t);
-  if (layer.normal) transform_pattern(layer.normal->pattern, t);
+  if (layer.normal) transform_normal(*layer.normal, t);
 }
 
 bool TextureStack::may_transmit() const {
@@ -123,6 +133,18 @@ SurfaceLook blend(const SurfaceLook& a, const SurfaceLook& b, double t) {
 }  // namespace
 
 SurfaceLook mapped_look(const TextureStack& texture, const TextureContext& ctx) {
+  if (texture.average) {
+    // A running weighted mean: each entry blended in by its share of the weights so far.
+    SurfaceLook sum;
+    double total = 0;
+    for (const TextureMapEntry& e : texture.map) {
+      if (!e.texture || !(e.at > 0)) continue;
+      total += e.at;
+      const SurfaceLook look = evaluate(*e.texture, ctx);
+      sum = total == e.at ? look : blend(sum, look, e.at / total);
+    }
+    return sum;
+  }
   const MapPick m = pick(texture, ctx.p);
   if (!m.a) return {};
   const SurfaceLook a = evaluate(*m.a, ctx);
@@ -183,6 +205,26 @@ Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
   return g;
 }
 
+Vec3 normal_tilt(const Normal& normal, const TextureContext& ctx, int depth) {
+  if (normal.average.empty()) return normal.bump_size * pattern_gradient(normal.pattern, ctx);
+  // The unit normal each entry gives, averaged by weight; the tilt is what leans ctx.n onto the
+  // mean's direction: mean = a n + t (t across n) points along n - (-t / a).
+  Vec3 mean{0, 0, 0};
+  double total = 0;
+  for (const NormalMapEntry& e : normal.average) {
+    if (!e.normal || depth > 16) continue;
+    const Vec3 tilt = normal_tilt(*e.normal, ctx, depth + 1);
+    const Vec3 n = ctx.n - (tilt - dot(tilt, ctx.n) * ctx.n);
+    const double l = length(n);
+    if (l > 0 && std::isfinite(l)) mean += (e.weight / l) * n;
+    total += e.weight;
+  }
+  if (total == 0) return {0, 0, 0};
+  const double a = dot(mean, ctx.n);
+  if (!(a > 1e-9)) return {0, 0, 0};
+  return -(1 / a) * (mean - a * ctx.n);
+}
+
 SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
   SurfaceLook look;
   Finish& f = look.finish;
@@ -205,8 +247,7 @@ SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
     diffuse_weight += w;
     brilliance += w * layer.finish.brilliance;
     add_finish(layer.finish, vis, f, strongest);
-    if (layer.normal)
-      tilt += (vis * layer.normal->bump_size) * pattern_gradient(layer.normal->pattern, ctx);
+    if (layer.normal) tilt += vis * normal_tilt(*layer.normal, ctx);
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
     if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
   }
@@ -238,6 +279,23 @@ SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
   return look;
 }
 
+namespace {
+
+// The weighted mean of f over an average texture's entries (black when no weight is positive).
+Vec3 mean_of(const TextureStack& texture, const Vec3& p,
+             Vec3 (*f)(const TextureStack&, const Vec3&)) {
+  Vec3 sum{0, 0, 0};
+  double total = 0;
+  for (const TextureMapEntry& e : texture.map) {
+    if (!e.texture || !(e.at > 0)) continue;
+    sum += e.at * f(*e.texture, p);
+    total += e.at;
+  }
+  return total > 0 ? sum / total : sum;
+}
+
+}  // namespace
+
 Vec3 pigment_color(const TextureStack& texture, const Vec3& p) {
   Vec3 through{1, 1, 1}, sum{0, 0, 0};
   for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
@@ -246,6 +304,7 @@ Vec3 pigment_color(const TextureStack& texture, const Vec3& p) {
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
     if (!(through.x > 0 || through.y > 0 || through.z > 0)) return sum;
   }
+  if (texture.average) return sum + mul(through, mean_of(texture, p, pigment_color));
   if (const MapPick m = texture.map_pattern ? pick(texture, p) : MapPick{}; m.a) {
     const Vec3 a = pigment_color(*m.a, p);
     sum += mul(through, m.b ? lerp(a, pigment_color(*m.b, p), m.t) : a);
@@ -260,6 +319,7 @@ Vec3 transmittance(const TextureStack& texture, const Vec3& p) {
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
     if (!(through.x > 0 || through.y > 0 || through.z > 0)) return through;
   }
+  if (texture.average) return mul(through, mean_of(texture, p, transmittance));
   if (const MapPick m = texture.map_pattern ? pick(texture, p) : MapPick{}; m.a) {
     const Vec3 a = transmittance(*m.a, p);
     through = mul(through, m.b ? lerp(a, transmittance(*m.b, p), m.t) : a);
