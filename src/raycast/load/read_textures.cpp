@@ -36,6 +36,15 @@ texture::Pattern read_pattern(Fields& f) {
   const std::optional<texture::PatternKind> kind = texture::pattern_kind(name);
   if (!kind) f.fail("pattern", f.name("pattern") + ": no pattern named '" + name + "'");
   texture::Pattern p = texture::make_pattern(*kind);
+  if (*kind == texture::PatternKind::kFunction) {
+    // A formula in x, y, z of the pattern's space (the isosurface's syntax).
+    const std::string text = f.string("function");
+    try {
+      p.function = texture::formula_function(compile_formula(text));
+    } catch (const ExpressionError& e) {
+      f.fail("function", f.name("function") + ": " + e.what());
+    }
+  }
   p.vector = f.vec3("direction", p.vector);
   if (*kind == texture::PatternKind::kBrick) p.vector = f.vec3("brick_size", p.vector);
   if (*kind == texture::PatternKind::kBrick) p.amount = f.non_negative("mortar", p.amount);

@@ -23,6 +23,26 @@ std::string number_text(double v) {
 constexpr int kMaxCallDepth = 64;
 constexpr double kMaxUnrolledFrequency = 64;
 
+double eval(const FnNode& n, const std::vector<double>& a, int depth);
+
+// A component of a pigment or pattern function's value (F(x, y, z).red); of a scalar function's
+// value, the value.
+double component(const FnNode& n, const std::vector<double>& a, int depth) {
+  if (n.args.size() != 1) return std::nan("");
+  const FnNode& call = *n.args[0];
+  if (call.kind != FnNode::User || !call.callee || depth > kMaxCallDepth ||
+      (!call.callee->pigment && !call.callee->pattern))
+    return eval(call, a, depth);
+  double p[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < 3 && i < call.args.size(); ++i) p[i] = eval(*call.args[i], a, depth);
+  double v[5];
+  vector_value(*call.callee, p[0], p[1], p[2], v);
+  const int k = static_cast<int>(n.number);
+  // POV-Ray's grey of a colour: the luminance weights of its `.gray`.
+  if (k == kGrayComponent) return 0.297 * v[0] + 0.589 * v[1] + 0.114 * v[2];
+  return k >= 0 && k < 5 ? v[k] : std::nan("");
+}
+
 double eval(const FnNode& n, const std::vector<double>& a, int depth) {
   auto arg = [&](std::size_t i) { return eval(*n.args[i], a, depth); };
   switch (n.kind) {
@@ -49,12 +69,21 @@ double eval(const FnNode& n, const std::vector<double>& a, int depth) {
     case FnNode::Power:
       return std::pow(arg(0), arg(1));
     case FnNode::User: {
-      if (depth > kMaxCallDepth || !n.callee || !n.callee->body) return std::nan("");
+      if (depth > kMaxCallDepth || !n.callee) return std::nan("");
+      if (n.callee->pigment || n.callee->pattern) {
+        // A colour read as a number: its first component.
+        double v[5];
+        vector_value(*n.callee, n.args.size() > 0 ? arg(0) : 0, n.args.size() > 1 ? arg(1) : 0,
+                     n.args.size() > 2 ? arg(2) : 0, v);
+        return v[0];
+      }
+      if (!n.callee->body) return std::nan("");
       std::vector<double> b;
       for (std::size_t i = 0; i < n.args.size(); ++i) b.push_back(arg(i));
       return eval(*n.callee->body, b, depth + 1);
     }
     case FnNode::Call:
+      if (n.function == "component") return component(n, a, depth + 1);
       break;
   }
   const std::string& f = n.function;
@@ -220,8 +249,62 @@ bool expressible(const FnNode& n) {
 }  // namespace
 
 double evaluate(const FunctionValue& f, const std::vector<double>& args) {
+  if (f.pigment || f.pattern) {
+    double v[5];
+    vector_value(f, args.size() > 0 ? args[0] : 0, args.size() > 1 ? args[1] : 0,
+                 args.size() > 2 ? args[2] : 0, v);
+    return v[0];
+  }
   if (!f.body) return std::nan("");
   return eval(*f.body, args, 0);
+}
+
+namespace {
+
+class UserPatternFunction final : public texture::PatternFunction {
+ public:
+  explicit UserPatternFunction(std::shared_ptr<const FunctionValue> f) : f_(std::move(f)) {}
+  double value(const Vec3& p) const override {
+    // The extra parameters of a function of more than three read 0, as in POV-Ray.
+    std::vector<double> args(std::max<std::size_t>(3, f_->params.size()), 0.0);
+    args[0] = p.x, args[1] = p.y, args[2] = p.z;
+    return evaluate(*f_, args);
+  }
+
+ private:
+  std::shared_ptr<const FunctionValue> f_;
+};
+
+}  // namespace
+
+std::shared_ptr<const texture::PatternFunction> pattern_function(
+    std::shared_ptr<const FunctionValue> f) {
+  return std::make_shared<UserPatternFunction>(std::move(f));
+}
+
+int component_index(const std::string& c) {
+  if (c == "x" || c == "red" || c == "r" || c == "u") return 0;
+  if (c == "y" || c == "green" || c == "g" || c == "v") return 1;
+  if (c == "z" || c == "blue" || c == "b") return 2;
+  if (c == "filter" || c == "f" || c == "t") return 3;
+  if (c == "transmit") return 4;
+  if (c == "gray" || c == "grey") return kGrayComponent;
+  return -1;
+}
+
+bool vector_value(const FunctionValue& f, double x, double y, double z, double out[5]) {
+  if (f.pigment) {
+    const texture::Rgbft c = texture::evaluate(*f.pigment, {x, y, z});
+    out[0] = c.rgb.x, out[1] = c.rgb.y, out[2] = c.rgb.z, out[3] = c.filter, out[4] = c.transmit;
+    return true;
+  }
+  if (f.pattern) {
+    const double v = texture::evaluate(*f.pattern, {x, y, z});
+    for (int i = 0; i < 5; ++i) out[i] = v;
+    return true;
+  }
+  for (int i = 0; i < 5; ++i) out[i] = std::nan("");
+  return false;
 }
 
 std::string formula_text(const FunctionValue& f, bool mirror_z) {

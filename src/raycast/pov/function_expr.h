@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "texture/pattern_function.h"
+#include "texture/pigment.h"
+
 namespace raycast::pov {
 
 struct FunctionValue;
@@ -14,7 +17,7 @@ struct FunctionValue;
 struct FnNode {
   enum Kind { Number, Variable, Negate, Add, Subtract, Multiply, Divide, Power, Call, Param, User };
   Kind kind = Number;
-  double number = 0;     // Number; Param: the parameter's index
+  double number = 0;     // Number; Param: the parameter's index; Call component: its index
   char variable = 'x';   // Variable (x, y or z of an isosurface's space)
   std::string function;  // Call: the built-in's name (sin, min, lt, select, ...)
   std::shared_ptr<const FunctionValue> callee;  // User
@@ -22,15 +25,33 @@ struct FnNode {
 };
 
 /// A function value: its parameter names and body. `opaque` names what raycast reads but does
-/// not evaluate yet (a pigment or pattern function, an `internal` function).
+/// not evaluate yet (a transform or spline function, an `internal` function). A pigment function
+/// (`function { pigment { ... } }`) has no body: its value at (x, y, z) is the pigment's colour
+/// there, a pattern function's the pattern's value.
 struct FunctionValue {
   std::vector<std::string> params;
   std::shared_ptr<const FnNode> body;
   std::string opaque;
+  std::shared_ptr<const texture::Pigment> pigment;
+  std::shared_ptr<const texture::Pattern> pattern;
 };
+
+/// The index a component name selects in a colour or vector function's value (x red r u: 0,
+/// y green g v: 1, z blue b: 2, filter f t: 3, transmit: 4), kGrayComponent for gray / grey,
+/// or -1.
+inline constexpr int kGrayComponent = 5;
+int component_index(const std::string& name);
+
+/// A pigment or pattern function's value at (x, y, z): rgb, filter, transmit (a pattern's value
+/// in every place). False for other functions.
+bool vector_value(const FunctionValue& f, double x, double y, double z, double out[5]);
 
 /// The function's value at `args` (one per parameter). Unknown built-ins give NaN.
 double evaluate(const FunctionValue& f, const std::vector<double>& args);
+
+/// `f` as the function of a `function` pattern: called with the pattern-space point as x, y, z.
+std::shared_ptr<const texture::PatternFunction> pattern_function(
+    std::shared_ptr<const FunctionValue> f);
 
 /// The formula text of `f` called with x, y, z for its first three parameters; with `mirror_z`
 /// every z is written as (-z). Empty when the function uses what formulas cannot express.

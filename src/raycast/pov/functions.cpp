@@ -166,9 +166,16 @@ class FunctionParser {
         f->args = args();
         if (in.is_symbol(".")) {  // a component of a vector or colour function's value
           in.next();
-          in.tok();
+          const Token c = in.tok();
+          const int k = component_index(c.text);
+          if (k < 0) in.fail_at(c.pos, "unknown component '." + c.text + "'");
           in.next();
-          return call("component", {f});
+          auto pick = std::make_shared<FnNode>();
+          pick->kind = FnNode::Call;
+          pick->function = "component";
+          pick->number = k;
+          pick->args = {f};
+          return pick;
         }
         return f;
       }
@@ -227,7 +234,24 @@ Value Interpreter::function_block(const Pos& at) {
     }
   }
   expect_symbol("{", "after function");
-  if (is_word("pigment") || is_word("pattern") || is_word("transform") || is_word("spline")) {
+  if (is_word("pigment") || is_word("pattern")) {
+    // A pigment function: the pigment read whole; a pattern function: the pattern of a
+    // pigment read the same way (its colour map unused).
+    const bool pattern = is_word("pattern");
+    next();
+    const Pigment p = pigment_block(Pigment{});
+    if (p.model && pattern) {
+      f->pattern = std::make_shared<const texture::Pattern>(p.model->pattern);
+    } else if (p.model) {
+      f->pigment = p.model;
+    } else {
+      texture::Pigment solid;
+      solid.color = {{p.c0.r, p.c0.g, p.c0.b}, p.c0.filter, p.c0.transmit};
+      if (pattern) f->opaque = "pattern function of a pattern it does not build";
+      f->pigment = std::make_shared<const texture::Pigment>(solid);
+    }
+    expect_symbol("}", "to close the function");
+  } else if (is_word("transform") || is_word("spline")) {
     f->opaque = tok().text + " function";
     next();
     int depth = 1;
@@ -371,6 +395,14 @@ Value Interpreter::call_value(const Value& f, const Token& name) {
   if (!f.function->opaque.empty()) {
     unsupported_warning(name.pos, "calls of a " + f.function->opaque, "its value is 0");
     return Value::number(0);
+  }
+  if (f.function->pigment || f.function->pattern) {
+    // A pigment function's colour (a pattern function's value in every channel).
+    double c[5];
+    vector_value(*f.function, args.size() > 0 ? args[0] : 0, args.size() > 1 ? args[1] : 0,
+                 args.size() > 2 ? args[2] : 0, c);
+    if (f.function->pattern) return Value::number(c[0]);
+    return Value::vector({c[0], c[1], c[2], c[3], c[4]});
   }
   if (args.size() != raw_args.size() || args.size() != f.function->params.size())
     fail_at(name.pos, name.text + " takes " + std::to_string(f.function->params.size()) +

@@ -160,7 +160,10 @@ class Interpreter {
   void warp_block(texture::Pattern& p);
   /// Reads to the '}' that closes the block being read (its inner blocks included).
   void skip_warp_rest();
-  void skip_entry_rest();  // the rest of a map entry, through its ']'
+  void skip_entry_rest();
+  // The function of a `function` pattern: `{ ... }` or a declared function's name.
+  std::shared_ptr<const texture::PatternFunction>
+  pattern_function_argument();  // the rest of a map entry, through its ']'
   /// A block pattern's colours or pigments (checker, brick, hexagon ...).
   void block_list(texture::Pattern& pattern, texture::Pigment& model, Pigment& p);
   // An entry without a value is weighted 1 in an average's map, else one above the last.

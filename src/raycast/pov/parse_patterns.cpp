@@ -40,10 +40,29 @@ void Interpreter::start_pattern(texture::PatternKind kind, texture::Pattern& p) 
   } else if ((kind == texture::PatternKind::kSpiral1 || kind == texture::PatternKind::kSpiral2) &&
              numeric_ahead()) {
     p.amount = number("the spiral's arms");
-  } else if (kind == texture::PatternKind::kQuilted || kind == texture::PatternKind::kCrackle) {
-    // no values of their own
+  } else if (kind == texture::PatternKind::kFunction) {
+    p.function = pattern_function_argument();
   }
   skip_comma();
+}
+
+std::shared_ptr<const texture::PatternFunction> Interpreter::pattern_function_argument() {
+  const Pos at = tok().pos;
+  std::shared_ptr<const FunctionValue> f;
+  if (is_symbol("{")) {
+    f = function_block(at).function;
+  } else if (const Value* v = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+             v && v->kind == Value::Function) {
+    f = v->function;
+    next();
+  } else {
+    unexpected("a function's block or name after function");
+  }
+  if (!f->opaque.empty()) {
+    unsupported_warning(at, "the function pattern of a " + f->opaque, "its value is 0");
+    return nullptr;
+  }
+  return pattern_function(f);
 }
 
 bool Interpreter::pattern_modifier(const std::string& w, texture::Pattern& p) {

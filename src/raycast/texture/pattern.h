@@ -10,6 +10,7 @@
 #include "math/transform.h"
 #include "math/vec3.h"
 #include "texture/noise.h"
+#include "texture/pattern_function.h"
 
 namespace raycast::texture {
 
@@ -24,6 +25,7 @@ enum class PatternKind : std::uint8_t {
   kCrackle,
   kCylindrical,
   kDents,
+  kFunction,
   kGradient,
   kGranite,
   kHexagon,
@@ -76,6 +78,7 @@ struct Pattern {
   Turbulence turbulence;    // classic turbulence: applied before the pattern's own steps
   int noise_generator = 2;  // POV-Ray 3.7's default
   std::vector<PatternStep> steps;
+  std::shared_ptr<const PatternFunction> function;  // kFunction
 };
 
 /// A new pattern of `kind` with POV-Ray's defaults for it (brick size, mortar, agate_turb ...).

@@ -171,6 +171,8 @@ double raw_pattern(const Pattern& pt, const Vec3& p) {
       const double n = noise(p, g);
       return n * n * n;
     }
+    case PatternKind::kFunction:
+      return function_pattern_value(pt.function.get(), p);
     case PatternKind::kGradient:
       return dot(p, pt.vector);
     case PatternKind::kGranite: {
