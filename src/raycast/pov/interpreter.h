@@ -161,6 +161,23 @@ class Interpreter {
   /// Reads to the '}' that closes the block being read (its inner blocks included).
   void skip_warp_rest();
   void skip_entry_rest();
+  // An image_map / image_pattern block being read: the image, and what its pixels' final
+  // colours wait on (the gamma, alpha, palette indices, filter and transmit items).
+  struct ImageMapRead {
+    texture::ImageMap image;
+    std::vector<float> alpha;
+    std::vector<std::uint8_t> index;
+    int palette_size = 0;
+    double gamma = -1;                                     // -1: not given; 0: srgb
+    std::vector<std::pair<int, double>> filter, transmit;  // palette index (-1: all), amount
+    bool use_index = false, use_alpha = false, from_function = false;
+  };
+  // The block after image_map / image_pattern (nullptr for a format raycast does not read).
+  std::shared_ptr<const texture::ImageMap> image_map_block(const std::string& what);
+  bool image_map_modifier(ImageMapRead& r);
+  void image_from_file(ImageMapRead& r, const std::string& name, const Pos& at);
+  void image_from_function(ImageMapRead& r, const Pos& at);
+  void finish_image(ImageMapRead& r);
   // The function of a `function` pattern: `{ ... }` or a declared function's name.
   std::shared_ptr<const texture::PatternFunction>
   pattern_function_argument();  // the rest of a map entry, through its ']'

@@ -42,6 +42,9 @@ void Interpreter::start_pattern(texture::PatternKind kind, texture::Pattern& p) 
     p.amount = number("the spiral's arms");
   } else if (kind == texture::PatternKind::kFunction) {
     p.function = pattern_function_argument();
+  } else if (kind == texture::PatternKind::kImage) {
+    // Without an image it reads 0 everywhere.
+    p.image = image_map_block("image_pattern");
   }
   skip_comma();
 }

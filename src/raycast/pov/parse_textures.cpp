@@ -416,14 +416,22 @@ bool Interpreter::pigment_item(const Token& t, Pigment& p, texture::Pigment& mod
     model.kind = texture::Pigment::Kind::kSolid;
     return true;
   }
-  if (w == "image_map" || w == "image_pattern") {
+  if (w == "image_map") {
     next();
-    unsupported_warning(t.pos, "image_map pigments", "drawn grey");
-    skip_block(w);
     p.checker = false;
     p.pattern = w;
     p.c0 = {0.5, 0.5, 0.5, 0, 0};
-    model.kind = texture::Pigment::Kind::kSolid;
+    if (auto image = image_map_block(w)) {
+      // The image's colours through the pattern's transformations (set after it, as in POV-Ray).
+      std::vector<texture::PatternStep> steps = std::move(model.pattern.steps);
+      model.pattern = texture::make_pattern(texture::PatternKind::kImage);
+      model.pattern.steps = std::move(steps);
+      model.pattern.image = std::move(image);
+      model.kind = texture::Pigment::Kind::kImage;
+      modelled = true;
+    } else {
+      model.kind = texture::Pigment::Kind::kSolid;
+    }
   } else if (in(kPatterns, std::size(kPatterns), w)) {
     next();
     unsupported_warning(t.pos, "the " + w + " pattern", "drawn in its colour map's middle colour");

@@ -9,6 +9,7 @@
 
 #include "math/transform.h"
 #include "math/vec3.h"
+#include "texture/image_map.h"
 #include "texture/noise.h"
 #include "texture/pattern_function.h"
 
@@ -29,6 +30,7 @@ enum class PatternKind : std::uint8_t {
   kGradient,
   kGranite,
   kHexagon,
+  kImage,
   kLeopard,
   kMarble,
   kOnion,
@@ -79,6 +81,7 @@ struct Pattern {
   int noise_generator = 2;  // POV-Ray 3.7's default
   std::vector<PatternStep> steps;
   std::shared_ptr<const PatternFunction> function;  // kFunction
+  std::shared_ptr<const ImageMap> image;            // kImage: its grey; an image_map pigment's
 };
 
 /// A new pattern of `kind` with POV-Ray's defaults for it (brick size, mortar, agate_turb ...).

@@ -83,6 +83,14 @@ Rgbft evaluate(const Pigment& pigment, const Vec3& p) {
     }
     case Pigment::Kind::kAverage:
       return average_at(pigment.pigment_map, p);
+    case Pigment::Kind::kImage: {
+      double u = 0, v = 0;
+      const ImageMap* image = pigment.pattern.image.get();
+      if (!image || !image_uv(*image, pattern_point(pigment.pattern, p), u, v))
+        return {{1, 1, 1}, 0, 1};
+      const ImagePixel c = image_sample(*image, u, v);
+      return {{c.r, c.g, c.b}, c.filter, c.transmit};
+    }
   }
   return {};
 }
@@ -95,6 +103,9 @@ bool may_transmit(const Pigment& pigment) {
       return std::any_of(
           pigment.color_map.begin(), pigment.color_map.end(),
           [](const ColorMapEntry& e) { return e.color.filter > 0 || e.color.transmit > 0; });
+    case Pigment::Kind::kImage:
+      return pigment.pattern.image &&
+             (pigment.pattern.image->transmits || pigment.pattern.image->once);
     case Pigment::Kind::kPigmentMap:
     case Pigment::Kind::kAverage:
       return std::any_of(

@@ -36,8 +36,9 @@ inline constexpr std::size_t kMaxMapEntries = 256;
 
 struct Pigment {
   // kAverage: POV-Ray's `average` pattern, the pigments of pigment_map averaged with their
-  // `at` as weights (the pattern is unused).
-  enum class Kind : std::uint8_t { kSolid, kColorMap, kPigmentMap, kAverage };
+  // `at` as weights (the pattern is unused). kImage: an image_map, the colours of the pattern's
+  // image (clear where the image does not reach).
+  enum class Kind : std::uint8_t { kSolid, kColorMap, kPigmentMap, kAverage, kImage };
   Kind kind = Kind::kSolid;
   Rgbft color;                               // kSolid
   Pattern pattern;                           // kColorMap, kPigmentMap
