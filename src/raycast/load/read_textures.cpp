@@ -1,6 +1,9 @@
 #include "load/read_textures.h"
 
 #include <algorithm>
+#include <filesystem>
+
+#include "io/image.h"
 
 namespace raycast {
 
@@ -118,6 +121,53 @@ void check_weights(const SourceContext& ctx, const YamlNode& node, const std::ve
   if (!(total > 0)) fail_at(ctx, node, what + ": an average's weights must not all be 0");
 }
 
+// {pattern: image_map, file: FILE, map_type, once, interpolate, scale, transform}: a PNG's
+// linear colours, its alpha as transmit.
+texture::Pigment read_image_pigment(Fields& f) {
+  const std::string name = f.string("file");
+  const std::filesystem::path path = std::filesystem::path(name).is_absolute()
+                                         ? std::filesystem::path(name)
+                                         : std::filesystem::path(f.ctx().dir) / name;
+  texture::ImageMap image;
+  const std::string projection = f.string("map_type", "planar");
+  if (projection == "spherical") {
+    image.projection = texture::ImageProjection::kSpherical;
+  } else if (projection == "cylindrical") {
+    image.projection = texture::ImageProjection::kCylindrical;
+  } else if (projection != "planar") {
+    f.fail("map_type", f.name("map_type") + " must be planar, spherical or cylindrical");
+  }
+  image.once = f.boolean("once", false);
+  image.interpolate = f.boolean("interpolate", false);
+  PngPixels png;
+  try {
+    png = load_png_pixels(path.string());
+  } catch (const ImageError& e) {
+    f.fail("file", f.name("file") + ": " + e.what());
+  }
+  image.width = png.width;
+  image.height = png.height;
+  image.pixels.resize(std::size_t(png.width) * std::size_t(png.height));
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    const float* c = &png.rgba[4 * i];
+    image.pixels[i] = {srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]), 0,
+                       1 - c[3]};
+    if (c[3] < 1) image.transmits = true;
+  }
+  texture::Pigment p;
+  p.kind = texture::Pigment::Kind::kImage;
+  p.pattern = texture::make_pattern(texture::PatternKind::kImage);
+  p.pattern.image = std::make_shared<const texture::ImageMap>(std::move(image));
+  if (f.has("scale")) {
+    const Vec3 s = number_or_vec3(f, "scale", {1, 1, 1});
+    if (!(s.x != 0 && s.y != 0 && s.z != 0)) f.fail("scale", f.name("scale") + " must not be 0");
+    texture::transform_pattern(p.pattern, Transform::scale(s));
+  }
+  if (f.has("transform"))
+    texture::transform_pattern(p.pattern, read_transform(f.ctx(), f.required("transform")));
+  return p;
+}
+
 }  // namespace
 
 texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, int depth) {
@@ -126,6 +176,11 @@ texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, in
   texture::Pigment p;
   if (f.has("color")) {
     p.color = read_rgbft(ctx, f.required("color"), f.name("color"));
+    f.finish();
+    return p;
+  }
+  if (f.has("pattern") && f.string("pattern") == "image_map") {
+    p = read_image_pigment(f);
     f.finish();
     return p;
   }
