@@ -236,18 +236,39 @@ Value Interpreter::function_block(const Pos& at) {
   expect_symbol("{", "after function");
   if (is_word("pigment") || is_word("pattern")) {
     // A pigment function: the pigment read whole; a pattern function: the pattern of a
-    // pigment read the same way (its colour map unused).
-    const bool pattern = is_word("pattern");
+    // pigment read the same way (its colour map unused). One using what raycast does not
+    // render is opaque, warned about where it is called (include files declare many).
+    const std::string kind = tok().text + " function";
+    const bool pattern = kind == "pattern function";
     next();
-    const Pigment p = pigment_block(Pigment{});
-    if (p.model && pattern) {
+    struct Quiet {
+      Interpreter& in;
+      bool outer;
+      explicit Quiet(Interpreter& i) : in(i), outer(i.quiet_missed_) {
+        ++in.quiet_;
+        in.quiet_missed_ = false;
+      }
+      ~Quiet() {
+        --in.quiet_;
+        in.quiet_missed_ = outer;
+      }
+    };
+    bool missed = false;
+    Pigment p;
+    {
+      const Quiet quiet(*this);
+      p = pigment_block(Pigment{});
+      missed = quiet_missed_;
+    }
+    if (missed || (pattern && !p.model)) {
+      f->opaque = kind;
+    } else if (pattern) {
       f->pattern = std::make_shared<const texture::Pattern>(p.model->pattern);
     } else if (p.model) {
       f->pigment = p.model;
     } else {
       texture::Pigment solid;
       solid.color = {{p.c0.r, p.c0.g, p.c0.b}, p.c0.filter, p.c0.transmit};
-      if (pattern) f->opaque = "pattern function of a pattern it does not build";
       f->pigment = std::make_shared<const texture::Pigment>(solid);
     }
     expect_symbol("}", "to close the function");

@@ -356,6 +356,11 @@ class Interpreter {
   std::size_t weight_ = 0;
   long long reads_ = 0;
   std::set<std::string> warned_;
+  // While quiet_ > 0 (a declared pigment or pattern function being read), what raycast does not
+  // render is noted in quiet_missed_ instead of warned about: the function is then opaque and
+  // its calls are warned about where the scene uses them.
+  int quiet_ = 0;
+  bool quiet_missed_ = false;
   std::vector<std::uint32_t> random_streams_;
   struct OpenFile;
   std::map<std::string, std::shared_ptr<OpenFile>> files_;
