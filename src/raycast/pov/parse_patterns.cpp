@@ -255,7 +255,7 @@ std::vector<texture::NormalMapEntry> Interpreter::normal_map_block() {
 
 texture::Normal Interpreter::normal_body(const std::optional<texture::Normal>& base,
                                          const char* close) {
-  texture::Normal n = base ? *base : texture::Normal{texture::Pattern{}, 0, {}};
+  texture::Normal n = base ? *base : texture::Normal{texture::Pattern{}, 0, {}, {}};
   if (tok().kind == Token::Word) {
     const Value* v = lookup(tok().text);
     if (v && v->kind == Value::Normal) {
@@ -275,6 +275,15 @@ texture::Normal Interpreter::normal_body(const std::optional<texture::Normal>& b
       start_pattern(*k, n.pattern);
       n.bump_size = numeric_ahead() ? number("the bump size") : 0.5;
       skip_comma();
+      // A block pattern's normals, one per block in order (checker normal { } normal { }).
+      for (int i = 0;
+           texture::block_count(*k) > 0 && i < texture::block_count(*k) && is_word("normal"); ++i) {
+        next();
+        n.map.push_back(
+            {double(i), std::make_shared<const texture::Normal>(normal_block(std::nullopt))});
+        n.bump_size = 1;
+        skip_comma();
+      }
     } else if (t.kind == Token::Word && w == "average") {
       next();
       average = true;
@@ -282,6 +291,12 @@ texture::Normal Interpreter::normal_body(const std::optional<texture::Normal>& b
     } else if (t.kind == Token::Word && w == "normal_map" && average) {
       next();
       n.average = normal_map_block();
+    } else if (t.kind == Token::Word && w == "normal_map") {
+      next();
+      n.map = normal_map_block();
+      n.bump_size = 1;
+      std::stable_sort(n.map.begin(), n.map.end(),
+                       [](const auto& a, const auto& b) { return a.weight < b.weight; });
     } else if (t.kind == Token::Word && w == "bump_size") {
       next();
       n.bump_size = number("bump_size");
@@ -301,6 +316,7 @@ texture::Normal Interpreter::normal_body(const std::optional<texture::Normal>& b
                           "the normal is left flat");
       n.bump_size = 0;
       n.average.clear();
+      n.map.clear();
       if (std::string_view(close) == "]") {
         skip_entry_rest();
       } else {

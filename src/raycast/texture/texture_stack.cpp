@@ -50,12 +50,13 @@ void add_finish(const Finish& f, double vis, Finish& sum, double& strongest) {
 
 void transform_normal(Normal& normal, const Transform& t) {
   transform_pattern(normal.pattern, t);
-  for (NormalMapEntry& e : normal.average) {
-    if (!e.normal) continue;
-    auto moved = std::make_shared<Normal>(*e.normal);
-    transform_normal(*moved, t);
-    e.normal = std::move(moved);
-  }
+  for (std::vector<NormalMapEntry>* list : {&normal.average, &normal.map})
+    for (NormalMapEntry& e : *list) {
+      if (!e.normal) continue;
+      auto moved = std::make_shared<Normal>(*e.normal);
+      transform_normal(*moved, t);
+      e.normal = std::move(moved);
+    }
 }
 
 void transform_layer(TextureLayer& layer, const Transform& t) {
@@ -205,19 +206,55 @@ Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
   return g;
 }
 
+namespace {
+
+// The normal_map's entries around the pattern's value with their shares (a colour map's rule).
+int map_pick(const Normal& normal, const Vec3& p, const Normal* picked[2], double share[2]) {
+  const std::vector<NormalMapEntry>& map = normal.map;
+  const double v = evaluate(normal.pattern, p);
+  const int blocks = block_count(normal.pattern.kind);
+  std::size_t a = 0, b = 0;
+  double t = 0;
+  if (blocks > 0) {
+    a = b = std::size_t(std::clamp(std::lround(v * double(blocks - 1)), 0L, long(map.size()) - 1));
+  } else if (!(v > map.front().weight)) {
+    a = b = 0;
+  } else if (v >= map.back().weight) {
+    a = b = map.size() - 1;
+  } else {
+    b = 1;
+    while (map[b].weight <= v) ++b;
+    a = b - 1;
+    const double span = map[b].weight - map[a].weight;
+    t = span > 0 ? (v - map[a].weight) / span : 1;
+  }
+  picked[0] = map[a].normal.get(), share[0] = 1 - t;
+  picked[1] = map[b].normal.get(), share[1] = t;
+  return a == b ? 1 : 2;
+}
+
+}  // namespace
+
 Vec3 normal_tilt(const Normal& normal, const TextureContext& ctx, int depth) {
-  if (normal.average.empty()) return normal.bump_size * pattern_gradient(normal.pattern, ctx);
+  if (normal.average.empty() && normal.map.empty())
+    return normal.bump_size * pattern_gradient(normal.pattern, ctx);
   // The unit normal each entry gives, averaged by weight; the tilt is what leans ctx.n onto the
   // mean's direction: mean = a n + t (t across n) points along n - (-t / a).
+  const Normal* entries[2] = {nullptr, nullptr};
+  double shares[2] = {0, 0};
+  const bool average = !normal.average.empty();
+  const int count = average ? int(normal.average.size()) : map_pick(normal, ctx.p, entries, shares);
   Vec3 mean{0, 0, 0};
   double total = 0;
-  for (const NormalMapEntry& e : normal.average) {
-    if (!e.normal || depth > 16) continue;
-    const Vec3 tilt = normal_tilt(*e.normal, ctx, depth + 1);
+  for (int i = 0; i < count; ++i) {
+    const Normal* entry = average ? normal.average[std::size_t(i)].normal.get() : entries[i];
+    const double weight = average ? normal.average[std::size_t(i)].weight : shares[i];
+    if (!entry || depth > 16) continue;
+    const Vec3 tilt = normal_tilt(*entry, ctx, depth + 1);
     const Vec3 n = ctx.n - (tilt - dot(tilt, ctx.n) * ctx.n);
     const double l = length(n);
-    if (l > 0 && std::isfinite(l)) mean += (e.weight / l) * n;
-    total += e.weight;
+    if (l > 0 && std::isfinite(l)) mean += (weight / l) * n;
+    total += weight;
   }
   if (total == 0) return {0, 0, 0};
   const double a = dot(mean, ctx.n);

@@ -22,11 +22,14 @@ struct NormalMapEntry {
 /// A normal perturbation: the surface normal tilted against the pattern's gradient (measured in
 /// the pattern's own units, so scaling the pattern does not change the tilt), times bump_size.
 /// With `average` entries it is POV-Ray's `average` normal instead: the weighted mean of the
-/// normals each entry would give (pattern and bump_size unused).
+/// normals each entry would give (pattern and bump_size unused). With `map` entries it is a
+/// normal_map: the pattern's value picks (block patterns) or blends (entries sorted by their
+/// value, in `weight`) the two neighbouring entries' normals, as a colour map blends colours.
 struct Normal {
   Pattern pattern;
   double bump_size = 0.5;
   std::vector<NormalMapEntry> average;
+  std::vector<NormalMapEntry> map;
 };
 
 /// Moves a normal's pattern, and its average's normals, by t.
