@@ -38,42 +38,41 @@ Polynomial bezier_polynomial(const ContourPiece& c, int axis) {
   return p;
 }
 
-// The crossing of a part of a piece on which y is monotone, from (xa, ya) at sa to (xb, yb) at sb,
-// with the horizontal line through y: its x. The caller has checked that ya and yb lie on
-// opposite sides of y.
-double crossing_x(const Prism::Piece& g, double sa, double xa, double ya, double sb, double xb,
-                  double yb, double y) {
+// Whether x lies left of the crossing of a part of a piece, from (xa, ya) at sa to (xb, yb) at
+// sb, with the horizontal line through y. The caller has checked that ya and yb lie on opposite
+// sides of y. The part is monotone in x and in y, so the crossing's x lies between the x of the
+// bracket's ends: bisect only while x lies inside that range (for most points, not at all).
+bool left_of_crossing(const Prism::Piece& g, double sa, double xa, double ya, double sb, double xb,
+                      double yb, double x, double y) {
   if (g.x.degree == 1) {
     // Order the ends so a piece shared by two solids gives the same bits both ways.
     if (ya > yb) std::swap(xa, xb), std::swap(ya, yb);
-    return xa + (y - ya) * (xb - xa) / (yb - ya);
+    return x < xa + (y - ya) * (xb - xa) / (yb - ya);
   }
-  // Bisection on the monotone part (y(s) - y changes sign on [sa, sb]).
   const bool rising = yb > ya;
   for (int k = 0; k < 60 && sb - sa > 1e-15; ++k) {
+    if (x < std::min(xa, xb)) return true;
+    if (x >= std::max(xa, xb)) return false;
     const double m = 0.5 * (sa + sb);
+    const double xm = evaluate(g.x, m);
     if ((evaluate(g.y, m) > y) == rising)
-      sb = m;
+      sb = m, xb = xm;
     else
-      sa = m;
+      sa = m, xa = xm;
   }
-  return evaluate(g.x, 0.5 * (sa + sb));
+  return x < evaluate(g.x, 0.5 * (sa + sb));
 }
 
 // Whether the horizontal ray from (x, y) towards +x crosses the piece an odd number of times.
 // A part of the piece counts when its ends lie on opposite sides of y with "above" meaning > y,
 // the rule of the crossing-number test, so a joint on the line counts once.
 bool crosses_odd(const Prism::Piece& g, double x, double y) {
-  // Split where y turns (the roots of y' inside (0, 1)), so each part is monotone in y.
-  double cut[4] = {0, 0, 0, 0};
+  // A piece wholly right of x (its control box is) is crossed once per change of side between
+  // its monotone parts' ends; those changes telescope to its two ends.
+  if (x < g.x_lo) return (g.start[1] > y) != (g.end[1] > y);
+  double cut[6] = {0, 0, 0, 0, 0, 0};
   int n = 1;
-  if (g.y.degree >= 2) {
-    const Polynomial dy = derivative(g.y);
-    double r[2] = {0, 0};
-    const int m = solve_quadratic(dy.degree >= 2 ? dy.c[2] : 0, dy.c[1], dy.c[0], r[0], r[1]);
-    for (int k = 0; k < m; ++k)
-      if (r[k] > cut[n - 1] && r[k] < 1) cut[n++] = r[k];
-  }
+  for (int k = 0; k < g.turn_count; ++k) cut[n++] = g.turns[static_cast<std::size_t>(k)];
   cut[n] = 1;
   bool odd = false;
   for (int i = 0; i < n; ++i) {
@@ -83,9 +82,21 @@ bool crosses_odd(const Prism::Piece& g, double x, double y) {
     if ((ya > y) == (yb > y)) continue;
     const double xa = i == 0 ? g.start[0] : evaluate(g.x, sa);
     const double xb = i + 1 == n ? g.end[0] : evaluate(g.x, sb);
-    if (x < g.x_lo || x < crossing_x(g, sa, xa, ya, sb, xb, yb, y)) odd = !odd;
+    if (left_of_crossing(g, sa, xa, ya, sb, xb, yb, x, y)) odd = !odd;
   }
   return odd;
+}
+
+// The roots of e on [0, 1]: closed forms below degree 3 (the common straight and quadratic
+// pieces), the isolating solver for cubics. A tangent root counts twice, as a tangent crossing.
+int piece_roots(const Polynomial& e, double* roots) {
+  if (e.degree == 3 && e.c[3] != 0) return find_real_roots(e, 0, 1, roots);
+  double r[2] = {0, 0};
+  const int m = solve_quadratic(e.degree >= 2 ? e.c[2] : 0, e.c[1], e.c[0], r[0], r[1]);
+  int n = 0;
+  for (int k = 0; k < m; ++k)
+    if (r[k] >= 0 && r[k] <= 1) roots[n++] = r[k];
+  return n;
 }
 
 // The side crossings of one piece: the roots of a x(s) + b y(s) + c on [0, 1), where the plane
@@ -104,7 +115,7 @@ int piece_crossings(const Prism& sh, int index, const Ray& ray, double a, double
   for (int k = 0; k <= e.degree; ++k) e.c[k] = a * g.x.c[k] + b * g.y.c[k];
   e.c[0] += c;
   double roots[3];
-  const int m = find_real_roots(e, 0, 1, roots);
+  const int m = piece_roots(e, roots);
   int n = 0;
   const Vec3& o = ray.o;
   const Vec3& d = ray.d;
@@ -191,6 +202,22 @@ Prism::Piece make_piece(const ContourPiece& c) {
     g.x_lo = std::min(g.x_lo, q[0]), g.x_hi = std::max(g.x_hi, q[0]);
     g.y_lo = std::min(g.y_lo, q[1]), g.y_hi = std::max(g.y_hi, q[1]);
   }
+  // Split where x or y turns, so that each part is monotone in both: those turns in (0, 1),
+  // ascending, each once (2 marks an unused entry).
+  std::array<double, 4> turns{2, 2, 2, 2};
+  std::size_t found = 0;
+  for (const Polynomial* q : {&g.x, &g.y}) {
+    if (q->degree < 2) continue;
+    const Polynomial dq = derivative(*q);
+    double r[2] = {0, 0};
+    const int m = solve_quadratic(dq.degree >= 2 ? dq.c[2] : 0, dq.c[1], dq.c[0], r[0], r[1]);
+    for (int k = 0; k < m; ++k)
+      if (r[k] > 0 && r[k] < 1) turns[found++] = r[k];
+  }
+  std::sort(turns.begin(), turns.end());
+  for (const double v : turns)
+    if (v < 1 && (g.turn_count == 0 || v != g.turns[std::size_t(g.turn_count - 1)]))
+      g.turns[std::size_t(g.turn_count++)] = v;
   return g;
 }
 

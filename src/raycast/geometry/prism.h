@@ -28,6 +28,10 @@ struct Prism {
     std::array<double, 2> start{}, end{};           // exact end points (shared with the neighbours)
     double x_lo = 0, x_hi = 0, y_lo = 0, y_hi = 0;  // the control points' box
     double outward = 1;  // +1: (y', -x') points out of the solid, else -1
+    // Where x(s) or y(s) turns inside (0, 1), ascending: the piece is monotone in x and in y
+    // between them.
+    std::array<double, 4> turns{};
+    int turn_count = 0;
   };
   std::vector<Piece> pieces;
   double z0 = 0, z1 = 1;  // the sweep's heights, z0 < z1

@@ -16,6 +16,8 @@ constexpr int kTable = 256;
 struct LatticeTables {
   std::array<std::uint8_t, 2 * kTable> perm{};
   std::array<Vec3, kTable> gradients{};  // random unit vectors for generators 1 and 2
+  // Three more per entry, one per component of the vector noise.
+  std::array<std::array<Vec3, 3>, kTable> vector_gradients{};
 
   LatticeTables() {
     std::uint64_t state = 0x5eed1234abcdULL;
@@ -29,19 +31,22 @@ struct LatticeTables {
       std::swap(p[std::size_t(i)], p[next() % std::uint64_t(i + 1)]);
     for (int i = 0; i < 2 * kTable; ++i)
       perm[std::size_t(i)] = std::uint8_t(p[std::size_t(i % kTable)]);
-    for (Vec3& g : gradients) {
-      // Rejection sampling in the unit ball, then normalised: uniform directions.
-      for (int tries = 0; tries < 1000; ++tries) {
-        const double scale = 1.0 / double(1ULL << 53);
-        const Vec3 v{2 * double(next()) * scale - 1, 2 * double(next()) * scale - 1,
-                     2 * double(next()) * scale - 1};
-        const double l2 = dot(v, v);
-        if (l2 > 1e-4 && l2 <= 1) {
-          g = v / std::sqrt(l2);
-          break;
-        }
-      }
+    for (Vec3& g : gradients) g = random_direction(next);
+    for (auto& gs : vector_gradients)
+      for (Vec3& g : gs) g = random_direction(next);
+  }
+
+  // Rejection sampling in the unit ball, then normalised: a uniform direction.
+  template <class Next>
+  static Vec3 random_direction(Next& next) {
+    for (int tries = 0; tries < 1000; ++tries) {
+      const double scale = 1.0 / double(1ULL << 53);
+      const Vec3 v{2 * double(next()) * scale - 1, 2 * double(next()) * scale - 1,
+                   2 * double(next()) * scale - 1};
+      const double l2 = dot(v, v);
+      if (l2 > 1e-4 && l2 <= 1) return v / std::sqrt(l2);
     }
+    return {1, 0, 0};
   }
 };
 
@@ -114,6 +119,52 @@ double lattice_noise(const Vec3& p) {
   return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));  // within [-sqrt(3)/2, sqrt(3)/2]
 }
 
+// The three components of the vector noise share the lattice cell, the fade weights and the
+// corner hashes (as POV-Ray's DNoise does); only the gradients differ, so one call costs little
+// more than one scalar noise.
+Vec3 lattice_vector_noise(const Vec3& p) {
+  const auto& t = tables();
+  const Cell cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
+  auto fade = [](double s) { return s * s * (3 - 2 * s); };
+  const double u = fade(cx.f), v = fade(cy.f), w = fade(cz.f);
+  auto corner = [&](int a, int b, int c) {
+    const int hash = t.perm[std::size_t(
+        t.perm[std::size_t(t.perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
+    const auto& g = t.vector_gradients[std::size_t(hash)];
+    const double x = cx.f - a, y = cy.f - b, z = cz.f - c;
+    return Vec3{g[0].x * x + g[0].y * y + g[0].z * z, g[1].x * x + g[1].y * y + g[1].z * z,
+                g[2].x * x + g[2].y * y + g[2].z * z};
+  };
+  auto mix = [](double s, const Vec3& a, const Vec3& b) { return a + s * (b - a); };
+  const Vec3 x00 = mix(u, corner(0, 0, 0), corner(1, 0, 0));
+  const Vec3 x10 = mix(u, corner(0, 1, 0), corner(1, 1, 0));
+  const Vec3 x01 = mix(u, corner(0, 0, 1), corner(1, 0, 1));
+  const Vec3 x11 = mix(u, corner(0, 1, 1), corner(1, 1, 1));
+  return mix(w, mix(v, x00, x10), mix(v, x01, x11));
+}
+
+// Improved noise's vector form: the component k takes the edge gradient of the corner's hash
+// passed k more times through the permutation.
+Vec3 improved_vector_noise(const Vec3& p) {
+  const auto& perm = tables().perm;
+  const Cell cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
+  auto fade = [](double t) { return t * t * t * (t * (t * 6 - 15) + 10); };
+  const double u = fade(cx.f), v = fade(cy.f), w = fade(cz.f);
+  auto corner = [&](int a, int b, int c) {
+    const int h0 =
+        perm[std::size_t(perm[std::size_t(perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
+    const int h1 = perm[std::size_t(h0)], h2 = perm[std::size_t(h1)];
+    const double x = cx.f - a, y = cy.f - b, z = cz.f - c;
+    return Vec3{edge_gradient(h0, x, y, z), edge_gradient(h1, x, y, z), edge_gradient(h2, x, y, z)};
+  };
+  auto mix = [](double s, const Vec3& a, const Vec3& b) { return a + s * (b - a); };
+  const Vec3 x00 = mix(u, corner(0, 0, 0), corner(1, 0, 0));
+  const Vec3 x10 = mix(u, corner(0, 1, 0), corner(1, 1, 0));
+  const Vec3 x01 = mix(u, corner(0, 0, 1), corner(1, 0, 1));
+  const Vec3 x11 = mix(u, corner(0, 1, 1), corner(1, 1, 1));
+  return mix(w, mix(v, x00, x10), mix(v, x01, x11));
+}
+
 }  // namespace
 
 double noise(const Vec3& p, int generator) {
@@ -125,9 +176,10 @@ double noise(const Vec3& p, int generator) {
 }
 
 Vec3 vector_noise(const Vec3& p, int generator) {
-  // Three noises at points far apart in the lattice: independent for any practical purpose.
-  return {2 * noise(p, generator) - 1, 2 * noise(p + Vec3{31.416, -47.853, 12.793}, generator) - 1,
-          2 * noise(p + Vec3{-101.61, 73.137, -59.29}, generator) - 1};
+  if (!is_finite(p)) return {0, 0, 0};
+  const Vec3 n = generator >= 3 ? 0.6 * improved_vector_noise(p) : 0.75 * lattice_vector_noise(p);
+  return {std::clamp(2 * n.x, -1.0, 1.0), std::clamp(2 * n.y, -1.0, 1.0),
+          std::clamp(2 * n.z, -1.0, 1.0)};
 }
 
 Vec3 turbulence_offset(const Vec3& p, const Turbulence& t, int generator) {

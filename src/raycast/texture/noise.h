@@ -11,8 +11,8 @@ namespace raycast::texture {
 /// for 3). Non-finite coordinates give 0.5.
 double noise(const Vec3& p, int generator);
 
-/// A vector of three independent noises at p, each in [-1, 1] (POV-Ray's DNoise: the direction
-/// turbulence pushes a point).
+/// A vector of three noises at p, each in [-1, 1] (POV-Ray's DNoise: the direction turbulence
+/// pushes a point): one lattice cell, three independent sets of gradients.
 Vec3 vector_noise(const Vec3& p, int generator);
 
 /// The parameters of turbulence: the amount per axis and the octave sum's shape.

@@ -38,6 +38,7 @@ double unit(std::uint64_t h) { return double(h >> 11) * (1.0 / double(1ULL << 53
 // <-1, 1, 0> with metric 2), which is 0 on the cells' borders.
 double crackle(const Vec3& p) {
   const std::int64_t cx = floor_int(p.x), cy = floor_int(p.y), cz = floor_int(p.z);
+  // Squared distances while searching (the square root is monotone: the same two points).
   double d1 = 1e30, d2 = 1e30;
   for (int i = -1; i <= 1; ++i)
     for (int j = -1; j <= 1; ++j)
@@ -46,7 +47,7 @@ double crackle(const Vec3& p) {
         const Vec3 f{double(cx + i) + unit(h),
                      double(cy + j) + unit(cell_hash(cx + i, cy + j, cz + k, h)),
                      double(cz + k) + unit(h * 0x2545F4914F6CDD1DULL)};
-        const double d = length(f - p);
+        const double d = length_squared(f - p);
         if (d < d1) {
           d2 = d1;
           d1 = d;
@@ -54,7 +55,7 @@ double crackle(const Vec3& p) {
           d2 = d;
         }
       }
-  return std::clamp(d2 - d1, 0.0, 1.0);
+  return std::clamp(std::sqrt(d2) - std::sqrt(d1), 0.0, 1.0);
 }
 
 // The wave centres of ripples and waves: ten fixed points in the unit cube about the origin.

@@ -194,15 +194,24 @@ Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
   const bool own_normal = k == PatternKind::kBumps || k == PatternKind::kDents ||
                           k == PatternKind::kRipples || k == PatternKind::kWaves;
   const double scale = own_normal ? 1 : kPatternNormalScale;
-  Vec3 g{0, 0, 0};
+  // The slopes along the three axes from four samples at the corners of a tetrahedron,
+  // p + h (s0 a0 + s1 a1 + s2 a2) with signs s = (1,1,1), (1,-1,-1), (-1,1,-1), (-1,-1,1): each
+  // sign vector sums to 0 over the corners and their outer products sum to 4 I, so
+  // sum_i f_i s_i / 4h is the gradient to first order, from four evaluations instead of six.
+  Vec3 step[3];
   for (int a = 0; a < 3; ++a) {
     const Vec3& axis = ctx.axes[a];
     const double l = length(axis);
-    if (!(l > 0)) continue;
-    const Vec3 d = (kStep * size / l) * axis;
-    const double slope = 0.5 * (evaluate(pattern, ctx.p + d) - evaluate(pattern, ctx.p - d));
-    g[std::size_t(a)] = slope / kStep * scale;
+    step[a] = l > 0 ? (kStep * size / l) * axis : Vec3{0, 0, 0};
   }
+  static constexpr double kCorners[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  Vec3 g{0, 0, 0};
+  for (const auto& c : kCorners) {
+    const double f = evaluate(pattern, ctx.p + c[0] * step[0] + c[1] * step[1] + c[2] * step[2]);
+    g += f * Vec3{c[0], c[1], c[2]};
+  }
+  for (std::size_t a = 0; a < 3; ++a)
+    g[a] = step[a] == Vec3{0, 0, 0} ? 0 : g[a] / (4 * kStep) * scale;
   return g;
 }
 
