@@ -120,7 +120,8 @@ TEST(ImageMap, PovImageMapAndFunctionImage) {
       "global_settings { assumed_gamma 1 }\n"
       "plane { z, 0 pigment { image_map { png \"strip.png\" once transmit all 0.25 } } }\n"
       "plane { z, 0 pigment { image_map { function 4, 4 { x } } } }\n"
-      "plane { z, 0 pigment { image_map { png \"strip.png\" map_type 7 } } }\n",
+      "plane { z, 0 pigment { image_map { png \"strip.png\" map_type 7 } } }\n"
+      "plane { z, 0 normal { bump_map { png \"strip.png\" bump_size 3 } scale 2 } }\n",
       "t.pov", dir.string(), -1, o, &warnings);
   ASSERT_EQ(warnings.size(), 1u);  // map_type 7
   auto colour = [&](std::size_t i, const Vec3& p) {
@@ -134,6 +135,13 @@ TEST(ImageMap, PovImageMapAndFunctionImage) {
   EXPECT_EQ(colour(0, {0.9, 0.5, 0}).transmit, 0.25f);
   EXPECT_EQ(colour(0, {1.5, 0.5, 0}).transmit, 1);
   EXPECT_NEAR(colour(1, {0.3, 0.5, 0}).rgb.x, 0.375, 1e-6);  // column 1's centre, x = 0.375
+  // A bump map: the image's grey as the normal's pattern, its bump_size kept.
+  const Material& bumped = s.materials[static_cast<std::size_t>(s.objects[3].material)];
+  const texture::Normal& n = *bumped.texture->layers[0].normal;
+  EXPECT_EQ(n.pattern.kind, texture::PatternKind::kImage);
+  EXPECT_EQ(n.bump_size, 3);
+  EXPECT_NEAR(texture::evaluate(n.pattern, bumped.texture_transform.point({1, 1, 0})), 0.589 * 0.5,
+              0.005);  // x = 1 of the image scaled by 2: the green pixel
   EXPECT_THROW(load_pov_scene_text("plane { z, 0 pigment { image_map { png \"none.png\" } } }",
                                    "t.pov", dir.string(), -1, o, &warnings),
                SceneError);

@@ -171,9 +171,12 @@ class Interpreter {
     double gamma = -1;                                     // -1: not given; 0: srgb
     std::vector<std::pair<int, double>> filter, transmit;  // palette index (-1: all), amount
     bool use_index = false, use_alpha = false, from_function = false;
+    double bump_size = 1;  // bump_map's
   };
-  // The block after image_map / image_pattern (nullptr for a format raycast does not read).
-  std::shared_ptr<const texture::ImageMap> image_map_block(const std::string& what);
+  // The block after image_map / image_pattern / bump_map (nullptr for a format raycast does not
+  // read); a bump_map's bump_size goes to `bump_size`.
+  std::shared_ptr<const texture::ImageMap> image_map_block(const std::string& what,
+                                                           double* bump_size = nullptr);
   bool image_map_modifier(ImageMapRead& r);
   void image_from_file(ImageMapRead& r, const std::string& name, const Pos& at);
   void image_from_function(ImageMapRead& r, const Pos& at);

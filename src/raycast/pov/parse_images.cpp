@@ -33,6 +33,9 @@ bool Interpreter::image_map_modifier(ImageMapRead& r) {
     } else {
       r.image.projection = static_cast<texture::ImageProjection>(t);
     }
+  } else if (is_word("bump_size")) {
+    next();
+    r.bump_size = number("bump_size");
   } else if (is_word("once")) {
     next();
     r.image.once = true;
@@ -119,7 +122,8 @@ void Interpreter::image_from_function(ImageMapRead& r, const Pos& at) {
     }
 }
 
-std::shared_ptr<const texture::ImageMap> Interpreter::image_map_block(const std::string& what) {
+std::shared_ptr<const texture::ImageMap> Interpreter::image_map_block(const std::string& what,
+                                                                      double* bump_size) {
   const Pos at = tok().pos;
   expect_symbol("{", ("after " + what).c_str());
   ImageMapRead r;
@@ -158,6 +162,7 @@ std::shared_ptr<const texture::ImageMap> Interpreter::image_map_block(const std:
     if (tok().kind == Token::End || guard > 100000) fail_at(at, what + " { is never closed");
     if (!image_map_modifier(r)) unexpected("an image_map item (map_type, once, interpolate ...)");
   }
+  if (bump_size) *bump_size = r.bump_size;
   if (!supported) return nullptr;
   finish_image(r);
   return std::make_shared<const texture::ImageMap>(std::move(r.image));
@@ -179,6 +184,11 @@ void Interpreter::finish_image(ImageMapRead& r) {
     for (const auto& [index, amount] : r.transmit)
       if (index < 0 || index == k) p.transmit = static_cast<float>(amount);
     if (p.filter > 0 || p.transmit > 0) r.image.transmits = true;
+    if (r.use_index && k >= 0 && r.palette_size > 1) {
+      // A bump map's height from the palette index instead of the colour's grey.
+      const auto h = static_cast<float>(k) / static_cast<float>(r.palette_size - 1);
+      p.r = p.g = p.b = h;
+    }
   }
 }
 

@@ -284,6 +284,13 @@ texture::Normal Interpreter::normal_body(const std::optional<texture::Normal>& b
         n.bump_size = 1;
         skip_comma();
       }
+    } else if (t.kind == Token::Word && w == "bump_map") {
+      // The image's grey (or palette index) as a height field over the pattern's space.
+      next();
+      std::vector<texture::PatternStep> steps = std::move(n.pattern.steps);
+      n.pattern = texture::make_pattern(texture::PatternKind::kImage);
+      n.pattern.steps = std::move(steps);
+      n.pattern.image = image_map_block(w, &n.bump_size);
     } else if (t.kind == Token::Word && w == "average") {
       next();
       average = true;

@@ -193,7 +193,11 @@ Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
   const PatternKind k = pattern.kind;
   const bool own_normal = k == PatternKind::kBumps || k == PatternKind::kDents ||
                           k == PatternKind::kRipples || k == PatternKind::kWaves;
-  const double scale = own_normal ? 1 : kPatternNormalScale;
+  double scale = own_normal ? 1 : kPatternNormalScale;
+  // A bump map's slope is POV-Ray's height step from one pixel to the next, not per unit of the
+  // pattern: the slope over the image's width.
+  if (k == PatternKind::kImage && pattern.image && pattern.image->width > 0)
+    scale = 1.0 / double(pattern.image->width);
   // The slopes along the three axes from four samples at the corners of a tetrahedron,
   // p + h (s0 a0 + s1 a1 + s2 a2) with signs s = (1,1,1), (1,-1,-1), (-1,1,-1), (-1,-1,1): each
   // sign vector sums to 0 over the corners and their outer products sum to 4 I, so
