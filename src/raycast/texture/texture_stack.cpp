@@ -194,6 +194,11 @@ Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
   const bool own_normal = k == PatternKind::kBumps || k == PatternKind::kDents ||
                           k == PatternKind::kRipples || k == PatternKind::kWaves;
   double scale = own_normal ? 1 : kPatternNormalScale;
+  // POV-Ray's ripples and waves normals put the frequency inside the wave only: their tilt is
+  // measured per wavelength, so a high frequency (water scaled by 1e5 at frequency 1e5) keeps
+  // its steps inside one wave.
+  if ((k == PatternKind::kRipples || k == PatternKind::kWaves) && std::abs(pattern.frequency) > 1)
+    size /= std::abs(pattern.frequency);
   // A bump map's slope is POV-Ray's height step from one pixel to the next, not per unit of the
   // pattern: the slope over the image's width.
   if (k == PatternKind::kImage && pattern.image && pattern.image->width > 0)
