@@ -68,3 +68,31 @@ TEST(NormalMap, PovNormalMapAndBlockNormals) {
 
 }  // namespace
 }  // namespace raycast
+
+namespace raycast {
+namespace {
+
+// POV-Ray's ripples normal keeps its tilt's size as the frequency rises (the frequency is inside
+// the wave): the mean tilt at frequency 8 stays near frequency 1's, not 8 times it.
+TEST(NormalMap, RipplesTiltDoesNotGrowWithFrequency) {
+  auto mean_tilt = [](double frequency) {
+    texture::Normal n;
+    n.pattern = texture::make_pattern(texture::PatternKind::kRipples);
+    n.pattern.frequency = frequency;
+    n.bump_size = 0.5;
+    double sum = 0;
+    texture::TextureContext ctx;
+    for (int i = 0; i < 200; ++i) {
+      ctx.p = {0.013 * i, 0.3 + 0.007 * i, 0.011 * i};
+      sum += length(texture::normal_tilt(n, ctx));
+    }
+    return sum / 200;
+  };
+  const double one = mean_tilt(1), eight = mean_tilt(8);
+  EXPECT_GT(one, 0);
+  EXPECT_LT(eight, 2 * one);
+  EXPECT_GT(eight, 0.5 * one);
+}
+
+}  // namespace
+}  // namespace raycast
