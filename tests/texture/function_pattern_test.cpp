@@ -96,5 +96,28 @@ TEST(FunctionPattern, PovUserAndPigmentFunctions) {
   EXPECT_NEAR(g.rgb.z, 0.1 * 0.1, 1e-12);
 }
 
+TEST(FunctionPattern, SplineFunctions) {
+  // A linear spline function's point at t = x, and a cubic_spline's ends: its first and last
+  // points only steer, the curve keeps the second and last but one points' values beyond them.
+  std::vector<std::string> warnings;
+  const Scene s = load_pov(
+      "#declare L = function { spline { linear_spline 0, <0, 0, 0> 1, <1, 0.5, 0> } }\n"
+      "#declare C = function { spline { cubic_spline -1, <9, 9, 9> 0, <0.2, 0, 0> 1, <0.8, 0, 0> "
+      "2, <9, 9, 9> } }\n"
+      "#declare A = C(-0.5, 0, 0);\n"
+      "#declare B = C(1.5, 0, 0);\n"
+      "sphere { 0, 1 pigment { function { L(x, 0, 0).y } } }\n"
+      "sphere { 0, 1 pigment { rgb <A.x, B.x, 0> } }\n",
+      &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  const Material& m = s.materials[static_cast<std::size_t>(s.objects[0].material)];
+  EXPECT_NEAR(
+      texture::evaluate(m.texture->layers[0].pigment, m.texture_transform.point({0.6, 0, 0})).rgb.x,
+      0.3, 1e-12);
+  const Material& ends = s.materials[static_cast<std::size_t>(s.objects[1].material)];
+  EXPECT_NEAR(ends.color.x, 0.2, 1e-12);
+  EXPECT_NEAR(ends.color.y, 0.8, 1e-12);
+}
+
 }  // namespace
 }  // namespace raycast

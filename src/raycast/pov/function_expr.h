@@ -2,6 +2,7 @@
 // User functions (`function (a, b) { ... }`): a tree over their parameters (x, y, z by default),
 // evaluated in expressions (F(1, 2, 3)) and written in raycast's formula syntax for
 // isosurfaces (docs/shapes-algebraic.md "Formula text").
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 namespace raycast::pov {
 
 struct FunctionValue;
+struct SplineValue;
 
 struct FnNode {
   enum Kind { Number, Variable, Negate, Add, Subtract, Multiply, Divide, Power, Call, Param, User };
@@ -34,7 +36,13 @@ struct FunctionValue {
   std::string opaque;
   std::shared_ptr<const texture::Pigment> pigment;
   std::shared_ptr<const texture::Pattern> pattern;
+  std::shared_ptr<const SplineValue> spline;  // `function { spline { ... } }`: the point at t = x
 };
+
+/// The spline's point at t: linear between points, or through them by Catmull-Rom segments with
+/// end tangents from the end segments (the points sorted by t; outside them the end points); a
+/// cubic_spline of 4 points or more runs from its second point to its last but one.
+std::array<double, 5> spline_at(const SplineValue& s, double t);
 
 /// The index a component name selects in a colour or vector function's value (x red r u: 0,
 /// y green g v: 1, z blue b: 2, filter f t: 3, transmit: 4), kGrayComponent for gray / grey,
@@ -42,8 +50,8 @@ struct FunctionValue {
 inline constexpr int kGrayComponent = 5;
 int component_index(const std::string& name);
 
-/// A pigment or pattern function's value at (x, y, z): rgb, filter, transmit (a pattern's value
-/// in every place). False for other functions.
+/// A pigment, pattern or spline function's value at (x, y, z): rgb, filter, transmit (a
+/// pattern's value in every place; a spline's point at t = x). False for other functions.
 bool vector_value(const FunctionValue& f, double x, double y, double z, double out[5]);
 
 /// The function's value at `args` (one per parameter). Unknown built-ins give NaN.

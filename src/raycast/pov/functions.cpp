@@ -272,7 +272,11 @@ Value Interpreter::function_block(const Pos& at) {
       f->pigment = std::make_shared<const texture::Pigment>(solid);
     }
     expect_symbol("}", "to close the function");
-  } else if (is_word("transform") || is_word("spline")) {
+  } else if (is_word("spline")) {
+    next();
+    f->spline = spline_block(at).spline;
+    expect_symbol("}", "to close the function");
+  } else if (is_word("transform")) {
     f->opaque = tok().text + " function";
     next();
     int depth = 1;
@@ -357,37 +361,6 @@ Value Interpreter::spline_block(const Pos& at) {
   return v;
 }
 
-namespace {
-std::array<double, 5> spline_at(const SplineValue& s, double t) {
-  const std::size_t n = s.t.size();
-  if (n == 0) return {};
-  if (n == 1 || t <= s.t.front()) return s.p.front();
-  if (t >= s.t.back()) return s.p.back();
-  const std::size_t i =
-      static_cast<std::size_t>(std::upper_bound(s.t.begin(), s.t.end(), t) - s.t.begin()) - 1;
-  const double u = (t - s.t[i]) / (s.t[i + 1] - s.t[i]);
-  std::array<double, 5> r{};
-  if (s.type == SplineValue::Linear || n < 3) {
-    for (int k = 0; k < 5; ++k)
-      r[static_cast<std::size_t>(k)] = s.p[i][static_cast<std::size_t>(k)] * (1 - u) +
-                                       s.p[i + 1][static_cast<std::size_t>(k)] * u;
-    return r;
-  }
-  // Catmull-Rom through the points, the end tangents from the end segments.
-  const auto& p0 = s.p[i > 0 ? i - 1 : i];
-  const auto& p1 = s.p[i];
-  const auto& p2 = s.p[i + 1];
-  const auto& p3 = s.p[i + 2 < n ? i + 2 : i + 1];
-  for (std::size_t k = 0; k < 5; ++k) {
-    const double a = (-p0[k] + 3 * p1[k] - 3 * p2[k] + p3[k]) * 0.5;
-    const double b = (2 * p0[k] - 5 * p1[k] + 4 * p2[k] - p3[k]) * 0.5;
-    const double c = (p2[k] - p0[k]) * 0.5;
-    r[k] = ((a * u + b) * u + c) * u + p1[k];
-  }
-  return r;
-}
-}  // namespace
-
 Value Interpreter::call_value(const Value& f, const Token& name) {
   expect_symbol("(", ("after " + name.text).c_str());
   std::vector<double> args;
@@ -417,8 +390,9 @@ Value Interpreter::call_value(const Value& f, const Token& name) {
     unsupported_warning(name.pos, "calls of a " + f.function->opaque, "its value is 0");
     return Value::number(0);
   }
-  if (f.function->pigment || f.function->pattern) {
-    // A pigment function's colour (a pattern function's value in every channel).
+  if (f.function->pigment || f.function->pattern || f.function->spline) {
+    // A pigment function's colour (a pattern function's value in every channel, a spline's
+    // point).
     double c[5];
     vector_value(*f.function, args.size() > 0 ? args[0] : 0, args.size() > 1 ? args[1] : 0,
                  args.size() > 2 ? args[2] : 0, c);
