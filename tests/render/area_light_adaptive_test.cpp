@@ -16,7 +16,7 @@ namespace {
 class CountingRecorder final : public RayRecorder {
  public:
   CountingRecorder() { events = false; }
-  void child(RayKind, double) override {}
+  void child(RayKind, double, const Color&) override {}
   void begin_ray(const Ray&, int) override {}
   void miss(const Color&) override {}
   void hit(const SceneHit&, const SurfaceInfo&, std::size_t, bool, const Vec3&) override {}

@@ -289,6 +289,8 @@ class Builder {
     mat.fade_distance = own ? in.fade_distance : t.finish.fade_distance;
     mat.fade_power = own ? in.fade_power : t.finish.fade_power;
     mat.fade_color = rgb(in.fade_color);
+    mat.dispersion = in.dispersion;
+    mat.dispersion_samples = in.dispersion_samples;
   }
 
   int material(const pov::Texture& t, const Transform& frame,
@@ -324,13 +326,19 @@ class Builder {
     mat.transmission = tr;
     mat.fresnel = f.fresnel && tr > 0;
     set_interior(t, mat);
-    const MaterialKey key = {
-        mat.color.x,      mat.color.y,         mat.color.z,       double(mat.has_checker),
-        mat.checker.c0.x, mat.checker.c0.y,    mat.checker.c0.z,  mat.checker.c1.x,
-        mat.checker.c1.y, mat.checker.c1.z,    mat.checker.scale, mat.ambient,
-        mat.diffuse,      mat.specular,        mat.shininess,     mat.reflection,
-        mat.transmission, double(mat.fresnel), mat.ior,           mat.fade_distance,
-        mat.fade_power,   mat.fade_color.x,    mat.fade_color.y,  mat.fade_color.z};
+    const MaterialKey key = {mat.color.x,       mat.color.y,
+                             mat.color.z,       double(mat.has_checker),
+                             mat.checker.c0.x,  mat.checker.c0.y,
+                             mat.checker.c0.z,  mat.checker.c1.x,
+                             mat.checker.c1.y,  mat.checker.c1.z,
+                             mat.checker.scale, mat.ambient,
+                             mat.diffuse,       mat.specular,
+                             mat.shininess,     mat.reflection,
+                             mat.transmission,  double(mat.fresnel),
+                             mat.ior,           mat.fade_distance,
+                             mat.fade_power,    mat.fade_color.x,
+                             mat.fade_color.y,  mat.fade_color.z,
+                             mat.dispersion,    double(mat.dispersion_samples)};
     const auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
     mat.name = t.name;
@@ -822,7 +830,7 @@ class Builder {
   bool mirror_ = false;
   double gamma_ = 1;
   // Equal materials are stored once: every field of raycast's material, as written.
-  using MaterialKey = std::array<double, 24>;
+  using MaterialKey = std::array<double, 26>;
   std::map<MaterialKey, int> materials_;
   std::set<std::string> warned_;
   PovTextureBuilder pov_textures_{[this](double c) { return linear(c); }};

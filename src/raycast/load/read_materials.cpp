@@ -109,6 +109,8 @@ Material read_material(const SourceContext& ctx, const YamlNode& node, const std
   m.transmission = unit_fraction(f, "transmission", m.transmission);
   m.ior = f.positive("ior", m.ior);
   m.fresnel = f.boolean("fresnel", m.fresnel);
+  m.dispersion = f.positive("dispersion", m.dispersion);
+  m.dispersion_samples = f.integer("dispersion_samples", m.dispersion_samples, 2, 64);
   m.fade_distance = f.non_negative("fade_distance", m.fade_distance);
   m.fade_power = f.non_negative("fade_power", m.fade_power);
   m.fade_color = read_color(f, "fade_color", m.fade_color);

@@ -672,7 +672,16 @@ Interior Interpreter::interior_block() {
     } else if (t.text == "fade_color" || t.text == "fade_colour") {
       next();
       in.fade_color = colour("fade_color");
-    } else if (t.text == "caustics" || t.text == "dispersion" || t.text == "dispersion_samples") {
+    } else if (t.text == "dispersion") {
+      next();
+      in.dispersion = number("dispersion");
+      if (!(in.dispersion > 0)) fail_at(t.pos, "dispersion must be > 0");
+    } else if (t.text == "dispersion_samples") {
+      next();
+      const double n = number("dispersion_samples");
+      if (!(n >= 2 && n <= 64)) fail_at(t.pos, "dispersion_samples must be 2 to 64");
+      in.dispersion_samples = static_cast<int>(n);
+    } else if (t.text == "caustics") {
       next();
       number(t.text.c_str());
       unsupported_warning(t.pos, "interior " + t.text);

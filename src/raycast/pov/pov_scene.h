@@ -62,6 +62,8 @@ struct Finish {
 /// set (POV-Ray's defaults, 0, turn it off); fade_color is the colour it fades towards.
 struct Interior {
   std::optional<double> ior;
+  double dispersion = 1;
+  int dispersion_samples = 7;
   double fade_distance = 0, fade_power = 0;
   Colour fade_color;
 };

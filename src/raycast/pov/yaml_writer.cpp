@@ -188,6 +188,9 @@ class Writer {
     }
     const Interior in = t.interior.value_or(Interior{});
     if (in.ior) o << ", ior: " << num(*in.ior);
+    if (in.dispersion != 1)
+      o << ", dispersion: " << num(in.dispersion)
+        << ", dispersion_samples: " << in.dispersion_samples;
     const bool own = in.fade_distance != 0 || in.fade_power != 0;
     const double fade_distance = own ? in.fade_distance : f.fade_distance;
     const double fade_power = own ? in.fade_power : f.fade_power;

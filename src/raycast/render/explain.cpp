@@ -18,9 +18,10 @@ class TreeRecorder final : public RayRecorder {
  public:
   explicit TreeRecorder(ExplainedRay& root) : root_(root) {}
 
-  void child(RayKind kind, double weight) override {
+  void child(RayKind kind, double weight, const Color& tint) override {
     next_kind_ = kind;
     next_weight_ = weight;
+    next_tint_ = tint;
   }
   void begin_ray(const Ray& ray, int depth) override {
     ExplainedRay* node = &root_;
@@ -30,6 +31,7 @@ class TreeRecorder final : public RayRecorder {
     }
     node->kind = open_.empty() ? RayKind::kCamera : next_kind_;
     node->weight = open_.empty() ? 1 : next_weight_;
+    node->tint = open_.empty() ? Color{1, 1, 1} : next_tint_;
     node->ray = ray;
     node->depth = depth;
     open_.push_back(node);
@@ -69,6 +71,7 @@ class TreeRecorder final : public RayRecorder {
   std::vector<ExplainedRay*> open_;
   RayKind next_kind_ = RayKind::kCamera;
   double next_weight_ = 1;
+  Color next_tint_{1, 1, 1};
 };
 
 /// Completes the tree: each hit's (u, v), and what each shadow segment met: the nearest opaque
@@ -112,7 +115,7 @@ Color sum_lights(const ExplainedRay& ray, bool diffuse) {
 Color sum_children(const ExplainedRay& ray, RayKind kind) {
   Color sum{0, 0, 0};
   for (const ExplainedRay& child : ray.children)
-    if (child.kind == kind) sum += child.weight * child.radiance;
+    if (child.kind == kind) sum += child.weight * mul(child.tint, child.radiance);
   return sum;
 }
 

@@ -41,6 +41,7 @@ struct ExplainedRay {
   Ray ray;
   int depth = 0;
   double weight = 1;
+  Color tint{1, 1, 1};  // what colours the ray's radiance in its parent's: a filter, a band
   std::optional<ExplainedHit> hit;
   bool split = false;  // whether the split below was reached (not at max depth, not a miss)
   double w_reflect = 0, w_refract = 0, fresnel = -1, bailout = 0;

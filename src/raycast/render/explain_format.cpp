@@ -109,6 +109,7 @@ class TextWriter {
     std::string head =
         std::string(ray_kind_name(r.kind)) + " ray, depth " + std::to_string(r.depth);
     if (r.kind != RayKind::kCamera) head += ", weight " + num(r.weight);
+    if (r.tint != Color{1, 1, 1}) head += ", tint " + vec_text(r.tint);
     line(indent, head + ": o " + vec_text(r.ray.o) + " d " + vec_text(r.ray.d) + " t in [" +
                      num(r.ray.tmin) + ", " + num(r.ray.tmax) + "]");
     if (!r.hit) {
@@ -198,7 +199,8 @@ class JsonWriter {
            "\", \"origin\": " + vec_json(r.ray.o) + ", \"direction\": " + vec_json(r.ray.d) +
            ", \"tmin\": " + json_double(r.ray.tmin) + ", \"tmax\": " + json_double(r.ray.tmax) +
            ", \"depth\": " + std::to_string(r.depth) + ", \"weight\": " + json_double(r.weight) +
-           ", \"radiance\": " + vec_json(r.radiance) + ", \"stop\": ";
+           ", \"tint\": " + vec_json(r.tint) + ", \"radiance\": " + vec_json(r.radiance) +
+           ", \"stop\": ";
     out += r.stop == RayStop::kMaxDepth ? "\"max_depth\""
            : r.stop == RayStop::kMiss   ? "\"miss\""
                                         : "null";

@@ -11,6 +11,7 @@
 #include "objects/csg_tree.h"
 #include "objects/prototype.h"
 #include "render/area_light_adaptive.h"
+#include "render/dispersion.h"
 #include "render/light_falloff.h"
 #include "render/optics.h"
 #include "render/terminator.h"

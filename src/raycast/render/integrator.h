@@ -22,6 +22,9 @@ struct SampleState {
   Rng rng;
   std::uint64_t rays = 0;
   RayRecorder* recorder = nullptr;
+  // The spectral position (render/dispersion.h) of the ray being traced once a dispersive
+  // surface has split it, -1 for white light.
+  double band = -1;
 };
 
 /// A stable colour for a top-level object entry (the `id` integrator): a hash of the index,
@@ -127,6 +130,13 @@ class Integrator {
   template <TraceMode M>
   Color textured_hit(const Ray& ray, const SceneHit& hit, std::size_t material, int depth,
                      SampleState& state, double weight) const;
+  /// The refracted light at a dispersive surface: one ray per band of m's spectrum, each bent by
+  /// its band's index (a band bent past the critical angle is reflected), their radiances in
+  /// their shares of white, the whole times w_refract and tint.
+  template <TraceMode M>
+  Color dispersed(const SurfaceInfo& si, const Vec3& wi, const Vec3& n, const Material& m,
+                  bool outside, int depth, SampleState& state, double weight, double w_refract,
+                  const Color& tint) const;
   /// direct()'s light term (sample: its light, l, N.L, diffuse and specular parts) in the
   /// counting and recording modes: when `term` is above 0, the render's shadow query for it from
   /// `o`, counted, and the term added to `sum` when visible; the sample (with its shadow ray) told

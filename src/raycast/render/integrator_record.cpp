@@ -10,6 +10,7 @@
 #include "render/light_falloff.h"
 #include "render/optics.h"
 #include "render/terminator.h"
+#include "render/dispersion.h"
 #include "render/whitted_trace.inl"
 
 namespace raycast {

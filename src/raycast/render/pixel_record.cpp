@@ -41,9 +41,11 @@ class SampleRecorder final : public RayRecorder {
     lit = unshadowed = 0;
     open_.clear();
   }
-  void child(RayKind kind, double weight) override { next_ = {kind, weight}; }
+  void child(RayKind kind, double weight, const Color& tint) override {
+    next_ = {kind, weight, tint};
+  }
   void begin_ray(const Ray&, int) override {
-    open_.push_back(open_.empty() ? Open{RayKind::kCamera, 1} : next_);
+    open_.push_back(open_.empty() ? Open{RayKind::kCamera, 1, {1, 1, 1}} : next_);
   }
   // A camera ray that misses has the background as its one term: put with ambient.
   void miss(const Color& background) override {
@@ -68,17 +70,19 @@ class SampleRecorder final : public RayRecorder {
     const Open ray = open_.back();
     open_.pop_back();
     if (open_.size() != 1) return;  // only the camera ray's children are its terms
-    if (ray.kind == RayKind::kReflection) reflection_term += ray.weight * radiance;
-    if (ray.kind == RayKind::kRefraction) refraction_term += ray.weight * radiance;
+    const Color seen = ray.weight * mul(ray.tint, radiance);
+    if (ray.kind == RayKind::kReflection) reflection_term += seen;
+    if (ray.kind == RayKind::kRefraction) refraction_term += seen;
   }
 
  private:
   struct Open {
     RayKind kind;
     double weight;
+    Color tint;
   };
   std::vector<Open> open_;
-  Open next_{RayKind::kCamera, 1};
+  Open next_{RayKind::kCamera, 1, {1, 1, 1}};
 };
 
 /// The sample's value of output k (per-sample values are averaged over the pixel).

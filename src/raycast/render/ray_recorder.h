@@ -58,8 +58,9 @@ class RayRecorder {
   /// true: hooks only for the camera ray; its secondary rays report begin_ray and end_ray (so
   /// their radiance reaches the camera ray's terms) and are traced below in the counting mode.
   bool camera_ray_only = false;
-  /// The next begin_ray is a secondary ray of this kind carrying `weight` of its parent.
-  virtual void child(RayKind kind, double weight) = 0;
+  /// The next begin_ray is a secondary ray of this kind carrying `weight` of its parent, its
+  /// radiance tinted by `tint` (white but behind a coloured filter or for a dispersed band).
+  virtual void child(RayKind kind, double weight, const Color& tint) = 0;
   /// A ray is cast (the first of a sample is a camera ray).
   virtual void begin_ray(const Ray& ray, int depth) = 0;
   virtual void miss(const Color& background) = 0;

@@ -18,6 +18,13 @@ inline const Material* interior_after(const Material& m, bool inward) {
   return inward && fades(m) ? &m : nullptr;
 }
 
+constexpr Color kWhite{1, 1, 1};
+
+// The index of refraction a ray meets at m: its band's once a dispersive surface split it.
+inline double ior_seen(const Material& m, const SampleState& state) {
+  return state.band >= 0 && disperses(m) ? band_ior(m.ior, m.dispersion, state.band) : m.ior;
+}
+
 /// The spot light's cone (render/light_falloff.h).
 double spot_factor(const Light& light, const Vec3& from_light) {
   return spot_cone(light, from_light);
@@ -152,7 +159,8 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   bool tir = false;
   double fresnel = -1;
   if (w_refract > 0) {
-    const double eta_i = outside ? 1 : m.ior, eta_t = outside ? m.ior : 1;
+    const double ior = ior_seen(m, state);
+    const double eta_i = outside ? 1 : ior, eta_t = outside ? ior : 1;
     const bool refracted = refract(wi, n, eta_i / eta_t, t_dir);
     if (m.fresnel) {
       fresnel = fresnel_dielectric(dot(v, n), eta_i, eta_t);
@@ -173,17 +181,47 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
   if (w_reflect > 0 && weight * w_reflect >= cutoff) {
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
-    if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
+    if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect, kWhite);
     result += w_reflect * trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
                                          weight * w_reflect, interior_after(m, !outside));
   }
   if (w_refract > 0 && weight * w_refract >= cutoff) {
-    if constexpr (M != kPlain) ++state.recorder->counts.refraction;
-    if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract);
-    result += w_refract * trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
-                                         weight * w_refract, interior_after(m, outside));
+    if (disperses(m) && state.band < 0) {
+      result += dispersed<M>(si, wi, n, m, outside, depth, state, weight, w_refract, kWhite);
+    } else {
+      if constexpr (M != kPlain) ++state.recorder->counts.refraction;
+      if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract, kWhite);
+      result += w_refract * trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
+                                           weight * w_refract, interior_after(m, outside));
+    }
   }
   return result;
+}
+
+template <Integrator::TraceMode M>
+Color Integrator::dispersed(const SurfaceInfo& si, const Vec3& wi, const Vec3& n, const Material& m,
+                            bool outside, int depth, SampleState& state, double weight,
+                            double w_refract, const Color& tint) const {
+  const int bands = std::min(m.dispersion_samples, kMaxDispersionSamples);
+  const auto shares = band_weights(bands);
+  Color sum{0, 0, 0};
+  for (int k = 0; k < bands; ++k) {
+    state.band = band_position(k, bands);
+    const double ior = band_ior(m.ior, m.dispersion, state.band);
+    Vec3 dir;
+    const bool refracted = refract(wi, n, outside ? 1 / ior : ior, dir);
+    if (!refracted) dir = reflect(wi, n);
+    const Color share = mul(tint, double(bands) * shares[std::size_t(k)]);
+    const RayKind kind = refracted ? RayKind::kRefraction : RayKind::kReflection;
+    if constexpr (M != kPlain)
+      ++(refracted ? state.recorder->counts.refraction : state.recorder->counts.reflection);
+    if constexpr (M == kRecord) state.recorder->child(kind, w_refract / bands, share);
+    sum += mul(share,
+               trace_child<M>({offset_ray_origin(si, dir), dir}, depth + 1, state,
+                              weight * w_refract / bands, interior_after(m, refracted == outside)));
+  }
+  state.band = -1;
+  return (w_refract / bands) * sum;
 }
 
 template <Integrator::TraceMode M>
@@ -220,7 +258,8 @@ Color Integrator::textured_hit(const Ray& ray, const SceneHit& hit, std::size_t 
   bool tir = false;
   double w_through = w_refract;
   if (w_refract > 0) {
-    const double eta = outside ? 1 / m.ior : m.ior;
+    const double ior = ior_seen(m, state);
+    const double eta = outside ? 1 / ior : ior;
     if (!refract(wi, n, eta, t_dir)) {
       w_reflect += w_refract;
       w_through = 0;
@@ -232,18 +271,24 @@ Color Integrator::textured_hit(const Ray& ray, const SceneHit& hit, std::size_t 
   if (w_reflect > 0 && weight * w_reflect >= cutoff) {
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
-    if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect);
+    if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect, kWhite);
     const Color mirrored = trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
                                           weight * w_reflect, interior_after(m, !outside));
     result += look.finish.reflection_metallic ? w_reflect * mul(look.pigment, mirrored)
                                               : w_reflect * mirrored;
   }
   if (w_through > 0 && weight * w_through >= cutoff) {
-    if constexpr (M != kPlain) ++state.recorder->counts.refraction;
-    if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_through);
-    result +=
-        mul(look.through, trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
-                                         weight * w_through, interior_after(m, outside)));
+    // The filter's colour as a tint of the scalar weight: weight * tint is look.through.
+    const Color tint = look.through / w_refract;
+    if (disperses(m) && state.band < 0) {
+      result += dispersed<M>(si, wi, n, m, outside, depth, state, weight, w_through, tint);
+    } else {
+      if constexpr (M != kPlain) ++state.recorder->counts.refraction;
+      if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_through, tint);
+      result +=
+          mul(look.through, trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
+                                           weight * w_through, interior_after(m, outside)));
+    }
   }
   return result;
 }

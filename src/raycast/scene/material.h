@@ -34,6 +34,10 @@ struct Material {
   double reflection = 0;
   double transmission = 0;
   double ior = 1;
+  // The ratio of violet's index of refraction to red's (1: none), and the bands a refracted ray
+  // is split into (render/dispersion.h).
+  double dispersion = 1;
+  int dispersion_samples = 7;
   bool fresnel = false;
   // Light travelling inside the object is attenuated with the distance (POV-Ray's interior
   // fade, interior_fade below); fade_distance or fade_power 0: no attenuation.
