@@ -36,7 +36,7 @@ TEST(Loader, UnknownKey_NamedAtItsPosition) {
                "unknown key 'radus' in sphere (did you mean 'radius'?)");
   expect_error("objects:\n  - cube: {radius: 1}\n", 2, 5,
                "unknown key 'cube' in object (expected a shape, group, union, intersection, "
-               "difference, use or name, material, transform, shadows)");
+               "difference, use or name, material, transform, shadows, image, reflections)");
   expect_error("objects: []\ncamra: {}\n", 2, 1,
                "unknown key 'camra' in scene (did you mean 'camera'?)");
   expect_error("objects: []\nzzzzzz: {}\n", 2, 1, "unknown key 'zzzzzz' in scene");

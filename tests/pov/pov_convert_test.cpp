@@ -96,6 +96,14 @@ const Case kCases[] = {
     {"text", "text { ttf \"timrom.ttf\", \"I\", 1, 0 translate <-0.171, -0.34, 3> }", 3},
     {"text_between_letters", "text { ttf \"timrom.ttf\" \"II\" 1, 0 translate <-0.4, -0.34, 3> }",
      std::numeric_limits<double>::infinity()},
+    // A lone component's surface: 2 (1 - r^2 / 4)^2 = 1, r = 2 sqrt(1 - sqrt(1 / 2)).
+    {"blob", "blob { threshold 1 sphere { <0, 0, 4>, 2, 2 } }", 2.9176077997},
+    {"blob_old_component_syntax", "blob { component 2, 2, <0, 0, 4> }", 2.9176077997},
+    {"blob_cylinder", "blob { cylinder { <0, -1, 4>, <0, 1, 4>, 2, strength 2 } sturm }",
+     2.9176077997},
+    {"blob_scaled_component",
+     "blob { threshold 1 sphere { 0, 2, 2 scale <1, 1, 2> } hierarchy off translate 4*z }",
+     1.8352155994},
     {"mesh", "mesh { triangle { <-1, -1, 3>, <1, -1, 3>, <0, 1, 3> } }", 3},
     {"triangle", "triangle { <-1, -1, 2>, <1, -1, 4>, <0, 1, 3> }", 3},
     {"smooth_triangle",
@@ -196,8 +204,8 @@ TEST_P(PovConvertRoundTrip, ConvertedYamlRendersIdentically) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovConvertRoundTrip,
-                         ::testing::Values("basic", "csg", "surfaces", "glass", "transmit",
-                                           "lens"));
+                         ::testing::Values("basic", "csg", "surfaces", "glass", "transmit", "lens",
+                                           "blob"));
 
 TEST(PovImport, DegenerateShapesAreLeftOutWithTheirPosition) {
   // POV-Ray draws nothing for a sphere of negative radius; raycast says so and goes on.

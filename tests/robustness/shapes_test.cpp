@@ -58,6 +58,10 @@ const std::map<std::string, std::string>& examples() {
        "{points: [[0.3, -0.3], [1, 0], [0.3, 0.3], [0, 1], [-0.3, 0.3], [-1, 0], [-0.3, -0.3], "
        "[0, -1], [0.3, -0.3], [1, 0], [0.3, 0.3]], spline: cubic, heights: [0.2, 1.5], sweep: "
        "conic}"},
+      {"blob",
+       "{threshold: 0.6, components: [{center: [0, 0, 0], radius: 1, strength: 1}, {from: [0.5, "
+       "0, 0], to: [1.5, 0.5, 0], radius: 0.6, strength: 1.2}, {center: [0.2, 0.3, 0], radius: "
+       "0.4, strength: -0.8, transform: [{scale: [1, 2, 1]}]}]}"},
       {"text", "{font: /usr/share/povray-3.7/include/timrom.ttf, string: 'Bo8', thickness: 0.4}"},
       {"isosurface", "{grid: '" + std::string(RAYCAST_SOURCE_DIR) +
                          "/tests/volume/data/gaussians.raw', iso: 0.5}"},

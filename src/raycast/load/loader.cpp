@@ -22,7 +22,7 @@ namespace raycast {
 
 namespace {
 
-constexpr const char* kObjectKeys = "name, material, transform, shadows";
+constexpr const char* kObjectKeys = "name, material, transform, shadows, image, reflections";
 // A `use` inside a library entry or a CSG operation is copied in place; a scene whose copies make
 // more shapes than this (summed over all copies) is refused rather than exhausting memory.
 constexpr std::size_t kMaxExpandedObjects = std::size_t{1} << 16;
@@ -141,7 +141,9 @@ class Loader {
     YamlNode key_node;
     for (const YamlPair& kv : pairs_of(node)) {
       const std::string key(kv.key().Scalar());
-      if (key == "name" || key == "material" || key == "transform" || key == "shadows") continue;
+      if (key == "name" || key == "material" || key == "transform" || key == "shadows" ||
+          key == "image" || key == "reflections")
+        continue;
       if (!shape_parsers().count(key) && !is_compound_key(key))
         fail_at(ctx_, kv.key(),
                 "unknown key '" + describe(kv.key()) + "' in object (expected a shape, " +
@@ -225,15 +227,22 @@ class Loader {
                    std::vector<Object>& out) {
     const std::size_t first = out.size();
     read_object_parts(node, depth, entry, parent, out);
-    if (const YamlNode s = node["shadows"]; s && !casts_shadows(s))
-      for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+    const bool shadows = flag(node, "shadows"), image = flag(node, "image"),
+               reflections = flag(node, "reflections");
+    for (std::size_t i = first; i < out.size(); ++i) {
+      out[i].casts_shadow = out[i].casts_shadow && shadows;
+      out[i].seen_by_camera = out[i].seen_by_camera && image;
+      out[i].seen_in_reflections = out[i].seen_in_reflections && reflections;
+    }
   }
 
-  // An object's `shadows`: true or false.
-  bool casts_shadows(const YamlNode& s) const {
+  // An object's `shadows`, `image` or `reflections`: true (also when absent) or false.
+  bool flag(const YamlNode& node, const char* key) const {
+    const YamlNode s = node[key];
+    if (!s) return true;
     const std::string v(s.IsScalar() ? s.Scalar() : std::string_view());
     if (v == "true" || v == "false") return v == "true";
-    fail_at(ctx_, s, "shadows must be true or false, got " + describe(s));
+    fail_at(ctx_, s, std::string(key) + " must be true or false, got " + describe(s));
   }
 
   void read_object_parts(const YamlNode& node, int depth, int entry, const Placement& parent,
@@ -295,8 +304,10 @@ class Loader {
   std::int32_t read_csg_operand(const YamlNode& node, int depth, CsgTree& tree,
                                 const Placement& parent) {
     const auto [key, key_node] = object_key(node, depth);
-    if (node["shadows"])
-      fail_at(ctx_, node["shadows"], "shadows applies to whole objects, not to CSG operands");
+    for (const char* whole : {"shadows", "image", "reflections"})
+      if (node[whole])
+        fail_at(ctx_, node[whole],
+                std::string(whole) + " applies to whole objects, not to CSG operands");
     const Placement here = place(node, parent);
     if (is_csg_key(key) || key == "group")
       return read_csg_operation(node[key], key, depth, tree, here);

@@ -432,6 +432,56 @@ class Builder {
     return first ? "0" : e.str();
   }
 
+  // A blob from its component nodes: each component's own transformations place its field; the
+  // checker offset moves the whole blob.
+  Blob blob(const Node& n, const std::vector<int>* materials = nullptr) {
+    std::vector<BlobComponent> components;
+    components.reserve(n.children.size());
+    for (const Node& c : n.children) {
+      BlobComponent b;
+      if (materials) b.material = (*materials)[components.size()];
+      b.cylinder = c.kind == Node::Cylinder;
+      b.radius = c.values[0];
+      b.strength = c.values[1];
+      b.xf = own_transform(c, false);
+      b.a = b.xf ? m(c.points[0]) : pt(c.points[0]);
+      b.b = b.cylinder ? (b.xf ? m(c.points[1]) : pt(c.points[1])) : b.a;
+      if (b.xf && shift_ != Vec3{0, 0, 0}) b.xf = Transform::translate(shift_) * *b.xf;
+      components.push_back(b);
+    }
+    return make_blob(n.values[0], std::move(components));
+  }
+
+  // POV-Ray blends the textures of a blob's components by their fields at each point; raycast
+  // takes the strongest component's there (blob_material), and the blob's own (or inherited)
+  // texture where that component has none: else its first component's.
+  const pov::Texture* blob_texture(const Node& n, const pov::Texture* own) {
+    const pov::Texture* first = nullptr;
+    for (const Node& c : n.children)
+      if (c.texture) {
+        first = &*c.texture;
+        warn(c.pos, "blended textures of blob components",
+             "each point takes the texture of the component whose field is strongest there",
+             "not blended");
+        break;
+      }
+    return own ? own : first;
+  }
+
+  // The blob rebuilt with a material for each component that has a texture of its own, in the
+  // frame of the component's transformations within the blob.
+  void blob_materials(const Node& n, Object& o) {
+    std::vector<int> materials;
+    bool any = false;
+    for (const Node& c : n.children) {
+      materials.push_back(
+          c.texture ? material(*c.texture, texture_frame(c, o.xf), csg_world_ ? csg_world_ : o.xf)
+                    : -1);
+      any = any || c.texture;
+    }
+    if (any) o.shape = blob(n, &materials);
+  }
+
   // The shape of a primitive node, or nothing (with a warning) when raycast cannot build it.
   std::optional<ShapeVariant> shape(const Node& n, bool& axial) {
     axial = false;
@@ -497,6 +547,8 @@ class Builder {
         return make_prism(spline_contours(points, prism_spline(n.spline)), n.values[0], n.values[1],
                           n.conic_sweep, n.open);
       }
+      case Node::Blob:
+        return blob(n);
       case Node::Text:
         if (n.font.empty()) return std::nullopt;  // not found: the reader warned
         try {
@@ -565,6 +617,7 @@ class Builder {
     bool axial = false;
     std::optional<ShapeVariant> sh;
     shift_ = Vec3{0, 0, 0};
+    if (n.kind == Node::Blob) tex = blob_texture(n, tex);
     if (tex && tex->pigment.checker && pov::on_checker_grid(n, tex->pigment.scale)) {
       const double e = pov::kCheckerOffset * tex->pigment.scale;
       shift_ = m(Vec3{e, e, e});
@@ -580,6 +633,7 @@ class Builder {
     Object o;
     o.shape = std::move(*sh);
     o.xf = compose(parent, own_transform(n, axial, shift_));
+    if (n.kind == Node::Blob) blob_materials(n, o);  // (shift_ still holds the blob's offset)
     shift_ = Vec3{0, 0, 0};
     if (tex) o.material = material(*tex, frame, csg_world_ ? csg_world_ : o.xf);
     return o;
@@ -592,8 +646,16 @@ class Builder {
            const std::optional<Transform>& parent, int entry, std::vector<Object>& out) {
     const std::size_t first = out.size();
     add_node(n, inherited, inherited_frame, parent, entry, out);
-    if (n.no_shadow)
-      for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+    hide(n, first, out);
+  }
+
+  // What no_shadow, no_image and no_reflection take away from the objects a node gave.
+  static void hide(const Node& n, std::size_t first, std::vector<Object>& out) {
+    for (std::size_t i = first; i < out.size(); ++i) {
+      if (n.no_shadow) out[i].casts_shadow = false;
+      if (n.no_image) out[i].seen_by_camera = false;
+      if (n.no_reflection) out[i].seen_in_reflections = false;
+    }
   }
 
   void add_node(const Node& n, const pov::Texture* inherited, const Transform& inherited_frame,
@@ -673,8 +735,7 @@ class Builder {
       csg_world_.reset();
       const std::size_t first = out.size();
       if (code) add_csg(c, std::move(tree), tex, frame, parent, entry, out);
-      if (c.no_shadow)
-        for (std::size_t i = first; i < out.size(); ++i) out[i].casts_shadow = false;
+      hide(c, first, out);
     }
   }
 

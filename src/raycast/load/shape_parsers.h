@@ -40,5 +40,6 @@ ShapeVariant parse_shape(std::type_identity<Revolution>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Isosurface>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Prism>, Fields& f);
 ShapeVariant parse_shape(std::type_identity<Text>, Fields& f);
+ShapeVariant parse_shape(std::type_identity<Blob>, Fields& f);
 
 }  // namespace raycast

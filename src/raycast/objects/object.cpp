@@ -117,6 +117,7 @@ int material_of(const Object& o, const LocalHit& hit) {
   int m = -1;
   if (const auto* c = std::get_if<CsgShape>(&o.shape)) m = csg_material(*c, hit);
   if (const auto* i = std::get_if<InstanceShape>(&o.shape)) m = instance_material(*i, hit);
+  if (const auto* b = std::get_if<Blob>(&o.shape)) m = blob_material(*b, hit);
   return m >= 0 ? m : o.material;
 }
 

@@ -7,6 +7,7 @@
 
 #include "geometry/algebraic.h"
 #include "geometry/basic_shapes.h"
+#include "geometry/blob.h"
 #include "geometry/cone.h"
 #include "geometry/cylinder.h"
 #include "geometry/ellipsoid.h"
@@ -35,14 +36,16 @@ namespace raycast {
 using ShapeVariant =
     std::variant<Plane, Sphere, Box, Triangle, Parallelogram, Disk, Ellipsoid, Quadric, Cylinder,
                  Cone, Polygon, Slab, Polyhedron, Torus, Algebraic, Implicit, Revolution, MeshShape,
-                 CsgShape, InstanceShape, Isosurface, Prism, Text>;
+                 CsgShape, InstanceShape, Isosurface, Prism, Text, Blob>;
 
 struct Object {
   ShapeVariant shape;
-  std::optional<Transform> xf;  // object -> world; absent means the identity
-  int material = -1;            // index into Scene::materials
-  int entry = -1;               // index of the top-level `objects` entry it came from
-  bool casts_shadow = true;     // false: shadow rays pass through it (POV-Ray's no_shadow)
+  std::optional<Transform> xf;      // object -> world; absent means the identity
+  int material = -1;                // index into Scene::materials
+  int entry = -1;                   // index of the top-level `objects` entry it came from
+  bool casts_shadow = true;         // false: shadow rays pass through it (POV-Ray's no_shadow)
+  bool seen_by_camera = true;       // false: camera rays pass through it (POV-Ray's no_image)
+  bool seen_in_reflections = true;  // false: mirrored rays pass through it (no_reflection)
 };
 
 // World-space versions of the shape functions (geometry/shape.h): the ray goes to object space

@@ -230,6 +230,8 @@ class Interpreter {
   void spline_points(Node& n, int min_count);
   void prism_body(Node& n);
   void text_body(Node& n);
+  void blob_body(Node& n, int depth);
+  Node blob_component(int depth);
   void triangle_body(Node& n, bool smooth);
   void place_declared(const std::shared_ptr<const Node>& object, Node& n);
   bool is_declared_object();

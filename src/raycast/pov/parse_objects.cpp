@@ -32,6 +32,7 @@ const std::map<std::string, Node::Kind>& object_kinds() {
                                                           {"sor", Node::Sor},
                                                           {"prism", Node::Prism},
                                                           {"text", Node::Text},
+                                                          {"blob", Node::Blob},
                                                           {"mesh", Node::Mesh},
                                                           {"mesh2", Node::Mesh},
                                                           {"triangle", Node::Triangle},
@@ -45,9 +46,9 @@ const std::map<std::string, Node::Kind>& object_kinds() {
 }
 
 bool is_unbuilt_shape(const std::string& w) {
-  static constexpr std::string_view shapes[] = {
-      "blob",          "height_field", "sphere_sweep", "superellipsoid", "julia_fractal",
-      "bicubic_patch", "parametric",   "polygon",      "lemon",          "ovus"};
+  static constexpr std::string_view shapes[] = {"height_field",  "sphere_sweep",  "superellipsoid",
+                                                "julia_fractal", "bicubic_patch", "parametric",
+                                                "polygon",       "lemon",         "ovus"};
   for (const std::string_view s : shapes)
     if (s == w) return true;
   return false;
@@ -407,6 +408,9 @@ void Interpreter::object_body(Node& n, int depth) {
       break;
     case Node::Text:
       text_body(n);
+      break;
+    case Node::Blob:
+      blob_body(n, depth);
       break;
     default:
       break;  // poly, meshes: read by object(); CSG: children in the modifier loop
@@ -832,7 +836,11 @@ bool Interpreter::modifier(Node& n, int depth) {
       on = boolean_option();
     if (w == "no_shadow")
       n.no_shadow = on;
-    else if (w == "no_image" || w == "no_reflection" || w == "double_illuminate")
+    else if (w == "no_image")
+      n.no_image = on;
+    else if (w == "no_reflection")
+      n.no_reflection = on;
+    else if (w == "double_illuminate")
       unsupported_warning(t.pos, w);
   } else if (w == "inverse") {
     next();

@@ -88,7 +88,9 @@ void Interpreter::text_body(Node& n) {
     fail_at(o, "expected the offset between letters: a float or a vector");
   n.values = {thickness};
   n.points = {offset};
-  const std::optional<std::string> found = find_on_library_path(font);
+  // POV-Ray adds ".ttf" to a font name without an extension ("cyrvetic").
+  std::optional<std::string> found = find_on_library_path(font);
+  if (!found && font.find('.') == std::string::npos) found = find_on_library_path(font + ".ttf");
   if (!found) {
     unsupported_warning(at, "text in the font '" + font + "'",
                         "the font file is not on the library path: the text is left out");

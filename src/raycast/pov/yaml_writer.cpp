@@ -425,6 +425,24 @@ class Writer {
           << ", thickness: " << num(n.values[0]) << ", offset: " << vec(n.points[0]) << "}";
         break;
       }
+      case Node::Blob: {
+        o << "blob: {threshold: " << num(n.values[0]) << ", components: [";
+        for (std::size_t i = 0; i < n.children.size(); ++i) {
+          const Node& c = n.children[i];
+          const std::string xf = transform(c, false);
+          const auto at = [&](const Vec3& v) { return xf.empty() ? pt(v) : vec(m(v)); };
+          o << (i ? ", " : "") << "{";
+          if (c.kind == Node::Cylinder)
+            o << "from: " << at(c.points[0]) << ", to: " << at(c.points[1]);
+          else
+            o << "center: " << at(c.points[0]);
+          o << ", radius: " << num(c.values[0]) << ", strength: " << num(c.values[1]);
+          if (!xf.empty()) o << ", transform: " << xf;
+          o << "}";
+        }
+        o << "]}";
+        break;
+      }
       case Node::Triangle: {
         // Mirroring reverses the winding: swap two corners to keep the face's side.
         const std::size_t b = mirror_ ? 2 : 1, c = mirror_ ? 1 : 2;

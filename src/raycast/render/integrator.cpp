@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 #include <span>
 
 #include "geometry/spawn.h"
@@ -36,8 +37,10 @@ unsigned integer_exponent(double shininess) {
 
 /// The value material_of(o, hit) takes for every hit on o, when it is one value: o.material for
 /// a plain shape; for a CSG object or an instance, the same answer from every part (and from a
-/// hit outside the parts, which gives o.material). Else nullopt.
+/// hit outside the parts, which gives o.material). Else nullopt (also for a blob whose components
+/// have materials of their own).
 std::optional<int> sole_material(const Object& o) {
+  if (const auto* b = std::get_if<Blob>(&o.shape); b && b->data->materials) return std::nullopt;
   std::span<const Object> parts;
   if (const auto* c = std::get_if<CsgShape>(&o.shape)) parts = c->tree->leaves;
   if (const auto* i = std::get_if<InstanceShape>(&o.shape)) parts = i->proto->objects;
@@ -103,6 +106,9 @@ Integrator::Integrator(const Scene& scene, RenderMode mode)
         fades(scene.materials[std::size_t(f.hit_material)]))
       f.fade = &scene.materials[std::size_t(f.hit_material)];
     any_transmissive_ |= !o.casts_shadow;
+    f.hidden_from_camera = !o.seen_by_camera;
+    f.hidden_from_reflections = !o.seen_in_reflections;
+    any_hidden_ |= f.hidden_from_camera || f.hidden_from_reflections;
     objects_.push_back(f);
   }
 }
@@ -172,8 +178,20 @@ Color Integrator::whitted(const Ray& ray, int depth, SampleState& state, double 
   // instructions on bench/scenes/whitted.yaml.
   ++state.rays;
   SceneHit hit;
-  if (!scene_.intersect(ray, hit)) return missed(ray);
+  if (!scene_.intersect(ray, hit) || (any_hidden_ && !seen(ray, hit, depth == 0, state)))
+    return missed(ray);
   return fogged(ray, hit.local.t, whitted_hit<kPlain>(ray, hit, depth, state, weight));
+}
+
+bool Integrator::seen(const Ray& ray, SceneHit& hit, bool camera, const SampleState& state) const {
+  Ray beyond = ray;
+  for (int k = 0; k < kMaxHiddenSkips; ++k) {
+    const ObjectFacts& f = objects_[std::size_t(hit.object)];
+    if (!(camera ? f.hidden_from_camera : state.mirrored && f.hidden_from_reflections)) return true;
+    beyond.tmin = std::nextafter(hit.local.t, kInfinity);
+    if (!(beyond.tmin <= beyond.tmax) || !scene_.intersect(beyond, hit)) return false;
+  }
+  return false;
 }
 
 Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
@@ -181,6 +199,12 @@ Color Integrator::li_hit(const Ray& ray, bool found, const SceneHit& hit,
   if (!(ray.tmin <= ray.tmax)) return {0, 0, 0};  // a lens's pixel that sees nothing
   ++state.rays;
   if (mode_ != RenderMode::kWhitted) return diagnostic_hit(ray, found, hit);
+  if (found && any_hidden_) [[unlikely]] {
+    SceneHit visible = hit;
+    return seen(ray, visible, true, state)
+               ? fogged(ray, visible.local.t, whitted_hit<kPlain>(ray, visible, 0, state, 1))
+               : missed(ray);
+  }
   return found ? fogged(ray, hit.local.t, whitted_hit<kPlain>(ray, hit, 0, state, 1)) : missed(ray);
 }
 

@@ -25,6 +25,8 @@ struct SampleState {
   // The spectral position (render/dispersion.h) of the ray being traced once a dispersive
   // surface has split it, -1 for white light.
   double band = -1;
+  // Whether the ray being traced is a mirrored one (for objects hidden from reflections).
+  bool mirrored = false;
 };
 
 /// A stable colour for a top-level object entry (the `id` integrator): a hash of the index,
@@ -175,7 +177,15 @@ class Integrator {
     const Sphere* sphere = nullptr;
     // Its material when light fading inside it (Material::fade_distance) dims shadow rays.
     const Material* fade = nullptr;
+    bool hidden_from_camera = false, hidden_from_reflections = false;  // Object::seen_*
   };
+  /// After the nearest hit of a camera ray (`camera`) or another ray: when the object hit is
+  /// hidden from rays of its kind (Object::seen_by_camera, seen_in_reflections; a ray is mirrored
+  /// when SampleState::mirrored), the ray is cast again from just beyond the hit, until a hit it
+  /// may see (true, in `hit`) or none (false). Rays through more hidden surfaces than
+  /// kMaxHiddenSkips see nothing.
+  bool seen(const Ray& ray, SceneHit& hit, bool camera, const SampleState& state) const;
+  static constexpr int kMaxHiddenSkips = 64;
 
   const Scene& scene_;
   RenderMode mode_;
@@ -185,6 +195,7 @@ class Integrator {
   std::vector<Color> emitted_;        // by light: Light::emitted()
   std::vector<unsigned> exponents_;   // by material: integer Phong exponent, 0 for std::pow
   bool any_transmissive_ = false;
+  bool any_hidden_ = false;                 // an object hidden from camera or mirrored rays
   const Atmosphere* atmosphere_ = nullptr;  // null: neither sky sphere nor fog
   bool veils_ = false;                      // fogs or rainbows over every segment
   // By light: the scene's direction lists around it (ObjectSet::light_lists), or nullptr.

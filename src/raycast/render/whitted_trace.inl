@@ -82,7 +82,7 @@ Color Integrator::trace(const Ray& ray, int depth, SampleState& state, double we
   if constexpr (M == kRecord) state.recorder->begin_ray(ray, depth);
   ++state.rays;
   SceneHit hit;
-  if (!scene_.intersect(ray, hit)) {
+  if (!scene_.intersect(ray, hit) || (any_hidden_ && !seen(ray, hit, depth == 0, state))) {
     // Inside a fading interior, light from beyond an open surface comes from infinitely far.
     const Color seen = medium ? mul(interior_fade(*medium, kInfinity), missed(ray)) : missed(ray);
     if constexpr (M == kRecord) {
@@ -182,8 +182,10 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect, kWhite);
+    const bool was_mirrored = std::exchange(state.mirrored, true);
     result += w_reflect * trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
                                          weight * w_reflect, interior_after(m, !outside));
+    state.mirrored = was_mirrored;
   }
   if (w_refract > 0 && weight * w_refract >= cutoff) {
     if (disperses(m) && state.band < 0) {
@@ -191,8 +193,10 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
     } else {
       if constexpr (M != kPlain) ++state.recorder->counts.refraction;
       if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract, kWhite);
+      const bool was_mirrored = std::exchange(state.mirrored, false);
       result += w_refract * trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
                                            weight * w_refract, interior_after(m, outside));
+      state.mirrored = was_mirrored;
     }
   }
   return result;
@@ -204,6 +208,7 @@ Color Integrator::dispersed(const SurfaceInfo& si, const Vec3& wi, const Vec3& n
                             double w_refract, const Color& tint) const {
   const int bands = std::min(m.dispersion_samples, kMaxDispersionSamples);
   const auto shares = band_weights(bands);
+  const bool was_mirrored = state.mirrored;
   Color sum{0, 0, 0};
   for (int k = 0; k < bands; ++k) {
     state.band = band_position(k, bands);
@@ -216,11 +221,13 @@ Color Integrator::dispersed(const SurfaceInfo& si, const Vec3& wi, const Vec3& n
     if constexpr (M != kPlain)
       ++(refracted ? state.recorder->counts.refraction : state.recorder->counts.reflection);
     if constexpr (M == kRecord) state.recorder->child(kind, w_refract / bands, share);
+    state.mirrored = !refracted;
     sum += mul(share,
                trace_child<M>({offset_ray_origin(si, dir), dir}, depth + 1, state,
                               weight * w_refract / bands, interior_after(m, refracted == outside)));
   }
   state.band = -1;
+  state.mirrored = was_mirrored;
   return (w_refract / bands) * sum;
 }
 
@@ -272,8 +279,10 @@ Color Integrator::textured_hit(const Ray& ray, const SceneHit& hit, std::size_t 
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect, kWhite);
+    const bool was_mirrored = std::exchange(state.mirrored, true);
     const Color mirrored = trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
                                           weight * w_reflect, interior_after(m, !outside));
+    state.mirrored = was_mirrored;
     result += look.finish.reflection_metallic ? w_reflect * mul(look.pigment, mirrored)
                                               : w_reflect * mirrored;
   }
@@ -285,9 +294,11 @@ Color Integrator::textured_hit(const Ray& ray, const SceneHit& hit, std::size_t 
     } else {
       if constexpr (M != kPlain) ++state.recorder->counts.refraction;
       if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_through, tint);
+      const bool was_mirrored = std::exchange(state.mirrored, false);
       result +=
           mul(look.through, trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
                                            weight * w_through, interior_after(m, outside)));
+      state.mirrored = was_mirrored;
     }
   }
   return result;
