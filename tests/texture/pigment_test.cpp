@@ -136,7 +136,7 @@ TEST(Normal, TiltsAgainstTheGradient) {
 TEST(Normal, BumpsChangeTheNormalSomewhere) {
   TextureLayer l;
   l.pigment = solid({1, 1, 1});
-  l.normal = Normal{make_pattern(PatternKind::kBumps), 0.5};
+  l.normal = Normal{make_pattern(PatternKind::kBumps), 0.5, {}, {}};
   TextureStack t;
   t.layers = {l};
   int tilted = 0;
@@ -153,7 +153,7 @@ TEST(Normal, BumpsChangeTheNormalSomewhere) {
 
 TEST(Normal, WrinklesTiltIsBoundedVectorNoise) {
   TextureLayer l;
-  l.normal = Normal{make_pattern(PatternKind::kWrinkles), 1};
+  l.normal = Normal{make_pattern(PatternKind::kWrinkles), 1, {}, {}};
   TextureStack t;
   t.layers = {l};
   double largest = 0;

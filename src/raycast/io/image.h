@@ -82,6 +82,16 @@ void write_png(const Image& image, std::FILE* file, const std::string& name);
 /// Reads an 8- or 16-bit PNG (grey, grey+alpha, RGB, RGBA, palette) into linear RGB: the sRGB
 /// encoding is undone, alpha is dropped. Throws ImageError.
 Image load_png(const std::string& path);
+/// A PNG's pixels as stored, for image maps that need more than the colour: RGBA with the sRGB
+/// encoding kept (values in [0, 1]; a file's own gAMA is converted to sRGB), top row first, and
+/// for palette images each pixel's palette index. Throws ImageError.
+struct PngPixels {
+  int width = 0, height = 0;
+  std::vector<float> rgba;          // 4 * width * height
+  std::vector<std::uint8_t> index;  // palette images: width * height, else empty
+  int palette_size = 0;
+};
+PngPixels load_png_pixels(const std::string& path);
 /// Portable float map ("PF", 3 channels, little-endian, bottom row first as the format demands),
 /// linear values written as they are.
 void save_pfm(const Image& image, const std::string& path);

@@ -2,6 +2,7 @@
 // gamma chunk and reports errors through png_image::message instead of longjmp.
 #include <png.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csetjmp>
 #include <cstdint>
@@ -100,6 +101,43 @@ Image load_png(const std::string& path) {
   Image image(static_cast<int>(png.width), static_cast<int>(png.height));
   for (std::size_t i = 0; i < bytes.size(); ++i) image.rgb[i] = table[bytes[i]];
   return image;
+}
+
+PngPixels load_png_pixels(const std::string& path) {
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str()))
+    throw ImageError(path + ": cannot read PNG: " + png.message);
+  if (png.width == 0 || png.height == 0 || png.width > (1u << 16) || png.height > (1u << 16)) {
+    png_image_free(&png);
+    throw ImageError(path + ": PNG size out of range");
+  }
+  const bool palette = (png.format & PNG_FORMAT_FLAG_COLORMAP) != 0;
+  png.format = palette ? PNG_FORMAT_RGBA_COLORMAP : PNG_FORMAT_RGBA;
+  PngPixels out;
+  out.width = static_cast<int>(png.width);
+  out.height = static_cast<int>(png.height);
+  std::vector<std::uint8_t> bytes(PNG_IMAGE_SIZE(png));
+  std::vector<std::uint8_t> colormap(palette ? PNG_IMAGE_COLORMAP_SIZE(png) : 0);
+  if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, palette ? colormap.data() : nullptr)) {
+    const std::string message = png.message;
+    png_image_free(&png);
+    throw ImageError(path + ": cannot read PNG: " + message);
+  }
+  const std::size_t n = std::size_t(out.width) * std::size_t(out.height);
+  out.rgba.resize(4 * n);
+  if (palette) {
+    out.palette_size = static_cast<int>(png.colormap_entries);
+    out.index = bytes;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = std::min<std::size_t>(bytes[i], png.colormap_entries - 1);
+      for (std::size_t c = 0; c < 4; ++c) out.rgba[4 * i + c] = colormap[4 * k + c] / 255.f;
+    }
+  } else {
+    for (std::size_t i = 0; i < 4 * n; ++i) out.rgba[i] = bytes[i] / 255.f;
+  }
+  return out;
 }
 
 }  // namespace raycast

@@ -84,6 +84,7 @@ std::shared_ptr<const texture::TextureStack> PovTextureBuilder::stack(const pov:
   auto add = [&](const pov::Texture& u, bool bottom) {
     if (u.map && bottom && depth < 64) {
       s->map_pattern = u.map->pattern;
+      s->average = u.map->average;
       for (std::size_t i = 0; i < u.map->textures.size(); ++i)
         s->map.push_back({u.map->at[i], stack(u.map->textures[i], depth + 1)});
     } else {

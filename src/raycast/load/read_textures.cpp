@@ -1,6 +1,9 @@
 #include "load/read_textures.h"
 
 #include <algorithm>
+#include <filesystem>
+
+#include "io/image.h"
 
 namespace raycast {
 
@@ -36,6 +39,15 @@ texture::Pattern read_pattern(Fields& f) {
   const std::optional<texture::PatternKind> kind = texture::pattern_kind(name);
   if (!kind) f.fail("pattern", f.name("pattern") + ": no pattern named '" + name + "'");
   texture::Pattern p = texture::make_pattern(*kind);
+  if (*kind == texture::PatternKind::kFunction) {
+    // A formula in x, y, z of the pattern's space (the isosurface's syntax).
+    const std::string text = f.string("function");
+    try {
+      p.function = texture::formula_function(compile_formula(text));
+    } catch (const ExpressionError& e) {
+      f.fail("function", f.name("function") + ": " + e.what());
+    }
+  }
   p.vector = f.vec3("direction", p.vector);
   if (*kind == texture::PatternKind::kBrick) p.vector = f.vec3("brick_size", p.vector);
   if (*kind == texture::PatternKind::kBrick) p.amount = f.non_negative("mortar", p.amount);
@@ -94,6 +106,68 @@ std::vector<Entry> read_map(const SourceContext& ctx, const YamlNode& node, cons
   return out;
 }
 
+// An average's weights: none negative, some positive.
+double weight_of(const texture::PigmentMapEntry& e) { return e.at; }
+double weight_of(const texture::NormalMapEntry& e) { return e.weight; }
+template <class Entry>
+void check_weights(const SourceContext& ctx, const YamlNode& node, const std::vector<Entry>& map,
+                   const std::string& what) {
+  double total = 0;
+  for (const Entry& e : map) {
+    if (!(weight_of(e) >= 0))
+      fail_at(ctx, node, what + ": an average's weights must not be negative");
+    total += weight_of(e);
+  }
+  if (!(total > 0)) fail_at(ctx, node, what + ": an average's weights must not all be 0");
+}
+
+// {pattern: image_map, file: FILE, map_type, once, interpolate, scale, transform}: a PNG's
+// linear colours, its alpha as transmit.
+texture::Pigment read_image_pigment(Fields& f) {
+  const std::string name = f.string("file");
+  const std::filesystem::path path = std::filesystem::path(name).is_absolute()
+                                         ? std::filesystem::path(name)
+                                         : std::filesystem::path(f.ctx().dir) / name;
+  texture::ImageMap image;
+  const std::string projection = f.string("map_type", "planar");
+  if (projection == "spherical") {
+    image.projection = texture::ImageProjection::kSpherical;
+  } else if (projection == "cylindrical") {
+    image.projection = texture::ImageProjection::kCylindrical;
+  } else if (projection != "planar") {
+    f.fail("map_type", f.name("map_type") + " must be planar, spherical or cylindrical");
+  }
+  image.once = f.boolean("once", false);
+  image.interpolate = f.boolean("interpolate", false);
+  PngPixels png;
+  try {
+    png = load_png_pixels(path.string());
+  } catch (const ImageError& e) {
+    f.fail("file", f.name("file") + ": " + e.what());
+  }
+  image.width = png.width;
+  image.height = png.height;
+  image.pixels.resize(std::size_t(png.width) * std::size_t(png.height));
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    const float* c = &png.rgba[4 * i];
+    image.pixels[i] = {srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]), 0,
+                       1 - c[3]};
+    if (c[3] < 1) image.transmits = true;
+  }
+  texture::Pigment p;
+  p.kind = texture::Pigment::Kind::kImage;
+  p.pattern = texture::make_pattern(texture::PatternKind::kImage);
+  p.pattern.image = std::make_shared<const texture::ImageMap>(std::move(image));
+  if (f.has("scale")) {
+    const Vec3 s = number_or_vec3(f, "scale", {1, 1, 1});
+    if (!(s.x != 0 && s.y != 0 && s.z != 0)) f.fail("scale", f.name("scale") + " must not be 0");
+    texture::transform_pattern(p.pattern, Transform::scale(s));
+  }
+  if (f.has("transform"))
+    texture::transform_pattern(p.pattern, read_transform(f.ctx(), f.required("transform")));
+  return p;
+}
+
 }  // namespace
 
 texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, int depth) {
@@ -102,6 +176,22 @@ texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, in
   texture::Pigment p;
   if (f.has("color")) {
     p.color = read_rgbft(ctx, f.required("color"), f.name("color"));
+    f.finish();
+    return p;
+  }
+  if (f.has("pattern") && f.string("pattern") == "image_map") {
+    p = read_image_pigment(f);
+    f.finish();
+    return p;
+  }
+  if (f.has("pattern") && f.string("pattern") == "average") {
+    // The pigments' weighted mean: each entry's value is its weight.
+    p.kind = texture::Pigment::Kind::kAverage;
+    p.pigment_map = read_map<texture::PigmentMapEntry>(
+        ctx, f.required("pigments"), f.name("pigments"), [&](const YamlNode& c) {
+          return std::make_shared<const texture::Pigment>(read_pigment(ctx, c, depth + 1));
+        });
+    check_weights(ctx, f.required("pigments"), p.pigment_map, f.name("pigments"));
     f.finish();
     return p;
   }
@@ -126,9 +216,27 @@ texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, in
   return p;
 }
 
-texture::Normal read_normal(const SourceContext& ctx, const YamlNode& node) {
+texture::Normal read_normal(const SourceContext& ctx, const YamlNode& node, int depth) {
+  if (depth > kMaxPigmentDepth) fail_at(ctx, node, "normals are nested more than 16 deep");
   Fields f(ctx, node, "normal");
   texture::Normal n;
+  if (f.has("pattern") && f.string("pattern") == "average") {
+    // The normals' weighted mean: entries [weight, normal].
+    const YamlNode list = f.required("normals");
+    const std::string what = f.name("normals");
+    if (!list.IsSequence() || list.size() == 0 || list.size() > texture::kMaxMapEntries)
+      fail_at(ctx, list, what + " must be a list of 1 to 256 [weight, normal]");
+    for (const YamlNode& e : list) {
+      if (!e.IsSequence() || e.size() != 2)
+        fail_at(ctx, e, what + ": each entry is [weight, normal]");
+      n.average.push_back({read_number(ctx, e[0], what), std::make_shared<const texture::Normal>(
+                                                             read_normal(ctx, e[1], depth + 1))});
+    }
+    check_weights(ctx, list, n.average, what);
+    n.bump_size = 1;
+    f.finish();
+    return n;
+  }
   n.bump_size = f.number("bump_size", n.bump_size);
   n.pattern = read_pattern(f);
   f.finish();

@@ -10,8 +10,9 @@ namespace raycast {
 /// A pigment: {color: [r, g, b, filter?, transmit?]} or {pattern: NAME, ... colors: [[v, c]...]}
 /// or {pattern: NAME, ... pigments: [[v, PIGMENT]...]} (nested at most 16 deep).
 texture::Pigment read_pigment(const SourceContext& ctx, const YamlNode& node, int depth = 0);
-/// A normal: {pattern: NAME, bump_size: B, ...pattern modifiers}.
-texture::Normal read_normal(const SourceContext& ctx, const YamlNode& node);
+/// A normal: {pattern: NAME, bump_size: B, ...pattern modifiers}, or {pattern: average,
+/// normals: [[weight, NORMAL], ...]}.
+texture::Normal read_normal(const SourceContext& ctx, const YamlNode& node, int depth = 0);
 
 /// Whether a material mapping asks for the texture system: a `texture` with a `pattern`, a
 /// `normal`, `layers` or a finish key plain materials do not have.

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "pov/internal_functions.h"
+#include "pov/value.h"
 #include "texture/noise.h"
 
 namespace raycast::pov {
@@ -22,6 +23,26 @@ std::string number_text(double v) {
 
 constexpr int kMaxCallDepth = 64;
 constexpr double kMaxUnrolledFrequency = 64;
+
+double eval(const FnNode& n, const std::vector<double>& a, int depth);
+
+// A component of a pigment or pattern function's value (F(x, y, z).red); of a scalar function's
+// value, the value.
+double component(const FnNode& n, const std::vector<double>& a, int depth) {
+  if (n.args.size() != 1) return std::nan("");
+  const FnNode& call = *n.args[0];
+  if (call.kind != FnNode::User || !call.callee || depth > kMaxCallDepth ||
+      (!call.callee->pigment && !call.callee->pattern && !call.callee->spline))
+    return eval(call, a, depth);
+  double p[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < 3 && i < call.args.size(); ++i) p[i] = eval(*call.args[i], a, depth);
+  double v[5];
+  vector_value(*call.callee, p[0], p[1], p[2], v);
+  const int k = static_cast<int>(n.number);
+  // POV-Ray's grey of a colour: the luminance weights of its `.gray`.
+  if (k == kGrayComponent) return 0.297 * v[0] + 0.589 * v[1] + 0.114 * v[2];
+  return k >= 0 && k < 5 ? v[k] : std::nan("");
+}
 
 double eval(const FnNode& n, const std::vector<double>& a, int depth) {
   auto arg = [&](std::size_t i) { return eval(*n.args[i], a, depth); };
@@ -49,12 +70,21 @@ double eval(const FnNode& n, const std::vector<double>& a, int depth) {
     case FnNode::Power:
       return std::pow(arg(0), arg(1));
     case FnNode::User: {
-      if (depth > kMaxCallDepth || !n.callee || !n.callee->body) return std::nan("");
+      if (depth > kMaxCallDepth || !n.callee) return std::nan("");
+      if (n.callee->pigment || n.callee->pattern || n.callee->spline) {
+        // A colour read as a number: its first component.
+        double v[5];
+        vector_value(*n.callee, n.args.size() > 0 ? arg(0) : 0, n.args.size() > 1 ? arg(1) : 0,
+                     n.args.size() > 2 ? arg(2) : 0, v);
+        return v[0];
+      }
+      if (!n.callee->body) return std::nan("");
       std::vector<double> b;
       for (std::size_t i = 0; i < n.args.size(); ++i) b.push_back(arg(i));
       return eval(*n.callee->body, b, depth + 1);
     }
     case FnNode::Call:
+      if (n.function == "component") return component(n, a, depth + 1);
       break;
   }
   const std::string& f = n.function;
@@ -220,8 +250,100 @@ bool expressible(const FnNode& n) {
 }  // namespace
 
 double evaluate(const FunctionValue& f, const std::vector<double>& args) {
+  if (f.pigment || f.pattern || f.spline) {
+    double v[5];
+    vector_value(f, args.size() > 0 ? args[0] : 0, args.size() > 1 ? args[1] : 0,
+                 args.size() > 2 ? args[2] : 0, v);
+    return v[0];
+  }
   if (!f.body) return std::nan("");
   return eval(*f.body, args, 0);
+}
+
+namespace {
+
+class UserPatternFunction final : public texture::PatternFunction {
+ public:
+  explicit UserPatternFunction(std::shared_ptr<const FunctionValue> f) : f_(std::move(f)) {}
+  double value(const Vec3& p) const override {
+    // The extra parameters of a function of more than three read 0, as in POV-Ray.
+    std::vector<double> args(std::max<std::size_t>(3, f_->params.size()), 0.0);
+    args[0] = p.x, args[1] = p.y, args[2] = p.z;
+    return evaluate(*f_, args);
+  }
+
+ private:
+  std::shared_ptr<const FunctionValue> f_;
+};
+
+}  // namespace
+
+std::shared_ptr<const texture::PatternFunction> pattern_function(
+    std::shared_ptr<const FunctionValue> f) {
+  return std::make_shared<UserPatternFunction>(std::move(f));
+}
+
+std::array<double, 5> spline_at(const SplineValue& s, double t) {
+  const std::size_t n = s.t.size();
+  if (n == 0) return {};
+  // A cubic_spline's first and last points only steer its ends (POV-Ray): the curve runs from
+  // the second point to the last but one and keeps their values beyond them.
+  const std::size_t first = s.type == SplineValue::Cubic && n >= 4 ? 1 : 0;
+  const std::size_t last = n - 1 - first;
+  if (n == 1 || t <= s.t[first]) return s.p[first];
+  if (t >= s.t[last]) return s.p[last];
+  const std::size_t i =
+      static_cast<std::size_t>(std::upper_bound(s.t.begin(), s.t.end(), t) - s.t.begin()) - 1;
+  const double u = (t - s.t[i]) / (s.t[i + 1] - s.t[i]);
+  std::array<double, 5> r{};
+  if (s.type == SplineValue::Linear || n < 3) {
+    for (int k = 0; k < 5; ++k)
+      r[static_cast<std::size_t>(k)] = s.p[i][static_cast<std::size_t>(k)] * (1 - u) +
+                                       s.p[i + 1][static_cast<std::size_t>(k)] * u;
+    return r;
+  }
+  // Catmull-Rom through the points, the end tangents from the end segments.
+  const auto& p0 = s.p[i > 0 ? i - 1 : i];
+  const auto& p1 = s.p[i];
+  const auto& p2 = s.p[i + 1];
+  const auto& p3 = s.p[i + 2 < n ? i + 2 : i + 1];
+  for (std::size_t k = 0; k < 5; ++k) {
+    const double a = (-p0[k] + 3 * p1[k] - 3 * p2[k] + p3[k]) * 0.5;
+    const double b = (2 * p0[k] - 5 * p1[k] + 4 * p2[k] - p3[k]) * 0.5;
+    const double c = (p2[k] - p0[k]) * 0.5;
+    r[k] = ((a * u + b) * u + c) * u + p1[k];
+  }
+  return r;
+}
+
+int component_index(const std::string& c) {
+  if (c == "x" || c == "red" || c == "r" || c == "u") return 0;
+  if (c == "y" || c == "green" || c == "g" || c == "v") return 1;
+  if (c == "z" || c == "blue" || c == "b") return 2;
+  if (c == "filter" || c == "f" || c == "t") return 3;
+  if (c == "transmit") return 4;
+  if (c == "gray" || c == "grey") return kGrayComponent;
+  return -1;
+}
+
+bool vector_value(const FunctionValue& f, double x, double y, double z, double out[5]) {
+  if (f.pigment) {
+    const texture::Rgbft c = texture::evaluate(*f.pigment, {x, y, z});
+    out[0] = c.rgb.x, out[1] = c.rgb.y, out[2] = c.rgb.z, out[3] = c.filter, out[4] = c.transmit;
+    return true;
+  }
+  if (f.spline) {
+    const std::array<double, 5> p = spline_at(*f.spline, x);
+    for (std::size_t i = 0; i < 5; ++i) out[i] = p[i];
+    return true;
+  }
+  if (f.pattern) {
+    const double v = texture::evaluate(*f.pattern, {x, y, z});
+    for (int i = 0; i < 5; ++i) out[i] = v;
+    return true;
+  }
+  for (int i = 0; i < 5; ++i) out[i] = std::nan("");
+  return false;
 }
 
 std::string formula_text(const FunctionValue& f, bool mirror_z) {

@@ -166,9 +166,16 @@ class FunctionParser {
         f->args = args();
         if (in.is_symbol(".")) {  // a component of a vector or colour function's value
           in.next();
-          in.tok();
+          const Token c = in.tok();
+          const int k = component_index(c.text);
+          if (k < 0) in.fail_at(c.pos, "unknown component '." + c.text + "'");
           in.next();
-          return call("component", {f});
+          auto pick = std::make_shared<FnNode>();
+          pick->kind = FnNode::Call;
+          pick->function = "component";
+          pick->number = k;
+          pick->args = {f};
+          return pick;
         }
         return f;
       }
@@ -227,7 +234,49 @@ Value Interpreter::function_block(const Pos& at) {
     }
   }
   expect_symbol("{", "after function");
-  if (is_word("pigment") || is_word("pattern") || is_word("transform") || is_word("spline")) {
+  if (is_word("pigment") || is_word("pattern")) {
+    // A pigment function: the pigment read whole; a pattern function: the pattern of a
+    // pigment read the same way (its colour map unused). One using what raycast does not
+    // render is opaque, warned about where it is called (include files declare many).
+    const std::string kind = tok().text + " function";
+    const bool pattern = kind == "pattern function";
+    next();
+    struct Quiet {
+      Interpreter& in;
+      bool outer;
+      explicit Quiet(Interpreter& i) : in(i), outer(i.quiet_missed_) {
+        ++in.quiet_;
+        in.quiet_missed_ = false;
+      }
+      ~Quiet() {
+        --in.quiet_;
+        in.quiet_missed_ = outer;
+      }
+    };
+    bool missed = false;
+    Pigment p;
+    {
+      const Quiet quiet(*this);
+      p = pigment_block(Pigment{});
+      missed = quiet_missed_;
+    }
+    if (missed || (pattern && !p.model)) {
+      f->opaque = kind;
+    } else if (pattern) {
+      f->pattern = std::make_shared<const texture::Pattern>(p.model->pattern);
+    } else if (p.model) {
+      f->pigment = p.model;
+    } else {
+      texture::Pigment solid;
+      solid.color = {{p.c0.r, p.c0.g, p.c0.b}, p.c0.filter, p.c0.transmit};
+      f->pigment = std::make_shared<const texture::Pigment>(solid);
+    }
+    expect_symbol("}", "to close the function");
+  } else if (is_word("spline")) {
+    next();
+    f->spline = spline_block(at).spline;
+    expect_symbol("}", "to close the function");
+  } else if (is_word("transform")) {
     f->opaque = tok().text + " function";
     next();
     int depth = 1;
@@ -312,37 +361,6 @@ Value Interpreter::spline_block(const Pos& at) {
   return v;
 }
 
-namespace {
-std::array<double, 5> spline_at(const SplineValue& s, double t) {
-  const std::size_t n = s.t.size();
-  if (n == 0) return {};
-  if (n == 1 || t <= s.t.front()) return s.p.front();
-  if (t >= s.t.back()) return s.p.back();
-  const std::size_t i =
-      static_cast<std::size_t>(std::upper_bound(s.t.begin(), s.t.end(), t) - s.t.begin()) - 1;
-  const double u = (t - s.t[i]) / (s.t[i + 1] - s.t[i]);
-  std::array<double, 5> r{};
-  if (s.type == SplineValue::Linear || n < 3) {
-    for (int k = 0; k < 5; ++k)
-      r[static_cast<std::size_t>(k)] = s.p[i][static_cast<std::size_t>(k)] * (1 - u) +
-                                       s.p[i + 1][static_cast<std::size_t>(k)] * u;
-    return r;
-  }
-  // Catmull-Rom through the points, the end tangents from the end segments.
-  const auto& p0 = s.p[i > 0 ? i - 1 : i];
-  const auto& p1 = s.p[i];
-  const auto& p2 = s.p[i + 1];
-  const auto& p3 = s.p[i + 2 < n ? i + 2 : i + 1];
-  for (std::size_t k = 0; k < 5; ++k) {
-    const double a = (-p0[k] + 3 * p1[k] - 3 * p2[k] + p3[k]) * 0.5;
-    const double b = (2 * p0[k] - 5 * p1[k] + 4 * p2[k] - p3[k]) * 0.5;
-    const double c = (p2[k] - p0[k]) * 0.5;
-    r[k] = ((a * u + b) * u + c) * u + p1[k];
-  }
-  return r;
-}
-}  // namespace
-
 Value Interpreter::call_value(const Value& f, const Token& name) {
   expect_symbol("(", ("after " + name.text).c_str());
   std::vector<double> args;
@@ -371,6 +389,15 @@ Value Interpreter::call_value(const Value& f, const Token& name) {
   if (!f.function->opaque.empty()) {
     unsupported_warning(name.pos, "calls of a " + f.function->opaque, "its value is 0");
     return Value::number(0);
+  }
+  if (f.function->pigment || f.function->pattern || f.function->spline) {
+    // A pigment function's colour (a pattern function's value in every channel, a spline's
+    // point).
+    double c[5];
+    vector_value(*f.function, args.size() > 0 ? args[0] : 0, args.size() > 1 ? args[1] : 0,
+                 args.size() > 2 ? args[2] : 0, c);
+    if (f.function->pattern) return Value::number(c[0]);
+    return Value::vector({c[0], c[1], c[2], c[3], c[4]});
   }
   if (args.size() != raw_args.size() || args.size() != f.function->params.size())
     fail_at(name.pos, name.text + " takes " + std::to_string(f.function->params.size()) +

@@ -160,10 +160,37 @@ class Interpreter {
   void warp_block(texture::Pattern& p);
   /// Reads to the '}' that closes the block being read (its inner blocks included).
   void skip_warp_rest();
+  void skip_entry_rest();
+  // An image_map / image_pattern block being read: the image, and what its pixels' final
+  // colours wait on (the gamma, alpha, palette indices, filter and transmit items).
+  struct ImageMapRead {
+    texture::ImageMap image;
+    std::vector<float> alpha;
+    std::vector<std::uint8_t> index;
+    int palette_size = 0;
+    double gamma = -1;                                     // -1: not given; 0: srgb
+    std::vector<std::pair<int, double>> filter, transmit;  // palette index (-1: all), amount
+    bool use_index = false, use_alpha = false, from_function = false;
+    double bump_size = 1;  // bump_map's
+  };
+  // The block after image_map / image_pattern / bump_map (nullptr for a format raycast does not
+  // read); a bump_map's bump_size goes to `bump_size`.
+  std::shared_ptr<const texture::ImageMap> image_map_block(const std::string& what,
+                                                           double* bump_size = nullptr);
+  bool image_map_modifier(ImageMapRead& r);
+  void image_from_file(ImageMapRead& r, const std::string& name, const Pos& at);
+  void image_from_function(ImageMapRead& r, const Pos& at);
+  void finish_image(ImageMapRead& r);
+  // The function of a `function` pattern: `{ ... }` or a declared function's name.
+  std::shared_ptr<const texture::PatternFunction>
+  pattern_function_argument();  // the rest of a map entry, through its ']'
   /// A block pattern's colours or pigments (checker, brick, hexagon ...).
   void block_list(texture::Pattern& pattern, texture::Pigment& model, Pigment& p);
-  std::vector<texture::PigmentMapEntry> pigment_map_block();
+  // An entry without a value is weighted 1 in an average's map, else one above the last.
+  std::vector<texture::PigmentMapEntry> pigment_map_block(bool weights);
   texture::Normal normal_block(const std::optional<texture::Normal>& base);
+  texture::Normal normal_body(const std::optional<texture::Normal>& base, const char* close);
+  std::vector<texture::NormalMapEntry> normal_map_block();
   /// Transformations inside a texture: they move its pigment, normal and layers.
   void move_texture(Texture& t, const std::vector<XformOp>& ops);
   void move_pigment(Pigment& p, const std::vector<XformOp>& ops, const Transform& x);
@@ -336,6 +363,11 @@ class Interpreter {
   std::size_t weight_ = 0;
   long long reads_ = 0;
   std::set<std::string> warned_;
+  // While quiet_ > 0 (a declared pigment or pattern function being read), what raycast does not
+  // render is noted in quiet_missed_ instead of warned about: the function is then opaque and
+  // its calls are warned about where the scene uses them.
+  int quiet_ = 0;
+  bool quiet_missed_ = false;
   std::vector<std::uint32_t> random_streams_;
   struct OpenFile;
   std::map<std::string, std::shared_ptr<OpenFile>> files_;

@@ -40,10 +40,32 @@ void Interpreter::start_pattern(texture::PatternKind kind, texture::Pattern& p) 
   } else if ((kind == texture::PatternKind::kSpiral1 || kind == texture::PatternKind::kSpiral2) &&
              numeric_ahead()) {
     p.amount = number("the spiral's arms");
-  } else if (kind == texture::PatternKind::kQuilted || kind == texture::PatternKind::kCrackle) {
-    // no values of their own
+  } else if (kind == texture::PatternKind::kFunction) {
+    p.function = pattern_function_argument();
+  } else if (kind == texture::PatternKind::kImage) {
+    // Without an image it reads 0 everywhere.
+    p.image = image_map_block("image_pattern");
   }
   skip_comma();
+}
+
+std::shared_ptr<const texture::PatternFunction> Interpreter::pattern_function_argument() {
+  const Pos at = tok().pos;
+  std::shared_ptr<const FunctionValue> f;
+  if (is_symbol("{")) {
+    f = function_block(at).function;
+  } else if (const Value* v = tok().kind == Token::Word ? lookup(tok().text) : nullptr;
+             v && v->kind == Value::Function) {
+    f = v->function;
+    next();
+  } else {
+    unexpected("a function's block or name after function");
+  }
+  if (!f->opaque.empty()) {
+    unsupported_warning(at, "the function pattern of a " + f->opaque, "its value is 0");
+    return nullptr;
+  }
+  return pattern_function(f);
 }
 
 bool Interpreter::pattern_modifier(const std::string& w, texture::Pattern& p) {
@@ -133,6 +155,17 @@ void Interpreter::skip_warp_rest() {
   }
 }
 
+void Interpreter::skip_entry_rest() {
+  int depth = 0;
+  for (int guard = 0; depth > 0 || !is_symbol("]"); ++guard) {
+    if (tok().kind == Token::End || guard > 1000000) fail_here("a map entry is never closed");
+    if (is_symbol("{")) ++depth;
+    if (is_symbol("}")) --depth;
+    next();
+  }
+  next();
+}
+
 void Interpreter::block_list(texture::Pattern& pattern, texture::Pigment& model, Pigment& p) {
   const int n = texture::block_count(pattern.kind);
   std::vector<texture::Rgbft> colours;
@@ -176,7 +209,7 @@ void Interpreter::block_list(texture::Pattern& pattern, texture::Pigment& model,
   }
 }
 
-std::vector<texture::PigmentMapEntry> Interpreter::pigment_map_block() {
+std::vector<texture::PigmentMapEntry> Interpreter::pigment_map_block(bool weights) {
   expect_symbol("{", "after pigment_map");
   std::vector<texture::PigmentMapEntry> map;
   while (!accept_symbol("}")) {
@@ -184,6 +217,7 @@ std::vector<texture::PigmentMapEntry> Interpreter::pigment_map_block() {
     next();
     // The value may be left out (the entries of an `average` map are weights, 1 by default).
     const double at = numeric_ahead() ? number("a pigment map value")
+                      : weights       ? 1
                       : map.empty()   ? 0
                                       : map.back().at + 1;
     skip_comma();
@@ -201,7 +235,27 @@ std::vector<texture::PigmentMapEntry> Interpreter::pigment_map_block() {
 
 texture::Normal Interpreter::normal_block(const std::optional<texture::Normal>& base) {
   expect_symbol("{", "after normal");
-  texture::Normal n = base ? *base : texture::Normal{texture::Pattern{}, 0};
+  return normal_body(base, "}");
+}
+
+std::vector<texture::NormalMapEntry> Interpreter::normal_map_block() {
+  expect_symbol("{", "after normal_map");
+  std::vector<texture::NormalMapEntry> map;
+  while (!accept_symbol("}")) {
+    if (!is_symbol("[")) unexpected("'[' to open a normal map entry");
+    next();
+    const double weight = numeric_ahead() ? number("a normal map value") : 1;
+    skip_comma();
+    map.push_back(
+        {weight, std::make_shared<const texture::Normal>(normal_body(std::nullopt, "]"))});
+    if (map.size() > texture::kMaxMapEntries) fail_here("a normal map has at most 256 entries");
+  }
+  return map;
+}
+
+texture::Normal Interpreter::normal_body(const std::optional<texture::Normal>& base,
+                                         const char* close) {
+  texture::Normal n = base ? *base : texture::Normal{texture::Pattern{}, 0, {}, {}};
   if (tok().kind == Token::Word) {
     const Value* v = lookup(tok().text);
     if (v && v->kind == Value::Normal) {
@@ -209,7 +263,8 @@ texture::Normal Interpreter::normal_block(const std::optional<texture::Normal>& 
       next();
     }
   }
-  while (!accept_symbol("}")) {
+  bool average = false;
+  while (!accept_symbol(close)) {
     if (accept_symbol(",")) continue;  // pattern_name { ... }, BUMP_SIZE
     const Token t = tok();
     const std::string& w = t.text;
@@ -220,6 +275,35 @@ texture::Normal Interpreter::normal_block(const std::optional<texture::Normal>& 
       start_pattern(*k, n.pattern);
       n.bump_size = numeric_ahead() ? number("the bump size") : 0.5;
       skip_comma();
+      // A block pattern's normals, one per block in order (checker normal { } normal { }).
+      for (int i = 0;
+           texture::block_count(*k) > 0 && i < texture::block_count(*k) && is_word("normal"); ++i) {
+        next();
+        n.map.push_back(
+            {double(i), std::make_shared<const texture::Normal>(normal_block(std::nullopt))});
+        n.bump_size = 1;
+        skip_comma();
+      }
+    } else if (t.kind == Token::Word && w == "bump_map") {
+      // The image's grey (or palette index) as a height field over the pattern's space.
+      next();
+      std::vector<texture::PatternStep> steps = std::move(n.pattern.steps);
+      n.pattern = texture::make_pattern(texture::PatternKind::kImage);
+      n.pattern.steps = std::move(steps);
+      n.pattern.image = image_map_block(w, &n.bump_size);
+    } else if (t.kind == Token::Word && w == "average") {
+      next();
+      average = true;
+      n.bump_size = 1;
+    } else if (t.kind == Token::Word && w == "normal_map" && average) {
+      next();
+      n.average = normal_map_block();
+    } else if (t.kind == Token::Word && w == "normal_map") {
+      next();
+      n.map = normal_map_block();
+      n.bump_size = 1;
+      std::stable_sort(n.map.begin(), n.map.end(),
+                       [](const auto& a, const auto& b) { return a.weight < b.weight; });
     } else if (t.kind == Token::Word && w == "bump_size") {
       next();
       n.bump_size = number("bump_size");
@@ -228,8 +312,7 @@ texture::Normal Interpreter::normal_block(const std::optional<texture::Normal>& 
                                          w == "matrix" || w == "transform")) {
       std::vector<XformOp> ops;
       transform_item(ops);
-      if (const std::optional<Transform> x = pov_transform(ops))
-        texture::transform_pattern(n.pattern, *x);
+      if (const std::optional<Transform> x = pov_transform(ops)) texture::transform_normal(n, *x);
     } else if (t.kind == Token::Word && w == "accuracy") {
       next();
       number("accuracy");
@@ -239,7 +322,13 @@ texture::Normal Interpreter::normal_block(const std::optional<texture::Normal>& 
       unsupported_warning(t.pos, "normal " + (t.kind == Token::Word ? w : std::string("items")),
                           "the normal is left flat");
       n.bump_size = 0;
-      skip_warp_rest();
+      n.average.clear();
+      n.map.clear();
+      if (std::string_view(close) == "]") {
+        skip_entry_rest();
+      } else {
+        skip_warp_rest();
+      }
       return n;
     }
   }
@@ -256,7 +345,7 @@ void Interpreter::move_texture(Texture& t, const std::vector<XformOp>& ops) {
     t.map = std::move(moved);
   }
   move_pigment(t.pigment, ops, *x);
-  if (t.normal) texture::transform_pattern(t.normal->pattern, *x);
+  if (t.normal) texture::transform_normal(*t.normal, *x);
   for (Texture& u : t.under) move_texture(u, ops);
 }
 

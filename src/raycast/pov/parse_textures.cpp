@@ -389,6 +389,12 @@ Pigment Interpreter::pigment_body(const Pigment& base, const char* close) {
         block_list(model.pattern, model, p);
       }
       modelled = true;
+    } else if (t.kind == Token::Word && w == "average") {
+      next();
+      p.checker = false;
+      p.pattern = w;
+      model.kind = texture::Pigment::Kind::kAverage;
+      modelled = true;
     } else if (pigment_item(t, p, model, modelled)) {
     } else {
       unexpected("a colour or a pattern in pigment");
@@ -410,14 +416,22 @@ bool Interpreter::pigment_item(const Token& t, Pigment& p, texture::Pigment& mod
     model.kind = texture::Pigment::Kind::kSolid;
     return true;
   }
-  if (w == "image_map" || w == "image_pattern") {
+  if (w == "image_map") {
     next();
-    unsupported_warning(t.pos, "image_map pigments", "drawn grey");
-    skip_block(w);
     p.checker = false;
     p.pattern = w;
     p.c0 = {0.5, 0.5, 0.5, 0, 0};
-    model.kind = texture::Pigment::Kind::kSolid;
+    if (auto image = image_map_block(w)) {
+      // The image's colours through the pattern's transformations (set after it, as in POV-Ray).
+      std::vector<texture::PatternStep> steps = std::move(model.pattern.steps);
+      model.pattern = texture::make_pattern(texture::PatternKind::kImage);
+      model.pattern.steps = std::move(steps);
+      model.pattern.image = std::move(image);
+      model.kind = texture::Pigment::Kind::kImage;
+      modelled = true;
+    } else {
+      model.kind = texture::Pigment::Kind::kSolid;
+    }
   } else if (in(kPatterns, std::size(kPatterns), w)) {
     next();
     unsupported_warning(t.pos, "the " + w + " pattern", "drawn in its colour map's middle colour");
@@ -437,8 +451,9 @@ bool Interpreter::pigment_item(const Token& t, Pigment& p, texture::Pigment& mod
       model.kind = texture::Pigment::Kind::kColorMap;
   } else if (w == "pigment_map") {
     next();
-    model.pigment_map = pigment_map_block();
-    if (model.kind != texture::Pigment::Kind::kSolid)
+    const bool average = model.kind == texture::Pigment::Kind::kAverage;
+    model.pigment_map = pigment_map_block(average);
+    if (model.kind != texture::Pigment::Kind::kSolid && !average)
       model.kind = texture::Pigment::Kind::kPigmentMap;
     if (!model.pigment_map.empty()) {
       // The middle entry's colour summarises the map for the YAML conversion.
@@ -735,6 +750,10 @@ Texture Interpreter::texture_body(const Texture& base, int depth, const char* cl
       next();
       if (!map) map.emplace();
       start_pattern(*texture::pattern_kind(k.text), map->pattern);
+    } else if (is_word("average")) {
+      next();
+      if (!map) map.emplace();
+      map->average = true;
     } else if (k.kind == Token::Word && in(kPatterns, std::size(kPatterns), k.text)) {
       next();
       unsupported_warning(k.pos, "textures patterned by " + k.text, "the first texture is used");
@@ -809,6 +828,7 @@ void Interpreter::texture_map_block(const Texture& base, int depth, TextureMap& 
     if (!is_symbol("[")) unexpected("'[' to open a texture map entry");
     next();
     const double at = numeric_ahead()  ? number("a texture map value")
+                      : map.average    ? 1
                       : map.at.empty() ? 0
                                        : map.at.back() + 1;
     skip_comma();

@@ -74,6 +74,7 @@ struct Texture;
 /// entries' textures, in POV-Ray's coordinates.
 struct TextureMap {
   texture::Pattern pattern;
+  bool average = false;  // `average`: the textures weighted by `at`, the pattern unused
   std::vector<double> at;
   std::vector<Texture> textures;
 };

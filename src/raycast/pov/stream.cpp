@@ -210,6 +210,10 @@ void Interpreter::unexpected(const std::string& expected) {
 
 void Interpreter::unsupported_warning(const Pos& at, const std::string& kind,
                                       const std::string& detail) {
+  if (quiet_ > 0) {
+    quiet_missed_ = true;
+    return;
+  }
   const std::string text = "raycast does not render " + kind + " yet" +
                            (detail.empty() ? std::string() : " (" + detail + ")");
   if (options_.strict) fail_at(at, text + "; without --strict it is a warning and is left out");

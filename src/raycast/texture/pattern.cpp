@@ -13,7 +13,7 @@ struct NamedKind {
   std::string_view name;
   PatternKind kind;
 };
-constexpr std::array<NamedKind, 29> kNames = {{
+constexpr std::array<NamedKind, 31> kNames = {{
     {"agate", PatternKind::kAgate},
     {"boxed", PatternKind::kBoxed},
     {"bozo", PatternKind::kBozo},
@@ -24,9 +24,11 @@ constexpr std::array<NamedKind, 29> kNames = {{
     {"crackle", PatternKind::kCrackle},
     {"cylindrical", PatternKind::kCylindrical},
     {"dents", PatternKind::kDents},
+    {"function", PatternKind::kFunction},
     {"gradient", PatternKind::kGradient},
     {"granite", PatternKind::kGranite},
     {"hexagon", PatternKind::kHexagon},
+    {"image_pattern", PatternKind::kImage},
     {"leopard", PatternKind::kLeopard},
     {"marble", PatternKind::kMarble},
     {"onion", PatternKind::kOnion},

@@ -9,7 +9,9 @@
 
 #include "math/transform.h"
 #include "math/vec3.h"
+#include "texture/image_map.h"
 #include "texture/noise.h"
+#include "texture/pattern_function.h"
 
 namespace raycast::texture {
 
@@ -24,9 +26,11 @@ enum class PatternKind : std::uint8_t {
   kCrackle,
   kCylindrical,
   kDents,
+  kFunction,
   kGradient,
   kGranite,
   kHexagon,
+  kImage,
   kLeopard,
   kMarble,
   kOnion,
@@ -76,6 +80,8 @@ struct Pattern {
   Turbulence turbulence;    // classic turbulence: applied before the pattern's own steps
   int noise_generator = 2;  // POV-Ray 3.7's default
   std::vector<PatternStep> steps;
+  std::shared_ptr<const PatternFunction> function;  // kFunction
+  std::shared_ptr<const ImageMap> image;            // kImage: its grey; an image_map pigment's
 };
 
 /// A new pattern of `kind` with POV-Ray's defaults for it (brick size, mortar, agate_turb ...).

@@ -172,6 +172,14 @@ double raw_pattern(const Pattern& pt, const Vec3& p) {
       const double n = noise(p, g);
       return n * n * n;
     }
+    case PatternKind::kImage: {
+      // Where the image does not reach (once), POV-Ray's image_pattern reads 0.
+      double u = 0, v = 0;
+      if (!pt.image || !image_uv(*pt.image, p, u, v)) return 0;
+      return std::clamp(image_grey(image_sample(*pt.image, u, v)), 0.0, 1.0);
+    }
+    case PatternKind::kFunction:
+      return function_pattern_value(pt.function.get(), p);
     case PatternKind::kGradient:
       return dot(p, pt.vector);
     case PatternKind::kGranite: {

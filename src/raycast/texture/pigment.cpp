@@ -47,6 +47,19 @@ Rgbft pigment_at(const std::vector<PigmentMapEntry>& map, double v, const Vec3& 
 
 }  // namespace
 
+Rgbft average_at(const std::vector<PigmentMapEntry>& map, const Vec3& p) {
+  Rgbft sum;
+  double total = 0;
+  for (const PigmentMapEntry& e : map) {
+    if (!e.pigment) continue;
+    const Rgbft c = evaluate(*e.pigment, p);
+    sum = {sum.rgb + e.at * c.rgb, sum.filter + e.at * c.filter, sum.transmit + e.at * c.transmit};
+    total += e.at;
+  }
+  if (total == 0) return {};
+  return {sum.rgb / total, sum.filter / total, sum.transmit / total};
+}
+
 Rgbft evaluate(const Pigment& pigment, const Vec3& p) {
   switch (pigment.kind) {
     case Pigment::Kind::kSolid:
@@ -68,6 +81,16 @@ Rgbft evaluate(const Pigment& pigment, const Vec3& p) {
       // pattern.
       return pigment_at(pigment.pigment_map, v, p, block_count(pigment.pattern.kind) > 0);
     }
+    case Pigment::Kind::kAverage:
+      return average_at(pigment.pigment_map, p);
+    case Pigment::Kind::kImage: {
+      double u = 0, v = 0;
+      const ImageMap* image = pigment.pattern.image.get();
+      if (!image || !image_uv(*image, pattern_point(pigment.pattern, p), u, v))
+        return {{1, 1, 1}, 0, 1};
+      const ImagePixel c = image_sample(*image, u, v);
+      return {{c.r, c.g, c.b}, c.filter, c.transmit};
+    }
   }
   return {};
 }
@@ -80,7 +103,11 @@ bool may_transmit(const Pigment& pigment) {
       return std::any_of(
           pigment.color_map.begin(), pigment.color_map.end(),
           [](const ColorMapEntry& e) { return e.color.filter > 0 || e.color.transmit > 0; });
+    case Pigment::Kind::kImage:
+      return pigment.pattern.image &&
+             (pigment.pattern.image->transmits || pigment.pattern.image->once);
     case Pigment::Kind::kPigmentMap:
+    case Pigment::Kind::kAverage:
       return std::any_of(
           pigment.pigment_map.begin(), pigment.pigment_map.end(),
           [](const PigmentMapEntry& e) { return e.pigment && may_transmit(*e.pigment); });

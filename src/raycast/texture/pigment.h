@@ -1,6 +1,7 @@
 #pragma once
 // Pigments (docs/textures.md "Pigments"): a solid colour with filter and transmit, or a pattern
-// whose value picks a colour from a colour map or a pigment from a pigment map (maps nest).
+// whose value picks a colour from a colour map or a pigment from a pigment map (maps nest), or
+// the weighted average of a list of pigments.
 #include <memory>
 #include <vector>
 
@@ -34,13 +35,20 @@ struct PigmentMapEntry {
 inline constexpr std::size_t kMaxMapEntries = 256;
 
 struct Pigment {
-  enum class Kind : std::uint8_t { kSolid, kColorMap, kPigmentMap };
+  // kAverage: POV-Ray's `average` pattern, the pigments of pigment_map averaged with their
+  // `at` as weights (the pattern is unused). kImage: an image_map, the colours of the pattern's
+  // image (clear where the image does not reach).
+  enum class Kind : std::uint8_t { kSolid, kColorMap, kPigmentMap, kAverage, kImage };
   Kind kind = Kind::kSolid;
   Rgbft color;                               // kSolid
   Pattern pattern;                           // kColorMap, kPigmentMap
   std::vector<ColorMapEntry> color_map;      // sorted by `at`
   std::vector<PigmentMapEntry> pigment_map;  // sorted by `at`; a block pattern's list in order
 };
+
+/// The weighted mean of the entries' pigments at p, `at` being each one's weight (black when the
+/// weights sum to 0).
+Rgbft average_at(const std::vector<PigmentMapEntry>& map, const Vec3& p);
 
 /// The colour a map gives at value v in [0, 1]: the first entry's below it, the last's above,
 /// linear between neighbours (entries sorted by `at`; an empty map is black).

@@ -48,9 +48,20 @@ void add_finish(const Finish& f, double vis, Finish& sum, double& strongest) {
 
 }  // namespace
 
+void transform_normal(Normal& normal, const Transform& t) {
+  transform_pattern(normal.pattern, t);
+  for (std::vector<NormalMapEntry>* list : {&normal.average, &normal.map})
+    for (NormalMapEntry& e : *list) {
+      if (!e.normal) continue;
+      auto moved = std::make_shared<Normal>(*e.normal);
+      transform_normal(*moved, t);
+      e.normal = std::move(moved);
+    }
+}
+
 void transform_layer(TextureLayer& layer, const Transform& t) {
   transform_pigment(layer.pigment, t);
-  if (layer.normal) transform_pattern(layer.normal->pattern, t);
+  if (layer.normal) transform_normal(*layer.normal, t);
 }
 
 bool TextureStack::may_transmit() const {
@@ -123,6 +134,18 @@ SurfaceLook blend(const SurfaceLook& a, const SurfaceLook& b, double t) {
 }  // namespace
 
 SurfaceLook mapped_look(const TextureStack& texture, const TextureContext& ctx) {
+  if (texture.average) {
+    // A running weighted mean: each entry blended in by its share of the weights so far.
+    SurfaceLook sum;
+    double total = 0;
+    for (const TextureMapEntry& e : texture.map) {
+      if (!e.texture || !(e.at > 0)) continue;
+      total += e.at;
+      const SurfaceLook look = evaluate(*e.texture, ctx);
+      sum = total == e.at ? look : blend(sum, look, e.at / total);
+    }
+    return sum;
+  }
   const MapPick m = pick(texture, ctx.p);
   if (!m.a) return {};
   const SurfaceLook a = evaluate(*m.a, ctx);
@@ -170,7 +193,16 @@ Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
   const PatternKind k = pattern.kind;
   const bool own_normal = k == PatternKind::kBumps || k == PatternKind::kDents ||
                           k == PatternKind::kRipples || k == PatternKind::kWaves;
-  const double scale = own_normal ? 1 : kPatternNormalScale;
+  double scale = own_normal ? 1 : kPatternNormalScale;
+  // POV-Ray's ripples and waves normals put the frequency inside the wave only: their tilt is
+  // measured per wavelength, so a high frequency (water scaled by 1e5 at frequency 1e5) keeps
+  // its steps inside one wave.
+  if ((k == PatternKind::kRipples || k == PatternKind::kWaves) && std::abs(pattern.frequency) > 1)
+    size /= std::abs(pattern.frequency);
+  // A bump map's slope is POV-Ray's height step from one pixel to the next, not per unit of the
+  // pattern: the slope over the image's width.
+  if (k == PatternKind::kImage && pattern.image && pattern.image->width > 0)
+    scale = 1.0 / double(pattern.image->width);
   // The slopes along the three axes from four samples at the corners of a tetrahedron,
   // p + h (s0 a0 + s1 a1 + s2 a2) with signs s = (1,1,1), (1,-1,-1), (-1,1,-1), (-1,-1,1): each
   // sign vector sums to 0 over the corners and their outer products sum to 4 I, so
@@ -190,6 +222,62 @@ Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx) {
   for (std::size_t a = 0; a < 3; ++a)
     g[a] = step[a] == Vec3{0, 0, 0} ? 0 : g[a] / (4 * kStep) * scale;
   return g;
+}
+
+namespace {
+
+// The normal_map's entries around the pattern's value with their shares (a colour map's rule).
+int map_pick(const Normal& normal, const Vec3& p, const Normal* picked[2], double share[2]) {
+  const std::vector<NormalMapEntry>& map = normal.map;
+  const double v = evaluate(normal.pattern, p);
+  const int blocks = block_count(normal.pattern.kind);
+  std::size_t a = 0, b = 0;
+  double t = 0;
+  if (blocks > 0) {
+    a = b = std::size_t(std::clamp(std::lround(v * double(blocks - 1)), 0L, long(map.size()) - 1));
+  } else if (!(v > map.front().weight)) {
+    a = b = 0;
+  } else if (v >= map.back().weight) {
+    a = b = map.size() - 1;
+  } else {
+    b = 1;
+    while (map[b].weight <= v) ++b;
+    a = b - 1;
+    const double span = map[b].weight - map[a].weight;
+    t = span > 0 ? (v - map[a].weight) / span : 1;
+  }
+  picked[0] = map[a].normal.get(), share[0] = 1 - t;
+  picked[1] = map[b].normal.get(), share[1] = t;
+  return a == b ? 1 : 2;
+}
+
+}  // namespace
+
+Vec3 normal_tilt(const Normal& normal, const TextureContext& ctx, int depth) {
+  if (normal.average.empty() && normal.map.empty())
+    return normal.bump_size * pattern_gradient(normal.pattern, ctx);
+  // The unit normal each entry gives, averaged by weight; the tilt is what leans ctx.n onto the
+  // mean's direction: mean = a n + t (t across n) points along n - (-t / a).
+  const Normal* entries[2] = {nullptr, nullptr};
+  double shares[2] = {0, 0};
+  const bool average = !normal.average.empty();
+  const int count = average ? int(normal.average.size()) : map_pick(normal, ctx.p, entries, shares);
+  Vec3 mean{0, 0, 0};
+  double total = 0;
+  for (int i = 0; i < count; ++i) {
+    const Normal* entry = average ? normal.average[std::size_t(i)].normal.get() : entries[i];
+    const double weight = average ? normal.average[std::size_t(i)].weight : shares[i];
+    if (!entry || depth > 16) continue;
+    const Vec3 tilt = normal_tilt(*entry, ctx, depth + 1);
+    const Vec3 n = ctx.n - (tilt - dot(tilt, ctx.n) * ctx.n);
+    const double l = length(n);
+    if (l > 0 && std::isfinite(l)) mean += (weight / l) * n;
+    total += weight;
+  }
+  if (total == 0) return {0, 0, 0};
+  const double a = dot(mean, ctx.n);
+  if (!(a > 1e-9)) return {0, 0, 0};
+  return -(1 / a) * (mean - a * ctx.n);
 }
 
 SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
@@ -214,8 +302,7 @@ SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
     diffuse_weight += w;
     brilliance += w * layer.finish.brilliance;
     add_finish(layer.finish, vis, f, strongest);
-    if (layer.normal)
-      tilt += (vis * layer.normal->bump_size) * pattern_gradient(layer.normal->pattern, ctx);
+    if (layer.normal) tilt += vis * normal_tilt(*layer.normal, ctx);
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
     if (!(through.x > 0 || through.y > 0 || through.z > 0)) break;
   }
@@ -247,6 +334,23 @@ SurfaceLook evaluate(const TextureStack& texture, const TextureContext& ctx) {
   return look;
 }
 
+namespace {
+
+// The weighted mean of f over an average texture's entries (black when no weight is positive).
+Vec3 mean_of(const TextureStack& texture, const Vec3& p,
+             Vec3 (*f)(const TextureStack&, const Vec3&)) {
+  Vec3 sum{0, 0, 0};
+  double total = 0;
+  for (const TextureMapEntry& e : texture.map) {
+    if (!e.texture || !(e.at > 0)) continue;
+    sum += e.at * f(*e.texture, p);
+    total += e.at;
+  }
+  return total > 0 ? sum / total : sum;
+}
+
+}  // namespace
+
 Vec3 pigment_color(const TextureStack& texture, const Vec3& p) {
   Vec3 through{1, 1, 1}, sum{0, 0, 0};
   for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
@@ -255,6 +359,7 @@ Vec3 pigment_color(const TextureStack& texture, const Vec3& p) {
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
     if (!(through.x > 0 || through.y > 0 || through.z > 0)) return sum;
   }
+  if (texture.average) return sum + mul(through, mean_of(texture, p, pigment_color));
   if (const MapPick m = texture.map_pattern ? pick(texture, p) : MapPick{}; m.a) {
     const Vec3 a = pigment_color(*m.a, p);
     sum += mul(through, m.b ? lerp(a, pigment_color(*m.b, p), m.t) : a);
@@ -269,6 +374,7 @@ Vec3 transmittance(const TextureStack& texture, const Vec3& p) {
     through = mul(through, c.filter * c.rgb + Vec3{c.transmit, c.transmit, c.transmit});
     if (!(through.x > 0 || through.y > 0 || through.z > 0)) return through;
   }
+  if (texture.average) return mul(through, mean_of(texture, p, transmittance));
   if (const MapPick m = texture.map_pattern ? pick(texture, p) : MapPick{}; m.a) {
     const Vec3 a = transmittance(*m.a, p);
     through = mul(through, m.b ? lerp(a, transmittance(*m.b, p), m.t) : a);

@@ -13,12 +13,27 @@
 
 namespace raycast::texture {
 
+struct Normal;
+struct NormalMapEntry {
+  double weight = 1;
+  std::shared_ptr<const Normal> normal;
+};
+
 /// A normal perturbation: the surface normal tilted against the pattern's gradient (measured in
 /// the pattern's own units, so scaling the pattern does not change the tilt), times bump_size.
+/// With `average` entries it is POV-Ray's `average` normal instead: the weighted mean of the
+/// normals each entry would give (pattern and bump_size unused). With `map` entries it is a
+/// normal_map: the pattern's value picks (block patterns) or blends (entries sorted by their
+/// value, in `weight`) the two neighbouring entries' normals, as a colour map blends colours.
 struct Normal {
   Pattern pattern;
   double bump_size = 0.5;
+  std::vector<NormalMapEntry> average;
+  std::vector<NormalMapEntry> map;
 };
+
+/// Moves a normal's pattern, and its average's normals, by t.
+void transform_normal(Normal& normal, const Transform& t);
 
 struct TextureLayer {
   Pigment pigment;
@@ -39,8 +54,11 @@ struct TextureStack {
   std::vector<TextureLayer> layers;  // the bottom layer first (over the map, when there is one)
   // A patterned texture under the layers: the pattern's value picks (block patterns) or blends
   // (sorted entries, as a colour map) whole textures.
+  // With `average`, the map's textures are averaged with their `at` as weights (POV-Ray's
+  // `average` texture) and the pattern is unused.
   std::optional<Pattern> map_pattern;
   std::vector<TextureMapEntry> map;
+  bool average = false;
   bool may_transmit() const;  // some point shows what is behind the surface
   bool has_normal() const;
 };
@@ -91,5 +109,10 @@ inline constexpr double kPatternNormalScale = 0.3;
 /// kPatternNormalScale for the patterns without a normal of their own. A wave's wrap (the ramp's
 /// jump from 1 to 0) gives a steep thin line, as in POV-Ray.
 Vec3 pattern_gradient(const Pattern& pattern, const TextureContext& ctx);
+
+/// What a normal adds to the tilt at ctx (the vector whose part across ctx.n the normal leans
+/// away from): bump_size times the pattern's gradient, or for an average normal the tilt that
+/// gives the weighted mean of its entries' unit normals.
+Vec3 normal_tilt(const Normal& normal, const TextureContext& ctx, int depth = 0);
 
 }  // namespace raycast::texture
