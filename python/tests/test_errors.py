@@ -63,7 +63,7 @@ def test_bad_shape_parameters_name_the_call():
     with pytest.raises(raycast.SceneError, match="radius must be > 0"):
         s.add_sphere((0, 0, 0), -1)
     with pytest.raises(raycast.SceneError, match="unknown shape"):
-        s.add_shape("blob", {})
+        s.add_shape("blobby", {})
     with pytest.raises(ValueError, match="3 numbers"):
         s.add_sphere((0, 0), 1)
     with pytest.raises(raycast.SceneError, match="not a closed solid|open surface"):

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <utility>
 #include <span>
+#include <utility>
 
 #include "geometry/spawn.h"
 #include "objects/csg_tree.h"

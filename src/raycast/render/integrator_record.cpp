@@ -6,11 +6,11 @@
 
 #include "geometry/spawn.h"
 #include "render/area_light_adaptive.h"
+#include "render/dispersion.h"
 #include "render/integrator.h"
 #include "render/light_falloff.h"
 #include "render/optics.h"
 #include "render/terminator.h"
-#include "render/dispersion.h"
 #include "render/whitted_trace.inl"
 
 namespace raycast {
