@@ -70,8 +70,6 @@ inline Cell cell(double v) {
   return {int(wrapped) & (kTable - 1), v - fl};
 }
 
-inline double lerp(double t, double a, double b) { return a + t * (b - a); }
-
 // Perlin 2002: the gradient of a corner picked from the twelve cube edges (with four repeats to
 // make sixteen) by the low four bits of its hash, dotted with the offset.
 inline double edge_gradient(int hash, double x, double y, double z) {
@@ -81,88 +79,60 @@ inline double edge_gradient(int hash, double x, double y, double z) {
   return ((h & 1) ? -u : u) + ((h & 2) ? -v : v);
 }
 
-double improved_noise(const Vec3& p) {
+inline double cubic_fade(double s) { return s * s * (3 - 2 * s); }
+inline double quintic_fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
+
+// The lattice noise of one kind at p: the eight corners of p's cell, each given by
+// corner(hash, offset from the corner) (a number, or a vector of them), blended with the fade's
+// weights along x, then y, then z.
+template <class Fade, class Corner>
+auto blend_corners(const Vec3& p, Fade fade, Corner corner) {
   const auto& perm = tables().perm;
   const Cell cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
-  auto fade = [](double t) { return t * t * t * (t * (t * 6 - 15) + 10); };
   const double u = fade(cx.f), v = fade(cy.f), w = fade(cz.f);
-  auto h = [&](int a, int b, int c) {
-    return perm[std::size_t(perm[std::size_t(perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
+  auto at = [&](int a, int b, int c) {
+    const int hash =
+        perm[std::size_t(perm[std::size_t(perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
+    return corner(hash, cx.f - a, cy.f - b, cz.f - c);
   };
-  const double x = cx.f, y = cy.f, z = cz.f;
-  const double x00 =
-      lerp(u, edge_gradient(h(0, 0, 0), x, y, z), edge_gradient(h(1, 0, 0), x - 1, y, z));
-  const double x10 =
-      lerp(u, edge_gradient(h(0, 1, 0), x, y - 1, z), edge_gradient(h(1, 1, 0), x - 1, y - 1, z));
-  const double x01 =
-      lerp(u, edge_gradient(h(0, 0, 1), x, y, z - 1), edge_gradient(h(1, 0, 1), x - 1, y, z - 1));
-  const double x11 = lerp(u, edge_gradient(h(0, 1, 1), x, y - 1, z - 1),
-                          edge_gradient(h(1, 1, 1), x - 1, y - 1, z - 1));
-  return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));  // about [-1, 1]
+  auto mix = [](double s, const auto& a0, const auto& a1) { return a0 + s * (a1 - a0); };
+  const auto x00 = mix(u, at(0, 0, 0), at(1, 0, 0));
+  const auto x10 = mix(u, at(0, 1, 0), at(1, 1, 0));
+  const auto x01 = mix(u, at(0, 0, 1), at(1, 0, 1));
+  const auto x11 = mix(u, at(0, 1, 1), at(1, 1, 1));
+  return mix(w, mix(v, x00, x10), mix(v, x01, x11));
 }
 
-double lattice_noise(const Vec3& p) {
-  const auto& t = tables();
-  const Cell cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
-  auto fade = [](double s) { return s * s * (3 - 2 * s); };
-  const double u = fade(cx.f), v = fade(cy.f), w = fade(cz.f);
-  auto corner = [&](int a, int b, int c) {
-    const int hash = t.perm[std::size_t(
-        t.perm[std::size_t(t.perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
-    const Vec3& g = t.gradients[std::size_t(hash)];
-    return g.x * (cx.f - a) + g.y * (cy.f - b) + g.z * (cz.f - c);
-  };
-  const double x00 = lerp(u, corner(0, 0, 0), corner(1, 0, 0));
-  const double x10 = lerp(u, corner(0, 1, 0), corner(1, 1, 0));
-  const double x01 = lerp(u, corner(0, 0, 1), corner(1, 0, 1));
-  const double x11 = lerp(u, corner(0, 1, 1), corner(1, 1, 1));
-  return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));  // within [-sqrt(3)/2, sqrt(3)/2]
+double improved_noise(const Vec3& p) {  // about [-1, 1]
+  return blend_corners(p, quintic_fade, edge_gradient);
+}
+
+double lattice_noise(const Vec3& p) {  // within [-sqrt(3)/2, sqrt(3)/2]
+  return blend_corners(p, cubic_fade, [](int hash, double x, double y, double z) {
+    const Vec3& g = tables().gradients[std::size_t(hash)];
+    return g.x * x + g.y * y + g.z * z;
+  });
 }
 
 // The three components of the vector noise share the lattice cell, the fade weights and the
 // corner hashes (as POV-Ray's DNoise does); only the gradients differ, so one call costs little
 // more than one scalar noise.
 Vec3 lattice_vector_noise(const Vec3& p) {
-  const auto& t = tables();
-  const Cell cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
-  auto fade = [](double s) { return s * s * (3 - 2 * s); };
-  const double u = fade(cx.f), v = fade(cy.f), w = fade(cz.f);
-  auto corner = [&](int a, int b, int c) {
-    const int hash = t.perm[std::size_t(
-        t.perm[std::size_t(t.perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
-    const auto& g = t.vector_gradients[std::size_t(hash)];
-    const double x = cx.f - a, y = cy.f - b, z = cz.f - c;
+  return blend_corners(p, cubic_fade, [](int hash, double x, double y, double z) {
+    const auto& g = tables().vector_gradients[std::size_t(hash)];
     return Vec3{g[0].x * x + g[0].y * y + g[0].z * z, g[1].x * x + g[1].y * y + g[1].z * z,
                 g[2].x * x + g[2].y * y + g[2].z * z};
-  };
-  auto mix = [](double s, const Vec3& a, const Vec3& b) { return a + s * (b - a); };
-  const Vec3 x00 = mix(u, corner(0, 0, 0), corner(1, 0, 0));
-  const Vec3 x10 = mix(u, corner(0, 1, 0), corner(1, 1, 0));
-  const Vec3 x01 = mix(u, corner(0, 0, 1), corner(1, 0, 1));
-  const Vec3 x11 = mix(u, corner(0, 1, 1), corner(1, 1, 1));
-  return mix(w, mix(v, x00, x10), mix(v, x01, x11));
+  });
 }
 
 // Improved noise's vector form: the component k takes the edge gradient of the corner's hash
 // passed k more times through the permutation.
 Vec3 improved_vector_noise(const Vec3& p) {
-  const auto& perm = tables().perm;
-  const Cell cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
-  auto fade = [](double t) { return t * t * t * (t * (t * 6 - 15) + 10); };
-  const double u = fade(cx.f), v = fade(cy.f), w = fade(cz.f);
-  auto corner = [&](int a, int b, int c) {
-    const int h0 =
-        perm[std::size_t(perm[std::size_t(perm[std::size_t(cx.i + a)] + cy.i + b)] + cz.i + c)];
+  return blend_corners(p, quintic_fade, [](int h0, double x, double y, double z) {
+    const auto& perm = tables().perm;
     const int h1 = perm[std::size_t(h0)], h2 = perm[std::size_t(h1)];
-    const double x = cx.f - a, y = cy.f - b, z = cz.f - c;
     return Vec3{edge_gradient(h0, x, y, z), edge_gradient(h1, x, y, z), edge_gradient(h2, x, y, z)};
-  };
-  auto mix = [](double s, const Vec3& a, const Vec3& b) { return a + s * (b - a); };
-  const Vec3 x00 = mix(u, corner(0, 0, 0), corner(1, 0, 0));
-  const Vec3 x10 = mix(u, corner(0, 1, 0), corner(1, 1, 0));
-  const Vec3 x01 = mix(u, corner(0, 0, 1), corner(1, 0, 1));
-  const Vec3 x11 = mix(u, corner(0, 1, 1), corner(1, 1, 1));
-  return mix(w, mix(v, x00, x10), mix(v, x01, x11));
+  });
 }
 
 }  // namespace
