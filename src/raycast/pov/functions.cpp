@@ -279,13 +279,7 @@ Value Interpreter::function_block(const Pos& at) {
   } else if (is_word("transform")) {
     f->opaque = tok().text + " function";
     next();
-    int depth = 1;
-    while (depth > 0) {  // the rest of the block, braces balanced
-      if (tok().kind == Token::End) fail_at(at, "function { is never closed");
-      if (is_symbol("{")) ++depth;
-      if (is_symbol("}")) --depth;
-      next();
-    }
+    skip_block_rest("function");
   } else if (is_word("internal")) {
     // functions.inc's built-in functions, by number: raycast's own definitions, with their
     // parameter lists (x, y, z and the documented extra parameters).

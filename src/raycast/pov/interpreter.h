@@ -80,6 +80,8 @@ class Interpreter {
   void unsupported_warning(const Pos& at, const std::string& kind, const std::string& detail = "");
   /// Consumes a `{ ... }` block (directives inside still run).
   void skip_block(const std::string& what);
+  /// The rest of a block whose `{` was read, braces balanced, up to and with its `}`.
+  void skip_block_rest(const std::string& what);
 
   // ---- expressions (expression.cpp, builtins.cpp) ----
   Value expression();

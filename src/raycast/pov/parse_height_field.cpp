@@ -53,13 +53,7 @@ void Interpreter::height_field_function(Node& n, const Pos& at) {
   } else if (is_word("pattern") || is_word("transform") || is_word("spline") ||
              is_word("internal")) {
     unsupported_warning(at, "height fields of a " + tok().text + " function");
-    int depth = 1;
-    while (depth > 0) {  // the rest of the block, braces balanced
-      if (tok().kind == Token::End) fail_at(at, "function { is never closed");
-      if (is_symbol("{")) ++depth;
-      if (is_symbol("}")) --depth;
-      next();
-    }
+    skip_block_rest("function");
     return;
   } else {
     auto f = std::make_shared<FunctionValue>();

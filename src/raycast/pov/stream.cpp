@@ -227,6 +227,10 @@ void Interpreter::unsupported_warning(const Pos& at, const std::string& kind,
 
 void Interpreter::skip_block(const std::string& what) {
   expect_symbol("{", ("after " + what).c_str());
+  skip_block_rest(what);
+}
+
+void Interpreter::skip_block_rest(const std::string& what) {
   int depth = 1;
   while (depth > 0) {
     const Token& t = tok();

@@ -87,8 +87,11 @@ class Integrator {
   /// trace() for a reflected or refracted ray: in kRecord with RayRecorder::camera_ray_only, the
   /// ray is announced and its subtree traced in kCount.
   template <TraceMode M>
+  /// `mirrored`: whether the ray is a mirrored one (SampleState::mirrored, for the ray's
+  /// subtree).
   [[gnu::always_inline]] Color trace_child(const Ray& ray, int depth, SampleState& state,
-                                           double weight, const Material* medium) const;
+                                           double weight, const Material* medium,
+                                           bool mirrored) const;
   /// li() for the modes other than kWhitted.
   Color li_diagnostic(const Ray& ray, SampleState& state) const;
   /// li_diagnostic() after its query (found, hit: scene.intersect's answer); counts no ray.

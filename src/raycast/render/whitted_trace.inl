@@ -105,16 +105,21 @@ Color Integrator::trace(const Ray& ray, int depth, SampleState& state, double we
 
 template <Integrator::TraceMode M>
 inline Color Integrator::trace_child(const Ray& ray, int depth, SampleState& state, double weight,
-                                     const Material* medium) const {
+                                     const Material* medium, bool mirrored) const {
+  const bool parent_mirrored = std::exchange(state.mirrored, mirrored);
+  Color radiance;
   if constexpr (M == kRecord) {
     if (state.recorder->camera_ray_only) {
       state.recorder->begin_ray(ray, depth);
-      const Color radiance = trace<kCount>(ray, depth, state, weight, medium);
+      radiance = trace<kCount>(ray, depth, state, weight, medium);
       state.recorder->end_ray(radiance);
+      state.mirrored = parent_mirrored;
       return radiance;
     }
   }
-  return trace<M>(ray, depth, state, weight, medium);
+  radiance = trace<M>(ray, depth, state, weight, medium);
+  state.mirrored = parent_mirrored;
+  return radiance;
 }
 
 template <Integrator::TraceMode M>
@@ -182,10 +187,8 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect, kWhite);
-    const bool was_mirrored = std::exchange(state.mirrored, true);
     result += w_reflect * trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
-                                         weight * w_reflect, interior_after(m, !outside));
-    state.mirrored = was_mirrored;
+                                         weight * w_reflect, interior_after(m, !outside), true);
   }
   if (w_refract > 0 && weight * w_refract >= cutoff) {
     if (disperses(m) && state.band < 0) {
@@ -193,10 +196,8 @@ inline Color Integrator::whitted_hit(const Ray& ray, const SceneHit& hit, int de
     } else {
       if constexpr (M != kPlain) ++state.recorder->counts.refraction;
       if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_refract, kWhite);
-      const bool was_mirrored = std::exchange(state.mirrored, false);
       result += w_refract * trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
-                                           weight * w_refract, interior_after(m, outside));
-      state.mirrored = was_mirrored;
+                                           weight * w_refract, interior_after(m, outside), false);
     }
   }
   return result;
@@ -208,7 +209,6 @@ Color Integrator::dispersed(const SurfaceInfo& si, const Vec3& wi, const Vec3& n
                             double w_refract, const Color& tint) const {
   const int bands = std::min(m.dispersion_samples, kMaxDispersionSamples);
   const auto shares = band_weights(bands);
-  const bool was_mirrored = state.mirrored;
   Color sum{0, 0, 0};
   for (int k = 0; k < bands; ++k) {
     state.band = band_position(k, bands);
@@ -221,13 +221,11 @@ Color Integrator::dispersed(const SurfaceInfo& si, const Vec3& wi, const Vec3& n
     if constexpr (M != kPlain)
       ++(refracted ? state.recorder->counts.refraction : state.recorder->counts.reflection);
     if constexpr (M == kRecord) state.recorder->child(kind, w_refract / bands, share);
-    state.mirrored = !refracted;
-    sum += mul(share,
-               trace_child<M>({offset_ray_origin(si, dir), dir}, depth + 1, state,
-                              weight * w_refract / bands, interior_after(m, refracted == outside)));
+    sum += mul(share, trace_child<M>({offset_ray_origin(si, dir), dir}, depth + 1, state,
+                                     weight * w_refract / bands,
+                                     interior_after(m, refracted == outside), !refracted));
   }
   state.band = -1;
-  state.mirrored = was_mirrored;
   return (w_refract / bands) * sum;
 }
 
@@ -279,26 +277,23 @@ Color Integrator::textured_hit(const Ray& ray, const SceneHit& hit, std::size_t 
     const Vec3 m_dir = reflect(wi, n);
     if constexpr (M != kPlain) ++state.recorder->counts.reflection;
     if constexpr (M == kRecord) state.recorder->child(RayKind::kReflection, w_reflect, kWhite);
-    const bool was_mirrored = std::exchange(state.mirrored, true);
     const Color mirrored = trace_child<M>({offset_ray_origin(si, m_dir), m_dir}, depth + 1, state,
-                                          weight * w_reflect, interior_after(m, !outside));
-    state.mirrored = was_mirrored;
+                                          weight * w_reflect, interior_after(m, !outside), true);
     result += look.finish.reflection_metallic ? w_reflect * mul(look.pigment, mirrored)
                                               : w_reflect * mirrored;
   }
   if (w_through > 0 && weight * w_through >= cutoff) {
     // The filter's colour as a tint of the scalar weight: weight * tint is look.through.
-    const Color tint = look.through / w_refract;
     if (disperses(m) && state.band < 0) {
-      result += dispersed<M>(si, wi, n, m, outside, depth, state, weight, w_through, tint);
+      result += dispersed<M>(si, wi, n, m, outside, depth, state, weight, w_through,
+                             look.through / w_refract);
     } else {
       if constexpr (M != kPlain) ++state.recorder->counts.refraction;
-      if constexpr (M == kRecord) state.recorder->child(RayKind::kRefraction, w_through, tint);
-      const bool was_mirrored = std::exchange(state.mirrored, false);
+      if constexpr (M == kRecord)
+        state.recorder->child(RayKind::kRefraction, w_through, look.through / w_refract);
       result +=
           mul(look.through, trace_child<M>({offset_ray_origin(si, t_dir), t_dir}, depth + 1, state,
-                                           weight * w_through, interior_after(m, outside)));
-      state.mirrored = was_mirrored;
+                                           weight * w_through, interior_after(m, outside), false));
     }
   }
   return result;
