@@ -126,6 +126,13 @@ sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 dispersion 1.02 dispersion_s
       SceneError);
 }
 
+TEST(Dispersion, YamlKeys_OutOfRangeArePositionedErrors) {
+  EXPECT_THROW(load_scene_text(sphere_scene("dispersion: 0")), SceneError);
+  EXPECT_THROW(load_scene_text(sphere_scene("dispersion: 1.1, dispersion_samples: 1")), SceneError);
+  EXPECT_THROW(load_scene_text(sphere_scene("dispersion: 1.1, dispersion_samples: 65")),
+               SceneError);
+}
+
 TEST(Dispersion, ExplainedPixels_EqualTheRender) {
   const Scene scene = load_scene_text(sphere_scene("dispersion: 1.1, dispersion_samples: 5"));
   const Image image = render(scene, quiet());
